@@ -1,0 +1,194 @@
+import { type Complex, cAbs2, cAdd, cDiv, cExpI, cMul, cScale, cSub } from './complex.ts';
+import { type InterfaceCoefficients, fresnelCoefficients } from './fresnel.ts';
+import { refractedCos, sinCosDeg } from './snell.ts';
+
+/**
+ * How the two polarisations are combined:
+ * - `unpolarized`: R = (R_s + R_p)/2, each with its own Airy sum (physical; the default);
+ * - `paper`: the paper's eqs (4) and (8), which average the s and p *amplitudes* first and then
+ *   sum once. Its r_ab vanishes at normal incidence, so R ≡ 0 there (PHYSICS.md §2);
+ * - `s`, `p`: one polarisation only.
+ */
+export const POLARIZATIONS = ['unpolarized', 'paper', 's', 'p'] as const;
+export type Polarization = (typeof POLARIZATIONS)[number];
+
+/** A film b of thickness d between an outside medium a and an inside medium c, lit at θ_i. */
+export interface FilmStack {
+  /** n_a, 1 ≤ n ≤ 4 */ readonly nOutside: number;
+  /** n_b, 1 ≤ n ≤ 4 */ readonly nFilm: number;
+  /** n_c, 1 ≤ n ≤ 4 */ readonly nInside: number;
+  /** d in nm, 0 ≤ d ≤ 20 000 (the documented domain; larger is finite but slow to integrate) */
+  readonly thicknessNm: number;
+  /** θ_i in degrees, 0 ≤ θ ≤ 90 */ readonly angleDeg: number;
+}
+
+export const SOAP_FILM_IN_AIR = { nOutside: 1, nFilm: 1.33, nInside: 1 } as const;
+
+/**
+ * The λ-independent factors of eq (13) for one polarisation channel:
+ * r = r_ab + (t_ab t_ba r_bc) e^{iφ} / (1 − r_ba r_bc e^{iφ}), and the transmitted amplitude
+ * t = (t_ab t_bc) e^{iφ/2} / (1 − r_ba r_bc e^{iφ}).
+ */
+export interface AiryTerms {
+  readonly rab: Complex;
+  /** t_ab t_ba r_bc: zero when no light enters the film (grazing incidence) */
+  readonly multiple: Complex;
+  /** r_ba r_bc, the round-trip factor of eq (13)'s geometric series */
+  readonly roundTrip: Complex;
+  /** t_ab t_bc */
+  readonly through: Complex;
+}
+
+/** Everything about a film that does not depend on λ (the indices are dispersionless). */
+export interface FilmOptics {
+  /** Channels whose reflectances are averaged: [s, p] for unpolarized, one otherwise. */
+  readonly channels: readonly AiryTerms[];
+  /** Δ = 2 n_b d cos θ_r in nm, the reduced form of eq (12); complex past the critical angle. */
+  readonly opticalPathNm: Complex;
+  /** Re(n_c cos θ_t) / (n_a cos θ_i), the ratio of normal energy fluxes for T; 0 at grazing. */
+  readonly fluxRatio: number;
+}
+
+const ZERO: Complex = { re: 0, im: 0 };
+const ONE: Complex = { re: 1, im: 0 };
+
+function airyTerms(ab: Complex[], ba: Complex[], bc: Complex[]): AiryTerms {
+  const [rab, tab] = ab as [Complex, Complex];
+  const [rba, tba] = ba as [Complex, Complex];
+  const [rbc, tbc] = bc as [Complex, Complex];
+  return { rab, multiple: cMul(cMul(tab, tba), rbc), roundTrip: cMul(rba, rbc), through: cMul(tab, tbc) };
+}
+
+const pick = (c: InterfaceCoefficients, pol: 's' | 'p'): Complex[] => (pol === 's' ? [c.rs, c.ts] : [c.rp, c.tp]);
+/** The paper's amplitude average, eqs (4) and (8). */
+const average = (c: InterfaceCoefficients): Complex[] => [
+  cScale(cAdd(c.rs, c.rp), 0.5),
+  cScale(cAdd(c.ts, c.tp), 0.5),
+];
+
+/** A zero-thickness film is no film: the bare a|c interface. */
+const bareInterface = ([r, t]: Complex[]): AiryTerms => ({
+  rab: r as Complex,
+  multiple: ZERO,
+  roundTrip: ZERO,
+  through: t as Complex,
+});
+
+/**
+ * The λ-independent part of the film's optics: Snell (eqs 1, 2), the Fresnel coefficients of
+ * the three interfaces a→b, b→a, b→c (eqs 5, 6, 9, 10, with eqs 4 and 8 in `paper` mode), and
+ * the optical path difference Δ (eq 12, reduced to 2 n_b d cos θ_r).
+ */
+export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpolarized'): FilmOptics {
+  const { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: d } = stack;
+  const { sin, cos } = sinCosDeg(stack.angleDeg);
+  const nSin = na * sin;
+  const cosI: Complex = { re: cos, im: 0 };
+  const cosR = refractedCos(nSin, nb);
+  const cosT = refractedCos(nSin, nc);
+  const fluxRatio = cos > 0 ? (nc * cosT.re) / (na * cos) : 0;
+  const opticalPathNm = cScale(cosR, 2 * nb * d);
+
+  const kinds: ('s' | 'p' | 'paper')[] =
+    polarization === 'unpolarized' ? ['s', 'p'] : [polarization === 'paper' ? 'paper' : polarization];
+  const select = (c: InterfaceCoefficients, kind: 's' | 'p' | 'paper') => (kind === 'paper' ? average(c) : pick(c, kind));
+
+  if (d === 0) {
+    const ac = fresnelCoefficients(na, cosI, nc, cosT);
+    return { channels: kinds.map((k) => bareInterface(select(ac, k))), opticalPathNm, fluxRatio };
+  }
+  const ab = fresnelCoefficients(na, cosI, nb, cosR);
+  const ba = fresnelCoefficients(nb, cosR, na, cosI);
+  const bc = fresnelCoefficients(nb, cosR, nc, cosT);
+  return {
+    channels: kinds.map((k) => airyTerms(select(ab, k), select(ba, k), select(bc, k))),
+    opticalPathNm,
+    fluxRatio,
+  };
+}
+
+/** e^{iφ} with φ = 2πΔ/λ, eq (11). */
+const phaseFactor = (optics: FilmOptics, lambdaNm: number, fraction = 1): Complex =>
+  cExpI(cScale(optics.opticalPathNm, (fraction * 2 * Math.PI) / lambdaNm));
+
+/**
+ * R at one wavelength, eqs (13)–(14), averaged over the channels. Domain: λ > 0.
+ * |r|² ≤ 1 holds exactly; rounding can overshoot it by an ulp under total reflection, so the
+ * result is held to [0, 1].
+ */
+export function reflectanceAt(optics: FilmOptics, lambdaNm: number): number {
+  const z = phaseFactor(optics, lambdaNm);
+  let sum = 0;
+  for (const c of optics.channels) {
+    const series = c.multiple.re === 0 && c.multiple.im === 0 ? ZERO : cDiv(cMul(c.multiple, z), cSub(ONE, cMul(c.roundTrip, z)));
+    sum += cAbs2(cAdd(c.rab, series));
+  }
+  return Math.min(1, sum / optics.channels.length);
+}
+
+/**
+ * T at one wavelength: |t|² times the flux ratio, with t = t_ab t_bc e^{iφ/2} / (1 − r_ba r_bc e^{iφ})
+ * (the transmitted counterpart of eq 13). For real indices R + T = 1 in the physical modes;
+ * the paper's amplitude average does not conserve energy, so its T is not 1 − R.
+ */
+export function transmittanceAt(optics: FilmOptics, lambdaNm: number): number {
+  if (optics.fluxRatio === 0) return 0;
+  const z = phaseFactor(optics, lambdaNm);
+  const zHalf = phaseFactor(optics, lambdaNm, 0.5);
+  let sum = 0;
+  for (const c of optics.channels) {
+    sum += cAbs2(cDiv(cMul(c.through, zHalf), cSub(ONE, cMul(c.roundTrip, z))));
+  }
+  return (optics.fluxRatio * sum) / optics.channels.length;
+}
+
+/** R(λ; n_a, n_b, n_c, d, θ_i): eqs (1)–(14) in one call. */
+export const filmReflectance = (lambdaNm: number, stack: FilmStack, polarization: Polarization = 'unpolarized') =>
+  reflectanceAt(filmOptics(stack, polarization), lambdaNm);
+
+/** T(λ; n_a, n_b, n_c, d, θ_i), the transmitted fraction. */
+export const filmTransmittance = (lambdaNm: number, stack: FilmStack, polarization: Polarization = 'unpolarized') =>
+  transmittanceAt(filmOptics(stack, polarization), lambdaNm);
+
+/**
+ * The mean of one channel's R over the phase window [φ0 − w, φ0 + w], in closed form.
+ *
+ * Eq (13) rewritten as r = (α + β z)/(1 − c z) with z = e^{iφ}, α = r_ab, β = t_ab t_ba r_bc − r_ab c,
+ * c = r_ba r_bc = ρ e^{iγ}, gives R = (a0 + 2 Re(ᾱβ z)) / D(ψ), a0 = |α|² + |β|²,
+ * D(ψ) = 1 + ρ² − 2ρ cos ψ, ψ = φ + γ. With u = ᾱβ/c the antiderivatives are elementary:
+ *   ∫ dψ/D = (ψ + 2 atan2(ρ sin ψ, 1 − ρ cos ψ)) / (1 − ρ²),   ∫ sin ψ dψ/D = ln D / (2ρ),
+ * so, writing δA for the atan2 difference over the window divided by w and L for
+ * ln(D(ψ0+w)/D(ψ0−w)) / (2w) (both formed without cancellation),
+ *   R̄ = (a0 (1 + δA) + Re u (2ρ² + (1 + ρ²) δA)) / (1 − ρ²) − Im u · L.
+ * This is how fringes finer than a wavelength bin or a table cell average instead of aliasing
+ * (PHYSICS.md §3). Domain: real φ0, w ≥ 0, ρ < 1 (ρ → 1 only at grazing, where R is |r_ab|²).
+ */
+export function meanChannelReflectance(c: AiryTerms, phaseCenter: number, halfWidth: number): number {
+  const alpha = c.rab;
+  const beta = cSub(c.multiple, cMul(c.rab, c.roundTrip));
+  const a0 = cAbs2(alpha) + cAbs2(beta);
+  const ab = cMul({ re: alpha.re, im: -alpha.im }, beta);
+  const rho2 = cAbs2(c.roundTrip);
+  const w = halfWidth;
+  const sinc = w === 0 ? 1 : Math.sin(w) / w;
+  if (c.multiple.re === 0 && c.multiple.im === 0) return cAbs2(alpha);
+  if (rho2 === 0) {
+    // No round trip: R = a0 + 2 Re(ᾱβ z), whose mean is exact with sinc(w).
+    return a0 + 2 * sinc * (ab.re * Math.cos(phaseCenter) - ab.im * Math.sin(phaseCenter));
+  }
+  const rho = Math.sqrt(rho2);
+  const psi0 = phaseCenter + Math.atan2(c.roundTrip.im, c.roundTrip.re);
+  const u = cDiv(ab, c.roundTrip);
+  const cosW = Math.cos(w), cos0 = Math.cos(psi0), sin0 = Math.sin(psi0);
+  // δA = [A(ψ0+w) − A(ψ0−w)] / w, A(ψ) = arg(1 − ρ e^{−iψ}); the difference is one atan2.
+  const y = 2 * rho * sinc * (cos0 - rho * cosW);
+  const x = 1 - 2 * rho * cos0 * cosW + rho2 * Math.cos(2 * w);
+  const dA = w < 1e-4 ? y / x : Math.atan2(y * w, x) / w;
+  // L = atanh(q)/w with q = (D+ − D−)/(D+ + D−) = 4ρ sin ψ0 sin w / (D+ + D−).
+  const dPlus = 1 + rho2 - 2 * rho * Math.cos(psi0 + w);
+  const dMinus = 1 + rho2 - 2 * rho * Math.cos(psi0 - w);
+  const qOverW = (4 * rho * sin0 * sinc) / (dPlus + dMinus);
+  const q = qOverW * w;
+  const L = Math.abs(q) < 1e-4 ? qOverW * (1 + (q * q) / 3) : (Math.atanh(q) / q) * qOverW;
+  return (a0 * (1 + dA) + u.re * (2 * rho2 + (1 + rho2) * dA)) / (1 - rho2) - u.im * L;
+}

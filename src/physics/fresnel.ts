@@ -1,0 +1,45 @@
+import { type Complex, cAdd, cDiv, cScale, cSub } from './complex.ts';
+
+/** Amplitude coefficients of one interface, medium 1 → medium 2. */
+export interface InterfaceCoefficients {
+  readonly rs: Complex;
+  readonly rp: Complex;
+  readonly ts: Complex;
+  readonly tp: Complex;
+}
+
+const NO_INTERFACE: InterfaceCoefficients = {
+  rs: { re: 0, im: 0 },
+  rp: { re: 0, im: 0 },
+  ts: { re: 1, im: 0 },
+  tp: { re: 1, im: 0 },
+};
+
+/**
+ * Fresnel amplitude coefficients from medium 1 (index n1, cos θ1) into medium 2 (n2, cos θ2),
+ * in the paper's sign convention:
+ *   r^s = (n1 cos θ1 − n2 cos θ2) / (n1 cos θ1 + n2 cos θ2)      eq (5)
+ *   r^p = (n2 cos θ1 − n1 cos θ2) / (n2 cos θ1 + n1 cos θ2)      eq (6)
+ *   t^s = 2 n1 cos θ1 / (n1 cos θ1 + n2 cos θ2)                  eq (9)
+ *   t^p = 2 n1 cos θ1 / (n1 cos θ2 + n2 cos θ1)                  eq (10)
+ * The reverse interface (2 → 1) is the same call with the media swapped.
+ * Cosines are complex (see snell.ts), so total internal reflection gives |r| = 1.
+ * Equal indices are no interface at all (r = 0, t = 1), also at grazing incidence where the
+ * formulas would read 0/0; for unequal indices the denominators never vanish.
+ * Domain: n1, n2 ≥ 1; cosines from `refractedCos`.
+ */
+export function fresnelCoefficients(n1: number, cos1: Complex, n2: number, cos2: Complex): InterfaceCoefficients {
+  if (n1 === n2) return NO_INTERFACE;
+  const n1c1 = cScale(cos1, n1);
+  const n2c2 = cScale(cos2, n2);
+  const n2c1 = cScale(cos1, n2);
+  const n1c2 = cScale(cos2, n1);
+  const sDen = cAdd(n1c1, n2c2);
+  const pDen = cAdd(n2c1, n1c2);
+  return {
+    rs: cDiv(cSub(n1c1, n2c2), sDen),
+    rp: cDiv(cSub(n2c1, n1c2), pDen),
+    ts: cDiv(cScale(n1c1, 2), sDen),
+    tp: cDiv(cScale(n1c1, 2), pDen),
+  };
+}

@@ -1,0 +1,178 @@
+import { describe, expect, it } from 'vitest';
+import { cAbs2 } from '../../../src/physics/complex.ts';
+import {
+  type FilmStack,
+  POLARIZATIONS,
+  filmOptics,
+  filmReflectance,
+  filmTransmittance,
+  meanChannelReflectance,
+  reflectanceAt,
+} from '../../../src/physics/filmReflectance.ts';
+import { fresnelCoefficients } from '../../../src/physics/fresnel.ts';
+import { refractedCos, sinCosDeg } from '../../../src/physics/snell.ts';
+
+/** Float64 formulas that are algebraically equal agree to a few ulps of their O(1) terms. */
+const ALGEBRAIC_TOL = 1e-12;
+/** The golden value in PHYSICS.md is given to 7 decimals. */
+const GOLDEN_TOL = 5e-8;
+
+const stack = (over: Partial<FilmStack>): FilmStack => ({ nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 0, ...over });
+
+/** Single-interface reflectances straight from the textbook forms (Hecht), not from fresnel.ts. */
+function bareInterface(n1: number, n2: number, angleDeg: number): { s: number; p: number } {
+  const t = (angleDeg * Math.PI) / 180;
+  const ci = Math.cos(t);
+  const st = (n1 / n2) * Math.sin(t);
+  if (st >= 1) return { s: 1, p: 1 };
+  const ct = Math.sqrt(1 - st * st);
+  return {
+    s: ((n1 * ci - n2 * ct) / (n1 * ci + n2 * ct)) ** 2,
+    p: ((n1 * ct - n2 * ci) / (n1 * ct + n2 * ci)) ** 2,
+  };
+}
+
+describe('film reflectance, eqs (1)–(14)', () => {
+  it('matches the golden value: n = 1.5 in air, d = 250 nm, λ = 555 nm, 0° → R = 0.1215919', () => {
+    expect(filmReflectance(555, stack({ nFilm: 1.5, thicknessNm: 250 }))).toBeCloseTo(0.1215919, 7);
+    expect(Math.abs(filmReflectance(555, stack({ nFilm: 1.5, thicknessNm: 250 })) - 0.1215919)).toBeLessThan(GOLDEN_TOL);
+  });
+
+  it('matches the normal-incidence closed form of a lossless film', () => {
+    // R = (r1² + r2² + 2 r1 r2 cos φ) / (1 + r1² r2² + 2 r1 r2 cos φ), r1 = (na−nb)/(na+nb), r2 = (nb−nc)/(nb+nc).
+    for (const [na, nb, nc, d, l] of [[1, 1.33, 1, 377, 612], [1.2, 2.4, 1.6, 1234, 433], [1, 1.05, 3.9, 20000, 701]] as const) {
+      const r1 = (na - nb) / (na + nb), r2 = (nb - nc) / (nb + nc);
+      const cos = Math.cos((4 * Math.PI * nb * d) / l);
+      const expected = (r1 * r1 + r2 * r2 + 2 * r1 * r2 * cos) / (1 + r1 * r1 * r2 * r2 + 2 * r1 * r2 * cos);
+      expect(filmReflectance(l, { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: d, angleDeg: 0 })).toBeCloseTo(expected, 12);
+    }
+  });
+
+  it('has its quarter-wave minimum ((na nc − nb²)/(na nc + nb²))²', () => {
+    for (const [na, nb, nc] of [[1, 1.33, 1], [1, 1.38, 1.52], [1.33, 2.2, 1]] as const) {
+      const l = 550;
+      const expected = ((na * nc - nb * nb) / (na * nc + nb * nb)) ** 2;
+      const got = filmReflectance(l, { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: l / (4 * nb), angleDeg: 0 });
+      expect(Math.abs(got - expected)).toBeLessThan(ALGEBRAIC_TOL);
+    }
+  });
+
+  it('tends to the bare outside|inside interface as the thickness goes to 0', () => {
+    for (const angle of [0, 20, 55, 80]) {
+      const bare = bareInterface(1.1, 1.7, angle);
+      for (const thicknessNm of [0, 1e-7]) {
+        const s = stack({ nOutside: 1.1, nFilm: 2.3, nInside: 1.7, thicknessNm, angleDeg: angle });
+        expect(Math.abs(filmReflectance(500, s, 's') - bare.s)).toBeLessThan(1e-9);
+        expect(Math.abs(filmReflectance(500, s, 'p') - bare.p)).toBeLessThan(1e-9);
+      }
+    }
+  });
+
+  it('is the single film|inside interface when the film has the outside index', () => {
+    for (const angle of [0, 35, 70]) {
+      const bare = bareInterface(1.4, 1.9, angle);
+      const s = stack({ nOutside: 1.4, nFilm: 1.4, nInside: 1.9, thicknessNm: 812, angleDeg: angle });
+      expect(Math.abs(filmReflectance(480, s, 's') - bare.s)).toBeLessThan(ALGEBRAIC_TOL);
+      expect(Math.abs(filmReflectance(480, s, 'p') - bare.p)).toBeLessThan(ALGEBRAIC_TOL);
+    }
+  });
+
+  it('has R_s = R_p at normal incidence', () => {
+    for (const d of [0, 123, 4567]) {
+      const s = stack({ nFilm: 1.7, nInside: 1.2, thicknessNm: d });
+      expect(Math.abs(filmReflectance(520, s, 's') - filmReflectance(520, s, 'p'))).toBeLessThan(ALGEBRAIC_TOL);
+    }
+  });
+
+  it('in the paper mode is exactly 0 at normal incidence (eqs 4 and 6 cancel), and not elsewhere', () => {
+    for (const d of [0, 250, 999]) expect(filmReflectance(555, stack({ thicknessNm: d }), 'paper')).toBe(0);
+    const oblique = filmReflectance(555, stack({ angleDeg: 30 }), 'paper');
+    expect(oblique).toBeGreaterThan(0);
+    expect(oblique).toBeLessThan(0.1 * filmReflectance(555, stack({ angleDeg: 30 })));
+  });
+
+  it('conserves energy: R + T = 1 for s, p and unpolarised light, TIR and frustrated TIR included', () => {
+    for (const [na, nb, nc, angle] of [[1, 1.33, 1, 40], [1.6, 1.2, 1.5, 60], [1.6, 1.4, 1.1, 70], [2, 3, 1, 89]] as const) {
+      for (const pol of ['s', 'p', 'unpolarized'] as const) {
+        const s = { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: 150, angleDeg: angle };
+        expect(Math.abs(filmReflectance(450, s, pol) + filmTransmittance(450, s, pol) - 1)).toBeLessThan(ALGEBRAIC_TOL);
+      }
+    }
+  });
+
+  it('reflects everything at grazing incidence and under total internal reflection with a thick film', () => {
+    for (const pol of POLARIZATIONS) expect(filmReflectance(500, stack({ angleDeg: 90 }), pol)).toBe(1);
+    // n_a sin θ > n_c and > n_b: the film is evanescent; 20 µm of it lets nothing through.
+    expect(filmReflectance(500, { nOutside: 1.6, nFilm: 1.2, nInside: 1.1, thicknessNm: 20000, angleDeg: 70 })).toBeCloseTo(1, 12);
+  });
+
+  it('with every index equal, reflects nothing at any angle, grazing included', () => {
+    for (const angle of [0, 45, 90]) expect(filmReflectance(600, { nOutside: 1.5, nFilm: 1.5, nInside: 1.5, thicknessNm: 300, angleDeg: angle })).toBe(0);
+  });
+});
+
+describe('Snell, Fresnel and the phase, eqs (1)–(12)', () => {
+  it('obeys the Stokes relations r_ba = −r_ab and t_ab t_ba − r_ab r_ba = 1', () => {
+    const { sin, cos } = sinCosDeg(37);
+    const nSin = 1.2 * sin;
+    const ci = { re: cos, im: 0 };
+    const cr = refractedCos(nSin, 1.9);
+    const ab = fresnelCoefficients(1.2, ci, 1.9, cr);
+    const ba = fresnelCoefficients(1.9, cr, 1.2, ci);
+    for (const [r1, r2, t1, t2] of [[ab.rs, ba.rs, ab.ts, ba.ts], [ab.rp, ba.rp, ab.tp, ba.tp]] as const) {
+      expect(r1.re + r2.re).toBeCloseTo(0, 14);
+      expect(t1.re * t2.re - r1.re * r2.re).toBeCloseTo(1, 14);
+    }
+  });
+
+  it('gives |r| = 1 past the critical angle', () => {
+    const { sin, cos } = sinCosDeg(60);
+    const c = fresnelCoefficients(1.5, { re: cos, im: 0 }, 1, refractedCos(1.5 * sin, 1));
+    expect(cAbs2(c.rs)).toBeCloseTo(1, 14);
+    expect(cAbs2(c.rp)).toBeCloseTo(1, 14);
+  });
+
+  it("uses Δ = 2 n_b d cos θ_r, equal to the paper's eq (12) with θ_ro = θ_ri", () => {
+    for (const [na, nb, d, angle] of [[1, 1.33, 500, 30], [1.2, 2.5, 1234, 75], [1, 1.05, 80, 5]] as const) {
+      const ti = (angle * Math.PI) / 180;
+      const tr = Math.asin((na * Math.sin(ti)) / nb);
+      const eq12 = nb * d * (2 / Math.cos(tr)) - na * d * (2 * Math.tan(tr)) * Math.sin(ti);
+      const optics = filmOptics({ nOutside: na, nFilm: nb, nInside: 1, thicknessNm: d, angleDeg: angle });
+      expect(optics.opticalPathNm.re).toBeCloseTo(eq12, 9);
+    }
+  });
+});
+
+describe('the closed-form mean of R over a phase window', () => {
+  const numericMean = (optics: ReturnType<typeof filmOptics>, i: number, phi0: number, w: number) => {
+    const c = optics.channels[i]!;
+    const lambda = (phi: number) => (2 * Math.PI * optics.opticalPathNm.re) / phi;
+    const one = { ...optics, channels: [c] };
+    const n = 20000;
+    let sum = 0;
+    for (let k = 0; k < n; k++) sum += reflectanceAt(one, lambda(phi0 - w + (2 * w * (k + 0.5)) / n));
+    return sum / n;
+  };
+  it('equals the numerical average of eq (14) over the window (midpoint rule, 20 000 points)', () => {
+    const cases = [
+      [stack({ angleDeg: 30 }), 'unpolarized'],
+      [{ nOutside: 1, nFilm: 2.5, nInside: 1.2, thicknessNm: 500, angleDeg: 80 }, 'unpolarized'],
+      [stack({ angleDeg: 30 }), 'paper'],
+      [{ nOutside: 1.5, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 45 }, 's'],
+      [stack({ angleDeg: 89.9 }), 's'],
+    ] as const;
+    for (const [s, pol] of cases) {
+      const optics = filmOptics(s, pol);
+      optics.channels.forEach((c, i) => {
+        for (const [phi0, w] of [[9.3, 0.01], [17.1, 0.5], [100.2, 2], [40, 3.14159], [60, 10]] as const) {
+          expect(Math.abs(meanChannelReflectance(c, phi0, w) - numericMean(optics, i, phi0, w))).toBeLessThan(1e-7);
+        }
+      });
+    }
+  });
+  it('is the point value for a zero-width window', () => {
+    const optics = filmOptics(stack({ angleDeg: 20 }), 's');
+    const phi = (2 * Math.PI * optics.opticalPathNm.re) / 500;
+    expect(meanChannelReflectance(optics.channels[0]!, phi, 0)).toBeCloseTo(reflectanceAt(optics, 500), 12);
+  });
+});
