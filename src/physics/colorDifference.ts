@@ -17,5 +17,5 @@ const ciede2000 = differenceCiede2000();
 
 /** ΔE00 (CIEDE2000, by culori) between two XYZ colours seen under the same white. */
 export function deltaE00(a: Xyz, b: Xyz, white: Xyz): number {
-  return ciede2000({ mode: 'lab', ...xyzToLab(a, white) }, { mode: 'lab', ...xyzToLab(b, white) });
+  return ciede2000({ mode: 'lab65', ...xyzToLab(a, white) }, { mode: 'lab65', ...xyzToLab(b, white) });
 }

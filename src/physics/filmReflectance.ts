@@ -1,6 +1,6 @@
 import { type Complex, cAbs2, cAdd, cDiv, cExpI, cMul, cScale, cSub } from './complex.ts';
 import { type InterfaceCoefficients, fresnelCoefficients } from './fresnel.ts';
-import { refractedCos, sinCosDeg } from './snell.ts';
+import { cosDeg, refractedCos } from './snell.ts';
 
 /**
  * How the two polarisations are combined:
@@ -45,7 +45,7 @@ export interface FilmOptics {
   readonly channels: readonly AiryTerms[];
   /** Δ = 2 n_b d cos θ_r in nm, the reduced form of eq (12); complex past the critical angle. */
   readonly opticalPathNm: Complex;
-  /** Re(n_c cos θ_t) / (n_a cos θ_i), the ratio of normal energy fluxes for T; 0 at grazing. */
+  /** Re(n_c cos θ_t) / (n_a cos θ_i), the ratio of normal energy fluxes for T (its limit at grazing). */
   readonly fluxRatio: number;
 }
 
@@ -81,12 +81,14 @@ const bareInterface = ([r, t]: Complex[]): AiryTerms => ({
  */
 export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpolarized'): FilmOptics {
   const { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: d } = stack;
-  const { sin, cos } = sinCosDeg(stack.angleDeg);
-  const nSin = na * sin;
-  const cosI: Complex = { re: cos, im: 0 };
-  const cosR = refractedCos(nSin, nb);
-  const cosT = refractedCos(nSin, nc);
-  const fluxRatio = cos > 0 ? (nc * cosT.re) / (na * cos) : 0;
+  const cos = cosDeg(stack.angleDeg);
+  const cosI = refractedCos(na, na, cos);
+  const cosR = refractedCos(nb, na, cos);
+  const cosT = refractedCos(nc, na, cos);
+  // At exact grazing incidence no energy crosses any real interface (R = 1); only where there is
+  // no interface at all (n_c = n_a and the film absent or index-matched) does the light go on.
+  const noInterface = na === nc && (d === 0 || na === nb);
+  const fluxRatio = cos > 0 ? (nc * cosT.re) / (na * cosI.re) : noInterface ? 1 : 0;
   const opticalPathNm = cScale(cosR, 2 * nb * d);
 
   const kinds: ('s' | 'p' | 'paper')[] =
