@@ -1,5 +1,5 @@
 import { CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, CIE1931_XBAR, CIE1931_YBAR, CIE1931_ZBAR } from './data/cie1931Cmf2deg.ts';
-import { type FilmOptics, type FilmStack, type Polarization, filmOptics, reflectanceAt } from './filmReflectance.ts';
+import { type FilmOptics, type FilmStack, type Polarization, filmOptics, meanChannelReflectance, reflectanceAt } from './filmReflectance.ts';
 import { type IlluminantSpec, illuminantKey, illuminantSpd, interpolateTable } from './illuminants.ts';
 
 /** The integration range of eqs (16)–(18). */
@@ -129,3 +129,61 @@ export function filmXyz(stack: FilmStack, options: ColorOptions = {}): Xyz {
 /** XYZ of the illuminant itself (a perfect white reflector), the white point for CIELAB. */
 export const whiteXyz = (illuminant: IlluminantSpec, normalization: Normalization = 'white'): Xyz =>
   integrateXyz(() => 1, spectralWeights(illuminant, normalization), 1);
+
+/**
+ * The shader's integration (mirrored by `shaders/spectralIntegration.glsl`): `count` equal
+ * wavelength bins over 380–830 nm, each holding ∫_bin I_in x̄, ȳ, z̄ dλ / k (exact for the
+ * piecewise-linear 1 nm weights), so X = Σ_bins W_bin · R̄_bin with R̄_bin the closed-form mean of
+ * R over the bin's phase window (`meanChannelReflectance`). Fringes narrower than a bin average
+ * out instead of aliasing. `count` must divide 450 so bins end on 1 nm knots.
+ */
+export interface SpectralBins {
+  readonly count: number;
+  /** [X, Y, Z] weight of bin i at 3i..3i+2 */
+  readonly weights: Float64Array;
+}
+
+export const BIN_COUNTS = [10, 15, 18, 25, 30, 45, 50, 75, 90, 150, 225, 450] as const;
+
+export function spectralBins(w: SpectralWeights, count: number): SpectralBins {
+  if (!Number.isInteger(count) || SPAN_NM % count !== 0) throw new RangeError(`bins: ${count} must divide ${SPAN_NM}`);
+  const perBin = SPAN_NM / count;
+  const weights = new Float64Array(3 * count);
+  for (let b = 0; b < count; b++) {
+    for (let j = 0; j < perBin; j++) {
+      const i = b * perBin + j; // trapezoid over [i, i + 1] nm
+      [w.x, w.y, w.z].forEach((t, k) => {
+        weights[3 * b + k] = (weights[3 * b + k] as number) + ((t[i] as number) + (t[i + 1] as number)) / 2;
+      });
+    }
+  }
+  return { count, weights };
+}
+
+/**
+ * XYZ by bins, as the shader computes it. `extraHalfWidthPerInvNm` widens every bin's phase
+ * window by that many radians × (nm/λ), in quadrature (variances of box filters add): the table
+ * pass uses it to average over a table cell's thickness range, 2π · 2 n_b cos θ_r · (δd/2) / λ.
+ */
+export function binnedXyz(optics: FilmOptics, bins: SpectralBins, extraHalfWidthPerInvNm = 0): Xyz {
+  const width = SPAN_NM / bins.count;
+  const path = optics.opticalPathNm;
+  const xyz = [0, 0, 0];
+  for (let b = 0; b < bins.count; b++) {
+    const l1 = LAMBDA_MIN_NM + b * width;
+    const l2 = l1 + width;
+    let r = 0;
+    if (path.im !== 0) {
+      r = reflectanceAt(optics, (l1 + l2) / 2); // evanescent film: no fringes to average
+    } else {
+      const center = Math.PI * path.re * (1 / l1 + 1 / l2);
+      const binHalf = Math.PI * path.re * (1 / l1 - 1 / l2);
+      const extra = (2 * extraHalfWidthPerInvNm) / (l1 + l2);
+      const half = Math.hypot(binHalf, extra);
+      for (const c of optics.channels) r += meanChannelReflectance(c, center, half);
+      r /= optics.channels.length;
+    }
+    for (let k = 0; k < 3; k++) xyz[k] = (xyz[k] as number) + r * (bins.weights[3 * b + k] as number);
+  }
+  return [xyz[0] as number, xyz[1] as number, xyz[2] as number];
+}

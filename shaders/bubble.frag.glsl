@@ -1,0 +1,38 @@
+// The bubble: the near wall reflects the illuminant with the film's colour; through it (T = 1 - R
+// per channel) the far wall, seen from inside at the same θ_i, and through that the environment.
+// Defines: FILM_MODE, THICKNESS_FIELD, SIDES (1 front | 2 both), ENVIRONMENT, HATCH_OUT_OF_GAMUT.
+#include "thicknessField.glsl"
+#include "filmColor.glsl"
+#include "colorConversions.glsl"
+#include "environment.glsl"
+
+uniform mat3 uXyzToLinearWorking;   // XYZ -> three.js's working space (linear sRGB, eq 19)
+uniform mat3 uXyzToLinearDisplay;   // XYZ -> the display's linear space, for the gamut test
+uniform float uExposure;
+
+varying vec3 vWorldPosition;
+varying vec3 vWorldNormal;
+varying vec3 vSpherePoint;
+
+void main() {
+  vec3 toEye = normalize(cameraPosition - vWorldPosition);
+  vec3 normal = normalize(vWorldNormal);
+  float cosIncidence = clamp(abs(dot(normal, toEye)), 0.0, 1.0);
+  vec3 nearXyz = filmXyz(thicknessAt(vSpherePoint), cosIncidence, false);
+  vec3 nearR = xyzToLinearRgb(uXyzToLinearWorking, nearXyz);
+  vec3 behind = environmentRadiance(-toEye);
+#if SIDES == 2
+  // The chord through a unit sphere at incidence θ has length 2 cos θ; the exit point's film is
+  // met at the same θ from inside. (Object space = world space up to the sphere's scale.)
+  vec3 farPoint = normalize(vSpherePoint - 2.0 * cosIncidence * toEye);
+  vec3 farR = xyzToLinearRgb(uXyzToLinearWorking, filmXyz(thicknessAt(farPoint), cosIncidence, true));
+  behind = uExposure * farR + clamp(1.0 - farR, 0.0, 1.0) * behind;
+#endif
+  vec3 color = uExposure * nearR + clamp(1.0 - nearR, 0.0, 1.0) * behind;
+#if HATCH_OUT_OF_GAMUT
+  vec3 display = xyzToLinearRgb(uXyzToLinearDisplay, uExposure * nearXyz);
+  if (outsideGamut(display) && mod(gl_FragCoord.x + gl_FragCoord.y, 8.0) < 2.0) color = vec3(1.0, 0.0, 1.0);
+#endif
+  gl_FragColor = vec4(color, 1.0);
+  #include <colorspace_fragment>
+}

@@ -1,0 +1,17 @@
+// The environment seen through the bubble: ENVIRONMENT 0 none (black) | 1 a procedural sky
+// (blue zenith, pale horizon, dark green ground), in linear sRGB.
+#ifndef THIN_FILM_ENVIRONMENT
+#define THIN_FILM_ENVIRONMENT
+
+vec3 environmentRadiance(vec3 direction) {
+#if ENVIRONMENT == 0
+  return vec3(0.0);
+#else
+  float y = normalize(direction).y;
+  vec3 sky = mix(vec3(0.60, 0.70, 0.80), vec3(0.10, 0.25, 0.60), smoothstep(0.0, 0.8, y));
+  vec3 ground = mix(vec3(0.20, 0.22, 0.16), vec3(0.05, 0.08, 0.04), smoothstep(0.0, -0.6, y));
+  return y >= 0.0 ? sky : ground;
+#endif
+}
+
+#endif

@@ -1,0 +1,114 @@
+// Film reflectance by the Airy sum, eqs (1)-(14), and its closed-form mean over a phase window.
+// Mirrors src/physics/filmReflectance.ts. Defines:
+//   POLARIZATION  0 unpolarized (R_s + R_p)/2 | 1 paper (eqs 4, 8: amplitudes averaged) | 2 s | 3 p
+#ifndef THIN_FILM_REFLECTANCE
+#define THIN_FILM_REFLECTANCE
+#include "complex.glsl"
+#include "snell.glsl"
+#include "fresnel.glsl"
+
+#ifndef POLARIZATION
+#define POLARIZATION 0
+#endif
+#if POLARIZATION == 0
+#define FILM_CHANNELS 2
+#else
+#define FILM_CHANNELS 1
+#endif
+
+// The λ-independent factors of eq (13) for one channel:
+// r = r_ab + multiple e^{iφ} / (1 - roundTrip e^{iφ}), multiple = t_ab t_ba r_bc, roundTrip = r_ba r_bc.
+struct AiryTerms { vec2 rab; vec2 multiple; vec2 roundTrip; };
+
+struct FilmOptics {
+  AiryTerms channels[FILM_CHANNELS];
+  // Δ = 2 n_b d cos θ_r (eq 12 reduced), complex past the critical angle
+  vec2 opticalPathNm;
+};
+
+// (r, t) of one interface for channel kind 0 = s, 1 = p, 2 = the paper's average (eqs 4, 8).
+vec4 channelOf(InterfaceCoefficients c, int kind) {
+  if (kind == 0) return vec4(c.rs, c.ts);
+  if (kind == 1) return vec4(c.rp, c.tp);
+  return 0.5 * vec4(c.rs + c.rp, c.ts + c.tp);
+}
+
+AiryTerms airyTerms(InterfaceCoefficients ab, InterfaceCoefficients ba, InterfaceCoefficients bc, int kind) {
+  vec4 a = channelOf(ab, kind);
+  vec4 b = channelOf(ba, kind);
+  vec4 c = channelOf(bc, kind);
+  return AiryTerms(a.xy, cMul(cMul(a.zw, b.zw), c.xy), cMul(b.xy, c.xy));
+}
+
+int channelKind(int i) {
+#if POLARIZATION == 0
+  return i;
+#elif POLARIZATION == 1
+  return 2;
+#elif POLARIZATION == 2
+  return 0;
+#else
+  return 1;
+#endif
+}
+
+FilmOptics filmOptics(float nOutside, float nFilm, float nInside, float thicknessNm, float cosIncidence) {
+  vec2 cosI = refractedCos(nOutside, nOutside, cosIncidence);
+  vec2 cosR = refractedCos(nFilm, nOutside, cosIncidence);
+  vec2 cosT = refractedCos(nInside, nOutside, cosIncidence);
+  FilmOptics o;
+  o.opticalPathNm = 2.0 * nFilm * thicknessNm * cosR;
+  if (thicknessNm == 0.0) {
+    // A zero-thickness film is no film: the bare a|c interface.
+    InterfaceCoefficients ac = fresnelCoefficients(nOutside, cosI, nInside, cosT);
+    for (int i = 0; i < FILM_CHANNELS; i++) o.channels[i] = AiryTerms(channelOf(ac, channelKind(i)).xy, vec2(0.0), vec2(0.0));
+    return o;
+  }
+  InterfaceCoefficients ab = fresnelCoefficients(nOutside, cosI, nFilm, cosR);
+  InterfaceCoefficients ba = fresnelCoefficients(nFilm, cosR, nOutside, cosI);
+  InterfaceCoefficients bc = fresnelCoefficients(nFilm, cosR, nInside, cosT);
+  for (int i = 0; i < FILM_CHANNELS; i++) o.channels[i] = airyTerms(ab, ba, bc, channelKind(i));
+  return o;
+}
+
+// R at one wavelength, eqs (11), (13), (14), averaged over the channels.
+float reflectanceAt(FilmOptics o, float lambdaNm) {
+  vec2 z = cExpI(o.opticalPathNm * (6.283185307179586 / lambdaNm));
+  float sum = 0.0;
+  for (int i = 0; i < FILM_CHANNELS; i++) {
+    AiryTerms c = o.channels[i];
+    vec2 series = (c.multiple == vec2(0.0)) ? vec2(0.0) : cDiv(cMul(c.multiple, z), vec2(1.0, 0.0) - cMul(c.roundTrip, z));
+    sum += cAbs2(c.rab + series);
+  }
+  return min(1.0, sum / float(FILM_CHANNELS));
+}
+
+// The mean of one channel's R over phases [φ0 - w, φ0 + w] in closed form; the derivation is in
+// src/physics/filmReflectance.ts (meanChannelReflectance).
+float meanChannelReflectance(AiryTerms c, float phaseCenter, float halfWidth) {
+  vec2 alpha = c.rab;
+  vec2 beta = c.multiple - cMul(c.rab, c.roundTrip);
+  float a0 = cAbs2(alpha) + cAbs2(beta);
+  vec2 ab = cMul(vec2(alpha.x, -alpha.y), beta);
+  float rho2 = cAbs2(c.roundTrip);
+  float w = halfWidth;
+  float sinc = w == 0.0 ? 1.0 : sin(w) / w;
+  if (c.multiple == vec2(0.0)) return cAbs2(alpha);
+  if (rho2 == 0.0) return a0 + 2.0 * sinc * (ab.x * cos(phaseCenter) - ab.y * sin(phaseCenter));
+  float rho = sqrt(rho2);
+  float psi0 = phaseCenter + atan(c.roundTrip.y, c.roundTrip.x);
+  vec2 u = cDiv(ab, c.roundTrip);
+  float cosW = cos(w), cos0 = cos(psi0), sin0 = sin(psi0);
+  float y = 2.0 * rho * sinc * (cos0 - rho * cosW);
+  float x = 1.0 - 2.0 * rho * cos0 * cosW + rho2 * cos(2.0 * w);
+  float dA = w < 1e-4 ? y / x : atan(y * w, x) / w;
+  float dPlus = 1.0 + rho2 - 2.0 * rho * cos(psi0 + w);
+  float dMinus = 1.0 + rho2 - 2.0 * rho * cos(psi0 - w);
+  float qOverW = 4.0 * rho * sin0 * sinc / (dPlus + dMinus);
+  float q = qOverW * w;
+  float L = abs(q) < 1e-3 ? qOverW * (1.0 + q * q / 3.0) : atanh(q) / q * qOverW;
+  float mean = (a0 * (1.0 + dA) + u.x * (2.0 * rho2 + (1.0 + rho2) * dA)) / (1.0 - rho2) - u.y * L;
+  return clamp(mean, 0.0, 1.0);
+}
+
+#endif

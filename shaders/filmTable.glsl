@@ -1,0 +1,27 @@
+// The table of film XYZ over (thickness, cos θ_i), FILM_TABLE_WIDTH x 2 * FILM_TABLE_ROWS texels:
+// the lower half for light arriving from outside (n_a = uNOutside), the upper half from inside
+// (media swapped: the far wall of the bubble). Texel centres map to the ends of each range.
+// Each texel averages over its thickness cell so fringes finer than a cell do not alias.
+// Mirrors src/render/filmTable.ts.
+#include "spectralIntegration.glsl"
+
+uniform float uNOutside;
+uniform float uNFilm;
+uniform float uNInside;
+uniform float uTableMaxThicknessNm;
+
+
+void main() {
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  bool fromInside = texel.y >= FILM_TABLE_ROWS;
+  int row = fromInside ? texel.y - FILM_TABLE_ROWS : texel.y;
+  float cellNm = uTableMaxThicknessNm / float(FILM_TABLE_WIDTH - 1);
+  float thicknessNm = float(texel.x) * cellNm;
+  float cosIncidence = float(row) / float(FILM_TABLE_ROWS - 1);
+  float na = fromInside ? uNInside : uNOutside;
+  float nc = fromInside ? uNOutside : uNInside;
+  FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
+  // Phase half-width of a cell at λ: 2π · 2 n_b cos θ_r · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).
+  float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : 2.0 * uNFilm * refractedCos(uNFilm, na, cosIncidence).x;
+  gl_FragColor = vec4(binnedXyz(o, 3.141592653589793 * perNmPath * cellNm), 1.0);
+}

@@ -1,0 +1,40 @@
+// XYZ of the reflected light, eqs (15)-(18), by SPECTRAL_BINS equal wavelength bins over
+// 380-830 nm: X = sum over bins of W_bin * mean R over the bin's phase window.
+// uSpectralBins (SPECTRAL_BINS x 1, RGBA float) holds each bin's integral of I_in x̄, ȳ, z̄ / k,
+// computed once in TypeScript. Mirrors binnedXyz in src/physics/spectralIntegration.ts.
+#ifndef THIN_FILM_SPECTRAL
+#define THIN_FILM_SPECTRAL
+#include "filmReflectance.glsl"
+
+#ifndef SPECTRAL_BINS
+#define SPECTRAL_BINS 90
+#endif
+
+uniform sampler2D uSpectralBins;
+
+// extraHalfWidthPerInvNm widens each bin's phase window (in quadrature) by that × (nm / λ):
+// the table pass averages over a cell's thickness range with it.
+vec3 binnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
+  const float width = 450.0 / float(SPECTRAL_BINS);
+  vec2 path = o.opticalPathNm;
+  vec3 xyz = vec3(0.0);
+  for (int b = 0; b < SPECTRAL_BINS; b++) {
+    float l1 = 380.0 + float(b) * width;
+    float l2 = l1 + width;
+    float r = 0.0;
+    if (path.y != 0.0) {
+      r = reflectanceAt(o, 0.5 * (l1 + l2));
+    } else {
+      float center = 3.141592653589793 * path.x * (1.0 / l1 + 1.0 / l2);
+      float binHalf = 3.141592653589793 * path.x * (1.0 / l1 - 1.0 / l2);
+      float extra = 2.0 * extraHalfWidthPerInvNm / (l1 + l2);
+      float halfWidth = length(vec2(binHalf, extra));
+      for (int i = 0; i < FILM_CHANNELS; i++) r += meanChannelReflectance(o.channels[i], center, halfWidth);
+      r /= float(FILM_CHANNELS);
+    }
+    xyz += r * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
+  }
+  return xyz;
+}
+
+#endif

@@ -1,0 +1,118 @@
+import { type FilmStack, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
+import { DAYLIGHT_CCT_MAX_K, DAYLIGHT_CCT_MIN_K, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
+import { type Normalization, NORMALIZATIONS } from '../physics/spectralIntegration.ts';
+import { oneOf, rejectValue } from './inputErrors.ts';
+
+/** One film to colour: what the command line or one entry of a cases file describes. */
+export interface ColorCase {
+  readonly id: string | number;
+  readonly stack: FilmStack;
+  readonly illuminant: IlluminantSpec;
+  readonly polarization: Polarization;
+  readonly normalization: Normalization;
+  /** Wavelengths at which R(λ) is reported as well. */
+  readonly wavelengthsNm: readonly number[];
+}
+
+/** A closed interval of allowed numbers, with its unit for messages. */
+export interface NumberDomain {
+  readonly min: number;
+  readonly max: number;
+  readonly unit: string;
+}
+
+/**
+ * The numeric fields of a case, with the domain documented on `FilmStack` (filmReflectance.ts)
+ * and the default when a case leaves one out: a 500 nm soap film in air seen head-on.
+ */
+export const NUMBER_FIELDS = {
+  thicknessNm: { min: 0, max: 20_000, unit: 'nm', fallback: 500 },
+  angleDeg: { min: 0, max: 90, unit: 'degrees', fallback: 0 },
+  nOutside: { min: 1, max: 4, unit: '', fallback: SOAP_FILM_IN_AIR.nOutside },
+  nFilm: { min: 1, max: 4, unit: '', fallback: SOAP_FILM_IN_AIR.nFilm },
+  nInside: { min: 1, max: 4, unit: '', fallback: SOAP_FILM_IN_AIR.nInside },
+} as const satisfies Record<string, NumberDomain & { fallback: number }>;
+export type NumberField = keyof typeof NUMBER_FIELDS;
+
+export const CASE_FIELDS = [
+  'id',
+  ...(Object.keys(NUMBER_FIELDS) as NumberField[]),
+  'illuminant',
+  'polarization',
+  'normalization',
+  'wavelengthsNm',
+] as const;
+export type CaseField = (typeof CASE_FIELDS)[number];
+
+/** Where R(λ) may be asked for: the range of the CIE daylight tables. */
+export const WAVELENGTH_DOMAIN_NM: NumberDomain = { min: 300, max: 830, unit: 'nm' };
+export const MAX_WAVELENGTHS = 10_000;
+export const MAX_ID_CHARS = 200;
+export const DAYLIGHT_CCT_DOMAIN_K: NumberDomain = { min: DAYLIGHT_CCT_MIN_K, max: DAYLIGHT_CCT_MAX_K, unit: 'K' };
+
+export const expectedNumber = (d: NumberDomain): string => `a number in [${d.min}, ${d.max}]${d.unit ? ` ${d.unit}` : ''}`;
+export const ILLUMINANT_EXPECTED =
+  `one of ${NAMED_ILLUMINANTS.join(', ')} or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`;
+
+export const isInDomain = (value: unknown, d: NumberDomain): value is number =>
+  typeof value === 'number' && Number.isFinite(value) && value >= d.min && value <= d.max;
+
+/** A case's fields before checking: numbers already numbers, absent fields undefined. */
+export type RawCase = Readonly<Partial<Record<CaseField, unknown>>>;
+
+/**
+ * The checked case, defaults filled in, or a ParameterError for the first bad field.
+ * `nameOf` says how a field is called where it came from (`--thickness` on the command line).
+ */
+export function validateColorCase(raw: RawCase, index: number, nameOf: (field: CaseField) => string = (f) => f): ColorCase {
+  const number = (field: NumberField): number => {
+    const d = NUMBER_FIELDS[field];
+    const value = raw[field];
+    if (value === undefined) return d.fallback;
+    return isInDomain(value, d) ? value : rejectValue(nameOf(field), value, expectedNumber(d));
+  };
+  const orDefault = (field: CaseField, fallback: string) => (raw[field] === undefined ? fallback : raw[field]);
+  return {
+    id: validateId(raw.id, index, nameOf('id')),
+    stack: {
+      nOutside: number('nOutside'),
+      nFilm: number('nFilm'),
+      nInside: number('nInside'),
+      thicknessNm: number('thicknessNm'),
+      angleDeg: number('angleDeg'),
+    },
+    illuminant: validateIlluminant(raw.illuminant, nameOf('illuminant')),
+    polarization: oneOf(nameOf('polarization'), orDefault('polarization', 'unpolarized'), POLARIZATIONS),
+    normalization: oneOf(nameOf('normalization'), orDefault('normalization', 'white'), NORMALIZATIONS),
+    wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm')),
+  };
+}
+
+/** An id is a string (≤ MAX_ID_CHARS) or a finite number; absent, it is the case's index. */
+export const isValidId = (id: unknown): id is string | number =>
+  (typeof id === 'string' && id.length <= MAX_ID_CHARS) || (typeof id === 'number' && Number.isFinite(id));
+
+function validateId(id: unknown, index: number, name: string): string | number {
+  if (id === undefined) return index;
+  return isValidId(id) ? id : rejectValue(name, id, `a string of at most ${MAX_ID_CHARS} characters or a number`);
+}
+
+function validateIlluminant(value: unknown, name: string): IlluminantSpec {
+  if (value === undefined) return 'D65';
+  if (typeof value === 'string' && (NAMED_ILLUMINANTS as readonly string[]).includes(value)) return value as IlluminantSpec;
+  const isObject = typeof value === 'object' && value !== null && !Array.isArray(value);
+  if (isObject && Object.keys(value).join() === 'daylightCct') {
+    const cct = (value as { daylightCct: unknown }).daylightCct;
+    if (isInDomain(cct, DAYLIGHT_CCT_DOMAIN_K)) return { daylightCct: cct };
+  }
+  return rejectValue(name, value, ILLUMINANT_EXPECTED);
+}
+
+function validateWavelengths(value: unknown, name: string): readonly number[] {
+  if (value === undefined) return [];
+  const expected = expectedNumber(WAVELENGTH_DOMAIN_NM);
+  if (!Array.isArray(value)) return rejectValue(name, value, `an array of numbers, each ${expected}`);
+  if (value.length > MAX_WAVELENGTHS) return rejectValue(name, value, `at most ${MAX_WAVELENGTHS} wavelengths`);
+  value.forEach((v: unknown, i) => isInDomain(v, WAVELENGTH_DOMAIN_NM) || rejectValue(`${name}[${i}]`, v, expected));
+  return value as number[];
+}

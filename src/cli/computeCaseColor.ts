@@ -1,0 +1,57 @@
+import {
+  type GamutMapping,
+  type Rgb,
+  XYZ_TO_LINEAR_DISPLAY_P3,
+  XYZ_TO_LINEAR_SRGB,
+  XYZ_TO_LINEAR_WIDE_GAMUT,
+  applyMatrix3,
+  encode8,
+  mapToGamut,
+} from '../physics/colorConversions.ts';
+import { filmOptics, reflectanceAt } from '../physics/filmReflectance.ts';
+import type { IlluminantSpec } from '../physics/illuminants.ts';
+import { type Normalization, type Xyz, filmXyz } from '../physics/spectralIntegration.ts';
+import type { ColorCase } from './colorCase.ts';
+
+/** What the CLI reports for one case. */
+export interface CaseColor {
+  readonly id: string | number;
+  readonly illuminant: IlluminantSpec;
+  /** Which k of eqs (16)–(18) scales `xyz`: `white` (Y = 1 for a perfect reflector) or `paper`. */
+  readonly normalization: Normalization;
+  readonly xyz: Xyz;
+  /** Eq (19), not clipped: out-of-gamut colours show as channels < 0 or > 1. */
+  readonly linearSrgb: Rgb;
+  /** round(255 · sRGB-encode(gamut-mapped linear sRGB)). */
+  readonly srgb8: Rgb;
+  /** Eq (20), the paper's Wide Gamut RGB, not clipped. */
+  readonly linearWideGamut: Rgb;
+  /** Like `srgb8` with the Display P3 matrix (P3 uses the sRGB transfer function). */
+  readonly displayP3_8: Rgb;
+  /** R(λ) at each of the case's `wavelengthsNm`, eqs (1)–(14). */
+  readonly reflectance: readonly number[];
+}
+
+/** 8-bit codes of a linear colour after mapping it into [0, 1] (Y is the luminance it keeps). */
+const to8Bit = (linear: Rgb, luminance: number, gamut: GamutMapping): Rgb => {
+  const [r, g, b] = mapToGamut(linear, luminance, gamut);
+  return [encode8(r), encode8(g), encode8(b)];
+};
+
+/** The colour of one case: eqs (15)–(18) for XYZ, then the paper's matrices and display encodings. */
+export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
+  const xyz = filmXyz(c.stack, { illuminant: c.illuminant, polarization: c.polarization, normalization: c.normalization });
+  const linearSrgb = applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz);
+  const optics = filmOptics(c.stack, c.polarization);
+  return {
+    id: c.id,
+    illuminant: c.illuminant,
+    normalization: c.normalization,
+    xyz,
+    linearSrgb,
+    srgb8: to8Bit(linearSrgb, xyz[1], gamut),
+    linearWideGamut: applyMatrix3(XYZ_TO_LINEAR_WIDE_GAMUT, xyz),
+    displayP3_8: to8Bit(applyMatrix3(XYZ_TO_LINEAR_DISPLAY_P3, xyz), xyz[1], gamut),
+    reflectance: c.wavelengthsNm.map((lambdaNm) => reflectanceAt(optics, lambdaNm)),
+  };
+}

@@ -1,0 +1,40 @@
+import type { Rgb } from '../physics/colorConversions.ts';
+import { illuminantKey } from '../physics/illuminants.ts';
+import type { ColorCase } from './colorCase.ts';
+import type { CaseColor } from './computeCaseColor.ts';
+
+/** One row of a thickness or angle table: the case's colour with its film and a hex code. */
+export interface TableRow extends CaseColor {
+  readonly thicknessNm: number;
+  readonly angleDeg: number;
+  /** `#rrggbb` of `srgb8`. */
+  readonly hex: string;
+}
+
+export const hexColor = (rgb8: Rgb): string => `#${rgb8.map((v) => v.toString(16).padStart(2, '0')).join('')}`;
+
+export function tableRow(c: ColorCase, color: CaseColor): TableRow {
+  const { id, ...rest } = color;
+  return { id, thicknessNm: c.stack.thicknessNm, angleDeg: c.stack.angleDeg, hex: hexColor(color.srgb8), ...rest };
+}
+
+/** A JSON array with one element per line: valid JSON that is still readable and diffable. */
+export const jsonLines = (rows: readonly object[]): string =>
+  rows.length === 0 ? '[]\n' : `[\n${rows.map((row) => JSON.stringify(row)).join(',\n')}\n]\n`;
+
+const channels = (name: string) => [`${name}R`, `${name}G`, `${name}B`];
+
+/** A table as CSV: a header line, then one line per row; R(λ) columns are named `R_<λ>nm`. */
+export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly number[]): string {
+  const header = [
+    'id', 'thicknessNm', 'angleDeg', 'hex', 'illuminant', 'normalization', 'X', 'Y', 'Z',
+    ...channels('linearSrgb'), ...channels('srgb8'), ...channels('linearWideGamut'), ...channels('displayP3_8'),
+    ...wavelengthsNm.map((l) => `R_${l}nm`),
+  ];
+  const line = (r: TableRow) =>
+    [
+      r.id, r.thicknessNm, r.angleDeg, r.hex, illuminantKey(r.illuminant), r.normalization,
+      ...r.xyz, ...r.linearSrgb, ...r.srgb8, ...r.linearWideGamut, ...r.displayP3_8, ...r.reflectance,
+    ].join(',');
+  return `${[header.join(','), ...rows.map(line)].join('\n')}\n`;
+}

@@ -1,0 +1,40 @@
+import { GAMUT_MAPPINGS } from '../physics/colorConversions.ts';
+import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
+import { NORMALIZATIONS } from '../physics/spectralIntegration.ts';
+import { CASE_FIELDS, MAX_WAVELENGTHS } from './colorCase.ts';
+import { MAX_CASES } from './parseCasesJson.ts';
+import { MAX_TABLE_ROWS } from './tableValues.ts';
+
+/** `--help`: how to call the command. */
+export const USAGE = `Colour of a thin film (a soap bubble) from the spectral interference integral.
+
+Usage: npm run --silent color -- [flags]
+
+One case (defaults: a 500 nm soap film in air, seen head-on, under D65):
+  --thickness NM        film thickness d, 0–20000 nm (500)
+  --angle DEG           angle of incidence, 0–90 degrees (0)
+  --n-outside N         index of the outside medium, 1–4 (1)
+  --n-film N            index of the film, 1–4 (1.33)
+  --n-inside N          index of the inside medium, 1–4 (1)
+  --illuminant NAME|K   ${NAMED_ILLUMINANTS.join(' | ')} | a daylight CCT in kelvin, 4000–25000 (D65)
+  --polarization P      ${POLARIZATIONS.join(' | ')} (unpolarized)
+  --normalization N     ${NORMALIZATIONS.join(' | ')} (white: Y = 1 for a perfect white reflector)
+  --wavelengths L,L,…   also report R(λ) at these wavelengths, 300–830 nm
+  --gamut G             ${GAMUT_MAPPINGS.join(' | ')}: how out-of-gamut colours become 8-bit codes (clip)
+
+Many cases:
+  --cases FILE.json     a JSON array (at most ${MAX_CASES}) of objects with any of the fields
+                        ${CASE_FIELDS.join(', ')};
+                        illuminant is a name or { "daylightCct": K }; wavelengthsNm an array
+                        (at most ${MAX_WAVELENGTHS}); id defaults to the case's index.
+
+A table (at most ${MAX_TABLE_ROWS} rows), one row per thickness or angle, with #rrggbb:
+  --from NM --to NM --step NM   over thickness (the other case flags apply to every row)
+  --angles FROM:TO:STEP         over angle, at --thickness
+  --format json|csv             (json)
+
+Output: a JSON array, one object per case, in input order:
+  { id, illuminant, normalization, xyz, linearSrgb, srgb8, linearWideGamut, displayP3_8, reflectance }
+Bad input: exit status 2, one line on stderr, nothing on stdout.
+`;

@@ -1,0 +1,65 @@
+import { type IlluminantSpec } from '../physics/illuminants.ts';
+import { type Polarization } from '../physics/filmReflectance.ts';
+import { type Normalization } from '../physics/spectralIntegration.ts';
+
+export const SPACES = ['srgb', 'display-p3', 'wide-gamut'] as const;
+export const MODES = ['exact', 'table'] as const;
+export const FIELDS = ['uniform', 'drainage', 'swirl'] as const;
+export const SIDES = ['both', 'front'] as const;
+export const ENVIRONMENTS = ['sky', 'none'] as const;
+
+/** Everything a rendered bubble depends on. Ranges are in `src/scene/params.ts`. */
+export interface FilmSettings {
+  readonly nOutside: number;
+  readonly nFilm: number;
+  readonly nInside: number;
+  readonly illuminant: IlluminantSpec;
+  readonly polarization: Polarization;
+  readonly normalization: Normalization;
+  readonly space: (typeof SPACES)[number];
+  readonly mode: (typeof MODES)[number];
+  readonly field: (typeof FIELDS)[number];
+  readonly thicknessNm: number;
+  readonly thicknessRangeNm: number;
+  readonly swirlSpeed: number;
+  readonly sides: (typeof SIDES)[number];
+  readonly env: (typeof ENVIRONMENTS)[number];
+  readonly exposure: number;
+  readonly animate: boolean;
+  readonly timeSeconds: number;
+}
+
+/** The default view: a swirling soap bubble in daylight. */
+export const DEFAULT_SETTINGS: FilmSettings = {
+  nOutside: 1,
+  nFilm: 1.33,
+  nInside: 1,
+  illuminant: 'D65',
+  polarization: 'unpolarized',
+  normalization: 'white',
+  space: 'srgb',
+  mode: 'table',
+  field: 'swirl',
+  thicknessNm: 550,
+  thicknessRangeNm: 800,
+  swirlSpeed: 0.4,
+  sides: 'both',
+  env: 'sky',
+  exposure: 1,
+  animate: true,
+  timeSeconds: 0,
+};
+
+/** Spectral bins per fragment in `exact` mode and per texel in the table pass. */
+export const EXACT_SPECTRAL_BINS = 90;
+export const TABLE_SPECTRAL_BINS = 90;
+/** Table size: thickness texels × cos θ rows (×2: outside and inside views). */
+export const TABLE_WIDTH = 1024;
+export const TABLE_ROWS = 64;
+
+/** The largest thickness the field reaches, which the table must cover. */
+export function maxFieldThicknessNm(s: Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm'>): number {
+  if (s.field === 'uniform') return Math.max(s.thicknessNm, 1);
+  // drainage: mean + range/2 at the bottom; the swirl moves h by at most 0.24 beyond ±1 (clamped).
+  return Math.max(s.thicknessNm + 0.5 * s.thicknessRangeNm, 1);
+}

@@ -1,0 +1,84 @@
+import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { DAYLIGHT_CCT_MAX_K, DAYLIGHT_CCT_MIN_K, type IlluminantSpec } from '../physics/illuminants.ts';
+import { NORMALIZATIONS } from '../physics/spectralIntegration.ts';
+import { DEFAULT_SETTINGS, ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES } from '../render/filmSettings.ts';
+
+/** Longer values are refused outright (a mangled link, not a number). */
+export const MAX_VALUE_LENGTH = 64;
+
+type Parser = (raw: string) => Partial<FilmSettings>;
+
+const number =
+  (key: keyof FilmSettings, min: number, max: number, unit = ''): Parser =>
+  (raw) => {
+    const v = raw.trim() === '' ? NaN : Number(raw);
+    if (!Number.isFinite(v) || v < min || v > max) throw new Error(`expected a number in [${min}, ${max}]${unit ? ` ${unit}` : ''}`);
+    return { [key]: v };
+  };
+
+const oneOf =
+  (key: keyof FilmSettings, allowed: readonly string[]): Parser =>
+  (raw) => {
+    if (!allowed.includes(raw)) throw new Error(`expected one of ${allowed.join(', ')}`);
+    return { [key]: raw };
+  };
+
+const illuminant: Parser = (raw) => {
+  if (['D55', 'D65', 'D93', 'E', 'D65-table'].includes(raw)) return { illuminant: raw as IlluminantSpec };
+  const cct = raw.trim() === '' ? NaN : Number(raw);
+  if (!Number.isFinite(cct) || cct < DAYLIGHT_CCT_MIN_K || cct > DAYLIGHT_CCT_MAX_K) {
+    throw new Error(`expected D55, D65, D93, E, D65-table or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`);
+  }
+  return { illuminant: { daylightCct: cct } };
+};
+
+const flag = (key: keyof FilmSettings): Parser => (raw) => {
+  if (raw !== '0' && raw !== '1') throw new Error('expected 0 or 1');
+  return { [key]: raw === '1' };
+};
+
+/** The URL parameters, their parsers and (through the messages) their ranges. */
+export const PARAMETERS: Record<string, Parser> = {
+  thickness: number('thicknessNm', 0, 20000, 'nm'),
+  thicknessRange: number('thicknessRangeNm', 0, 20000, 'nm'),
+  speed: number('swirlSpeed', 0, 10),
+  field: oneOf('field', FIELDS),
+  nFilm: number('nFilm', 1, 4),
+  nOutside: number('nOutside', 1, 4),
+  nInside: number('nInside', 1, 4),
+  illuminant,
+  polarization: oneOf('polarization', POLARIZATIONS),
+  normalization: oneOf('normalization', NORMALIZATIONS),
+  space: oneOf('space', SPACES),
+  mode: oneOf('mode', MODES),
+  sides: oneOf('sides', SIDES),
+  env: oneOf('env', ENVIRONMENTS),
+  exposure: number('exposure', 0, 100),
+  animate: flag('animate'),
+  time: number('timeSeconds', 0, 1e6, 's'),
+};
+
+export interface ParsedSettings {
+  readonly settings: FilmSettings;
+  /** One line per refused parameter, naming it and its allowed range; its default was kept. */
+  readonly errors: readonly string[];
+}
+
+/** Reads settings from a query string; a bad value is reported and never used. */
+export function parseSettings(query: string, base: FilmSettings = DEFAULT_SETTINGS): ParsedSettings {
+  let settings = base;
+  const errors: string[] = [];
+  for (const [name, raw] of new URLSearchParams(query)) {
+    const parse = PARAMETERS[name];
+    if (!parse) continue; // unknown names belong to others (e.g. the probe)
+    const shown = raw.length > 24 ? `${raw.slice(0, 24)}…` : raw;
+    try {
+      if (raw.length > MAX_VALUE_LENGTH) throw new Error(`longer than ${MAX_VALUE_LENGTH} characters`);
+      settings = { ...settings, ...parse(raw) };
+    } catch (e) {
+      errors.push(`${name}=${JSON.stringify(shown)} ignored: ${(e as Error).message}`);
+    }
+  }
+  // animate=0 freezes the field at `time`; the frame is then reproducible.
+  return { settings, errors };
+}

@@ -1,0 +1,333 @@
+/**
+ * The command-line tool (src/cli). Expected values come from outside the code under test: the
+ * golden film reflectance of PHYSICS.md, the normal-incidence Fresnel formula, the sRGB transfer
+ * function as IEC 61966-2-1 defines it, and the definition of the CIE 1931 observer (equal-energy
+ * white has x = y = z). Most bad-input rows run the whole command in-process (`runColorCommand`);
+ * a few spawn the real CLI to prove the process glue: exit status, stderr, empty stdout.
+ */
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+import { ParameterError } from '../../src/physics/validate.ts';
+import { describeValue } from '../../src/cli/inputErrors.ts';
+import { parseStrictNumber } from '../../src/cli/parseStrictNumber.ts';
+import { runColorCommand } from '../../src/cli/runColorCommand.ts';
+import { MAX_TABLE_ROWS, evenlySpaced } from '../../src/cli/tableValues.ts';
+
+const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+const FIXTURES = 'tests/unit/fixtures';
+/** Each spawn starts tsx (~0.5 s); allow for a loaded machine. */
+const SPAWN_TIMEOUT_MS = 30_000;
+/** PHYSICS.md gives the golden reflectance to 7 decimals. */
+const GOLDEN_TOLERANCE = 5e-8;
+/** Rounding only: the film is no film, or R is constant over λ. */
+const FLOAT_TOLERANCE = 1e-12;
+/** ∫x̄, ∫ȳ, ∫z̄ agree to ~3e-4 over 360–830 nm; the 380 nm cut-off adds a little. */
+const EQUAL_ENERGY_TOLERANCE = 2e-3;
+
+interface Spawned {
+  readonly status: number | null;
+  readonly stdout: string;
+  readonly stderr: string;
+}
+
+function cli(...args: string[]): Spawned {
+  const r = spawnSync('node_modules/.bin/tsx', ['src/cli/color.ts', ...args], { cwd: ROOT, encoding: 'utf8' });
+  return { status: r.status, stdout: r.stdout, stderr: r.stderr };
+}
+
+interface CaseOutput {
+  id: string | number;
+  illuminant: unknown;
+  normalization: string;
+  xyz: number[];
+  linearSrgb: number[];
+  srgb8: number[];
+  linearWideGamut: number[];
+  displayP3_8: number[];
+  reflectance: number[];
+  thicknessNm?: number;
+  angleDeg?: number;
+  hex?: string;
+}
+
+function cliJson(...args: string[]): CaseOutput[] {
+  const r = cli(...args);
+  expect(r.stderr).toBe('');
+  expect(r.status).toBe(0);
+  return JSON.parse(r.stdout) as CaseOutput[];
+}
+
+/** Fresnel at normal incidence, the bare a|c interface: ((n_a − n_c)/(n_a + n_c))². */
+const bareInterfaceR = (na: number, nc: number) => ((na - nc) / (na + nc)) ** 2;
+/** IEC 61966-2-1: the 8-bit code of a linear value in [0, 1]. */
+const srgb8Of = (v: number) => Math.round(255 * (v <= 0.0031308 ? 12.92 * v : 1.055 * v ** (1 / 2.4) - 0.055));
+
+describe('color CLI, one case from flags', () => {
+  it('reproduces the golden reflectance R(555 nm) = 0.1215919 (n 1.5 in air, 250 nm, 0°)', { timeout: SPAWN_TIMEOUT_MS }, () => {
+    const out = cliJson('--n-film', '1.5', '--thickness', '250', '--angle', '0', '--wavelengths', '555');
+    expect(out).toHaveLength(1);
+    const [c] = out as [CaseOutput];
+    expect(c.id).toBe(0);
+    expect(c.normalization).toBe('white');
+    expect(c.illuminant).toBe('D65');
+    expect(c.reflectance).toHaveLength(1);
+    expect(Math.abs((c.reflectance[0] as number) - 0.1215919)).toBeLessThan(GOLDEN_TOLERANCE);
+  });
+
+  it('a film of thickness 0 between equal media reflects nothing: black', { timeout: SPAWN_TIMEOUT_MS }, () => {
+    const [c] = cliJson('--thickness', '0', '--angle', '40', '--wavelengths', '400,700') as [CaseOutput];
+    expect(c.xyz).toEqual([0, 0, 0]);
+    expect(c.srgb8).toEqual([0, 0, 0]);
+    expect(c.displayP3_8).toEqual([0, 0, 0]);
+    expect(c.reflectance).toEqual([0, 0]);
+  });
+
+  const bareTitle = 'a bare interface reflects ((n_a − n_c)/(n_a + n_c))² at every λ, so Y = R and the colour is grey';
+  it(bareTitle, { timeout: SPAWN_TIMEOUT_MS }, () => {
+    const args = ['--thickness', '0', '--n-outside', '1', '--n-inside', '1.5', '--wavelengths', '300,400,555,700,830'];
+    const [c] = cliJson(...args) as [CaseOutput];
+    const r = bareInterfaceR(1, 1.5);
+    for (const value of c.reflectance) expect(Math.abs(value - r)).toBeLessThan(FLOAT_TOLERANCE);
+    expect(Math.abs((c.xyz[1] as number) - r)).toBeLessThan(FLOAT_TOLERANCE);
+    // D65 maps to sRGB white within ~1 %, so each channel is the code of R, give or take one.
+    for (const code of [...c.srgb8, ...c.displayP3_8]) expect(Math.abs(code - srgb8Of(r))).toBeLessThanOrEqual(1);
+  });
+
+  it('prints usage for --help', { timeout: SPAWN_TIMEOUT_MS }, () => {
+    const r = cli('--help');
+    expect(r.status).toBe(0);
+    expect(r.stdout).toContain('Usage: npm run --silent color');
+    expect(r.stderr).toBe('');
+  });
+});
+
+describe('color CLI, cases file', () => {
+  const out = () => cliJson('--cases', `${FIXTURES}/cli-cases.json`);
+
+  it('answers every case, in input order, with defaults filled in and stated', { timeout: SPAWN_TIMEOUT_MS }, () => {
+    const cases = out();
+    expect(cases.map((c) => c.id)).toEqual(['bare-glass', 1, 42, 's-head-on', 'p-head-on', 'paper-normalization']);
+    const [bare, empty, paper, s, p, paperNorm] = cases as CaseOutput[] as [
+      CaseOutput, CaseOutput, CaseOutput, CaseOutput, CaseOutput, CaseOutput,
+    ];
+    // Bare glass under equal energy: R = 0.04 everywhere and X = Y = Z (CIE 1931's equal-energy white).
+    expect(bare.illuminant).toBe('E');
+    for (const value of bare.reflectance) expect(Math.abs(value - bareInterfaceR(1, 1.5))).toBeLessThan(FLOAT_TOLERANCE);
+    for (const v of bare.xyz) expect(Math.abs(v / bareInterfaceR(1, 1.5) - 1)).toBeLessThan(EQUAL_ENERGY_TOLERANCE);
+    // An empty object is the default case: a soap film in air, D65, white normalisation.
+    expect(empty.illuminant).toBe('D65');
+    expect(empty.normalization).toBe('white');
+    expect(empty.reflectance).toEqual([]);
+    // The paper's amplitude average vanishes at normal incidence (PHYSICS.md §2): a black film.
+    expect(paper.reflectance).toEqual([0, 0]);
+    expect(paper.xyz).toEqual([0, 0, 0]);
+    // s and p are the same wave at normal incidence.
+    expect(s.illuminant).toEqual({ daylightCct: 7500 });
+    for (let i = 0; i < 3; i++) expect(Math.abs((s.xyz[i] as number) - (p.xyz[i] as number))).toBeLessThan(FLOAT_TOLERANCE);
+    expect(paperNorm.normalization).toBe('paper');
+    expect(paperNorm.illuminant).toBe('D65-table');
+  });
+});
+
+describe('color CLI, tables', () => {
+  const csvTitle = 'a CSV thickness table has (to − from)/step + 1 rows after its header, hex matching srgb8';
+  it(csvTitle, { timeout: SPAWN_TIMEOUT_MS }, () => {
+    const r = cli('--from', '0', '--to', '1500', '--step', '10', '--format', 'csv');
+    expect(r.status).toBe(0);
+    const lines = r.stdout.trimEnd().split('\n');
+    expect(lines).toHaveLength((1500 - 0) / 10 + 1 + 1);
+    const header = (lines[0] as string).split(',');
+    const col = (name: string) => header.indexOf(name);
+    for (const line of lines.slice(1)) {
+      const cells = line.split(',');
+      const rgb = ['srgb8R', 'srgb8G', 'srgb8B'].map((n) => Number(cells[col(n)]));
+      expect(cells[col('hex')]).toBe(`#${rgb.map((v) => v.toString(16).padStart(2, '0')).join('')}`);
+    }
+    expect(lines.slice(1).map((l) => Number(l.split(',')[col('thicknessNm')]))).toEqual(
+      Array.from({ length: 151 }, (_, i) => i * 10),
+    );
+  });
+
+  it('a JSON thickness table equals the cases output for the same films', { timeout: SPAWN_TIMEOUT_MS }, () => {
+    const table = cliJson(
+      ...['--from', '100', '--to', '400', '--step', '150', '--angle', '20', '--n-film', '1.4'],
+      ...['--illuminant', 'D93', '--wavelengths', '500'],
+    );
+    const cases = cliJson('--cases', `${FIXTURES}/cli-thickness-cases.json`);
+    expect(table.map((row) => row.thicknessNm)).toEqual([100, 250, 400]);
+    expect(table.map(({ thicknessNm: _t, angleDeg: _a, hex: _h, ...rest }) => rest)).toEqual(cases);
+  });
+
+  it('an angle table runs FROM:TO:STEP at the given thickness', { timeout: SPAWN_TIMEOUT_MS }, () => {
+    const rows = cliJson('--angles', '0:85:5', '--thickness', '300', '--gamut', 'preserve-hue');
+    expect(rows.map((row) => row.angleDeg)).toEqual(Array.from({ length: 18 }, (_, i) => i * 5));
+    expect(new Set(rows.map((row) => row.thicknessNm))).toEqual(new Set([300]));
+    for (const row of rows) expect(row.hex).toMatch(/^#[0-9a-f]{6}$/);
+  });
+});
+
+describe('color CLI, gamut mapping', () => {
+  const title = 'preserve-hue changes the 8-bit codes of an out-of-gamut colour, not its linear values';
+  it(title, { timeout: SPAWN_TIMEOUT_MS }, () => {
+    // 500 nm at 30°: a saturated cyan with a negative linear red (outside sRGB).
+    const flags = ['--thickness', '500', '--angle', '30'];
+    const [clip] = cliJson(...flags) as [CaseOutput];
+    const [hue] = cliJson(...flags, '--gamut', 'preserve-hue') as [CaseOutput];
+    expect(Math.min(...clip.linearSrgb)).toBeLessThan(0);
+    expect(hue.linearSrgb).toEqual(clip.linearSrgb);
+    expect(hue.srgb8).not.toEqual(clip.srgb8);
+    for (const code of [...hue.srgb8, ...clip.srgb8]) expect(code >= 0 && code <= 255).toBe(true);
+  });
+});
+
+describe('color CLI, bad input through the process', () => {
+  const rows: [string[], string][] = [
+    [['--thickness', '12abc'], '--thickness'],
+    [['--bogus', '1'], '--bogus'],
+    [['--cases', `${FIXTURES}/cli-cases-malformed.json`], '--cases'],
+    [['--cases', `${FIXTURES}/no-such-file.json`], '--cases'],
+  ];
+  it.each(rows)('%j → exit 2, one stderr line naming %s, empty stdout', { timeout: SPAWN_TIMEOUT_MS }, (args, name) => {
+    const r = cli(...args);
+    expect(r.status).toBe(2);
+    expect(r.stdout).toBe('');
+    expect(r.stderr.endsWith('\n')).toBe(true);
+    expect(r.stderr.trimEnd().split('\n')).toHaveLength(1);
+    expect(r.stderr).toContain(name);
+  });
+});
+
+/** Files the in-process runs can read; anything else "does not exist". */
+const FILES: Record<string, string> = {
+  'not-json': '[{ "id": 1, }]',
+  object: '{ "thicknessNm": 500 }',
+  'not-an-object': '[{ "id": "ok" }, 7]',
+  'unknown-field': '[{ "id": "typo", "thickness": 500 }]',
+  'string-number': '[{ "id": "s", "thicknessNm": "500" }]',
+  'null-angle': '[{ "id": "n", "angleDeg": null }]',
+  infinite: '[{ "id": "inf", "thicknessNm": 1e999 }]',
+  'thick-second': '[{ "id": "fine" }, { "id": "too-thick", "thicknessNm": 20001 }]',
+  'bad-index': '[{ "id": "idx", "nFilm": 4.5 }]',
+  'bad-cct': '[{ "id": "cct", "illuminant": { "daylightCct": 3000 } }]',
+  'extra-cct-key': '[{ "id": "cct2", "illuminant": { "daylightCct": 7500, "x": 1 } }]',
+  'bad-illuminant': '[{ "id": "ill", "illuminant": "A" }]',
+  'bad-wavelength': '[{ "id": "wl", "wavelengthsNm": [500, 900] }]',
+  'wavelengths-string': '[{ "id": "wls", "wavelengthsNm": "500" }]',
+  'bad-polarization': '[{ "id": "pol", "polarization": "circular" }]',
+  'bad-normalization': '[{ "id": "norm", "normalization": "max" }]',
+  'long-id': `[{ "id": "${'x'.repeat(5000)}" }]`,
+  'object-id': '[{ "id": { "a": 1 } }]',
+};
+const readFake = (path: string): string => {
+  const text = FILES[path];
+  if (text === undefined) throw new ParameterError('--cases', `--cases: ${path} cannot be read (ENOENT)`);
+  return text;
+};
+
+describe('color CLI, bad input (in-process: the whole command but the process)', () => {
+  const huge = '9'.repeat(100_000);
+  const rows: [string[], string, string?][] = [
+    [['--thickness', ''], '--thickness'],
+    [['--thickness'], '--thickness'],
+    [['--thickness', 'NaN'], '--thickness'],
+    [['--thickness', 'Infinity'], '--thickness'],
+    [['--thickness', '1e999'], '--thickness'],
+    [['--thickness', ' 500'], '--thickness'],
+    [['--thickness', '0x1f'], '--thickness'],
+    [['--thickness', '-1'], '--thickness'],
+    [['--thickness', '20000.5'], '--thickness'],
+    [['--thickness', huge], '--thickness'],
+    [['--angle', '-0.1'], '--angle'],
+    [['--angle', '90.01'], '--angle'],
+    [['--n-film', '0.99'], '--n-film'],
+    [['--n-outside', '4.01'], '--n-outside'],
+    [['--n-inside', 'one'], '--n-inside'],
+    [['--illuminant', '3999'], '--illuminant'],
+    [['--illuminant', '25001'], '--illuminant'],
+    [['--illuminant', 'A'], '--illuminant'],
+    [['--polarization', 'circular'], '--polarization'],
+    [['--normalization', 'max'], '--normalization'],
+    [['--gamut', 'squash'], '--gamut'],
+    [['--format', 'xml'], '--format'],
+    [['--format', 'csv'], '--format'],
+    [['--wavelengths', '299.9'], '--wavelengths'],
+    [['--wavelengths', '400,,500'], '--wavelengths'],
+    [['--wavelengths', '400,830.5'], '--wavelengths'],
+    [['--thickness', '1', '--thickness', '2'], '--thickness'],
+    [['stray'], 'argument'],
+    [['--unknown-flag'], '--unknown-flag'],
+    [['--from', '0', '--to', '100'], '--step'],
+    [['--from', '0', '--to', '20000', '--step', '0.1'], '--step'],
+    [['--from', '0', '--to', '100', '--step', '0'], '--step'],
+    [['--from', '100', '--to', '0', '--step', '10'], '--to'],
+    [['--from', '0', '--to', '20001', '--step', '10'], '--to'],
+    [['--from', '0', '--to', '100', '--step', '10', '--thickness', '5'], '--thickness'],
+    [['--angles', '0:85'], '--angles'],
+    [['--angles', '0:95:5'], '--angles'],
+    [['--angles', '0:85:5', '--angle', '3'], '--angle'],
+    [['--cases', 'object', '--thickness', '5'], '--thickness'],
+    [['--cases', ''], '--cases'],
+    [['--cases', 'missing'], '--cases'],
+    [['--cases', 'not-json'], '--cases'],
+    [['--cases', 'object'], '--cases'],
+    [['--cases', 'not-an-object'], 'case', 'index 1'],
+    [['--cases', 'unknown-field'], 'thickness', '"typo"'],
+    [['--cases', 'string-number'], 'thicknessNm', '"s"'],
+    [['--cases', 'null-angle'], 'angleDeg', '"n"'],
+    [['--cases', 'infinite'], 'thicknessNm', '"inf"'],
+    [['--cases', 'thick-second'], 'thicknessNm', '"too-thick"'],
+    [['--cases', 'bad-index'], 'nFilm', '"idx"'],
+    [['--cases', 'bad-cct'], 'illuminant', '"cct"'],
+    [['--cases', 'extra-cct-key'], 'illuminant', '"cct2"'],
+    [['--cases', 'bad-illuminant'], 'illuminant', '"ill"'],
+    [['--cases', 'bad-wavelength'], 'wavelengthsNm[1]', '"wl"'],
+    [['--cases', 'wavelengths-string'], 'wavelengthsNm', '"wls"'],
+    [['--cases', 'bad-polarization'], 'polarization', '"pol"'],
+    [['--cases', 'bad-normalization'], 'normalization', '"norm"'],
+    [['--cases', 'long-id'], 'id', 'index 0'],
+    [['--cases', 'object-id'], 'id', 'index 0'],
+  ];
+  it.each(rows)('%j → exit 2, one line naming %s', (args, name, caseLabel) => {
+    const r = runColorCommand(args, readFake);
+    expect(r.exitCode).toBe(2);
+    expect(r.stdout).toBe('');
+    expect(r.stderr.trimEnd().split('\n')).toHaveLength(1);
+    expect(r.stderr).toContain(name);
+    if (caseLabel) expect(r.stderr).toContain(caseLabel);
+    // Echoed values are cut short: no 100 000-digit lines.
+    expect(r.stderr.length).toBeLessThan(400);
+  });
+
+  it('states the allowed range', () => {
+    expect(runColorCommand(['--angle', '91'], readFake).stderr).toContain('[0, 90]');
+    expect(runColorCommand(['--illuminant', '3000'], readFake).stderr).toContain('[4000, 25000]');
+    expect(runColorCommand(['--cases', 'thick-second'], readFake).stderr).toContain('[0, 20000] nm');
+  });
+});
+
+describe('strict parsing helpers', () => {
+  it('parseStrictNumber reads decimal numbers only', () => {
+    for (const [text, value] of [['500', 500], ['1e3', 1000], ['-0.5', -0.5], ['.5', 0.5], ['+7', 7], ['5.', 5]] as const) {
+      expect(parseStrictNumber('x', text, 'a number')).toBe(value);
+    }
+    for (const text of ['', ' 5', '5 ', '12abc', '0x10', '0b1', 'Infinity', '-Infinity', 'NaN', '1e999', '1,5', '--5']) {
+      expect(() => parseStrictNumber('x', text, 'a number'), text).toThrow(ParameterError);
+    }
+  });
+
+  it('evenlySpaced includes both ends and rounds away binary noise', () => {
+    const names = { from: 'f', to: 't', step: 's' };
+    expect(evenlySpaced(0, 1, 0.1, names)).toEqual([0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1]);
+    expect(evenlySpaced(0, 95, 10, names)).toHaveLength(10);
+    expect(evenlySpaced(7, 7, 1, names)).toEqual([7]);
+    expect(evenlySpaced(0, MAX_TABLE_ROWS - 1, 1, names)).toHaveLength(MAX_TABLE_ROWS);
+    expect(() => evenlySpaced(0, MAX_TABLE_ROWS, 1, names)).toThrow(ParameterError);
+  });
+
+  it('describeValue keeps a message to one short line', () => {
+    expect(describeValue('a\nb')).toBe('"a\\nb"');
+    expect(describeValue('x'.repeat(1000))).toMatch(/… \(1002 characters\)$/);
+    expect(describeValue(undefined)).toBe('no value');
+  });
+});
