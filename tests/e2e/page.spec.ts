@@ -5,3 +5,18 @@ test('the demo page loads with its title and a WebGL2 context', async ({ page })
   await expect(page).toHaveTitle(/thin-film-color/);
   await expect(page.locator('body')).toHaveAttribute('data-webgl2', 'yes');
 });
+
+test('a bad URL parameter shows a message naming it and its range, uses the default, and logs no error', async ({ page }) => {
+  const problems: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error' || m.type() === 'warning') problems.push(m.text());
+  });
+  page.on('pageerror', (e) => problems.push(e.message));
+  await page.goto('/?nFilm=<img src=x onerror=alert(1)>&field=uniform&animate=0&env=none');
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
+  await expect(page.locator('#messages')).toContainText('nFilm');
+  await expect(page.locator('#messages')).toContainText('[1, 4]');
+  expect(await page.locator('#messages img').count()).toBe(0);
+  expect(await page.evaluate(() => (window as unknown as { bubbleView: { current: { nFilm: number } } }).bubbleView.current.nFilm)).toBe(1.33);
+  expect(problems).toEqual([]);
+});
