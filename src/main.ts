@@ -1,5 +1,7 @@
-import { parseSettings } from './scene/params.ts';
+import { createControlPanel } from './scene/controlPanel.ts';
+import { parseSettings, settingsToQuery } from './scene/params.ts';
 import { BubbleView } from './scene/bubbleView.ts';
+import { type FilmSettings } from './render/filmSettings.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 const messages = document.querySelector<HTMLElement>('#messages');
@@ -22,15 +24,40 @@ new ResizeObserver(() => {
   view.render();
 }).observe(canvas);
 
-const started = performance.now();
+// Render on demand: one frame per change; the loop runs only while the swirl animates.
+let clockOrigin = performance.now() - settings.timeSeconds * 1000;
+let looping = false;
+const animating = (s: FilmSettings) => s.animate && s.field === 'swirl';
 function frame(now: number) {
-  if (view.current.animate && view.current.field === 'swirl') {
-    view.apply({ ...view.current, timeSeconds: settings.timeSeconds + (now - started) / 1000 });
-    view.render();
+  looping = animating(view.current) && !document.hidden;
+  if (!looping) return;
+  view.apply({ ...view.current, timeSeconds: (now - clockOrigin) / 1000 });
+  view.render();
+  requestAnimationFrame(frame);
+}
+function startLoop() {
+  if (!looping && animating(view.current)) {
+    clockOrigin = performance.now() - view.current.timeSeconds * 1000;
+    looping = true;
     requestAnimationFrame(frame);
   }
 }
+document.addEventListener('visibilitychange', startLoop);
+
+let urlTimer = 0;
+createControlPanel(settings, (next) => {
+  view.apply({ ...next, timeSeconds: view.current.timeSeconds });
+  view.render();
+  startLoop();
+  // The URL follows the controls without a history entry per slider step.
+  clearTimeout(urlTimer);
+  urlTimer = window.setTimeout(() => {
+    const query = settingsToQuery({ ...view.current, timeSeconds: view.current.animate ? 0 : view.current.timeSeconds });
+    history.replaceState(null, '', query ? `?${query}` : location.pathname);
+  }, 250);
+});
+
 view.render();
 document.body.dataset.frames = 'ready';
-requestAnimationFrame(frame);
+startLoop();
 Object.assign(window, { bubbleView: view });

@@ -82,3 +82,30 @@ export function parseSettings(query: string, base: FilmSettings = DEFAULT_SETTIN
   // animate=0 freezes the field at `time`; the frame is then reproducible.
   return { settings, errors };
 }
+
+/** The query string that `parseSettings` turns back into these settings (defaults left out). */
+export function settingsToQuery(s: FilmSettings): string {
+  const d = DEFAULT_SETTINGS;
+  const illuminantText = (i: FilmSettings['illuminant']) => (typeof i === 'object' ? String(i.daylightCct) : i);
+  const pairs: [string, string, string][] = [
+    ['thickness', String(s.thicknessNm), String(d.thicknessNm)],
+    ['thicknessRange', String(s.thicknessRangeNm), String(d.thicknessRangeNm)],
+    ['speed', String(s.swirlSpeed), String(d.swirlSpeed)],
+    ['field', s.field, d.field],
+    ['nFilm', String(s.nFilm), String(d.nFilm)],
+    ['nOutside', String(s.nOutside), String(d.nOutside)],
+    ['nInside', String(s.nInside), String(d.nInside)],
+    ['illuminant', illuminantText(s.illuminant), illuminantText(d.illuminant)],
+    ['polarization', s.polarization, d.polarization],
+    ['normalization', s.normalization, d.normalization],
+    ['space', s.space, d.space],
+    ['mode', s.mode, d.mode],
+    ['sides', s.sides, d.sides],
+    ['env', s.env, d.env],
+    ['exposure', String(s.exposure), String(d.exposure)],
+    ['animate', s.animate ? '1' : '0', d.animate ? '1' : '0'],
+    ['time', String(s.timeSeconds), String(d.timeSeconds)],
+  ];
+  const query = new URLSearchParams(pairs.filter(([, v, def]) => v !== def).map(([k, v]) => [k, v]));
+  return query.toString();
+}

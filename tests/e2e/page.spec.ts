@@ -20,3 +20,17 @@ test('a bad URL parameter shows a message naming it and its range, uses the defa
   expect(await page.evaluate(() => (window as unknown as { bubbleView: { current: { nFilm: number } } }).bubbleView.current.nFilm)).toBe(1.33);
   expect(problems).toEqual([]);
 });
+
+test('the panel changes the view and the URL, and the URL restores the state', async ({ page }) => {
+  await page.goto('/?animate=0&env=none');
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
+  const field = page.getByRole('combobox', { name: 'thickness field' });
+  await field.selectOption('uniform');
+  await expect(page).toHaveURL(/field=uniform/);
+  const current = () => page.evaluate(() => (window as unknown as { bubbleView: { current: { field: string; env: string } } }).bubbleView.current);
+  expect(await current()).toMatchObject({ field: 'uniform', env: 'none' });
+  await page.goto(page.url());
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
+  expect(await current()).toMatchObject({ field: 'uniform', env: 'none' });
+  await expect(page.getByRole('combobox', { name: 'thickness field' })).toHaveValue('uniform');
+});

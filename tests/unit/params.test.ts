@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_SETTINGS } from '../../src/render/filmSettings.ts';
-import { MAX_VALUE_LENGTH, parseSettings } from '../../src/scene/params.ts';
+import { MAX_VALUE_LENGTH, parseSettings, settingsToQuery } from '../../src/scene/params.ts';
 
 describe('URL parameters', () => {
   it('reads every documented parameter', () => {
@@ -53,5 +53,14 @@ describe('URL parameters', () => {
     expect(errors).toHaveLength(1);
     expect(errors[0]).toContain(name);
     expect(errors[0]).toMatch(range);
+  });
+});
+
+describe('settingsToQuery', () => {
+  it('round-trips through parseSettings, defaults left out', () => {
+    const { settings } = parseSettings('?thickness=420&illuminant=7500&mode=exact&animate=0&time=3&nInside=1.2');
+    const query = settingsToQuery(settings);
+    expect(parseSettings(`?${query}`)).toEqual({ settings, errors: [] });
+    expect(settingsToQuery(DEFAULT_SETTINGS)).toBe('');
   });
 });
