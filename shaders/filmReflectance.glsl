@@ -96,7 +96,10 @@ float meanChannelReflectance(AiryTerms c, float phaseCenter, float halfWidth) {
   if (c.multiple == vec2(0.0)) return cAbs2(alpha);
   if (rho2 == 0.0) return a0 + 2.0 * sinc * (ab.x * cos(phaseCenter) - ab.y * sin(phaseCenter));
   float rho = sqrt(rho2);
-  float psi0 = phaseCenter + atan(c.roundTrip.y, c.roundTrip.x);
+  // arg(c), with Im c = -0.0 read as 0: GLSL need not honour signed zeros, and SwiftShader's
+  // atan(-0.0, x) returns pi for x > 0, which shifts the p channel's fringes by half a period.
+  float gamma = c.roundTrip.y == 0.0 ? (c.roundTrip.x < 0.0 ? 3.141592653589793 : 0.0) : atan(c.roundTrip.y, c.roundTrip.x);
+  float psi0 = phaseCenter + gamma;
   vec2 u = cDiv(ab, c.roundTrip);
   float cosW = cos(w), cos0 = cos(psi0), sin0 = sin(psi0);
   float y = 2.0 * rho * sinc * (cos0 - rho * cosW);

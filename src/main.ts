@@ -14,9 +14,8 @@ for (const e of errors) {
   messages.append(line);
 }
 
-const gl = canvas.getContext('webgl2');
-document.body.dataset.webgl2 = gl ? 'yes' : 'no';
 const view = new BubbleView(canvas, settings);
+document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
 const fit = () => view.resize(canvas.clientWidth, canvas.clientHeight, Math.min(2, devicePixelRatio));
 fit();
 new ResizeObserver(() => {
