@@ -8,14 +8,16 @@ const messages = document.querySelector<HTMLElement>('#messages');
 if (!canvas || !messages) throw new Error('index.html must hold #bubble and #messages');
 
 const { settings, errors } = parseSettings(location.search);
-for (const e of errors) {
+function say(text: string) {
   const line = document.createElement('p');
-  line.textContent = e; // never innerHTML: the text comes from the URL
-  messages.append(line);
+  line.textContent = text; // never innerHTML: the text may come from the URL
+  messages!.append(line);
 }
+errors.forEach(say);
 
 const view = new BubbleView(canvas, settings);
 document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
+if (settings.space !== 'srgb' && !view.displayIsP3) say('This browser has no Display P3 canvas: showing sRGB.');
 const fit = () => view.resize(canvas.clientWidth, canvas.clientHeight, Math.min(2, devicePixelRatio));
 fit();
 new ResizeObserver(() => {
