@@ -11,14 +11,21 @@ import { spectralBinsTexture } from './spectralBinsTexture.ts';
 
 const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
-/** The compile-time switches: a shader holds only the mode, field, sides and options in use. */
-export function bubbleDefines(s: FilmSettings): Record<string, number> {
+/** The defines shaders/filmColor.glsl needs: the method and polarisation in use, and their sizes. */
+export function filmColorDefines(s: Pick<FilmSettings, 'mode' | 'polarization'>): Record<string, number> {
   return {
     FILM_MODE: s.mode === 'exact' ? 0 : 1,
     POLARIZATION: POLARIZATIONS.indexOf(s.polarization),
     SPECTRAL_BINS: EXACT_SPECTRAL_BINS,
     FILM_TABLE_WIDTH: TABLE_WIDTH,
     FILM_TABLE_ROWS: TABLE_ROWS,
+  };
+}
+
+/** The compile-time switches: a shader holds only the mode, field, sides and options in use. */
+export function bubbleDefines(s: FilmSettings): Record<string, number> {
+  return {
+    ...filmColorDefines(s),
     THICKNESS_FIELD: FIELDS.indexOf(s.field),
     SIDES: s.sides === 'both' ? 2 : 1,
     ENVIRONMENT: s.env === 'sky' ? 1 : 0,

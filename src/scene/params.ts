@@ -79,7 +79,6 @@ export function parseSettings(query: string, base: FilmSettings = DEFAULT_SETTIN
       errors.push(`${name}=${JSON.stringify(shown)} ignored: ${(e as Error).message}`);
     }
   }
-  // animate=0 freezes the field at `time`; the frame is then reproducible.
   return { settings, errors };
 }
 

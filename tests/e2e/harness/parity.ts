@@ -16,8 +16,8 @@ import {
   WebGLRenderTarget,
   WebGLRenderer,
 } from 'three';
-import { POLARIZATIONS } from '../../../src/physics/filmReflectance.ts';
-import { DEFAULT_SETTINGS, EXACT_SPECTRAL_BINS, TABLE_ROWS, TABLE_WIDTH } from '../../../src/render/filmSettings.ts';
+import { filmColorDefines } from '../../../src/render/bubbleMaterial.ts';
+import { DEFAULT_SETTINGS, EXACT_SPECTRAL_BINS } from '../../../src/render/filmSettings.ts';
 import { FilmTable } from '../../../src/render/filmTable.ts';
 import { shaderSource } from '../../../src/render/shaderSource.ts';
 import { spectralBinsTexture } from '../../../src/render/spectralBinsTexture.ts';
@@ -43,13 +43,7 @@ function material(mode: ParityMode, g: ParityGroup): ShaderMaterial {
   const hit = materials.get(key);
   if (hit) return hit;
   const m = new ShaderMaterial({
-    defines: {
-      FILM_MODE: mode === 'exact' ? 0 : 1,
-      POLARIZATION: POLARIZATIONS.indexOf(g.polarization),
-      SPECTRAL_BINS: EXACT_SPECTRAL_BINS,
-      FILM_TABLE_WIDTH: TABLE_WIDTH,
-      FILM_TABLE_ROWS: TABLE_ROWS,
-    },
+    defines: filmColorDefines({ mode, polarization: g.polarization }),
     uniforms: {
       uInputs: { value: null },
       uSpectralBins: { value: null },

@@ -1,19 +1,11 @@
-import type { Polarization } from '../../../src/physics/filmReflectance.ts';
-import type { IlluminantSpec } from '../../../src/physics/illuminants.ts';
-import type { Normalization } from '../../../src/physics/spectralIntegration.ts';
 import type { FilmSettings } from '../../../src/render/filmSettings.ts';
 
 /**
  * What the parity harness and its spec share. A group holds the cases that differ only in
  * per-pixel inputs (thickness, cos θ_i); everything else is a uniform or a define of the shader.
  */
-export interface ParityGroup {
-  readonly nOutside: number;
-  readonly nFilm: number;
-  readonly nInside: number;
-  readonly illuminant: IlluminantSpec;
-  readonly polarization: Polarization;
-  readonly normalization: Normalization;
+export interface ParityGroup
+  extends Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside' | 'illuminant' | 'polarization' | 'normalization'> {
   /** [thicknessNm, cosIncidence] per case */
   readonly inputs: readonly (readonly [number, number])[];
 }
