@@ -25,7 +25,8 @@ function fail(why: string): never {
 }
 
 const executablePath = chromiumExecutable();
-const port = 5180;
+/** E2E_PORT lets two checkouts run their suites side by side. */
+const port = Number(process.env.E2E_PORT ?? 5180);
 
 export default defineConfig({
   testDir: 'tests/e2e',
