@@ -1,7 +1,40 @@
-import { defineConfig } from 'vite';
+import { defineConfig, type Plugin } from 'vite';
+
+/** Where pages (the teaching page in public/, embedding pages) load the element from. */
+const ELEMENT_URL = '/thin-film-bubble.js';
+const ELEMENT_ENTRY = 'src/element/index.ts';
+
+/** In development, the element's URL serves its source, so public/ pages work unbuilt. */
+const elementInDevelopment = (): Plugin => ({
+  name: 'thin-film-bubble-dev-url',
+  configureServer(server) {
+    server.middlewares.use((req, _res, next) => {
+      if (req.url === ELEMENT_URL) req.url = `/${ELEMENT_ENTRY}`;
+      next();
+    });
+  },
+});
 
 // GLSL files are imported as text with Vite's `?raw` suffix; no plugin is needed.
-export default defineConfig({
-  server: { port: 5173, strictPort: true },
-  preview: { port: 4173, strictPort: true },
-});
+// `vite build` makes the demo site; `vite build --mode element` adds the standalone element
+// module (three.js included) to the same dist/ as thin-film-bubble.js.
+export default defineConfig(({ mode }) =>
+  mode === 'element'
+    ? {
+        publicDir: false,
+        build: {
+          emptyOutDir: false,
+          // An app build with one entry, not library mode: library mode leaves ES output unminified.
+          rolldownOptions: {
+            input: ELEMENT_ENTRY,
+            preserveEntrySignatures: 'exports-only',
+            output: { entryFileNames: ELEMENT_URL.slice(1) },
+          },
+        },
+      }
+    : {
+        plugins: [elementInDevelopment()],
+        server: { port: 5173, strictPort: true },
+        preview: { port: 4173, strictPort: true },
+      },
+);

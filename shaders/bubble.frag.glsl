@@ -1,6 +1,7 @@
 // The bubble: the near wall reflects the illuminant with the film's colour; through it (T = 1 - R
 // per channel) the far wall, seen from inside at the same θ_i, and through that the environment.
-// Defines: FILM_MODE, THICKNESS_FIELD, SIDES (1 front | 2 both), ENVIRONMENT, HATCH_OUT_OF_GAMUT.
+// Defines: FILM_MODE, THICKNESS_FIELD, SIDES (1 front | 2 both), ENVIRONMENT, HATCH_OUT_OF_GAMUT;
+// PROBE (src/scene/probe.ts) outputs the near wall's film XYZ and thickness instead of a colour.
 #include "thicknessField.glsl"
 #include "filmColor.glsl"
 #include "colorConversions.glsl"
@@ -18,7 +19,12 @@ void main() {
   vec3 toEye = normalize(cameraPosition - vWorldPosition);
   vec3 normal = normalize(vWorldNormal);
   float cosIncidence = clamp(abs(dot(normal, toEye)), 0.0, 1.0);
-  vec3 nearXyz = filmXyz(thicknessAt(vSpherePoint), cosIncidence, false);
+  float nearThicknessNm = thicknessAt(vSpherePoint);
+  vec3 nearXyz = filmXyz(nearThicknessNm, cosIncidence, false);
+#ifdef PROBE
+  gl_FragColor = vec4(nearXyz, nearThicknessNm);
+  return;
+#endif
   vec3 nearR = xyzToLinearRgb(uXyzToLinearWorking, nearXyz);
   vec3 behind = environmentRadiance(-toEye);
 #if SIDES == 2

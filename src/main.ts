@@ -1,11 +1,12 @@
-import { createControlPanel } from './scene/controlPanel.ts';
-import { parseSettings, settingsToQuery } from './scene/params.ts';
-import { BubbleView } from './scene/bubbleView.ts';
 import { type FilmSettings } from './render/filmSettings.ts';
+import { BubbleApp } from './scene/bubbleApp.ts';
+import { BubbleView, createBubbleRenderer } from './scene/bubbleView.ts';
+import { parseSettings, settingsToQuery } from './scene/params.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 const messages = document.querySelector<HTMLElement>('#messages');
-if (!canvas || !messages) throw new Error('index.html must hold #bubble and #messages');
+const plots = document.querySelector<HTMLElement>('#plots');
+if (!canvas || !messages || !plots) throw new Error('index.html must hold #bubble, #messages and #plots');
 
 const { settings, errors } = parseSettings(location.search);
 function say(text: string) {
@@ -15,50 +16,27 @@ function say(text: string) {
 }
 errors.forEach(say);
 
-const view = new BubbleView(canvas, settings);
+const view = new BubbleView(createBubbleRenderer(canvas), settings);
 document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
 if (settings.space !== 'srgb' && !view.displayIsP3) say('This browser has no Display P3 canvas: showing sRGB.');
-const fit = () => view.resize(canvas.clientWidth, canvas.clientHeight, Math.min(2, devicePixelRatio));
-fit();
-new ResizeObserver(() => {
-  fit();
-  view.render();
-}).observe(canvas);
 
-// Render on demand: one frame per change; the loop runs only while the swirl animates.
-let clockOrigin = performance.now() - settings.timeSeconds * 1000;
-let looping = false;
-const animating = (s: FilmSettings) => s.animate && s.field === 'swirl';
-function frame(now: number) {
-  looping = animating(view.current) && !document.hidden;
-  if (!looping) return;
-  view.apply({ ...view.current, timeSeconds: (now - clockOrigin) / 1000 });
-  view.render();
-  requestAnimationFrame(frame);
-}
-function startLoop() {
-  if (!looping && animating(view.current)) {
-    clockOrigin = performance.now() - view.current.timeSeconds * 1000;
-    looping = true;
-    requestAnimationFrame(frame);
-  }
-}
-document.addEventListener('visibilitychange', startLoop);
-
+// The URL follows the controls without a history entry per slider step.
 let urlTimer = 0;
-createControlPanel(settings, (next) => {
-  view.apply({ ...next, timeSeconds: view.current.timeSeconds });
-  view.render();
-  startLoop();
-  // The URL follows the controls without a history entry per slider step.
+function followInUrl(s: FilmSettings) {
   clearTimeout(urlTimer);
   urlTimer = window.setTimeout(() => {
-    const query = settingsToQuery({ ...view.current, timeSeconds: view.current.animate ? 0 : view.current.timeSeconds });
+    const query = settingsToQuery({ ...s, timeSeconds: s.animate ? 0 : s.timeSeconds });
     history.replaceState(null, '', query ? `?${query}` : location.pathname);
   }, 250);
-});
+}
 
-view.render();
-document.body.dataset.frames = 'ready';
-startLoop();
-Object.assign(window, { bubbleView: view });
+const app = new BubbleApp({
+  view,
+  surface: canvas,
+  controls: 'page',
+  plots,
+  onChange: followInUrl,
+  onFrame: () => (document.body.dataset.frames = 'ready'),
+});
+app.renderNow();
+Object.assign(window, { bubbleView: view, bubbleApp: app });

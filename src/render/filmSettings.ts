@@ -27,6 +27,8 @@ export interface FilmSettings {
   readonly exposure: number;
   readonly animate: boolean;
   readonly timeSeconds: number;
+  /** Where the plots probe the view: fractions of its width and height from the top left. */
+  readonly probe: readonly [number, number];
 }
 
 /** The default view: a swirling soap bubble in daylight. */
@@ -48,6 +50,7 @@ export const DEFAULT_SETTINGS: FilmSettings = {
   exposure: 1,
   animate: true,
   timeSeconds: 0,
+  probe: [0.5, 0.5],
 };
 
 /** Spectral bins per fragment in `exact` mode and per texel in the table pass. */

@@ -7,6 +7,7 @@ import {
   ShaderMaterial,
   SphereGeometry,
   SRGBColorSpace,
+  Vector2,
   WebGLRenderer,
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
@@ -14,30 +15,42 @@ import { createBubbleMaterial, updateBubbleUniforms } from '../render/bubbleMate
 import { FilmTable } from '../render/filmTable.ts';
 import { type FilmSettings } from '../render/filmSettings.ts';
 import { shaderSource } from '../render/shaderSource.ts';
+import { FilmProbe, type ProbeReading } from './probe.ts';
 
 ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
 
 /** The camera sits on +z; the unit bubble (seen under 2·asin(1/4) = 29°) fills ~83 % of the 35° view's height. */
 const CAMERA_DISTANCE = 4;
 const FOV_DEG = 35;
+const SIZE = new Vector2();
+
+/** A WebGL2 renderer for bubbles on a canvas (the drawing buffer is kept for screenshots and reads). */
+export const createBubbleRenderer = (canvas: HTMLCanvasElement): WebGLRenderer =>
+  new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
 
 /**
- * A bubble on a canvas: renderer, camera, environment, the film material and its table.
- * Renders on demand: `render()` draws one frame; the caller's loop runs only while animating.
+ * A bubble: camera, environment, the film material and its table, drawn by a renderer that may
+ * be its own or shared by several views (then programs and spectral textures are compiled and
+ * uploaded once). Renders on demand: `render()` draws one frame; the caller loops only while
+ * animating.
  */
 export class BubbleView {
-  readonly renderer: WebGLRenderer;
   readonly camera = new PerspectiveCamera(FOV_DEG, 1, 0.1, 100);
   readonly scene = new Scene();
   readonly table = new FilmTable();
   readonly bubble: Mesh<SphereGeometry, ShaderMaterial>;
   private readonly sky: Mesh<SphereGeometry, ShaderMaterial>;
+  private readonly filmProbe = new FilmProbe();
+  /** The view's size in CSS pixels and its pixel ratio. */
+  private size = { width: 1, height: 1, pixelRatio: 1 };
   /** Whether the canvas really shows Display P3 (false where the browser cannot). */
   displayIsP3 = false;
   private settings: FilmSettings;
 
-  constructor(canvas: HTMLCanvasElement, settings: FilmSettings) {
-    this.renderer = new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+  constructor(
+    readonly renderer: WebGLRenderer,
+    settings: FilmSettings,
+  ) {
     this.settings = settings;
     this.camera.position.set(0, 0, CAMERA_DISTANCE);
     this.bubble = new Mesh(new SphereGeometry(1, 128, 64), createBubbleMaterial(settings));
@@ -75,24 +88,35 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     updateBubbleUniforms(this.bubble.material, s, s.mode === 'table' ? this.table : null, this.displayIsP3);
   }
 
-  /** Matches the drawing buffer to the canvas's CSS box. */
+  /** Sets the view's size (CSS pixels) and pixel ratio. */
   resize(width: number, height: number, pixelRatio = 1): void {
-    this.renderer.setPixelRatio(pixelRatio);
-    this.renderer.setSize(width, height, false);
-    this.camera.aspect = width / Math.max(1, height);
+    this.size = { width: Math.max(1, width), height: Math.max(1, height), pixelRatio };
+    this.camera.aspect = this.size.width / this.size.height;
     this.camera.updateProjectionMatrix();
   }
 
+  /** Draws one frame into the renderer's canvas, sized to this view first. */
   render(): void {
-    this.renderer.render(this.scene, this.camera);
+    const { width, height, pixelRatio } = this.size;
+    const r = this.renderer;
+    if (r.getPixelRatio() !== pixelRatio) r.setPixelRatio(pixelRatio);
+    const drawn = r.getSize(SIZE);
+    if (drawn.x !== width || drawn.y !== height) r.setSize(width, height, false);
+    r.render(this.scene, this.camera);
   }
 
+  /** The film at a point of the view (fractions from the top left), or null off the bubble. */
+  probe(fx: number, fy: number): ProbeReading | null {
+    return this.filmProbe.read(this.renderer, this.camera, this.bubble, this.size, fx, fy);
+  }
+
+  /** Frees this view's GPU resources (not the renderer, which may be shared). */
   dispose(): void {
+    this.filmProbe.dispose();
     this.table.dispose();
     this.bubble.geometry.dispose();
     this.bubble.material.dispose();
     this.sky.geometry.dispose();
     this.sky.material.dispose();
-    this.renderer.dispose();
   }
 }

@@ -37,6 +37,13 @@ const flag = (key: keyof FilmSettings): Parser => (raw) => {
   return { [key]: raw === '1' };
 };
 
+const probe: Parser = (raw) => {
+  const parts = raw.split(',');
+  const [x, y] = parts.map((v) => (v.trim() === '' ? NaN : Number(v)));
+  if (parts.length !== 2 || !(x! >= 0 && x! <= 1 && y! >= 0 && y! <= 1)) throw new Error('expected x,y with both in [0, 1] (fractions of the view from the top left)');
+  return { probe: [x!, y!] };
+};
+
 /** The URL parameters, their parsers and (through the messages) their ranges. */
 export const PARAMETERS: Record<string, Parser> = {
   thickness: number('thicknessNm', 0, 20000, 'nm'),
@@ -56,6 +63,7 @@ export const PARAMETERS: Record<string, Parser> = {
   exposure: number('exposure', 0, 100),
   animate: flag('animate'),
   time: number('timeSeconds', 0, 1e6, 's'),
+  probe,
 };
 
 export interface ParsedSettings {
@@ -70,7 +78,7 @@ export function parseSettings(query: string, base: FilmSettings = DEFAULT_SETTIN
   const errors: string[] = [];
   for (const [name, raw] of new URLSearchParams(query)) {
     const parse = PARAMETERS[name];
-    if (!parse) continue; // unknown names belong to others (e.g. the probe)
+    if (!parse) continue; // unknown names belong to others (the embedding page)
     const shown = raw.length > 24 ? `${raw.slice(0, 24)}…` : raw;
     try {
       if (raw.length > MAX_VALUE_LENGTH) throw new Error(`longer than ${MAX_VALUE_LENGTH} characters`);
@@ -104,6 +112,7 @@ export function settingsToQuery(s: FilmSettings): string {
     ['exposure', String(s.exposure), String(d.exposure)],
     ['animate', s.animate ? '1' : '0', d.animate ? '1' : '0'],
     ['time', String(s.timeSeconds), String(d.timeSeconds)],
+    ['probe', s.probe.map((v) => +v.toFixed(4)).join(','), d.probe.join(',')],
   ];
   const query = new URLSearchParams(pairs.filter(([, v, def]) => v !== def).map(([k, v]) => [k, v]));
   return query.toString();

@@ -1,0 +1,125 @@
+import { addPlotStyles } from '../plots/plotStyles.ts';
+import { DEFAULT_SETTINGS, type FilmSettings } from '../render/filmSettings.ts';
+import { BubbleApp } from '../scene/bubbleApp.ts';
+import { BubbleView } from '../scene/bubbleView.ts';
+import { PARAMETERS, parseSettings, settingsToQuery } from '../scene/params.ts';
+import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
+
+const STYLE = `
+thin-film-bubble { display: block; position: relative; width: 100%; height: 360px; background: #111; color: #eee; overflow: hidden; }
+thin-film-bubble .tfb-layout { display: flex; width: 100%; height: 100%; }
+thin-film-bubble .tfb-stage { position: relative; flex: 1 1 auto; min-width: 0; }
+thin-film-bubble .tfb-stage > canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; }
+thin-film-bubble .tfb-controls { position: absolute; top: 0; right: 0; max-height: 100%; overflow: auto; }
+thin-film-bubble .tfb-side { flex: 0 0 270px; overflow: auto; padding: 4px 6px; background: #18181c; }
+thin-film-bubble .tfb-messages { position: absolute; left: 4px; bottom: 4px; right: 4px; font: 12px system-ui, sans-serif; }
+thin-film-bubble .tfb-messages p { margin: 2px 0; padding: 3px 6px; background: #6b1d1d; border-radius: 3px; }
+`;
+
+function addElementStyles(doc: Document): void {
+  if (doc.getElementById('tfb-element-styles')) return;
+  const style = Object.assign(doc.createElement('style'), { id: 'tfb-element-styles', textContent: STYLE });
+  doc.head.prepend(style); // first, so the page's own rules win
+}
+
+/**
+ * `<thin-film-bubble>`: an embeddable bubble. Its attributes are the demo's URL parameters
+ * (thickness, field, nFilm, illuminant, …, probe), plus `controls` (show the panel) and
+ * `plots` (show the plots). It sizes to its CSS box, draws nothing while off screen or in a
+ * hidden page, and frees its GPU resources when removed. A bad attribute is named, with its
+ * range, in a message inside the element, and its default (or last good) value is kept.
+ * Events: `change` (detail: { settings, query }) when its panel or a click changes the view.
+ */
+export class ThinFilmBubble extends HTMLElement {
+  static readonly observedAttributes = [...Object.keys(PARAMETERS), 'controls', 'plots'];
+  private app: BubbleApp | null = null;
+  private canvas: HTMLCanvasElement | null = null;
+  private messages: HTMLElement | null = null;
+  private visibility: IntersectionObserver | null = null;
+
+  /** The settings shown now (null before the element is on a page). */
+  get settings(): FilmSettings | null {
+    return this.app?.current ?? null;
+  }
+
+  connectedCallback(): void {
+    if (this.app) return;
+    addElementStyles(this.ownerDocument);
+    addPlotStyles(this.ownerDocument);
+    const el = (tag: string, className: string) => Object.assign(this.ownerDocument.createElement(tag), { className });
+    const layout = el('div', 'tfb-layout');
+    const stage = el('div', 'tfb-stage');
+    this.canvas = el('canvas', '') as HTMLCanvasElement;
+    this.messages = el('div', 'tfb-messages');
+    this.messages.setAttribute('role', 'status');
+    stage.append(this.canvas, this.messages);
+    layout.append(stage);
+    const controls = this.hasAttribute('controls') ? el('div', 'tfb-controls') : undefined;
+    if (controls) stage.append(controls);
+    const plots = this.hasAttribute('plots') ? el('div', 'tfb-side') : undefined;
+    if (plots) layout.append(plots);
+    this.replaceChildren(layout);
+
+    const settings = this.readAttributes(DEFAULT_SETTINGS);
+    const renderer = acquireSharedRenderer();
+    const view = new BubbleView(renderer, settings);
+    const canvas = this.canvas;
+    this.app = new BubbleApp({
+      view,
+      surface: stage,
+      controls,
+      plots,
+      present: () => {
+        const { width, height } = renderer.domElement;
+        if (canvas.width !== width || canvas.height !== height) Object.assign(canvas, { width, height });
+        canvas.getContext('2d')?.drawImage(renderer.domElement, 0, 0);
+        this.dataset.frames = String(Number(this.dataset.frames ?? 0) + 1);
+      },
+      onChange: (s) => {
+        this.dispatchEvent(new CustomEvent('change', { detail: { settings: s, query: settingsToQuery(s) } }));
+      },
+    });
+    this.visibility = new IntersectionObserver((entries) => this.app?.setOnScreen(entries.some((e) => e.isIntersecting)));
+    this.visibility.observe(this);
+  }
+
+  disconnectedCallback(): void {
+    if (!this.app) return;
+    this.visibility?.disconnect();
+    this.app.dispose();
+    this.app = null;
+    this.replaceChildren();
+    releaseSharedRenderer();
+  }
+
+  attributeChangedCallback(name: string, _old: string | null, value: string | null): void {
+    if (!this.app) return;
+    if (name === 'controls' || name === 'plots') {
+      // The layout changes: build the element anew.
+      this.disconnectedCallback();
+      this.connectedCallback();
+      return;
+    }
+    // A removed attribute goes back to its default; otherwise the panel's changes are kept.
+    this.app.set(this.readAttributes(value === null ? DEFAULT_SETTINGS : this.app.current), true);
+  }
+
+  /** The settings the attributes ask for; a bad one is reported and `base`'s value kept. */
+  private readAttributes(base: FilmSettings): FilmSettings {
+    const query = new URLSearchParams();
+    for (const name of Object.keys(PARAMETERS)) {
+      const value = this.getAttribute(name);
+      if (value !== null) query.set(name, value);
+    }
+    const { settings, errors } = parseSettings(query.toString(), base);
+    this.messages?.replaceChildren(
+      ...errors.map((e) => Object.assign(this.ownerDocument.createElement('p'), { textContent: e })), // never innerHTML
+    );
+    return settings;
+  }
+}
+
+/** Registers the element (once per page, whichever bundle gets there first). */
+export function defineThinFilmBubble(name = 'thin-film-bubble'): void {
+  if (!customElements.get(name)) customElements.define(name, ThinFilmBubble);
+}

@@ -1,0 +1,41 @@
+import { type Matrix3, type Rgb, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
+import { type FilmStack, type Polarization } from '../physics/filmReflectance.ts';
+import { type IlluminantSpec } from '../physics/illuminants.ts';
+import { type Normalization, type Xyz, filmXyz } from '../physics/spectralIntegration.ts';
+
+/** One film colour of the scale. */
+export interface ScaleColor {
+  readonly thicknessNm: number;
+  readonly xyz: Xyz;
+  /** 8-bit encoded display RGB (gamut-clipped), for drawing. */
+  readonly rgb8: Rgb;
+}
+
+export interface ScaleOptions {
+  readonly illuminant: IlluminantSpec;
+  readonly polarization: Polarization;
+  readonly normalization: Normalization;
+  /** XYZ → the display's linear RGB (eq 19 for sRGB). */
+  readonly xyzToLinearRgb: Matrix3;
+}
+
+/**
+ * The interference colour scale: the reference colour (eqs 15–18) of the film at one angle for
+ * `count` thicknesses from 0 to `maxThicknessNm` — the strip under the plots and the path in
+ * the chromaticity diagram.
+ */
+export function interferenceScale(
+  stack: Omit<FilmStack, 'thicknessNm'>,
+  maxThicknessNm: number,
+  count: number,
+  o: ScaleOptions,
+): ScaleColor[] {
+  const colors: ScaleColor[] = [];
+  for (let i = 0; i < count; i++) {
+    const thicknessNm = (maxThicknessNm * i) / (count - 1);
+    const xyz = filmXyz({ ...stack, thicknessNm }, o);
+    const rgb = mapToGamut(applyMatrix3(o.xyzToLinearRgb, xyz), xyz[1]);
+    colors.push({ thicknessNm, xyz, rgb8: [encode8(rgb[0]), encode8(rgb[1]), encode8(rgb[2])] });
+  }
+  return colors;
+}

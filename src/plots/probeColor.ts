@@ -1,0 +1,31 @@
+import { type Matrix3, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
+import { deltaE00 } from '../physics/colorDifference.ts';
+import { type FilmStack, type Polarization } from '../physics/filmReflectance.ts';
+import { type IlluminantSpec } from '../physics/illuminants.ts';
+import { type Normalization, type Xyz, filmXyz, whiteXyz } from '../physics/spectralIntegration.ts';
+
+/** The reference's account of a probed film, and how far the rendered colour is from it. */
+export interface ProbeColor {
+  readonly xyz: Xyz;
+  readonly linearRgb: readonly [number, number, number];
+  /** The gamut-clipped colour, encoded to 8 bits, and as #rrggbb. */
+  readonly rgb8: readonly [number, number, number];
+  readonly hex: string;
+  /** ΔE00 (CIEDE2000) between the rendered and the reference XYZ, under the illuminant's white. */
+  readonly deltaE00: number;
+}
+
+export interface ProbeLight {
+  readonly illuminant: IlluminantSpec;
+  readonly polarization: Polarization;
+  readonly normalization: Normalization;
+}
+
+/** The reference colour (eqs 15–19) of the probed film, compared with what the shader rendered there. */
+export function probeColor(stack: FilmStack, light: ProbeLight, xyzToLinearRgb: Matrix3, renderedXyz: Xyz): ProbeColor {
+  const xyz = filmXyz(stack, light);
+  const linearRgb = applyMatrix3(xyzToLinearRgb, xyz);
+  const [r, g, b] = mapToGamut(linearRgb, xyz[1]).map(encode8) as [number, number, number];
+  const hex = `#${[r, g, b].map((v) => v.toString(16).padStart(2, '0')).join('')}`;
+  return { xyz, linearRgb, rgb8: [r, g, b], hex, deltaE00: deltaE00(renderedXyz, xyz, whiteXyz(light.illuminant, light.normalization)) };
+}

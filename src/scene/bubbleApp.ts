@@ -1,0 +1,163 @@
+import type GUI from 'lil-gui';
+import { PlotPanel } from '../plots/plotPanel.ts';
+import type { FilmSettings } from '../render/filmSettings.ts';
+import type { BubbleView } from './bubbleView.ts';
+import { createControlPanel } from './controlPanel.ts';
+
+/** While the swirl animates, the plots follow the probed film this often. */
+const PLOT_INTERVAL_MS = 250;
+
+export interface BubbleAppParts {
+  readonly view: BubbleView;
+  /** The element the bubble is shown in: its CSS box sizes the view, a click on it moves the probe. */
+  readonly surface: HTMLElement;
+  /** Called after each frame is drawn (e.g. to copy a shared renderer's canvas to the page). */
+  readonly present?: () => void;
+  /** Where the lil-gui panel goes, if any ('page': lil-gui's own place, the page's top right). */
+  readonly controls?: HTMLElement | 'page';
+  /** Where the plots go, if any. */
+  readonly plots?: HTMLElement;
+  /** Called when the panel or a click changes the settings. */
+  readonly onChange?: (s: FilmSettings) => void;
+  /** Called after every frame. */
+  readonly onFrame?: () => void;
+}
+
+/**
+ * A bubble on a page: the view, its controls and plots, and when to draw. Frames are drawn on
+ * demand — one per change — and in a loop only while the swirl animates and the bubble is both
+ * on screen and in a visible page.
+ */
+export class BubbleApp {
+  private settings: FilmSettings;
+  private gui: GUI | null = null;
+  private readonly panel: PlotPanel | null;
+  private onScreen = true;
+  private pending = 0;
+  private looping = false;
+  private clockOrigin = 0;
+  private plotsDue = true;
+  private lastPlotMs = -Infinity;
+  private readonly disconnect: () => void;
+
+  constructor(private readonly parts: BubbleAppParts) {
+    this.settings = parts.view.current;
+    this.panel = parts.plots ? new PlotPanel(parts.surface.ownerDocument) : null;
+    if (this.panel) parts.plots!.append(this.panel.element);
+    this.buildControls();
+    const onClick = (e: MouseEvent) => {
+      const box = parts.surface.getBoundingClientRect();
+      const probe = [(e.clientX - box.left) / box.width, (e.clientY - box.top) / box.height] as const;
+      if (probe.every((v) => v >= 0 && v <= 1)) this.change({ ...this.settings, probe });
+    };
+    const onVisibility = () => this.wake();
+    const resize = new ResizeObserver(() => this.fit());
+    parts.surface.addEventListener('click', onClick);
+    document.addEventListener('visibilitychange', onVisibility);
+    resize.observe(parts.surface);
+    this.disconnect = () => {
+      parts.surface.removeEventListener('click', onClick);
+      document.removeEventListener('visibilitychange', onVisibility);
+      resize.disconnect();
+    };
+    this.fit();
+  }
+
+  get current(): FilmSettings {
+    return this.settings;
+  }
+
+  /** Shows new (validated) settings; the panel follows when `rebuildControls`. */
+  set(s: FilmSettings, rebuildControls = false): void {
+    this.settings = s;
+    this.parts.view.apply(s);
+    this.plotsDue = true;
+    if (rebuildControls) this.buildControls();
+    this.requestFrame();
+  }
+
+  /** Whether the bubble is on screen (an IntersectionObserver's verdict). */
+  setOnScreen(visible: boolean): void {
+    this.onScreen = visible;
+    this.wake();
+  }
+
+  /** Draws a frame now (tests and screenshots), whatever the scheduling. */
+  renderNow(): void {
+    this.parts.view.render();
+    this.parts.present?.();
+    this.updatePlots(performance.now());
+    this.parts.onFrame?.();
+  }
+
+  dispose(): void {
+    cancelAnimationFrame(this.pending);
+    this.looping = false;
+    this.disconnect();
+    this.gui?.destroy();
+    this.panel?.element.remove();
+    this.parts.view.dispose();
+  }
+
+  private get showing(): boolean {
+    return this.onScreen && !document.hidden;
+  }
+
+  private get animating(): boolean {
+    return this.settings.animate && this.settings.field === 'swirl';
+  }
+
+  private change(s: FilmSettings): void {
+    this.set({ ...s, timeSeconds: this.settings.timeSeconds });
+    this.parts.onChange?.(this.settings);
+  }
+
+  private buildControls(): void {
+    this.gui?.destroy();
+    const { controls } = this.parts;
+    this.gui = controls ? createControlPanel(this.settings, (s) => this.change(s), controls === 'page' ? undefined : controls) : null;
+  }
+
+  private fit(): void {
+    const { clientWidth, clientHeight } = this.parts.surface;
+    this.parts.view.resize(clientWidth, clientHeight, Math.min(2, globalThis.devicePixelRatio || 1));
+    this.plotsDue = true;
+    this.requestFrame();
+  }
+
+  /** Restarts drawing when the bubble becomes visible again. */
+  private wake(): void {
+    if (this.showing) this.requestFrame();
+  }
+
+  private requestFrame(): void {
+    if (this.pending || !this.showing) return;
+    this.pending = requestAnimationFrame((now) => this.frame(now));
+  }
+
+  private frame(now: number): void {
+    this.pending = 0;
+    if (!this.showing) {
+      this.looping = false;
+      return;
+    }
+    if (this.animating) {
+      if (!this.looping) this.clockOrigin = now - this.settings.timeSeconds * 1000;
+      this.looping = true;
+      this.settings = { ...this.settings, timeSeconds: (now - this.clockOrigin) / 1000 };
+      this.parts.view.apply(this.settings);
+    } else {
+      this.looping = false;
+    }
+    this.renderNow();
+    if (this.looping) this.requestFrame();
+  }
+
+  private updatePlots(now: number): void {
+    if (!this.panel || !(this.plotsDue || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS))) return;
+    const [fx, fy] = this.settings.probe;
+    this.panel.update(this.settings, this.parts.view.probe(fx, fy), this.parts.view.displayIsP3);
+    this.plotsDue = false;
+    this.lastPlotMs = now;
+  }
+}

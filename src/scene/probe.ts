@@ -1,0 +1,101 @@
+import {
+  FloatType,
+  type Mesh,
+  type PerspectiveCamera,
+  Ray,
+  RGBAFormat,
+  ShaderMaterial,
+  Sphere,
+  type SphereGeometry,
+  Vector2,
+  Vector3,
+  type WebGLRenderer,
+  WebGLRenderTarget,
+} from 'three';
+import type { Xyz } from '../physics/spectralIntegration.ts';
+
+/** What the bubble shows at one point of the view: the near wall's film there. */
+export interface ProbeReading {
+  readonly thicknessNm: number;
+  readonly angleDeg: number;
+  /** The film's XYZ as the shader computes it there (before exposure), read from a float target. */
+  readonly renderedXyz: Xyz;
+}
+
+const UNIT_SPHERE = new Sphere(new Vector3(), 1);
+
+/**
+ * θ_i where the view ray through (fx, fy) (fractions of the view, from the top left) meets the
+ * unit bubble, or null where it misses: the angle between the ray and the sphere's normal.
+ */
+export function incidenceAngleDeg(camera: PerspectiveCamera, fx: number, fy: number): number | null {
+  camera.updateMatrixWorld();
+  const ndc = new Vector2(2 * fx - 1, 1 - 2 * fy);
+  const origin = new Vector3().setFromMatrixPosition(camera.matrixWorld);
+  const direction = new Vector3(ndc.x, ndc.y, 0.5).unproject(camera).sub(origin).normalize();
+  const hit = new Ray(origin, direction).intersectSphere(UNIT_SPHERE, new Vector3());
+  if (!hit) return null;
+  const cos = Math.min(1, Math.abs(hit.normalize().dot(direction)));
+  return (Math.acos(cos) * 180) / Math.PI;
+}
+
+/**
+ * Reads the film at one pixel back from the GPU: the bubble is drawn once more through a
+ * 1-pixel window of the camera (setViewOffset) with the material's PROBE output — the near
+ * wall's film XYZ and thickness — into a 1×1 float target.
+ */
+export class FilmProbe {
+  private readonly target = new WebGLRenderTarget(1, 1, { type: FloatType, format: RGBAFormat });
+  private material: ShaderMaterial | null = null;
+
+  read(
+    renderer: WebGLRenderer,
+    camera: PerspectiveCamera,
+    bubble: Mesh<SphereGeometry, ShaderMaterial>,
+    viewSize: { width: number; height: number },
+    fx: number,
+    fy: number,
+  ): ProbeReading | null {
+    const angleDeg = incidenceAngleDeg(camera, fx, fy);
+    if (angleDeg === null) return null;
+    const shown = bubble.material;
+    const probe = this.probeMaterial(shown);
+    const { width, height } = viewSize;
+    const x = Math.min(width - 1, Math.floor(fx * width));
+    const y = Math.min(height - 1, Math.floor(fy * height));
+    camera.setViewOffset(width, height, x, y, 1, 1);
+    bubble.material = probe;
+    const previous = renderer.getRenderTarget();
+    renderer.setRenderTarget(this.target);
+    renderer.clear();
+    renderer.render(bubble, camera);
+    const pixel = new Float32Array(4);
+    renderer.readRenderTargetPixels(this.target, 0, 0, 1, 1, pixel);
+    renderer.setRenderTarget(previous);
+    bubble.material = shown;
+    camera.clearViewOffset();
+    return { thicknessNm: pixel[3]!, angleDeg, renderedXyz: [pixel[0]!, pixel[1]!, pixel[2]!] };
+  }
+
+  /** The bubble's material with PROBE defined, sharing its uniforms; follows its defines. */
+  private probeMaterial(shown: ShaderMaterial): ShaderMaterial {
+    const defines = { ...shown.defines, PROBE: 1 };
+    if (!this.material) {
+      this.material = new ShaderMaterial({
+        defines,
+        uniforms: shown.uniforms,
+        vertexShader: shown.vertexShader,
+        fragmentShader: shown.fragmentShader,
+      });
+    } else if (JSON.stringify(defines) !== JSON.stringify(this.material.defines)) {
+      this.material.defines = defines;
+      this.material.needsUpdate = true;
+    }
+    return this.material;
+  }
+
+  dispose(): void {
+    this.target.dispose();
+    this.material?.dispose();
+  }
+}
