@@ -1,5 +1,6 @@
 import { existsSync } from 'node:fs';
 import { defineConfig, chromium } from '@playwright/test';
+import { BUILT_PORT, BUILT_URL, DEV_PORT } from './tests/e2e/servers.ts';
 
 /**
  * Finds a Chromium by itself: CHROME_PATH if set, else Debian's /usr/bin/chromium, else the
@@ -25,8 +26,7 @@ function fail(why: string): never {
 }
 
 const executablePath = chromiumExecutable();
-/** E2E_PORT lets two checkouts run their suites side by side. */
-const port = Number(process.env.E2E_PORT ?? 5180);
+const port = DEV_PORT;
 
 export default defineConfig({
   testDir: 'tests/e2e',
@@ -42,10 +42,19 @@ export default defineConfig({
       args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist', '--disable-quic'],
     },
   },
-  webServer: {
-    command: `npx vite --port ${port} --strictPort --host 127.0.0.1`,
-    url: `http://127.0.0.1:${port}`,
-    reuseExistingServer: !process.env.CI,
-    timeout: 60_000,
-  },
+  webServer: [
+    {
+      command: `npx vite --port ${port} --strictPort --host 127.0.0.1`,
+      url: `http://127.0.0.1:${port}`,
+      reuseExistingServer: !process.env.CI,
+      timeout: 60_000,
+    },
+    {
+      // The built site and element, served statically (tests/e2e/built.spec.ts).
+      command: `npx vite build && npx vite build --mode element && npx vite preview --port ${BUILT_PORT} --strictPort --host 127.0.0.1`,
+      url: `${BUILT_URL}/thin-film-bubble.js`,
+      reuseExistingServer: !process.env.CI,
+      timeout: 180_000,
+    },
+  ],
 });

@@ -51,8 +51,8 @@ for (const [name, url] of Object.entries(VIEWS)) {
     // a uniform film still shades with θ_i).
     expect(distinctColors).toBeGreaterThan(30);
     expect(meanLevel).toBeGreaterThan(20);
-    // The control panel is UI, not the look under test, and changes on its own: hidden.
-    await page.addStyleTag({ content: '.lil-gui { display: none !important; }' });
+    // The control panel and the plots are UI, not the look under test: hidden.
+    await page.addStyleTag({ content: '.lil-gui, #plots-box { display: none !important; }' });
     await expect(page).toHaveScreenshot(`${name}.png`, { threshold: PIXEL_THRESHOLD, maxDiffPixelRatio: MAX_DIFF_PIXEL_RATIO });
   });
 }

@@ -64,3 +64,20 @@ describe('settingsToQuery', () => {
     expect(settingsToQuery(DEFAULT_SETTINGS)).toBe('');
   });
 });
+
+describe('the probe parameter', () => {
+  it('reads x,y fractions of the view and writes them back', () => {
+    const { settings, errors } = parseSettings('?probe=0.25,0.75');
+    expect(errors).toEqual([]);
+    expect(settings.probe).toEqual([0.25, 0.75]);
+    expect(settingsToQuery(settings)).toBe('probe=0.25%2C0.75');
+  });
+
+  it.each(['', '0.5', '0.5,0.5,0.5', '1.5,0.5', '-0.1,0.5', 'NaN,0.5', 'Infinity,0', 'a,b', '0.5,'])('refuses %j, naming the range', (raw) => {
+    const { settings, errors } = parseSettings(`?probe=${encodeURIComponent(raw)}`);
+    expect(settings.probe).toEqual([0.5, 0.5]);
+    expect(errors).toHaveLength(1);
+    expect(errors[0]).toContain('probe');
+    expect(errors[0]).toContain('[0, 1]');
+  });
+});

@@ -1,0 +1,121 @@
+import { expect, test, type Page } from '@playwright/test';
+import { MAX_CODE_DIFFERENCE, referenceSrgb8, worstCodeDifference } from './referenceColor.ts';
+import { BUILT_URL } from './servers.ts';
+
+/**
+ * The built element (dist/thin-film-bubble.js, from `npm run build`) on plain HTML pages served
+ * statically with the build output: one <script type="module"> line, then the elements.
+ */
+
+const FILM = 'field="uniform" thickness="450" env="none" sides="front" animate="0"';
+
+/** A plain page at the built site's origin holding `body`, loading the element with one line. */
+async function plainPage(page: Page, body: string): Promise<void> {
+  await page.route(`${BUILT_URL}/plain.html`, (route) =>
+    route.fulfill({
+      contentType: 'text/html',
+      body: `<!doctype html><meta charset="utf-8"><script type="module" src="/thin-film-bubble.js"></script>
+<style>thin-film-bubble { width: 200px; height: 200px; display: inline-block; }</style>${body}`,
+    }),
+  );
+  await page.goto(`${BUILT_URL}/plain.html`);
+}
+
+/** Counts WebGL2 contexts and shader compilations on the page, from before any script runs (on every load after this call). */
+async function countGl(page: Page): Promise<void> {
+  await page.addInitScript(() => {
+    const w = window as unknown as { glCanvases: Set<HTMLCanvasElement>; compiles: number };
+    w.glCanvases = new Set();
+    w.compiles = 0;
+    const getContext = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, kind: string, ...rest: unknown[]) {
+      if (kind === 'webgl2') w.glCanvases.add(this);
+      return (getContext as (...a: unknown[]) => unknown).call(this, kind, ...rest);
+    } as typeof getContext;
+    const compile = WebGL2RenderingContext.prototype.compileShader;
+    WebGL2RenderingContext.prototype.compileShader = function (this: WebGL2RenderingContext, s: WebGLShader) {
+      w.compiles++;
+      return compile.call(this, s);
+    };
+  });
+}
+
+const glCounts = (page: Page) =>
+  page.evaluate(() => {
+    const w = window as unknown as { glCanvases: Set<HTMLCanvasElement>; compiles: number };
+    return { contexts: w.glCanvases.size, compiles: w.compiles, lost: [...w.glCanvases].map((c) => (c.getContext('webgl2') as WebGL2RenderingContext).isContextLost()) };
+  });
+
+/** The centre pixel of the i-th element's canvas, once it has drawn. */
+async function centre(page: Page, i: number): Promise<number[]> {
+  const el = page.locator('thin-film-bubble').nth(i);
+  await expect(el).toHaveAttribute('data-frames', /\d+/);
+  return el.evaluate((e) => {
+    const c = e.querySelector('canvas')!;
+    return [...c.getContext('2d')!.getImageData(c.width >> 1, c.height >> 1, 1, 1).data.slice(0, 3)];
+  });
+}
+
+function watchProblems(page: Page): string[] {
+  const problems: string[] = [];
+  page.on('console', (m) => {
+    // The test's own getImageData reads draw Chrome's advice on willReadFrequently: not the element's.
+    if ((m.type() === 'error' || m.type() === 'warning') && !m.text().includes('willReadFrequently')) problems.push(m.text());
+  });
+  page.on('pageerror', (e) => problems.push(e.message));
+  return problems;
+}
+
+test('the built element renders the reference centre colour; two elements share one context and its programs', async ({ page }) => {
+  const problems = watchProblems(page);
+  await countGl(page);
+  await plainPage(page, `<thin-film-bubble ${FILM} illuminant="D55"></thin-film-bubble>`);
+  const one = await centre(page, 0);
+  const single = await glCounts(page);
+
+  await plainPage(page, `<thin-film-bubble ${FILM} illuminant="D55"></thin-film-bubble><thin-film-bubble ${FILM} illuminant="D93"></thin-film-bubble>`);
+  const [d55, d93] = [await centre(page, 0), await centre(page, 1)];
+  const pair = await glCounts(page);
+  console.log(`element centre: D55 ${d55} (alone ${one}), D93 ${d93}; shader compiles: one element ${single.compiles}, two ${pair.compiles}`);
+
+  for (const [rgb, illuminant] of [[one, 'D55'], [d55, 'D55'], [d93, 'D93']] as const) {
+    expect(worstCodeDifference(rgb, referenceSrgb8({ thicknessNm: 450 }, illuminant)), `${illuminant}: ${rgb}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  }
+  expect(pair.contexts).toBe(1);
+  expect(pair.compiles).toBe(single.compiles);
+  expect(problems).toEqual([]);
+});
+
+test('attributes: a bad one is named with its range and its default kept; a change redraws; removal frees the context', async ({ page }) => {
+  const problems = watchProblems(page);
+  await countGl(page);
+  await plainPage(page, `<thin-film-bubble ${FILM} nFilm="<b>9</b>" illuminant="D99"></thin-film-bubble>`);
+  const el = page.locator('thin-film-bubble');
+  await expect(el.locator('.tfb-messages')).toContainText('nFilm');
+  await expect(el.locator('.tfb-messages')).toContainText('[1, 4]');
+  await expect(el.locator('.tfb-messages')).toContainText('illuminant');
+  expect(await el.locator('.tfb-messages b').count()).toBe(0);
+  expect(worstCodeDifference(await centre(page, 0), referenceSrgb8({ thicknessNm: 450 }, 'D65'))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+
+  const frames = Number(await el.getAttribute('data-frames'));
+  await el.evaluate((e) => e.setAttribute('thickness', '300'));
+  await expect(el).not.toHaveAttribute('data-frames', String(frames));
+  expect(worstCodeDifference(await centre(page, 0), referenceSrgb8({ thicknessNm: 300 }, 'D65'))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+
+  await el.evaluate((e) => e.remove());
+  expect((await glCounts(page)).lost).toEqual([true]);
+  expect(problems).toEqual([]);
+});
+
+test('the built teaching page shows all its bubbles without an error', async ({ page }) => {
+  const problems = watchProblems(page);
+  await page.goto(`${BUILT_URL}/teaching.html`);
+  const bubbles = page.locator('thin-film-bubble');
+  expect(await bubbles.count()).toBeGreaterThanOrEqual(3);
+  for (let i = 0; i < (await bubbles.count()); i++) {
+    await bubbles.nth(i).scrollIntoViewIfNeeded();
+    await expect(bubbles.nth(i)).toHaveAttribute('data-frames', /\d+/);
+  }
+  await expect(page.locator('.tfb-plots')).toHaveAttribute('data-probe', /bubble$/);
+  expect(problems).toEqual([]);
+});
