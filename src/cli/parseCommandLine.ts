@@ -1,7 +1,7 @@
 import { parseArgs } from 'node:util';
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
 import { NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
-import { ParameterError } from '../physics/validate.ts';
+import { ParameterError, expectedNumber, isInDomain } from '../physics/validate.ts';
 import {
   type CaseField,
   type ColorCase,
@@ -10,8 +10,6 @@ import {
   NUMBER_FIELDS,
   type NumberField,
   WAVELENGTH_DOMAIN_NM,
-  expectedNumber,
-  isInDomain,
   validateColorCase,
 } from './colorCase.ts';
 import { describeValue, oneOf, rejectValue } from './inputErrors.ts';

@@ -12,10 +12,22 @@ export class ParameterError extends RangeError {
   }
 }
 
+/** A closed interval of allowed numbers, with its unit for messages ('' for none). */
+export interface NumberDomain {
+  readonly min: number;
+  readonly max: number;
+  readonly unit: string;
+}
+
+/** "a number in [min, max] unit", as every message states a range. */
+export const expectedNumber = (d: NumberDomain): string => `a number in [${d.min}, ${d.max}]${d.unit ? ` ${d.unit}` : ''}`;
+
+export const isInDomain = (value: unknown, d: NumberDomain): value is number =>
+  typeof value === 'number' && Number.isFinite(value) && value >= d.min && value <= d.max;
+
 export function assertInRange(name: string, value: number, min: number, max: number, unit = ''): void {
-  if (typeof value !== 'number' || !Number.isFinite(value) || value < min || value > max) {
-    const u = unit ? ` ${unit}` : '';
-    throw new ParameterError(name, `${name}: ${String(value)} is not allowed; expected a number in [${min}, ${max}]${u}`);
+  if (!isInDomain(value, { min, max, unit })) {
+    throw new ParameterError(name, `${name}: ${String(value)} is not allowed; expected ${expectedNumber({ min, max, unit })}`);
   }
 }
 
