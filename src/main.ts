@@ -1,6 +1,7 @@
 import { createControlPanel } from './scene/controlPanel.ts';
 import { parseSettings, settingsToQuery } from './scene/params.ts';
 import { BubbleView } from './scene/bubbleView.ts';
+import { hasWebGL2, showCpuFallback } from './scene/cpuFallback.ts';
 import { type FilmSettings } from './render/filmSettings.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
@@ -15,6 +16,10 @@ function say(text: string) {
 }
 errors.forEach(say);
 
+if (!hasWebGL2()) {
+  showCpuFallback(canvas, settings);
+  await new Promise<never>(() => {}); // everything below needs WebGL2: stop here, quietly
+}
 const view = new BubbleView(canvas, settings);
 document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
 if (settings.space !== 'srgb' && !view.displayIsP3) say('This browser has no Display P3 canvas: showing sRGB.');
