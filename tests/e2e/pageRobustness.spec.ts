@@ -31,7 +31,7 @@ test('several bad URL parameters: a message for each naming its range, defaults 
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
   const messages = page.locator('#messages p');
   await expect(messages).toHaveCount(7);
-  for (const [name, range] of [
+  for (const [name, range] of <[string, string][]>[
     ['thickness', '[0, 20000] nm'], ['nFilm', '[1, 4]'], ['illuminant', '[4000, 25000] K'], ['exposure', '[0, 100]'],
     ['mode', 'exact, table'], ['time', '[0, 1000000] s'], ['speed', '[0, 10]'],
   ]) {
