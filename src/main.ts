@@ -1,6 +1,7 @@
 import { type FilmSettings } from './render/filmSettings.ts';
 import { BubbleApp } from './scene/bubbleApp.ts';
 import { BubbleView, createBubbleRenderer } from './scene/bubbleView.ts';
+import { hasWebGL2, showCpuFallback } from './scene/cpuFallback.ts';
 import { parseSettings, settingsToQuery } from './scene/params.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
@@ -16,10 +17,6 @@ function say(text: string) {
 }
 errors.forEach(say);
 
-const view = new BubbleView(createBubbleRenderer(canvas), settings);
-document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
-if (settings.space !== 'srgb' && !view.displayIsP3) say('This browser has no Display P3 canvas: showing sRGB.');
-
 // The URL follows the controls without a history entry per slider step.
 let urlTimer = 0;
 function followInUrl(s: FilmSettings) {
@@ -30,13 +27,26 @@ function followInUrl(s: FilmSettings) {
   }, 250);
 }
 
-const app = new BubbleApp({
-  view,
-  surface: canvas,
-  controls: 'page',
-  plots,
-  onChange: followInUrl,
-  onFrame: () => (document.body.dataset.frames = 'ready'),
-});
-app.renderNow();
-Object.assign(window, { bubbleView: view, bubbleApp: app });
+/** The live bubble with its panel and plots. */
+function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement): void {
+  const view = new BubbleView(createBubbleRenderer(canvas), settings);
+  document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
+  if (settings.space !== 'srgb' && !view.displayIsP3) say('This browser has no Display P3 canvas: showing sRGB.');
+  const app = new BubbleApp({
+    view,
+    surface: canvas,
+    controls: 'page',
+    plots,
+    onChange: followInUrl,
+    onFrame: () => (document.body.dataset.frames = 'ready'),
+  });
+  app.renderNow();
+  Object.assign(window, { bubbleView: view, bubbleApp: app });
+}
+
+if (hasWebGL2()) startLiveView(canvas, plots);
+else {
+  // Without WebGL2 the page still teaches: a still image computed on the CPU, no plots.
+  plots.closest('details')?.remove();
+  showCpuFallback(canvas, settings);
+}

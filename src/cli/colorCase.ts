@@ -1,6 +1,7 @@
-import { type FilmStack, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
+import { FILM_STACK_DOMAIN, type FilmStack, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_MAX_K, DAYLIGHT_CCT_MIN_K, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralIntegration.ts';
+import { type NumberDomain, expectedNumber, isInDomain } from '../physics/validate.ts';
 import { oneOf, rejectValue } from './inputErrors.ts';
 
 /** One film to colour: what the command line or one entry of a cases file describes. */
@@ -14,23 +15,16 @@ export interface ColorCase {
   readonly wavelengthsNm: readonly number[];
 }
 
-/** A closed interval of allowed numbers, with its unit for messages. */
-export interface NumberDomain {
-  readonly min: number;
-  readonly max: number;
-  readonly unit: string;
-}
-
 /**
- * The numeric fields of a case, with the domain documented on `FilmStack` (filmReflectance.ts)
- * and the default when a case leaves one out: a 500 nm soap film in air seen head-on.
+ * The numeric fields of a case, with their domain (FILM_STACK_DOMAIN, filmReflectance.ts) and
+ * the default when a case leaves one out: a 500 nm soap film in air seen head-on.
  */
 export const NUMBER_FIELDS = {
-  thicknessNm: { min: 0, max: 20_000, unit: 'nm', fallback: 500 },
-  angleDeg: { min: 0, max: 90, unit: 'degrees', fallback: 0 },
-  nOutside: { min: 1, max: 4, unit: '', fallback: SOAP_FILM_IN_AIR.nOutside },
-  nFilm: { min: 1, max: 4, unit: '', fallback: SOAP_FILM_IN_AIR.nFilm },
-  nInside: { min: 1, max: 4, unit: '', fallback: SOAP_FILM_IN_AIR.nInside },
+  thicknessNm: { ...FILM_STACK_DOMAIN.thicknessNm, fallback: 500 },
+  angleDeg: { ...FILM_STACK_DOMAIN.angleDeg, fallback: 0 },
+  nOutside: { ...FILM_STACK_DOMAIN.nOutside, fallback: SOAP_FILM_IN_AIR.nOutside },
+  nFilm: { ...FILM_STACK_DOMAIN.nFilm, fallback: SOAP_FILM_IN_AIR.nFilm },
+  nInside: { ...FILM_STACK_DOMAIN.nInside, fallback: SOAP_FILM_IN_AIR.nInside },
 } as const satisfies Record<string, NumberDomain & { fallback: number }>;
 export type NumberField = keyof typeof NUMBER_FIELDS;
 
@@ -50,12 +44,8 @@ export const MAX_WAVELENGTHS = 10_000;
 export const MAX_ID_CHARS = 200;
 export const DAYLIGHT_CCT_DOMAIN_K: NumberDomain = { min: DAYLIGHT_CCT_MIN_K, max: DAYLIGHT_CCT_MAX_K, unit: 'K' };
 
-export const expectedNumber = (d: NumberDomain): string => `a number in [${d.min}, ${d.max}]${d.unit ? ` ${d.unit}` : ''}`;
 export const ILLUMINANT_EXPECTED =
   `one of ${NAMED_ILLUMINANTS.join(', ')} or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`;
-
-export const isInDomain = (value: unknown, d: NumberDomain): value is number =>
-  typeof value === 'number' && Number.isFinite(value) && value >= d.min && value <= d.max;
 
 /** A case's fields before checking: numbers already numbers, absent fields undefined. */
 export type RawCase = Readonly<Partial<Record<CaseField, unknown>>>;

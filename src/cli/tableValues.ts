@@ -1,5 +1,4 @@
-import { ParameterError } from '../physics/validate.ts';
-import { type NumberDomain, expectedNumber, isInDomain } from './colorCase.ts';
+import { type NumberDomain, ParameterError, expectedNumber, isInDomain } from '../physics/validate.ts';
 import { rejectValue } from './inputErrors.ts';
 import { parseStrictNumber } from './parseStrictNumber.ts';
 

@@ -1,6 +1,7 @@
 import { type Complex, cAbs2, cAdd, cDiv, cExpI, cMul, cScale, cSub } from './complex.ts';
 import { type InterfaceCoefficients, fresnelCoefficients } from './fresnel.ts';
 import { cosDeg, refractedCos } from './snell.ts';
+import { type NumberDomain, assertInRange } from './validate.ts';
 
 /**
  * How the two polarisations are combined:
@@ -20,6 +21,23 @@ export interface FilmStack {
   /** d in nm, 0 ≤ d ≤ 20 000 (the documented domain; larger is finite but slow to integrate) */
   readonly thicknessNm: number;
   /** θ_i in degrees, 0 ≤ θ ≤ 90 */ readonly angleDeg: number;
+}
+
+/** The domain of each field of a FilmStack: what every entry point checks and filmOptics enforces. */
+export const FILM_STACK_DOMAIN = {
+  nOutside: { min: 1, max: 4, unit: '' },
+  nFilm: { min: 1, max: 4, unit: '' },
+  nInside: { min: 1, max: 4, unit: '' },
+  thicknessNm: { min: 0, max: 20_000, unit: 'nm' },
+  angleDeg: { min: 0, max: 90, unit: 'degrees' },
+} as const satisfies Record<keyof FilmStack, NumberDomain>;
+
+/** Throws a ParameterError naming the first field outside FILM_STACK_DOMAIN (NaN and ±Infinity included). */
+export function assertFilmStack(stack: FilmStack): void {
+  for (const field of Object.keys(FILM_STACK_DOMAIN) as (keyof FilmStack)[]) {
+    const { min, max, unit } = FILM_STACK_DOMAIN[field];
+    assertInRange(field, stack[field], min, max, unit);
+  }
 }
 
 export const SOAP_FILM_IN_AIR = { nOutside: 1, nFilm: 1.33, nInside: 1 } as const;
@@ -77,9 +95,11 @@ const bareInterface = ([r, t]: Complex[]): AiryTerms => ({
 /**
  * The λ-independent part of the film's optics: Snell (eqs 1, 2), the Fresnel coefficients of
  * the three interfaces a→b, b→a, b→c (eqs 5, 6, 9, 10, with eqs 4 and 8 in `paper` mode), and
- * the optical path difference Δ (eq 12, reduced to 2 n_b d cos θ_r).
+ * the optical path difference Δ (eq 12, reduced to 2 n_b d cos θ_r). A stack outside
+ * FILM_STACK_DOMAIN throws a ParameterError before anything is computed.
  */
 export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpolarized'): FilmOptics {
+  assertFilmStack(stack);
   const { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: d } = stack;
   const cos = cosDeg(stack.angleDeg);
   const cosI = refractedCos(na, na, cos);

@@ -12,10 +12,37 @@ export class ParameterError extends RangeError {
   }
 }
 
+/** A closed interval of allowed numbers, with its unit for messages ('' for none). */
+export interface NumberDomain {
+  readonly min: number;
+  readonly max: number;
+  readonly unit: string;
+}
+
+/** "a number in [min, max] unit", as every message states a range. */
+export const expectedNumber = (d: NumberDomain): string => `a number in [${d.min}, ${d.max}]${d.unit ? ` ${d.unit}` : ''}`;
+
+export const isInDomain = (value: unknown, d: NumberDomain): value is number =>
+  typeof value === 'number' && Number.isFinite(value) && value >= d.min && value <= d.max;
+
+/**
+ * Plain decimal notation, optionally with an exponent. `Number()` alone would also accept "",
+ * "  7 ", "0x1f", "0b11" and "Infinity"; none of those is a thickness or an angle.
+ */
+const DECIMAL = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
+
+/** The longest text read as one number; longer is certainly a mistake. */
+const MAX_NUMBER_CHARS = 32;
+
+/** The finite number `text` writes in plain decimal notation, or NaN ("12abc", "", "1e999"). */
+export function parseDecimal(text: string): number {
+  const value = text.length <= MAX_NUMBER_CHARS && DECIMAL.test(text) ? Number(text) : Number.NaN;
+  return Number.isFinite(value) ? value : Number.NaN;
+}
+
 export function assertInRange(name: string, value: number, min: number, max: number, unit = ''): void {
-  if (typeof value !== 'number' || !Number.isFinite(value) || value < min || value > max) {
-    const u = unit ? ` ${unit}` : '';
-    throw new ParameterError(name, `${name}: ${String(value)} is not allowed; expected a number in [${min}, ${max}]${u}`);
+  if (!isInDomain(value, { min, max, unit })) {
+    throw new ParameterError(name, `${name}: ${String(value)} is not allowed; expected ${expectedNumber({ min, max, unit })}`);
   }
 }
 

@@ -1,58 +1,67 @@
-import { POLARIZATIONS } from '../physics/filmReflectance.ts';
-import { DAYLIGHT_CCT_MAX_K, DAYLIGHT_CCT_MIN_K, type IlluminantSpec } from '../physics/illuminants.ts';
+import { FILM_STACK_DOMAIN, POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { DAYLIGHT_CCT_MAX_K, DAYLIGHT_CCT_MIN_K, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
 import { NORMALIZATIONS } from '../physics/spectralIntegration.ts';
+import { type NumberDomain, expectedNumber, isInDomain, parseDecimal } from '../physics/validate.ts';
 import { DEFAULT_SETTINGS, ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES } from '../render/filmSettings.ts';
 
 /** Longer values are refused outright (a mangled link, not a number). */
 export const MAX_VALUE_LENGTH = 64;
+/** How much of a refused value a message repeats before cutting it short. */
+export const MAX_ECHOED_CHARS = 24;
 
-type Parser = (raw: string) => Partial<FilmSettings>;
+/** One URL parameter: what it accepts (for messages) and its reading, or null when refused. */
+interface Parameter {
+  readonly expected: string;
+  readonly read: (raw: string) => Partial<FilmSettings> | null;
+}
 
-const number =
-  (key: keyof FilmSettings, min: number, max: number, unit = ''): Parser =>
-  (raw) => {
-    const v = raw.trim() === '' ? NaN : Number(raw);
-    if (!Number.isFinite(v) || v < min || v > max) throw new Error(`expected a number in [${min}, ${max}]${unit ? ` ${unit}` : ''}`);
-    return { [key]: v };
-  };
+const number = (key: keyof FilmSettings, domain: NumberDomain): Parameter => ({
+  expected: expectedNumber(domain),
+  read: (raw) => {
+    const v = parseDecimal(raw);
+    return isInDomain(v, domain) ? { [key]: v } : null;
+  },
+});
 
-const oneOf =
-  (key: keyof FilmSettings, allowed: readonly string[]): Parser =>
-  (raw) => {
-    if (!allowed.includes(raw)) throw new Error(`expected one of ${allowed.join(', ')}`);
-    return { [key]: raw };
-  };
+const oneOf = (key: keyof FilmSettings, allowed: readonly string[]): Parameter => ({
+  expected: `one of ${allowed.join(', ')}`,
+  read: (raw) => (allowed.includes(raw) ? { [key]: raw } : null),
+});
 
-const illuminant: Parser = (raw) => {
-  if (['D55', 'D65', 'D93', 'E', 'D65-table'].includes(raw)) return { illuminant: raw as IlluminantSpec };
-  const cct = raw.trim() === '' ? NaN : Number(raw);
-  if (!Number.isFinite(cct) || cct < DAYLIGHT_CCT_MIN_K || cct > DAYLIGHT_CCT_MAX_K) {
-    throw new Error(`expected D55, D65, D93, E, D65-table or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`);
-  }
-  return { illuminant: { daylightCct: cct } };
+const CCT_DOMAIN: NumberDomain = { min: DAYLIGHT_CCT_MIN_K, max: DAYLIGHT_CCT_MAX_K, unit: 'K' };
+const illuminant: Parameter = {
+  expected: `one of ${NAMED_ILLUMINANTS.join(', ')} or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`,
+  read: (raw) => {
+    if ((NAMED_ILLUMINANTS as readonly string[]).includes(raw)) return { illuminant: raw as IlluminantSpec };
+    const cct = parseDecimal(raw);
+    return isInDomain(cct, CCT_DOMAIN) ? { illuminant: { daylightCct: cct } } : null;
+  },
 };
 
-const flag = (key: keyof FilmSettings): Parser => (raw) => {
-  if (raw !== '0' && raw !== '1') throw new Error('expected 0 or 1');
-  return { [key]: raw === '1' };
+const flag = (key: keyof FilmSettings): Parameter => ({
+  expected: '0 or 1',
+  read: (raw) => (raw === '0' || raw === '1' ? { [key]: raw === '1' } : null),
+});
+
+const FRACTION: NumberDomain = { min: 0, max: 1, unit: '' };
+const probe: Parameter = {
+  expected: 'x,y with both in [0, 1] (fractions of the view from the top left)',
+  read: (raw) => {
+    const parts = raw.split(',').map(parseDecimal);
+    const [x, y] = parts;
+    return parts.length === 2 && isInDomain(x!, FRACTION) && isInDomain(y!, FRACTION) ? { probe: [x!, y!] } : null;
+  },
 };
 
-const probe: Parser = (raw) => {
-  const parts = raw.split(',');
-  const [x, y] = parts.map((v) => (v.trim() === '' ? NaN : Number(v)));
-  if (parts.length !== 2 || !(x! >= 0 && x! <= 1 && y! >= 0 && y! <= 1)) throw new Error('expected x,y with both in [0, 1] (fractions of the view from the top left)');
-  return { probe: [x!, y!] };
-};
-
-/** The URL parameters, their parsers and (through the messages) their ranges. */
-export const PARAMETERS: Record<string, Parser> = {
-  thickness: number('thicknessNm', 0, 20000, 'nm'),
-  thicknessRange: number('thicknessRangeNm', 0, 20000, 'nm'),
-  speed: number('swirlSpeed', 0, 10),
+/** The URL parameters, what each accepts, and how it is read. */
+export const PARAMETERS: Readonly<Record<string, Parameter>> = {
+  thickness: number('thicknessNm', FILM_STACK_DOMAIN.thicknessNm),
+  thicknessRange: number('thicknessRangeNm', FILM_STACK_DOMAIN.thicknessNm),
+  speed: number('swirlSpeed', { min: 0, max: 10, unit: '' }),
   field: oneOf('field', FIELDS),
-  nFilm: number('nFilm', 1, 4),
-  nOutside: number('nOutside', 1, 4),
-  nInside: number('nInside', 1, 4),
+  nFilm: number('nFilm', FILM_STACK_DOMAIN.nFilm),
+  nOutside: number('nOutside', FILM_STACK_DOMAIN.nOutside),
+  nInside: number('nInside', FILM_STACK_DOMAIN.nInside),
   illuminant,
   polarization: oneOf('polarization', POLARIZATIONS),
   normalization: oneOf('normalization', NORMALIZATIONS),
@@ -60,9 +69,9 @@ export const PARAMETERS: Record<string, Parser> = {
   mode: oneOf('mode', MODES),
   sides: oneOf('sides', SIDES),
   env: oneOf('env', ENVIRONMENTS),
-  exposure: number('exposure', 0, 100),
+  exposure: number('exposure', { min: 0, max: 100, unit: '' }),
   animate: flag('animate'),
-  time: number('timeSeconds', 0, 1e6, 's'),
+  time: number('timeSeconds', { min: 0, max: 1e6, unit: 's' }),
   probe,
 };
 
@@ -72,19 +81,27 @@ export interface ParsedSettings {
   readonly errors: readonly string[];
 }
 
-/** Reads settings from a query string; a bad value is reported and never used. */
+/** A refused value as a message shows it: quoted, cut short, its length said when cut. */
+const shown = (raw: string): string =>
+  raw.length > MAX_ECHOED_CHARS ? `${JSON.stringify(raw.slice(0, MAX_ECHOED_CHARS))}… (${raw.length} characters)` : JSON.stringify(raw);
+
+/**
+ * Reads settings from a query string. A bad value (or one longer than MAX_VALUE_LENGTH) is
+ * reported and never used: the setting keeps its value from `base`, or from an earlier good
+ * occurrence of the same parameter. Unknown names belong to others (the embedding page) and are skipped.
+ */
 export function parseSettings(query: string, base: FilmSettings = DEFAULT_SETTINGS): ParsedSettings {
   let settings = base;
   const errors: string[] = [];
   for (const [name, raw] of new URLSearchParams(query)) {
-    const parse = PARAMETERS[name];
-    if (!parse) continue; // unknown names belong to others (the embedding page)
-    const shown = raw.length > 24 ? `${raw.slice(0, 24)}…` : raw;
-    try {
-      if (raw.length > MAX_VALUE_LENGTH) throw new Error(`longer than ${MAX_VALUE_LENGTH} characters`);
-      settings = { ...settings, ...parse(raw) };
-    } catch (e) {
-      errors.push(`${name}=${JSON.stringify(shown)} ignored: ${(e as Error).message}`);
+    // Own keys only: `?constructor=` or `?toString=` must not reach Object.prototype.
+    const parameter = Object.hasOwn(PARAMETERS, name) ? PARAMETERS[name] : undefined;
+    if (!parameter) continue;
+    const read = raw.length > MAX_VALUE_LENGTH ? null : parameter.read(raw);
+    if (read) settings = { ...settings, ...read };
+    else {
+      const tooLong = raw.length > MAX_VALUE_LENGTH ? ` of at most ${MAX_VALUE_LENGTH} characters` : '';
+      errors.push(`${name}=${shown(raw)} ignored: expected ${parameter.expected}${tooLong}`);
     }
   }
   return { settings, errors };

@@ -13,6 +13,7 @@ import { describeValue } from '../../src/cli/inputErrors.ts';
 import { parseStrictNumber } from '../../src/cli/parseStrictNumber.ts';
 import { runColorCommand } from '../../src/cli/runColorCommand.ts';
 import { MAX_TABLE_ROWS, evenlySpaced } from '../../src/cli/tableValues.ts';
+import { ABSURDLY_LONG, NOT_NUMBERS, notNames, outsideRange } from './fixtures/badValues.ts';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const FIXTURES = 'tests/unit/fixtures';
@@ -303,6 +304,113 @@ describe('color CLI, bad input (in-process: the whole command but the process)',
     expect(runColorCommand(['--angle', '91'], readFake).stderr).toContain('[0, 90]');
     expect(runColorCommand(['--illuminant', '3000'], readFake).stderr).toContain('[4000, 25000]');
     expect(runColorCommand(['--cases', 'thick-second'], readFake).stderr).toContain('[0, 20000] nm');
+  });
+});
+
+/**
+ * The issue's list of bad values for every numeric and named flag and every cases-file field.
+ * Ranges and names are written out as the README documents them, not read from src/cli.
+ */
+describe('color CLI, the table of bad values', () => {
+  /** A message repeats a bad value's start; 20 characters is inside every cut. */
+  const ECHO_CHARS = 20;
+  const NUMERIC_FLAGS: Record<string, [number, number]> = {
+    '--thickness': [0, 20000],
+    '--angle': [0, 90],
+    '--n-outside': [1, 4],
+    '--n-film': [1, 4],
+    '--n-inside': [1, 4],
+    '--wavelengths': [300, 830],
+  };
+  const NAMED_FLAGS: Record<string, readonly string[]> = {
+    '--polarization': ['unpolarized', 'paper', 's', 'p'],
+    '--normalization': ['white', 'paper'],
+    '--gamut': ['clip', 'preserve-hue'],
+  };
+  /** The message quotes the value it refuses: the whole text, or the bad number inside a list or range. */
+  type Row = [args: string[], parameter: string, echoed: string, range: string];
+  const flagRows: Row[] = [
+    ...Object.entries(NUMERIC_FLAGS).flatMap(([flag, [min, max]]) =>
+      [...NOT_NUMBERS, ...outsideRange(min, max)].map((v): Row =>
+        // A wavelength list's errors name the element ("1,5" is the list [1, 5]; 1 is refused).
+        flag === '--wavelengths' ? [[flag, v], `${flag}[0]`, v.split(',')[0]!, `[${min}, ${max}]`] : [[flag, v], flag, v, `[${min}, ${max}]`],
+      ),
+    ),
+    [['--wavelengths', '500,1e999'], '--wavelengths[1]', '1e999', '[300, 830]'],
+    [['--wavelengths', '500,900'], '--wavelengths[1]', '900', '[300, 830]'],
+    ...Object.entries(NAMED_FLAGS).flatMap(([flag, allowed]) => notNames(allowed).map((v): Row => [[flag, v], flag, v, allowed.join(', ')])),
+    ...[...NOT_NUMBERS, ...outsideRange(4000, 25000), ...notNames(['D65', 'E'])].map(
+      (v): Row => [['--illuminant', v], '--illuminant', v, 'D55, D65, D93, E, D65-table or a daylight CCT in [4000, 25000] K'],
+    ),
+    ...notNames(['json', 'csv']).map((v): Row => [['--angles', '0:10:5', '--format', v], '--format', v, 'json, csv']),
+    ...(['--from', '--to'] as const).flatMap((flag) =>
+      [...NOT_NUMBERS, ...outsideRange(0, 20000)].map((v): Row => {
+        const args = { '--from': '0', '--to': '100', '--step': '10', [flag]: v };
+        return [Object.entries(args).flat(), flag, v, '[0, 20000]'];
+      }),
+    ),
+    ...[...NOT_NUMBERS, '0', '-10'].map((v): Row => [['--from', '0', '--to', '100', '--step', v], '--step', v, '> 0']),
+    ...[...NOT_NUMBERS, '0:10', '0:10:5:1'].map((v): Row => [['--angles', v], '--angles', v, '[0, 90]']),
+    [['--angles', '0:95:5'], '--angles', '95', '[0, 90]'],
+    [['--angles', '-5:10:5'], '--angles', '-5', '[0, 90]'],
+  ];
+
+  it.each(flagRows)('%j → exit 2, one line naming %s, the value %j and %s', (args, parameter, echoed, range) => {
+    const r = runColorCommand(args, readFake);
+    expect(r.exitCode).toBe(2);
+    expect(r.stdout).toBe('');
+    expect(r.stderr.trimEnd().split('\n')).toHaveLength(1);
+    expect(r.stderr).toContain(`${parameter}: `);
+    expect(r.stderr).toContain(echoed === '' ? '""' : echoed.slice(0, ECHO_CHARS));
+    expect(r.stderr).toContain(range);
+    expect(r.stderr.length).toBeLessThan(400);
+  });
+
+  /** JSON values that are not a number in range (1e999 parses to Infinity). */
+  const badJsonNumbers = (min: number, max: number): string[] => [
+    '"abc"', '""', '"500"', 'null', 'true', '[]', '{}', `"${ABSURDLY_LONG}"`, ...outsideRange(min, max),
+  ];
+  const FIELDS: Record<string, [number, number]> = {
+    thicknessNm: [0, 20000],
+    angleDeg: [0, 90],
+    nOutside: [1, 4],
+    nFilm: [1, 4],
+    nInside: [1, 4],
+  };
+  /** [field, JSON value, the field as the message names it, what it echoes, the range]; JSON's 1e999 is Infinity. */
+  type CaseRow = [field: string, json: string, named: string, echoed: string, range: string];
+  const row = (field: string, json: string, range: string): CaseRow => [field, json, field, json, range];
+  const caseRows: CaseRow[] = [
+    ...Object.entries(FIELDS).flatMap(([field, [min, max]]) => [
+      ...badJsonNumbers(min, max).map((v) => row(field, v, `[${min}, ${max}]`)),
+      [field, '1e999', field, 'Infinity', `[${min}, ${max}]`] as CaseRow,
+      [field, '-1e999', field, '-Infinity', `[${min}, ${max}]`] as CaseRow,
+    ]),
+    ...[...badJsonNumbers(4000, 25000), '"bogus"', '"d65"', '{ "daylightCct": "7500" }', '{ "daylightCct": 3000 }'].map((v) =>
+      row('illuminant', v, '[4000, 25000] K'),
+    ),
+    ['illuminant', '{ "daylightCct": 1e999 }', 'illuminant', '{"daylightCct":null}', '[4000, 25000] K'],
+    ...['"bogus"', '""', '"S"', 'null', '1', `"${ABSURDLY_LONG}"`].map((v) => row('polarization', v, 'unpolarized, paper, s, p')),
+    ...['"bogus"', '""', '"White"', 'null', '1'].map((v) => row('normalization', v, 'white, paper')),
+    ...['"500"', '500', '{}'].map((v) => row('wavelengthsNm', v, '[300, 830]')),
+    ['wavelengthsNm', '[500, null]', 'wavelengthsNm[1]', 'null', '[300, 830]'],
+    ['wavelengthsNm', '[500, 1e999]', 'wavelengthsNm[1]', 'Infinity', '[300, 830]'],
+    ['wavelengthsNm', '[299]', 'wavelengthsNm[0]', '299', '[300, 830]'],
+    ['wavelengthsNm', '[831]', 'wavelengthsNm[0]', '831', '[300, 830]'],
+    ['wavelengthsNm', '["500"]', 'wavelengthsNm[0]', '"500"', '[300, 830]'],
+  ];
+
+  it.each(caseRows)('a case with %s: %s → exit 2, one line naming %s, the case, %s and %s', (field, json, named, echoed, range) => {
+    const text = `[{ "id": "ok" }, { "id": "bad", "${field}": ${json} }]`;
+    const r = runColorCommand(['--cases', 'cases.json'], () => text);
+    expect(r.exitCode).toBe(2);
+    expect(r.stdout).toBe('');
+    expect(r.stderr.trimEnd().split('\n')).toHaveLength(1);
+    expect(r.stderr).toContain(`${named}: `);
+    expect(r.stderr).toContain('"bad"');
+    expect(r.stderr).toContain(echoed.slice(0, ECHO_CHARS).replace(/ /g, ''));
+    expect(r.stderr).toContain(range);
+    expect(r.stderr.length).toBeLessThan(400);
   });
 });
 

@@ -22,6 +22,7 @@ describe(`properties over ${CASES} random inputs in the whole domain`, () => {
     const pick = <T>(xs: readonly T[]) => xs[Math.floor(rand() * xs.length)] as T;
     let worstEnergy = 0;
     let tirCases = 0;
+    let frustratedCases = 0;
     for (let i = 0; i < CASES; i++) {
       // Edges are drawn on purpose: thickness 0, θ 0° and 90°, equal indices.
       const edge = rand() < 0.1;
@@ -33,7 +34,10 @@ describe(`properties over ${CASES} random inputs in the whole domain`, () => {
         thicknessNm: edge && rand() < 0.3 ? 0 : 20000 * rand(),
         angleDeg: edge && rand() < 0.5 ? pick([0, 90]) : 90 * rand(),
       };
-      if (stack.nOutside * Math.sin((stack.angleDeg * Math.PI) / 180) > Math.min(stack.nFilm, stack.nInside)) tirCases++;
+      const nSin = stack.nOutside * Math.sin((stack.angleDeg * Math.PI) / 180);
+      if (nSin > Math.min(stack.nFilm, stack.nInside)) tirCases++;
+      // Frustrated TIR: evanescent in the film, propagating again behind it.
+      if (nSin > stack.nFilm && nSin < stack.nInside && stack.thicknessNm > 0) frustratedCases++;
       const pol = pick(POLARIZATIONS);
       const lambda = 380 + 450 * rand();
       const optics = filmOptics(stack, pol);
@@ -46,5 +50,6 @@ describe(`properties over ${CASES} random inputs in the whole domain`, () => {
     }
     expect(worstEnergy).toBeLessThan(ENERGY_TOL);
     expect(tirCases).toBeGreaterThan(CASES / 10);
+    expect(frustratedCases).toBeGreaterThan(CASES / 20);
   });
 });

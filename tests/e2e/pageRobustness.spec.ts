@@ -1,0 +1,71 @@
+import { expect, test, type Page } from '@playwright/test';
+import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } from '../../src/physics/colorConversions.ts';
+import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
+import { filmXyz } from '../../src/physics/spectralIntegration.ts';
+
+/**
+ * Bad links and a browser without WebGL2: the page says what is wrong, in text, and still
+ * teaches; nothing reaches the console as an error or warning.
+ */
+
+/** Collects console errors and warnings and uncaught page errors. */
+function watchProblems(page: Page): string[] {
+  const problems: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  return problems;
+}
+
+/** The reference 8-bit sRGB of a soap film in air seen head-on under D65 (what the CLI's srgb8 is). */
+function referenceSrgb8(thicknessNm: number): number[] {
+  const xyz = filmXyz({ ...SOAP_FILM_IN_AIR, thicknessNm, angleDeg: 0 }, { illuminant: 'D65' });
+  return mapToGamut(applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz), xyz[1]).map(encode8);
+}
+
+test('several bad URL parameters: a message for each naming its range, defaults used, no console error', async ({ page }) => {
+  const problems = watchProblems(page);
+  const bad = `thickness=abc&nFilm=9&illuminant=bogus&exposure=1e999&mode=fast&time=-1&speed=${'9'.repeat(5000)}`;
+  await page.goto(`/?${bad}&field=uniform&animate=0&env=none&sides=front`);
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
+  const messages = page.locator('#messages p');
+  await expect(messages).toHaveCount(7);
+  for (const [name, range] of <[string, string][]>[
+    ['thickness', '[0, 20000] nm'], ['nFilm', '[1, 4]'], ['illuminant', '[4000, 25000] K'], ['exposure', '[0, 100]'],
+    ['mode', 'exact, table'], ['time', '[0, 1000000] s'], ['speed', '[0, 10]'],
+  ]) {
+    await expect(messages.filter({ hasText: `${name}=` })).toContainText(range);
+  }
+  await expect(messages.filter({ hasText: 'speed=' })).toContainText('(5000 characters)');
+  const current = await page.evaluate(() => (window as unknown as { bubbleView: { current: object } }).bubbleView.current);
+  expect(current).toMatchObject({ thicknessNm: 550, nFilm: 1.33, illuminant: 'D65', exposure: 1, mode: 'table', timeSeconds: 0, swirlSpeed: 0.4 });
+  expect(problems).toEqual([]);
+});
+
+/** The fallback image's centre is the film head-on; its colour is binned as the shader's (ΔE00 ≤ 0.11): one code. */
+const FALLBACK_MAX_CODE_DIFFERENCE = 1;
+
+test('without WebGL2: a message where the canvas was and a CPU image of the bubble with the reference colour', async ({ page }) => {
+  const problems = watchProblems(page);
+  await page.addInitScript(() => {
+    const getContext = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, kind: string, ...rest: unknown[]) {
+      return kind === 'webgl2' || kind === 'webgl' ? null : (getContext as (...a: unknown[]) => unknown).call(this, kind, ...rest);
+    } as typeof getContext;
+  });
+  await page.goto('/?field=uniform&thickness=450&env=none&sides=front&animate=0');
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'fallback', { timeout: 30_000 });
+  await expect(page.locator('body')).toHaveAttribute('data-webgl2', 'no');
+  await expect(page.locator('#cpu-fallback figcaption')).toContainText('no WebGL2');
+  expect(await page.locator('canvas#bubble').count()).toBe(0);
+  const centre = await page.evaluate(() => {
+    const image = document.querySelector<HTMLCanvasElement>('#cpu-fallback canvas')!;
+    return [...image.getContext('2d')!.getImageData(image.width >> 1, image.height >> 1, 1, 1).data];
+  });
+  const expected = referenceSrgb8(450);
+  console.log(`fallback centre ${centre} reference ${expected}`);
+  expect(centre[3]).toBe(255);
+  for (let i = 0; i < 3; i++) expect(Math.abs(centre[i]! - expected[i]!), `${centre} vs ${expected}`).toBeLessThanOrEqual(FALLBACK_MAX_CODE_DIFFERENCE);
+  expect(problems).toEqual([]);
+});

@@ -1,0 +1,99 @@
+/**
+ * Exact values at the edges of the domain, each from an analytic limit rather than from the code
+ * under test, and bad input refused before anything is computed.
+ */
+import { describe, expect, it } from 'vitest';
+import { FILM_STACK_DOMAIN, type FilmStack, POLARIZATIONS, filmReflectance, filmTransmittance } from '../../../src/physics/filmReflectance.ts';
+import { ParameterError } from '../../../src/physics/validate.ts';
+
+/** Analytically equal values computed two ways differ by rounding of O(1) terms only. */
+const ALGEBRAIC_TOL = 1e-12;
+/** Indices chosen to make every ordering: film above, below and between its media; TIR and frustrated TIR. */
+const INDICES = [1, 1.33, 1.5, 2.5, 4] as const;
+const LAMBDA_NM = 537;
+
+function* stacks(thicknessNm: number, angleDeg: number): Generator<FilmStack> {
+  for (const nOutside of INDICES) for (const nFilm of INDICES) for (const nInside of INDICES) {
+    yield { nOutside, nFilm, nInside, thicknessNm, angleDeg };
+  }
+}
+
+/**
+ * A single interface n1 | n2 at θ1, from Hecht's forms with θ2 from Snell and cos θ2 = √(1 − sin²θ2)
+ * (|r| = 1 past the critical angle): the s, p and paper (amplitude-averaged, eqs 4 and 8) values.
+ */
+function singleInterface(n1: number, n2: number, angleDeg: number): Record<'s' | 'p' | 'paper', number> {
+  const c1 = Math.cos((angleDeg * Math.PI) / 180);
+  const s2 = (n1 / n2) * Math.sin((angleDeg * Math.PI) / 180);
+  if (s2 >= 1) {
+    // |r_s| = |r_p| = 1 with phases δ_s, δ_p; the paper mode's |(r_s + r_p)/2|² = cos²((δ_s − δ_p)/2).
+    const k = Math.sqrt(s2 * s2 - 1);
+    const ds = -2 * Math.atan2(n2 * k, n1 * c1);
+    const dp = -2 * Math.atan2(n1 * k, n2 * c1);
+    return { s: 1, p: 1, paper: Math.cos((ds - dp) / 2) ** 2 };
+  }
+  const c2 = Math.sqrt(1 - s2 * s2);
+  const rs = (n1 * c1 - n2 * c2) / (n1 * c1 + n2 * c2);
+  const rp = (n2 * c1 - n1 * c2) / (n2 * c1 + n1 * c2);
+  return { s: rs * rs, p: rp * rp, paper: ((rs + rp) / 2) ** 2 };
+}
+
+describe('exact values at the edges of the domain', () => {
+  it('θ = 90°: R = 1 and T = 0 wherever there is an interface; R = 0, T = 1 where there is none', () => {
+    // cos θ_i = 0 makes eqs (5), (6) give r_ab = −1 and eqs (9), (10) t_ab = 0 for n_b ≠ n_a, so no
+    // light enters the film and r = r_ab. With n_b = n_a the b|c interface is met at grazing
+    // incidence instead (r = −1 again). Only n_a = n_c with no film (d = 0 or n_b = n_a) leaves
+    // no interface at all.
+    for (const thicknessNm of [0, 250, 20_000]) {
+      for (const s of stacks(thicknessNm, 90)) {
+        const noInterface = s.nOutside === s.nInside && (thicknessNm === 0 || s.nFilm === s.nOutside);
+        for (const pol of POLARIZATIONS) {
+          expect(filmReflectance(LAMBDA_NM, s, pol), `${JSON.stringify(s)} ${pol}`).toBe(noInterface ? 0 : 1);
+          if (pol !== 'paper') expect(filmTransmittance(LAMBDA_NM, s, pol)).toBe(noInterface ? 1 : 0);
+        }
+      }
+    }
+  });
+
+  it('thickness 0 is the bare outside|inside interface (Fresnel, TIR included) in every mode', () => {
+    for (const angleDeg of [0, 30, 60, 85]) {
+      for (const s of stacks(0, angleDeg)) {
+        const bare = singleInterface(s.nOutside, s.nInside, angleDeg);
+        for (const pol of ['s', 'p', 'paper'] as const) {
+          expect(Math.abs(filmReflectance(LAMBDA_NM, s, pol) - bare[pol]), `${JSON.stringify(s)} ${pol}`).toBeLessThan(ALGEBRAIC_TOL);
+        }
+        const unpolarized = (bare.s + bare.p) / 2;
+        expect(Math.abs(filmReflectance(LAMBDA_NM, s) - unpolarized)).toBeLessThan(ALGEBRAIC_TOL);
+      }
+    }
+  });
+
+  it('equal indices reflect nothing (R = 0, T = 1) at every thickness, angle and polarisation', () => {
+    for (const n of INDICES) {
+      for (const thicknessNm of [0, 1, 777, 20_000]) {
+        for (const angleDeg of [0, 45, 89.99, 90]) {
+          const s = { nOutside: n, nFilm: n, nInside: n, thicknessNm, angleDeg };
+          for (const pol of POLARIZATIONS) {
+            expect(filmReflectance(LAMBDA_NM, s, pol)).toBe(0);
+            if (pol !== 'paper') expect(Math.abs(filmTransmittance(LAMBDA_NM, s, pol) - 1)).toBeLessThan(ALGEBRAIC_TOL);
+          }
+        }
+      }
+    }
+  });
+});
+
+describe('bad input to the reference', () => {
+  const base: FilmStack = { nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 0 };
+  const bad = [Number.NaN, Number.POSITIVE_INFINITY, Number.NEGATIVE_INFINITY];
+  const outside = (field: keyof FilmStack) => [FILM_STACK_DOMAIN[field].min - 1e-9, FILM_STACK_DOMAIN[field].max + 1e-9];
+  const rows = (Object.keys(FILM_STACK_DOMAIN) as (keyof FilmStack)[]).flatMap((field) =>
+    [...bad, ...outside(field)].map((value) => [field, value] as const),
+  );
+  it.each(rows)('%s = %s throws a ParameterError naming the field and its range', (field, value) => {
+    const { min, max } = FILM_STACK_DOMAIN[field];
+    const call = () => filmReflectance(LAMBDA_NM, { ...base, [field]: value });
+    expect(call).toThrow(ParameterError);
+    expect(call).toThrow(new RegExp(`^${field}: .* expected a number in \\[${min}, ${max}\\]`));
+  });
+});
