@@ -61,6 +61,9 @@ describe('URL parameters', () => {
       (v): [string, string, string] => ['illuminant', v, '[4000, 25000] K'],
     ),
     ...['', 'yes', 'true', '2', '-1', ABSURDLY_LONG].map((v): [string, string, string] => ['animate', v, '0 or 1']),
+    ...[...NOT_NUMBERS, '0.5', '0.5,0.5,0.5', '1.5,0.5', '-0.1,0.5', 'NaN,0.5', 'Infinity,0', '0.5,'].map(
+      (v): [string, string, string] => ['probe', v, '[0, 1]'],
+    ),
   ];
 
   it('the table of bad values covers every parameter', () => {
@@ -84,7 +87,7 @@ describe('URL parameters', () => {
   });
 
   it('skips unknown names, Object.prototype\'s included', () => {
-    expect(parseSettings('?probe=1&constructor=1&toString=x&__proto__=y&hasOwnProperty=1')).toEqual({ settings: DEFAULT_SETTINGS, errors: [] });
+    expect(parseSettings('?lesson=3&constructor=1&toString=x&__proto__=y&hasOwnProperty=1')).toEqual({ settings: DEFAULT_SETTINGS, errors: [] });
   });
 
   it('builds on a base: a refused value leaves the base value', () => {
@@ -108,13 +111,5 @@ describe('the probe parameter', () => {
     expect(errors).toEqual([]);
     expect(settings.probe).toEqual([0.25, 0.75]);
     expect(settingsToQuery(settings)).toBe('probe=0.25%2C0.75');
-  });
-
-  it.each(['', '0.5', '0.5,0.5,0.5', '1.5,0.5', '-0.1,0.5', 'NaN,0.5', 'Infinity,0', 'a,b', '0.5,'])('refuses %j, naming the range', (raw) => {
-    const { settings, errors } = parseSettings(`?probe=${encodeURIComponent(raw)}`);
-    expect(settings.probe).toEqual([0.5, 0.5]);
-    expect(errors).toHaveLength(1);
-    expect(errors[0]).toContain('probe');
-    expect(errors[0]).toContain('[0, 1]');
   });
 });
