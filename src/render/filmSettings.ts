@@ -1,5 +1,5 @@
 import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { type Polarization } from '../physics/filmReflectance.ts';
+import { FILM_STACK_DOMAIN, type Polarization } from '../physics/filmReflectance.ts';
 import { type Normalization } from '../physics/spectralIntegration.ts';
 
 export const SPACES = ['srgb', 'display-p3', 'wide-gamut'] as const;
@@ -60,9 +60,10 @@ export const TABLE_SPECTRAL_BINS = 90;
 export const TABLE_WIDTH = 1024;
 export const TABLE_ROWS = 64;
 
-/** The largest thickness the field reaches, which the table must cover. */
+/** The largest thickness the field reaches, which the table must cover (the field is clamped to the domain's 20 µm). */
 export function maxFieldThicknessNm(s: Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm'>): number {
-  if (s.field === 'uniform') return Math.max(s.thicknessNm, 1);
+  const max = FILM_STACK_DOMAIN.thicknessNm.max;
+  if (s.field === 'uniform') return Math.min(max, Math.max(s.thicknessNm, 1));
   // drainage: mean + range/2 at the bottom; the swirl moves h by at most 0.24 beyond ±1 (clamped).
-  return Math.max(s.thicknessNm + 0.5 * s.thicknessRangeNm, 1);
+  return Math.min(max, Math.max(s.thicknessNm + 0.5 * s.thicknessRangeNm, 1));
 }
