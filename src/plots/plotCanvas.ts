@@ -25,7 +25,7 @@ export function drawAxes(
   x: { min: number; max: number; ticks: number[]; label: string },
   y: { min: number; max: number; ticks: number[]; label: string },
 ): { px: (v: number) => number; py: (v: number) => number } {
-  const left = 30, right = box.width - 6, top = 6, bottom = box.height - 22;
+  const left = 38, right = box.width - 6, top = 6, bottom = box.height - 22;
   const px = scale(x.min, x.max, left, right);
   const py = scale(y.min, y.max, bottom, top);
   ctx.strokeStyle = '#666';
@@ -38,7 +38,7 @@ export function drawAxes(
   ctx.textAlign = 'right';
   for (const t of y.ticks) ctx.fillText(String(+t.toPrecision(3)), left - 3, py(t) + 3);
   ctx.save();
-  ctx.translate(8, (top + bottom) / 2);
+  ctx.translate(7, (top + bottom) / 2);
   ctx.rotate(-Math.PI / 2);
   ctx.textAlign = 'center';
   ctx.fillText(y.label, 0, 0);

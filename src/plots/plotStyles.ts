@@ -5,6 +5,8 @@ const CSS = `
 .tfb-readout dt { color: #999; }
 .tfb-readout dd { margin: 0; font-variant-numeric: tabular-nums; }
 .tfb-swatch { display: inline-block; width: 10px; height: 10px; margin-right: 4px; vertical-align: -1px; border: 1px solid #888; }
+.tfb-probe-marker { position: absolute; width: 12px; height: 12px; margin: -7px 0 0 -7px; border: 1px solid #fff;
+  border-radius: 50%; box-shadow: 0 0 0 1px #000; pointer-events: none; }
 .tfb-legend { display: flex; flex-wrap: wrap; gap: 0 10px; margin-top: -4px; }
 .tfb-readout dd { overflow-wrap: anywhere; }
 .tfb-spectrum { width: 100%; height: 110px; }

@@ -39,11 +39,18 @@ export class BubbleApp {
   private plotsDue = true;
   private lastPlotMs = -Infinity;
   private readonly disconnect: () => void;
+  /** A ring over the bubble where the probe is (only with plots). */
+  private readonly marker: HTMLElement | null;
 
   constructor(private readonly parts: BubbleAppParts) {
     this.settings = parts.view.current;
     this.panel = parts.plots ? new PlotPanel(parts.surface.ownerDocument) : null;
     if (this.panel) parts.plots!.append(this.panel.element);
+    this.marker = this.panel ? parts.surface.ownerDocument.createElement('div') : null;
+    if (this.marker) {
+      this.marker.className = 'tfb-probe-marker';
+      parts.surface.after(this.marker);
+    }
     this.buildControls();
     const onClick = (e: MouseEvent) => {
       const box = parts.surface.getBoundingClientRect();
@@ -96,6 +103,7 @@ export class BubbleApp {
     this.disconnect();
     this.gui?.destroy();
     this.panel?.element.remove();
+    this.marker?.remove();
     this.parts.view.dispose();
   }
 
@@ -156,6 +164,8 @@ export class BubbleApp {
   private updatePlots(now: number): void {
     if (!this.panel || !(this.plotsDue || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS))) return;
     const [fx, fy] = this.settings.probe;
+    const { offsetLeft, offsetTop, clientWidth, clientHeight } = this.parts.surface;
+    Object.assign(this.marker!.style, { left: `${offsetLeft + fx * clientWidth}px`, top: `${offsetTop + fy * clientHeight}px` });
     this.panel.update(this.settings, this.parts.view.probe(fx, fy), this.parts.view.displayIsP3);
     this.plotsDue = false;
     this.lastPlotMs = now;
