@@ -48,5 +48,6 @@ if (hasWebGL2()) startLiveView(canvas, plots);
 else {
   // Without WebGL2 the page still teaches: a still image computed on the CPU, no plots.
   plots.closest('details')?.remove();
-  showCpuFallback(canvas, settings);
+  document.body.dataset.webgl2 = 'no';
+  showCpuFallback(canvas, settings, () => (document.body.dataset.frames = 'fallback'));
 }

@@ -2,6 +2,7 @@ import { addPlotStyles } from '../plots/plotStyles.ts';
 import { DEFAULT_SETTINGS, type FilmSettings } from '../render/filmSettings.ts';
 import { BubbleApp } from '../scene/bubbleApp.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
+import { hasWebGL2, showCpuFallback } from '../scene/cpuFallback.ts';
 import { PARAMETERS, parseSettings, settingsToQuery } from '../scene/params.ts';
 import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
 
@@ -12,6 +13,8 @@ thin-film-bubble .tfb-stage { position: relative; flex: 1 1 auto; min-width: 0; 
 thin-film-bubble .tfb-stage > canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; }
 thin-film-bubble .tfb-controls { position: absolute; top: 0; right: 0; max-height: 100%; overflow: auto; }
 thin-film-bubble .tfb-side { flex: 0 0 270px; overflow: auto; padding: 4px 6px; background: #18181c; }
+thin-film-bubble .cpu-fallback { margin: 0; height: 100%; display: flex; flex-direction: column; align-items: center; font: 12px system-ui, sans-serif; }
+thin-film-bubble .cpu-fallback canvas { flex: 1 1 auto; min-height: 0; max-width: 100%; aspect-ratio: 1; }
 thin-film-bubble .tfb-messages { position: absolute; left: 4px; bottom: 4px; right: 4px; font: 12px system-ui, sans-serif; }
 thin-film-bubble .tfb-messages p { margin: 2px 0; padding: 3px 6px; background: #6b1d1d; border-radius: 3px; }
 `;
@@ -36,6 +39,18 @@ export class ThinFilmBubble extends HTMLElement {
   private canvas: HTMLCanvasElement | null = null;
   private messages: HTMLElement | null = null;
   private visibility: IntersectionObserver | null = null;
+  /** Whether the element is built (live, or as the CPU image without WebGL2). */
+  private built = false;
+
+  /**
+   * The shared renderer's live GPU objects (three's renderer.info), for pages that watch memory;
+   * null without a live view.
+   */
+  get gpuResources(): { geometries: number; textures: number; programs: number } | null {
+    if (!this.app) return null;
+    const { memory, programs } = this.app.renderer.info;
+    return { geometries: memory.geometries, textures: memory.textures, programs: programs?.length ?? 0 };
+  }
 
   /** The settings shown now (null before the element is on a page). */
   get settings(): FilmSettings | null {
@@ -43,7 +58,8 @@ export class ThinFilmBubble extends HTMLElement {
   }
 
   connectedCallback(): void {
-    if (this.app) return;
+    if (this.built) return;
+    this.built = true;
     addElementStyles(this.ownerDocument);
     addPlotStyles(this.ownerDocument);
     const el = (tag: string, className: string) => Object.assign(this.ownerDocument.createElement(tag), { className });
@@ -61,6 +77,11 @@ export class ThinFilmBubble extends HTMLElement {
     this.replaceChildren(layout);
 
     const settings = this.readAttributes(DEFAULT_SETTINGS);
+    if (!hasWebGL2()) {
+      // The page still teaches: a message and a still image computed on the CPU.
+      showCpuFallback(this.canvas, settings, () => (this.dataset.frames = 'fallback'));
+      return;
+    }
     const renderer = acquireSharedRenderer();
     const view = new BubbleView(renderer, settings);
     const canvas = this.canvas;
@@ -84,18 +105,20 @@ export class ThinFilmBubble extends HTMLElement {
   }
 
   disconnectedCallback(): void {
+    if (!this.built) return;
+    this.built = false;
+    this.replaceChildren();
     if (!this.app) return;
     this.visibility?.disconnect();
     this.app.dispose();
     this.app = null;
-    this.replaceChildren();
     releaseSharedRenderer();
   }
 
   attributeChangedCallback(name: string, _old: string | null, value: string | null): void {
-    if (!this.app) return;
-    if (name === 'controls' || name === 'plots') {
-      // The layout changes: build the element anew.
+    if (!this.built) return;
+    if (name === 'controls' || name === 'plots' || !this.app) {
+      // The layout changes (or the still image must be recomputed): build the element anew.
       this.disconnectedCallback();
       this.connectedCallback();
       return;

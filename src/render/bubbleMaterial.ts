@@ -66,6 +66,7 @@ export function updateBubbleUniforms(
   const u = m.uniforms;
   const defines = bubbleDefines(s);
   if (JSON.stringify(defines) !== JSON.stringify(m.defines)) {
+    m.dispose(); // frees the old program (three keeps one per define set until the material is disposed)
     m.defines = defines;
     m.needsUpdate = true;
   }

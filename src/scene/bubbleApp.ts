@@ -1,4 +1,5 @@
 import type GUI from 'lil-gui';
+import type { WebGLRenderer } from 'three';
 import { PlotPanel } from '../plots/plotPanel.ts';
 import type { FilmSettings } from '../render/filmSettings.ts';
 import type { BubbleView } from './bubbleView.ts';
@@ -58,6 +59,12 @@ export class BubbleApp {
       if (probe.every((v) => v >= 0 && v <= 1)) this.change({ ...this.settings, probe });
     };
     const onVisibility = () => this.wake();
+    const onRestored = () => {
+      this.plotsDue = true;
+      this.requestFrame();
+    };
+    const glCanvas = parts.view.renderer.domElement;
+    glCanvas.addEventListener('webglcontextrestored', onRestored);
     const resize = new ResizeObserver(() => this.fit());
     parts.surface.addEventListener('click', onClick);
     document.addEventListener('visibilitychange', onVisibility);
@@ -65,6 +72,7 @@ export class BubbleApp {
     this.disconnect = () => {
       parts.surface.removeEventListener('click', onClick);
       document.removeEventListener('visibilitychange', onVisibility);
+      glCanvas.removeEventListener('webglcontextrestored', onRestored);
       resize.disconnect();
     };
     this.fit();
@@ -72,6 +80,10 @@ export class BubbleApp {
 
   get current(): FilmSettings {
     return this.settings;
+  }
+
+  get renderer(): WebGLRenderer {
+    return this.parts.view.renderer;
   }
 
   /** Shows new (validated) settings; the panel follows when `rebuildControls`. */
@@ -162,7 +174,7 @@ export class BubbleApp {
   }
 
   private updatePlots(now: number): void {
-    if (!this.panel || !(this.plotsDue || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS))) return;
+    if (!this.panel || this.parts.view.contextLost || !(this.plotsDue || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS))) return;
     const [fx, fy] = this.settings.probe;
     const { offsetLeft, offsetTop, clientWidth, clientHeight } = this.parts.surface;
     Object.assign(this.marker!.style, { left: `${offsetLeft + fx * clientWidth}px`, top: `${offsetTop + fy * clientHeight}px` });

@@ -68,14 +68,19 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
       }),
     );
     this.scene.add(this.sky, this.bubble);
+    // After a lost context comes back, three re-creates programs and re-uploads textures by
+    // itself; the table, drawn on the GPU, is gone and must be drawn again.
+    renderer.domElement.addEventListener('webglcontextrestored', this.rebuildTable);
     this.apply(settings);
   }
+
+  private readonly rebuildTable = () => this.table.invalidate();
 
   get current(): FilmSettings {
     return this.settings;
   }
 
-  /** Takes new settings (already validated); rebuilds the table only if it depends on them. */
+  /** Takes new settings (already validated). Cheap: the table is brought up to date when drawn. */
   apply(s: FilmSettings): void {
     this.settings = s;
     const wantP3 = s.space === 'display-p3' || s.space === 'wide-gamut';
@@ -84,8 +89,18 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     this.displayIsP3 = wantP3 && 'drawingBufferColorSpace' in gl && gl.drawingBufferColorSpace === 'display-p3';
     if (wantP3 && !this.displayIsP3) this.renderer.outputColorSpace = SRGBColorSpace;
     this.sky.visible = s.env === 'sky';
-    if (s.mode === 'table') this.table.update(this.renderer, s);
     updateBubbleUniforms(this.bubble.material, s, s.mode === 'table' ? this.table : null, this.displayIsP3);
+  }
+
+  /** Rebuilds the table if a parameter it depends on changed since it was drawn (once per frame at most). */
+  private syncTable(): void {
+    if (this.settings.mode !== 'table' || !this.table.update(this.renderer, this.settings)) return;
+    this.bubble.material.uniforms.uTableMaxThicknessNm!.value = this.table.maxThicknessNm;
+  }
+
+  /** Whether the renderer's WebGL context is lost (nothing can be drawn or read until it is restored). */
+  get contextLost(): boolean {
+    return this.renderer.getContext().isContextLost();
   }
 
   /** Sets the view's size (CSS pixels) and pixel ratio. */
@@ -102,16 +117,20 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     if (r.getPixelRatio() !== pixelRatio) r.setPixelRatio(pixelRatio);
     const drawn = r.getSize(SIZE);
     if (drawn.x !== width || drawn.y !== height) r.setSize(width, height, false);
+    if (this.contextLost) return;
+    this.syncTable();
     r.render(this.scene, this.camera);
   }
 
   /** The film at a point of the view (fractions from the top left), or null off the bubble. */
   probe(fx: number, fy: number): ProbeReading | null {
+    this.syncTable();
     return this.filmProbe.read(this.renderer, this.camera, this.bubble, this.size, fx, fy);
   }
 
   /** Frees this view's GPU resources (not the renderer, which may be shared). */
   dispose(): void {
+    this.renderer.domElement.removeEventListener('webglcontextrestored', this.rebuildTable);
     this.filmProbe.dispose();
     this.table.dispose();
     this.bubble.geometry.dispose();

@@ -4,20 +4,27 @@ import { cpuBubbleImage } from './cpuBubbleImage.ts';
 /** The still image's size in pixels (square; shown scaled to fit). */
 export const FALLBACK_IMAGE_PX = 240;
 
-/** Whether this browser gives a WebGL2 context (tried on a canvas of its own, then released). */
+let webgl2: boolean | null = null;
+
+/** Whether this browser gives a WebGL2 context (tried once per page on a canvas of its own, then released). */
 export function hasWebGL2(): boolean {
-  const gl = document.createElement('canvas').getContext('webgl2');
-  gl?.getExtension('WEBGL_lose_context')?.loseContext();
-  return gl !== null;
+  if (webgl2 === null) {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    gl?.getExtension('WEBGL_lose_context')?.loseContext();
+    webgl2 = gl !== null;
+  }
+  return webgl2;
 }
 
 /**
  * Without WebGL2: puts a message and a still image of the bubble, computed on the CPU by
- * src/physics (cpuBubbleImage), where the WebGL canvas was. Text goes in as textContent only.
+ * src/physics (cpuBubbleImage), where the WebGL canvas was; `done` is called once it is drawn.
+ * Text goes in as textContent only.
  */
-export function showCpuFallback(webglCanvas: HTMLCanvasElement, settings: FilmSettings): void {
+export function showCpuFallback(webglCanvas: HTMLCanvasElement, settings: FilmSettings, done: () => void = () => {}): HTMLElement {
+  const document = webglCanvas.ownerDocument;
   const figure = document.createElement('figure');
-  figure.id = 'cpu-fallback';
+  figure.className = 'cpu-fallback';
   const caption = document.createElement('figcaption');
   caption.setAttribute('role', 'alert');
   caption.textContent =
@@ -27,11 +34,11 @@ export function showCpuFallback(webglCanvas: HTMLCanvasElement, settings: FilmSe
   image.width = image.height = FALLBACK_IMAGE_PX;
   figure.append(caption, image);
   webglCanvas.replaceWith(figure);
-  document.body.dataset.webgl2 = 'no';
   // The image takes about a second: let the message show first.
   setTimeout(() => {
     const pixels = cpuBubbleImage(settings, FALLBACK_IMAGE_PX, FALLBACK_IMAGE_PX);
     image.getContext('2d')?.putImageData(new ImageData(pixels, FALLBACK_IMAGE_PX, FALLBACK_IMAGE_PX), 0, 0);
-    document.body.dataset.frames = 'fallback';
+    done();
   });
+  return figure;
 }

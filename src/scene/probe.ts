@@ -88,6 +88,7 @@ export class FilmProbe {
         fragmentShader: shown.fragmentShader,
       });
     } else if (JSON.stringify(defines) !== JSON.stringify(this.material.defines)) {
+      this.material.dispose(); // frees the old program
       this.material.defines = defines;
       this.material.needsUpdate = true;
     }

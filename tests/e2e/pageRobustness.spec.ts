@@ -57,10 +57,10 @@ test('without WebGL2: a message where the canvas was and a CPU image of the bubb
   await page.goto('/?field=uniform&thickness=450&env=none&sides=front&animate=0');
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'fallback', { timeout: 30_000 });
   await expect(page.locator('body')).toHaveAttribute('data-webgl2', 'no');
-  await expect(page.locator('#cpu-fallback figcaption')).toContainText('no WebGL2');
+  await expect(page.locator('.cpu-fallback figcaption')).toContainText('no WebGL2');
   expect(await page.locator('canvas#bubble').count()).toBe(0);
   const centre = await page.evaluate(() => {
-    const image = document.querySelector<HTMLCanvasElement>('#cpu-fallback canvas')!;
+    const image = document.querySelector<HTMLCanvasElement>('.cpu-fallback canvas')!;
     return [...image.getContext('2d')!.getImageData(image.width >> 1, image.height >> 1, 1, 1).data];
   });
   const expected = referenceSrgb8(450);
