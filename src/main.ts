@@ -25,25 +25,31 @@ new ResizeObserver(() => {
   view.render();
 }).observe(canvas);
 
-// Render on demand: one frame per change; the loop runs only while the swirl animates.
+// Render on demand: one frame per change; the loop runs only while the swirl animates and the
+// page and the canvas are visible.
 let clockOrigin = performance.now() - settings.timeSeconds * 1000;
 let looping = false;
-const animating = (s: FilmSettings) => s.animate && s.field === 'swirl';
+let canvasOnScreen = true;
+const loopWanted = (s: FilmSettings) => s.animate && s.field === 'swirl' && !document.hidden && canvasOnScreen;
 function frame(now: number) {
-  looping = animating(view.current) && !document.hidden;
+  looping = loopWanted(view.current);
   if (!looping) return;
   view.apply({ ...view.current, timeSeconds: (now - clockOrigin) / 1000 });
   view.render();
   requestAnimationFrame(frame);
 }
 function startLoop() {
-  if (!looping && animating(view.current)) {
+  if (!looping && loopWanted(view.current)) {
     clockOrigin = performance.now() - view.current.timeSeconds * 1000;
     looping = true;
     requestAnimationFrame(frame);
   }
 }
 document.addEventListener('visibilitychange', startLoop);
+new IntersectionObserver((entries) => {
+  canvasOnScreen = entries.some((e) => e.isIntersecting);
+  startLoop();
+}).observe(canvas);
 
 let urlTimer = 0;
 createControlPanel(settings, (next) => {

@@ -11,6 +11,7 @@ import {
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
 import { createBubbleMaterial, updateBubbleUniforms } from '../render/bubbleMaterial.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../render/filmQuality.ts';
 import { FilmTable } from '../render/filmTable.ts';
 import { type FilmSettings } from '../render/filmSettings.ts';
 import { shaderSource } from '../render/shaderSource.ts';
@@ -29,18 +30,23 @@ export class BubbleView {
   readonly renderer: WebGLRenderer;
   readonly camera = new PerspectiveCamera(FOV_DEG, 1, 0.1, 100);
   readonly scene = new Scene();
-  readonly table = new FilmTable();
+  readonly table: FilmTable;
   readonly bubble: Mesh<SphereGeometry, ShaderMaterial>;
   private readonly sky: Mesh<SphereGeometry, ShaderMaterial>;
   /** Whether the canvas really shows Display P3 (false where the browser cannot). */
   displayIsP3 = false;
   private settings: FilmSettings;
 
-  constructor(canvas: HTMLCanvasElement, settings: FilmSettings) {
+  constructor(
+    canvas: HTMLCanvasElement,
+    settings: FilmSettings,
+    readonly quality: FilmQuality = DEFAULT_FILM_QUALITY,
+  ) {
     this.renderer = new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
     this.settings = settings;
+    this.table = new FilmTable(quality);
     this.camera.position.set(0, 0, CAMERA_DISTANCE);
-    this.bubble = new Mesh(new SphereGeometry(1, 128, 64), createBubbleMaterial(settings));
+    this.bubble = new Mesh(new SphereGeometry(1, 128, 64), createBubbleMaterial(settings, quality));
     this.sky = new Mesh(
       new SphereGeometry(50, 32, 16),
       new ShaderMaterial({
@@ -72,7 +78,7 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     if (wantP3 && !this.displayIsP3) this.renderer.outputColorSpace = SRGBColorSpace;
     this.sky.visible = s.env === 'sky';
     if (s.mode === 'table') this.table.update(this.renderer, s);
-    updateBubbleUniforms(this.bubble.material, s, s.mode === 'table' ? this.table : null, this.displayIsP3);
+    updateBubbleUniforms(this.bubble.material, s, this.quality, s.mode === 'table' ? this.table : null, this.displayIsP3);
   }
 
   /** Matches the drawing buffer to the canvas's CSS box. */

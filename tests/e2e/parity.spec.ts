@@ -5,6 +5,7 @@ import { POLARIZATIONS } from '../../src/physics/filmReflectance.ts';
 import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
 import { type Xyz, filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
+import { type DeltaStats, deltaStats } from './harness/deltaStats.ts';
 import type { ParityGroup, ParityMode } from './harness/parityCase.ts';
 
 /**
@@ -90,12 +91,8 @@ function stressDomain(): Group[] {
   return groups;
 }
 
-interface Figures {
-  cases: number;
-  max: number;
-  p99: number;
-  mean: number;
-  worst: string;
+interface Figures extends DeltaStats {
+  readonly worst: string;
 }
 
 function compare(groups: readonly Group[], rendered: number[][][]): { figures: Figures; deltas: number[]; nonFinite: string[] } {
@@ -114,15 +111,7 @@ function compare(groups: readonly Group[], rendered: number[][][]): { figures: F
       deltas.push(d);
     });
   });
-  const sorted = [...deltas].sort((a, b) => a - b);
-  const figures = {
-    cases: deltas.length,
-    max: sorted[sorted.length - 1]!,
-    p99: sorted[Math.min(sorted.length - 1, Math.floor(0.99 * sorted.length))]!,
-    mean: deltas.reduce((s, d) => s + d, 0) / deltas.length,
-    worst,
-  };
-  return { figures, deltas, nonFinite };
+  return { figures: { ...deltaStats(deltas), worst }, deltas, nonFinite };
 }
 
 async function render(page: Page, groups: readonly Group[], mode: ParityMode): Promise<number[][][]> {
