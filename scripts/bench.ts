@@ -9,7 +9,7 @@ import { chromium } from '@playwright/test';
 import { createServer, preview } from 'vite';
 import { chromiumLaunchOptions } from './chromium.ts';
 import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './bench/errorGrids.ts';
-import { FRAME_BUDGET_MS, FRAMES, SIZES, runRow } from './bench/browserRows.ts';
+import { FRAME_BUDGET_MS, FRAMES, SIZES, runRow, warmUp } from './bench/browserRows.ts';
 import { buildAndMeasure, ELEMENT_BUNDLE } from './bench/bundleSize.ts';
 import { demoPageFigures } from './bench/demoPage.ts';
 import { referenceSpeed, referenceSpeedMarkdown } from './bench/referenceSpeed.ts';
@@ -34,12 +34,13 @@ const referenceColors = grids.map(referenceXyz);
 const server = await createServer({ logLevel: 'silent', server: { port: DEV_PORT, strictPort: true, host: '127.0.0.1' } });
 await server.listen();
 const browser = await chromium.launch(chromiumLaunchOptions());
+await warmUp(browser, `http://127.0.0.1:${DEV_PORT}`);
 const rows = [];
 try {
   for (const row of selected) {
     const result = await runRow(browser, `http://127.0.0.1:${DEV_PORT}`, row, grids);
     const errors = row.measuresError ? grids.map((g, i) => gridError(g, referenceColors[i]!, result.xyz[i]!)) : null;
-    log(`${row.name}: ${JSON.stringify({ frames: result.frames, table: result.tableBuildMs, max: errors?.map((e) => e.max) })}`);
+    log(`${row.name}: ${JSON.stringify({ frames: result.frames, table: result.tableBuildMs, errors: errors?.map((e) => [e.max.toFixed(2), e.worst]) })}`);
     rows.push({ name: row.name, settings: row.settings, quality: row.quality, ...result, xyz: undefined, errors });
   }
 } finally {

@@ -21,6 +21,7 @@ if (settings.space !== 'srgb' && !view.displayIsP3) say('This browser has no Dis
 const fit = () => view.resize(canvas.clientWidth, canvas.clientHeight, Math.min(2, devicePixelRatio));
 fit();
 new ResizeObserver(() => {
+  if (canvas.clientWidth === 0) return; // hidden (display: none): nothing to draw
   fit();
   view.render();
 }).observe(canvas);

@@ -10,7 +10,7 @@ export const SIZES = [
 ] as const;
 /** The issue asks for the median of ≥ 30 frames; slow rows stop at this much time per size (≥ 5 frames). */
 export const FRAMES = 30;
-export const FRAME_BUDGET_MS = 5000;
+export const FRAME_BUDGET_MS = 3000;
 
 export async function runRow(browser: Browser, baseUrl: string, row: BenchRow, grids: readonly ParityGroup[]): Promise<BenchRowResult> {
   const page = await browser.newPage({ viewport: { width: 640, height: 360 } });
@@ -29,4 +29,12 @@ export async function runRow(browser: Browser, baseUrl: string, row: BenchRow, g
   } finally {
     await page.close();
   }
+}
+
+/** Loads the page once so the dev server has transformed every module before the first-frame times. */
+export async function warmUp(browser: Browser, baseUrl: string): Promise<void> {
+  const page = await browser.newPage();
+  await page.goto(`${baseUrl}/scripts/bench/page/bench.html`);
+  await page.waitForSelector('body[data-ready="yes"]');
+  await page.close();
 }

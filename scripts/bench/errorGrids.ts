@@ -34,7 +34,14 @@ export function referenceXyz(g: ParityGroup): Xyz[] {
   );
 }
 
-export function gridError(g: ParityGroup, reference: readonly Xyz[], shader: readonly number[][]): DeltaStats {
+export interface GridError extends DeltaStats {
+  /** the film with the largest ΔE00 */
+  readonly worst: { readonly thicknessNm: number; readonly angleDeg: number };
+}
+
+export function gridError(g: ParityGroup, reference: readonly Xyz[], shader: readonly number[][]): GridError {
   const white = whiteXyz(g.illuminant, g.normalization);
-  return deltaStats(reference.map((r, i) => deltaE00(shader[i] as unknown as Xyz, r, white)));
+  const deltas = reference.map((r, i) => deltaE00(shader[i] as unknown as Xyz, r, white));
+  const [thicknessNm, cosIncidence] = g.inputs[deltas.indexOf(Math.max(...deltas))]!;
+  return { ...deltaStats(deltas), worst: { thicknessNm, angleDeg: (Math.acos(cosIncidence) * 180) / Math.PI } };
 }
