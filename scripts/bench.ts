@@ -1,50 +1,73 @@
 /**
- * `npm run bench`: speed of the float64 reference (Node). Prints a Markdown table and writes
- * bench-results.json (git-ignored). Figures are medians of repeated runs on a shared machine.
+ * `npm run bench`: the float64 reference's speed in Node, then every film-colour method in
+ * headless Chromium (frame times, table rebuild, first frame, ΔE00 against src/physics), the
+ * built demo's size, first frame and render-on-demand counts. Prints Markdown and writes
+ * bench-results.json (git-ignored). Benchmarks measure; the tests check correctness.
  */
 import { writeFileSync } from 'node:fs';
-import { filmOptics, filmReflectance, reflectanceAt } from '../src/physics/filmReflectance.ts';
-import { filmXyz } from '../src/physics/spectralIntegration.ts';
+import { chromium } from '@playwright/test';
+import { createServer, preview } from 'vite';
+import { chromiumLaunchOptions } from './chromium.ts';
+import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './bench/errorGrids.ts';
+import { FRAME_BUDGET_MS, FRAMES, SIZES, runRow, warmUp } from './bench/browserRows.ts';
+import { buildAndMeasure, ELEMENT_BUNDLE } from './bench/bundleSize.ts';
+import { demoPageFigures } from './bench/demoPage.ts';
+import { referenceSpeed, referenceSpeedMarkdown } from './bench/referenceSpeed.ts';
+import { ROWS } from './bench/rows.ts';
+import { rowsMarkdown } from './bench/rowsMarkdown.ts';
 
-const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)] as number;
-const soap = { nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 30 };
+/** Ports of the benchmark's own servers (5173, 5180, 5181 belong to the dev server and the test suites). */
+const DEV_PORT = 5192;
+const PREVIEW_PORT = 5193;
+const started = performance.now();
+const log = (what: string) => console.error(`[bench ${((performance.now() - started) / 1000).toFixed(0)} s] ${what}`);
 
-function timeMs(run: () => void, repeats: number): number {
-  const times: number[] = [];
-  for (let i = 0; i < repeats; i++) {
-    const t0 = performance.now();
-    run();
-    times.push(performance.now() - t0);
+/** `npm run bench -- <text>` runs only the rows whose name contains the text (the floor always runs). */
+const only = process.argv[2];
+const selected = ROWS.filter((r, i) => i === 0 || !only || r.name.includes(only));
+const reference = referenceSpeed();
+console.log(`${referenceSpeedMarkdown(reference)}\n`);
+log('reference speed done; computing the reference colours of the error grids');
+const grids = [FIXED_GRID, STRESS_GRID];
+const referenceColors = grids.map(referenceXyz);
+
+const server = await createServer({ logLevel: 'silent', server: { port: DEV_PORT, strictPort: true, host: '127.0.0.1' } });
+await server.listen();
+const browser = await chromium.launch(chromiumLaunchOptions());
+await warmUp(browser, `http://127.0.0.1:${DEV_PORT}`);
+const rows = [];
+try {
+  for (const row of selected) {
+    const result = await runRow(browser, `http://127.0.0.1:${DEV_PORT}`, row, grids);
+    const errors = row.measuresError ? grids.map((g, i) => gridError(g, referenceColors[i]!, result.xyz[i]!)) : null;
+    log(`${row.name}: ${JSON.stringify({ frames: result.frames, table: result.tableBuildMs, errors: errors?.map((e) => [e.max.toFixed(2), e.worst]) })}`);
+    rows.push({ name: row.name, settings: row.settings, quality: row.quality, ...result, xyz: undefined, errors });
   }
-  return median(times);
+} finally {
+  await server.close();
+}
+log('building the demo');
+const bundle = await buildAndMeasure();
+const previewServer = await preview({ logLevel: 'silent', preview: { port: PREVIEW_PORT, strictPort: true, host: '127.0.0.1' } });
+let demo;
+try {
+  demo = await demoPageFigures(browser, `http://127.0.0.1:${PREVIEW_PORT}`);
+} finally {
+  await new Promise((resolve) => previewServer.httpServer.close(resolve));
+  await browser.close();
 }
 
-let sink = 0; // results feed this so no loop is optimised away
-const N = 200_000;
-const perLambdaMs = timeMs(() => {
-  const o = filmOptics(soap);
-  for (let i = 0; i < N; i++) sink += reflectanceAt(o, 380 + (i % 451));
-}, 7);
-const fullMs = timeMs(() => {
-  for (let i = 0; i < N / 10; i++) sink += filmReflectance(380 + (i % 451), { ...soap, thicknessNm: i % 2000 });
-}, 7);
-const tableMs = timeMs(() => {
-  for (let d = 0; d <= 2000; d++) sink += filmXyz({ ...soap, angleDeg: 0, thicknessNm: d })[1];
-}, 5);
-const thickMs = timeMs(() => {
-  sink += filmXyz({ nOutside: 1, nFilm: 2.5, nInside: 1, thicknessNm: 20000, angleDeg: 0 })[1];
-}, 9);
-
-const results = {
-  reflectancePerSecondSharedOptics: Math.round(N / (perLambdaMs / 1000)),
-  reflectancePerSecondFullCall: Math.round(N / 10 / (fullMs / 1000)),
-  table0to2000nmAt1nmMs: tableMs,
-  thickestFilmColorMs: thickMs,
-};
-console.log(`| reference benchmark (Node ${process.version}, median) | value |
+const kb = (bytes: number) => `${(bytes / 1024).toFixed(1)} KiB`;
+console.log(rowsMarkdown(rows, { sizes: SIZES, frames: FRAMES, frameBudgetMs: FRAME_BUDGET_MS }));
+console.log(`
+| built demo (vite build, served by vite preview) | value |
 |---|---|
-| R(λ) evaluations/s, unpolarised, optics shared across λ (as the integrator does) | ${(results.reflectancePerSecondSharedOptics / 1e6).toFixed(2)} M |
-| R(λ) evaluations/s, each call from scratch (\`filmReflectance\`) | ${(results.reflectancePerSecondFullCall / 1e6).toFixed(2)} M |
-| colour table 0–2000 nm at 1 nm steps (2001 colours, default accuracy), 0°, soap film | ${tableMs.toFixed(0)} ms |
-| one colour of the costliest film in the domain (n 2.5, 20 µm, 0°) | ${thickMs.toFixed(1)} ms |`);
-writeFileSync('bench-results.json', JSON.stringify(results, null, 2));
+| demo JavaScript, gzipped (all of dist's JS but the element) | ${kb(bundle.demoGzipBytes)} |
+| element \`${ELEMENT_BUNDLE}\`, gzipped | ${bundle.elementGzipBytes === null ? 'not built yet' : kb(bundle.elementGzipBytes)} |
+| first frame (navigation start → first frame read back, 1280×720) | ${demo.firstFrameMs.toFixed(0)} ms |
+| frames drawn / tables built in 1 s: still (\`animate=0\`) | ${demo.still.frames} / ${demo.still.tableBuilds} |
+| … swirl animating | ${demo.animating.frames} / ${demo.animating.tableBuilds} |
+| … canvas hidden (display: none) | ${demo.canvasHidden.frames} / ${demo.canvasHidden.tableBuilds} |
+| … page hidden | ${demo.pageHidden.frames} / ${demo.pageHidden.tableBuilds} |`);
+writeFileSync('bench-results.json', JSON.stringify({ reference, rows, bundle, demo, seconds: (performance.now() - started) / 1000 }, null, 2));
+log('done; bench-results.json written');

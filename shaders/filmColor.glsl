@@ -1,32 +1,47 @@
 // The film's XYZ at a thickness and cos θ_i, by the method FILM_MODE selects:
-//   0 exact: the binned spectral integral per fragment;  1 table: one filtered lookup.
+//   0 exact: the binned spectral integral per fragment;  1 table: one filtered lookup;
+//   2 three.js's iridescence (Belcour–Barla, `evalIridescence`), the benchmark's peer.
 // fromInside swaps the outer and inner media (the far wall seen through the bubble).
 #ifndef THIN_FILM_COLOR
 #define THIN_FILM_COLOR
 
-#if FILM_MODE == 0
-#include "spectralIntegration.glsl"
 uniform float uNOutside;
 uniform float uNFilm;
 uniform float uNInside;
+
+#if FILM_MODE == 0
+#include "spectralIntegration.glsl"
 
 vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
   return binnedXyz(filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence), 0.0);
 }
-#else
+#elif FILM_MODE == 1
+#include "filmTableLayout.glsl"
 uniform sampler2D uFilmTable;
 uniform float uTableMaxThicknessNm;
 
 vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   // Texel centres sit at the ends of the ranges (BROWSER.md: otherwise visibly off).
-  float u = clamp(thicknessNm / uTableMaxThicknessNm, 0.0, 1.0);
-  float v = clamp(cosIncidence, 0.0, 1.0);
+  vec2 uv = filmTableUv(thicknessNm, cosIncidence, uTableMaxThicknessNm);
   vec2 size = vec2(float(FILM_TABLE_WIDTH), float(2 * FILM_TABLE_ROWS));
   float rowOffset = fromInside ? float(FILM_TABLE_ROWS) : 0.0;
-  vec2 texel = vec2(u * float(FILM_TABLE_WIDTH - 1), rowOffset + v * float(FILM_TABLE_ROWS - 1)) + 0.5;
+  vec2 texel = vec2(uv.x * float(FILM_TABLE_WIDTH - 1), rowOffset + uv.y * float(FILM_TABLE_ROWS - 1)) + 0.5;
   return texture(uFilmTable, texel / size).xyz;
+}
+#else
+#define USE_IRIDESCENCE
+#include <common>
+#include <iridescence_fragment>
+
+// Its Rec.709 reflectance back to XYZ with the chunk's own matrix; the medium behind enters as
+// baseF0 (0 for air: a soap bubble), as MeshPhysicalMaterial would pass it.
+vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
+  float na = fromInside ? uNInside : uNOutside;
+  float nc = fromInside ? uNOutside : uNInside;
+  vec3 baseF0 = vec3(IorToFresnel0(nc, 1.0));
+  return inverse(XYZ_TO_REC709) * evalIridescence(na, uNFilm, cosIncidence, thicknessNm, baseF0);
 }
 #endif
 

@@ -1,23 +1,24 @@
 // The table of film XYZ over (thickness, cos θ_i), FILM_TABLE_WIDTH x 2 * FILM_TABLE_ROWS texels:
 // the lower half for light arriving from outside (n_a = uNOutside), the upper half from inside
-// (media swapped: the far wall of the bubble). Texel centres map to the ends of each range.
+// (media swapped: the far wall of the bubble). Texel positions: filmTableLayout.glsl.
 // Each texel averages over its thickness cell so fringes finer than a cell do not alias.
-// Mirrors src/render/filmTable.ts.
+// Built by src/render/filmTable.ts.
 #include "spectralIntegration.glsl"
+#include "filmTableLayout.glsl"
 
 uniform float uNOutside;
 uniform float uNFilm;
 uniform float uNInside;
 uniform float uTableMaxThicknessNm;
 
-
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   bool fromInside = texel.y >= FILM_TABLE_ROWS;
   int row = fromInside ? texel.y - FILM_TABLE_ROWS : texel.y;
-  float cellNm = uTableMaxThicknessNm / float(FILM_TABLE_WIDTH - 1);
-  float thicknessNm = float(texel.x) * cellNm;
-  float cosIncidence = float(row) / float(FILM_TABLE_ROWS - 1);
+  float u = float(texel.x) / float(FILM_TABLE_WIDTH - 1);
+  float thicknessNm = filmTableThicknessNm(u, uTableMaxThicknessNm);
+  float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / float(FILM_TABLE_WIDTH - 1);
+  float cosIncidence = filmTableCosIncidence(float(row) / float(FILM_TABLE_ROWS - 1));
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
   FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);

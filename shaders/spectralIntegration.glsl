@@ -9,6 +9,14 @@
 #ifndef SPECTRAL_BINS
 #define SPECTRAL_BINS 90
 #endif
+// The bins integrated, first <= b < end: significantBins (TypeScript) drops the tails where the
+// illuminant times the colour-matching functions hardly matters.
+#ifndef SPECTRAL_BIN_FIRST
+#define SPECTRAL_BIN_FIRST 0
+#endif
+#ifndef SPECTRAL_BIN_END
+#define SPECTRAL_BIN_END SPECTRAL_BINS
+#endif
 
 uniform sampler2D uSpectralBins;
 
@@ -18,7 +26,7 @@ vec3 binnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
   const float width = 450.0 / float(SPECTRAL_BINS);
   vec2 path = o.opticalPathNm;
   vec3 xyz = vec3(0.0);
-  for (int b = 0; b < SPECTRAL_BINS; b++) {
+  for (int b = SPECTRAL_BIN_FIRST; b < SPECTRAL_BIN_END; b++) {
     float l1 = 380.0 + float(b) * width;
     float l2 = l1 + width;
     float r = 0.0;

@@ -38,7 +38,6 @@ export class ThinFilmBubble extends HTMLElement {
   private app: BubbleApp | null = null;
   private canvas: HTMLCanvasElement | null = null;
   private messages: HTMLElement | null = null;
-  private visibility: IntersectionObserver | null = null;
   /** Whether the element is built (live, or as the CPU image without WebGL2). */
   private built = false;
 
@@ -100,8 +99,6 @@ export class ThinFilmBubble extends HTMLElement {
         this.dispatchEvent(new CustomEvent('change', { detail: { settings: s, query: settingsToQuery(s) } }));
       },
     });
-    this.visibility = new IntersectionObserver((entries) => this.app?.setOnScreen(entries.some((e) => e.isIntersecting)));
-    this.visibility.observe(this);
   }
 
   disconnectedCallback(): void {
@@ -109,7 +106,6 @@ export class ThinFilmBubble extends HTMLElement {
     this.built = false;
     this.replaceChildren();
     if (!this.app) return;
-    this.visibility?.disconnect();
     this.app.dispose();
     this.app = null;
     releaseSharedRenderer();

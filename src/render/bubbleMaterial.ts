@@ -5,27 +5,31 @@ import {
   XYZ_TO_LINEAR_DISPLAY_P3,
   XYZ_TO_LINEAR_SRGB,
 } from '../physics/colorConversions.ts';
-import { EXACT_SPECTRAL_BINS, FIELDS, type FilmSettings, TABLE_ROWS, TABLE_WIDTH } from './filmSettings.ts';
+import { type FilmQuality } from './filmQuality.ts';
+import { FIELDS, FILM_METHODS, type FilmSettings } from './filmSettings.ts';
+import { filmTableLayoutDefines } from './filmTableLayout.ts';
 import { shaderSource } from './shaderSource.ts';
-import { spectralBinsTexture } from './spectralBinsTexture.ts';
+import { spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 
 const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
-/** The defines shaders/filmColor.glsl needs: the method and polarisation in use, and their sizes. */
-export function filmColorDefines(s: Pick<FilmSettings, 'mode' | 'polarization'>): Record<string, number> {
-  return {
-    FILM_MODE: s.mode === 'exact' ? 0 : 1,
-    POLARIZATION: POLARIZATIONS.indexOf(s.polarization),
-    SPECTRAL_BINS: EXACT_SPECTRAL_BINS,
-    FILM_TABLE_WIDTH: TABLE_WIDTH,
-    FILM_TABLE_ROWS: TABLE_ROWS,
-  };
+export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'illuminant' | 'normalization'>;
+
+/**
+ * The defines shaders/filmColor.glsl needs: the method and polarisation in use, and only the
+ * sizes of that method (the spectral bins it visits, or the table's layout).
+ */
+export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
+  const method = { FILM_MODE: FILM_METHODS.indexOf(s.mode), POLARIZATION: POLARIZATIONS.indexOf(s.polarization) };
+  if (s.mode === 'exact') return { ...method, ...spectralBinDefines(s.illuminant, s.normalization, q.exactSpectralBins, q.spectralTailTolerance) };
+  if (s.mode === 'table') return { ...method, ...filmTableLayoutDefines(q.table) };
+  return method;
 }
 
 /** The compile-time switches: a shader holds only the mode, field, sides and options in use. */
-export function bubbleDefines(s: FilmSettings): Record<string, number> {
+export function bubbleDefines(s: FilmSettings, q: FilmQuality): Record<string, number> {
   return {
-    ...filmColorDefines(s),
+    ...filmColorDefines(s, q),
     THICKNESS_FIELD: FIELDS.indexOf(s.field),
     SIDES: s.sides === 'both' ? 2 : 1,
     ENVIRONMENT: s.env === 'sky' ? 1 : 0,
@@ -34,9 +38,9 @@ export function bubbleDefines(s: FilmSettings): Record<string, number> {
 }
 
 /** The bubble's ShaderMaterial (shaders/bubble.*.glsl). `updateBubbleUniforms` keeps it current. */
-export function createBubbleMaterial(s: FilmSettings): ShaderMaterial {
+export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMaterial {
   return new ShaderMaterial({
-    defines: bubbleDefines(s),
+    defines: bubbleDefines(s, q),
     uniforms: {
       uSpectralBins: { value: null },
       uFilmTable: { value: null },
@@ -60,17 +64,18 @@ export function createBubbleMaterial(s: FilmSettings): ShaderMaterial {
 export function updateBubbleUniforms(
   m: ShaderMaterial,
   s: FilmSettings,
+  q: FilmQuality,
   table: { texture: Texture; maxThicknessNm: number } | null,
   displayIsP3: boolean,
 ): void {
   const u = m.uniforms;
-  const defines = bubbleDefines(s);
+  const defines = bubbleDefines(s, q);
   if (JSON.stringify(defines) !== JSON.stringify(m.defines)) {
     m.dispose(); // frees the old program (three keeps one per define set until the material is disposed)
     m.defines = defines;
     m.needsUpdate = true;
   }
-  u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, EXACT_SPECTRAL_BINS);
+  u.uSpectralBins!.value = s.mode === 'exact' ? spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins) : null;
   u.uFilmTable!.value = table?.texture ?? null;
   u.uTableMaxThicknessNm!.value = table?.maxThicknessNm ?? 1;
   u.uNOutside!.value = s.nOutside;

@@ -4,6 +4,8 @@ import { type Normalization } from '../physics/spectralIntegration.ts';
 
 export const SPACES = ['srgb', 'display-p3', 'wide-gamut'] as const;
 export const MODES = ['exact', 'table'] as const;
+/** What a film shader can compute: the modes, and three.js's own iridescence (the benchmark's peer). */
+export const FILM_METHODS = [...MODES, 'three-iridescence'] as const;
 export const FIELDS = ['uniform', 'drainage', 'swirl'] as const;
 export const SIDES = ['both', 'front'] as const;
 export const ENVIRONMENTS = ['sky', 'none'] as const;
@@ -17,7 +19,7 @@ export interface FilmSettings {
   readonly polarization: Polarization;
   readonly normalization: Normalization;
   readonly space: (typeof SPACES)[number];
-  readonly mode: (typeof MODES)[number];
+  readonly mode: (typeof FILM_METHODS)[number];
   readonly field: (typeof FIELDS)[number];
   readonly thicknessNm: number;
   readonly thicknessRangeNm: number;
@@ -52,13 +54,6 @@ export const DEFAULT_SETTINGS: FilmSettings = {
   timeSeconds: 0,
   probe: [0.5, 0.5],
 };
-
-/** Spectral bins per fragment in `exact` mode and per texel in the table pass. */
-export const EXACT_SPECTRAL_BINS = 90;
-export const TABLE_SPECTRAL_BINS = 90;
-/** Table size: thickness texels × cos θ rows (×2: outside and inside views). */
-export const TABLE_WIDTH = 1024;
-export const TABLE_ROWS = 64;
 
 /** The largest thickness the field reaches, which the table must cover (the field is clamped to the domain's 20 µm). */
 export function maxFieldThicknessNm(s: Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm'>): number {

@@ -1,5 +1,6 @@
 import {
   FloatType,
+  HalfFloatType,
   LinearFilter,
   Mesh,
   OrthographicCamera,
@@ -11,9 +12,11 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
-import { type FilmSettings, TABLE_ROWS, TABLE_SPECTRAL_BINS, TABLE_WIDTH, maxFieldThicknessNm } from './filmSettings.ts';
+import { type FilmQuality } from './filmQuality.ts';
+import { type FilmSettings, maxFieldThicknessNm } from './filmSettings.ts';
+import { filmTableLayoutDefines } from './filmTableLayout.ts';
 import { shaderSource } from './shaderSource.ts';
-import { spectralBinsTexture } from './spectralBinsTexture.ts';
+import { spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 
 /** What the table depends on; anything else (the field's animation, exposure, space) leaves it alone. */
 export function tableKey(s: FilmSettings): string {
@@ -21,25 +24,39 @@ export function tableKey(s: FilmSettings): string {
 }
 
 /**
+ * The table's texel type: float where the GPU can render to float (EXT_color_buffer_float) and
+ * filter it (OES_texture_float_linear), else half float, which WebGL2 always filters and renders
+ * to with EXT_color_buffer_half_float (or EXT_color_buffer_float).
+ */
+export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['tablePrecision']): typeof FloatType | typeof HalfFloatType {
+  const e = renderer.extensions;
+  return precision === 'auto' && e.has('EXT_color_buffer_float') && e.has('OES_texture_float_linear') ? FloatType : HalfFloatType;
+}
+
+/**
  * The `table` method: a GPU pass running shaders/filmTable.glsl fills a float texture with the
- * film's XYZ over (thickness 0..max, cos θ_i 0..1), for light from outside and from inside.
- * It is rebuilt only when `tableKey` changes.
+ * film's XYZ over (thickness 0..max, cos θ_i 0..1), for light from outside and from inside, laid
+ * out as `quality.table` says. It is rebuilt only when `tableKey` changes.
  */
 export class FilmTable {
-  readonly target = new WebGLRenderTarget(TABLE_WIDTH, 2 * TABLE_ROWS, {
-    type: FloatType,
-    format: RGBAFormat,
-    minFilter: LinearFilter,
-    magFilter: LinearFilter,
-    depthBuffer: false,
-  });
+  private readonly target: WebGLRenderTarget;
   private key = '';
   private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly quad = new Mesh(new PlaneGeometry(2, 2));
   private readonly materials = new Map<string, ShaderMaterial>();
   maxThicknessNm = 1;
-  /** Milliseconds the last rebuild took (synced with a 1-pixel read), for the benchmark. */
+  /** Milliseconds the last rebuild took (synced with a 1-pixel read), and how many there were: for the benchmark. */
   lastBuildMs = 0;
+  builds = 0;
+
+  constructor(private readonly quality: FilmQuality) {
+    this.target = new WebGLRenderTarget(quality.table.width, 2 * quality.table.rows, {
+      format: RGBAFormat,
+      minFilter: LinearFilter,
+      magFilter: LinearFilter,
+      depthBuffer: false,
+    });
+  }
 
   get texture(): Texture {
     return this.target.texture;
@@ -50,9 +67,14 @@ export class FilmTable {
     const key = tableKey(s);
     if (key === this.key) return false;
     const started = performance.now();
+    const type = tableTexelType(renderer, this.quality.tablePrecision);
+    if (this.target.texture.type !== type) {
+      this.target.dispose(); // reallocated at the new type on the next render
+      this.target.texture.type = type;
+    }
     this.maxThicknessNm = maxFieldThicknessNm(s);
     const material = this.material(s);
-    material.uniforms.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, TABLE_SPECTRAL_BINS);
+    material.uniforms.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins);
     material.uniforms.uNOutside!.value = s.nOutside;
     material.uniforms.uNFilm!.value = s.nFilm;
     material.uniforms.uNInside!.value = s.nInside;
@@ -61,9 +83,10 @@ export class FilmTable {
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(this.target);
     renderer.render(this.quad, this.camera);
-    renderer.readRenderTargetPixels(this.target, 0, 0, 1, 1, new Float32Array(4));
+    renderer.readRenderTargetPixels(this.target, 0, 0, 1, 1, type === FloatType ? new Float32Array(4) : new Uint16Array(4));
     renderer.setRenderTarget(previous);
     this.lastBuildMs = performance.now() - started;
+    this.builds++;
     this.key = key;
     return true;
   }
@@ -74,15 +97,16 @@ export class FilmTable {
   }
 
   private material(s: FilmSettings): ShaderMaterial {
-    const hit = this.materials.get(s.polarization);
+    const defines = {
+      POLARIZATION: POLARIZATIONS.indexOf(s.polarization),
+      ...spectralBinDefines(s.illuminant, s.normalization, this.quality.table.spectralBins, this.quality.spectralTailTolerance),
+      ...filmTableLayoutDefines(this.quality.table),
+    };
+    const key = JSON.stringify(defines);
+    const hit = this.materials.get(key);
     if (hit) return hit;
     const m = new ShaderMaterial({
-      defines: {
-        POLARIZATION: POLARIZATIONS.indexOf(s.polarization),
-        SPECTRAL_BINS: TABLE_SPECTRAL_BINS,
-        FILM_TABLE_WIDTH: TABLE_WIDTH,
-        FILM_TABLE_ROWS: TABLE_ROWS,
-      },
+      defines,
       uniforms: {
         uSpectralBins: { value: null },
         uNOutside: { value: 1 },
@@ -93,7 +117,7 @@ export class FilmTable {
       vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
       fragmentShader: shaderSource('filmTable.glsl'),
     });
-    this.materials.set(s.polarization, m);
+    this.materials.set(key, m);
     return m;
   }
 

@@ -1,8 +1,9 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { type Normalization, spectralBins, spectralWeights } from '../physics/spectralIntegration.ts';
+import { type Normalization, significantBins, spectralBins, spectralWeights } from '../physics/spectralIntegration.ts';
 
 const cache = new Map<string, DataTexture>();
+const definesCache = new Map<string, Record<string, number>>();
 
 /**
  * The bin weights ∫_bin I_in x̄, ȳ, z̄ dλ / k as a `count` × 1 float texture, from the reference
@@ -20,6 +21,25 @@ export function spectralBinsTexture(illuminant: IlluminantSpec, normalization: N
   texture.needsUpdate = true;
   cache.set(key, texture);
   return texture;
+}
+
+/**
+ * The defines of shaders/spectralIntegration.glsl: `count` bins, of which the loop visits only
+ * those that matter under this illuminant (`significantBins` with `tailTolerance`).
+ */
+export function spectralBinDefines(
+  illuminant: IlluminantSpec,
+  normalization: Normalization,
+  count: number,
+  tailTolerance: number,
+): Record<string, number> {
+  const key = `${JSON.stringify(illuminant)}|${normalization}|${count}|${tailTolerance}`;
+  const hit = definesCache.get(key);
+  if (hit) return hit;
+  const { first, end } = significantBins(spectralBins(spectralWeights(illuminant, normalization), count), tailTolerance);
+  const defines = { SPECTRAL_BINS: count, SPECTRAL_BIN_FIRST: first, SPECTRAL_BIN_END: end };
+  definesCache.set(key, defines);
+  return defines;
 }
 
 /** Frees the shared textures (after a lost context, or when the last bubble goes). */

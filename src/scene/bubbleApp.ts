@@ -27,7 +27,7 @@ export interface BubbleAppParts {
 /**
  * A bubble on a page: the view, its controls and plots, and when to draw. Frames are drawn on
  * demand — one per change — and in a loop only while the swirl animates and the bubble is both
- * on screen and in a visible page.
+ * on screen (IntersectionObserver) and in a visible page.
  */
 export class BubbleApp {
   private settings: FilmSettings;
@@ -66,14 +66,17 @@ export class BubbleApp {
     const glCanvas = parts.view.renderer.domElement;
     glCanvas.addEventListener('webglcontextrestored', onRestored);
     const resize = new ResizeObserver(() => this.fit());
+    const onScreen = new IntersectionObserver((entries) => this.setOnScreen(entries.some((e) => e.isIntersecting)));
     parts.surface.addEventListener('click', onClick);
     document.addEventListener('visibilitychange', onVisibility);
     resize.observe(parts.surface);
+    onScreen.observe(parts.surface);
     this.disconnect = () => {
       parts.surface.removeEventListener('click', onClick);
       document.removeEventListener('visibilitychange', onVisibility);
       glCanvas.removeEventListener('webglcontextrestored', onRestored);
       resize.disconnect();
+      onScreen.disconnect();
     };
     this.fit();
   }
@@ -96,7 +99,7 @@ export class BubbleApp {
   }
 
   /** Whether the bubble is on screen (an IntersectionObserver's verdict). */
-  setOnScreen(visible: boolean): void {
+  private setOnScreen(visible: boolean): void {
     this.onScreen = visible;
     this.wake();
   }
@@ -140,6 +143,7 @@ export class BubbleApp {
 
   private fit(): void {
     const { clientWidth, clientHeight } = this.parts.surface;
+    if (clientWidth === 0 || clientHeight === 0) return; // hidden (display: none): nothing to draw
     this.parts.view.resize(clientWidth, clientHeight, Math.min(2, globalThis.devicePixelRatio || 1));
     this.plotsDue = true;
     this.requestFrame();

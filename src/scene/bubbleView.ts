@@ -12,6 +12,7 @@ import {
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
 import { createBubbleMaterial, updateBubbleUniforms } from '../render/bubbleMaterial.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../render/filmQuality.ts';
 import { FilmTable } from '../render/filmTable.ts';
 import { type FilmSettings } from '../render/filmSettings.ts';
 import { shaderSource } from '../render/shaderSource.ts';
@@ -37,7 +38,7 @@ export const createBubbleRenderer = (canvas: HTMLCanvasElement): WebGLRenderer =
 export class BubbleView {
   readonly camera = new PerspectiveCamera(FOV_DEG, 1, 0.1, 100);
   readonly scene = new Scene();
-  readonly table = new FilmTable();
+  readonly table: FilmTable;
   readonly bubble: Mesh<SphereGeometry, ShaderMaterial>;
   private readonly sky: Mesh<SphereGeometry, ShaderMaterial>;
   private readonly filmProbe = new FilmProbe();
@@ -50,10 +51,12 @@ export class BubbleView {
   constructor(
     readonly renderer: WebGLRenderer,
     settings: FilmSettings,
+    readonly quality: FilmQuality = DEFAULT_FILM_QUALITY,
   ) {
     this.settings = settings;
+    this.table = new FilmTable(quality);
     this.camera.position.set(0, 0, CAMERA_DISTANCE);
-    this.bubble = new Mesh(new SphereGeometry(1, 128, 64), createBubbleMaterial(settings));
+    this.bubble = new Mesh(new SphereGeometry(1, 128, 64), createBubbleMaterial(settings, quality));
     this.sky = new Mesh(
       new SphereGeometry(50, 32, 16),
       new ShaderMaterial({
@@ -89,7 +92,7 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     this.displayIsP3 = wantP3 && 'drawingBufferColorSpace' in gl && gl.drawingBufferColorSpace === 'display-p3';
     if (wantP3 && !this.displayIsP3) this.renderer.outputColorSpace = SRGBColorSpace;
     this.sky.visible = s.env === 'sky';
-    updateBubbleUniforms(this.bubble.material, s, s.mode === 'table' ? this.table : null, this.displayIsP3);
+    updateBubbleUniforms(this.bubble.material, s, this.quality, s.mode === 'table' ? this.table : null, this.displayIsP3);
   }
 
   /** Rebuilds the table if a parameter it depends on changed since it was drawn (once per frame at most). */

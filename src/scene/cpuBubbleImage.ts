@@ -2,7 +2,8 @@ import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../physics/
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { binnedXyz, spectralBins, spectralWeights } from '../physics/spectralIntegration.ts';
 import { filmOptics } from '../physics/filmReflectance.ts';
-import { EXACT_SPECTRAL_BINS, type FilmSettings, maxFieldThicknessNm } from '../render/filmSettings.ts';
+import { DEFAULT_FILM_QUALITY } from '../render/filmQuality.ts';
+import { type FilmSettings, maxFieldThicknessNm } from '../render/filmSettings.ts';
 import { thicknessAt, type Vec3 } from './thicknessField.ts';
 
 /** The view of src/scene/bubbleView.ts: a camera on +z at distance 4 with a 35° vertical field of view. */
@@ -11,7 +12,7 @@ export const FOV_DEG = 35;
 /** The sky sphere's radius in bubbleView.ts: the background direction is where a ray meets it. */
 const SKY_RADIUS = 50;
 /**
- * Films are coloured by the shader's method (binnedXyz, EXACT_SPECTRAL_BINS bins: within ΔE00
+ * Films are coloured by the shader's method (binnedXyz, the default `exact` bin count: within ΔE00
  * 0.11 of filmXyz to 2 µm, and its cost does not grow with thickness) on a memoised lattice,
  * interpolated bilinearly: thickness in steps around the set thickness (so a uniform film is
  * exact), at least MIN_THICKNESS_STEP_NM and at most LATTICE_THICKNESSES steps over the field's
@@ -50,7 +51,7 @@ type FilmColor = (thicknessNm: number, cosIncidence: number, fromInside: boolean
 /** The film's linear sRGB (eq 19 after eqs 1–18) at a thickness and cos θ_i, from the memoised lattice. */
 function filmColorLattice(s: FilmSettings): FilmColor {
   const step = Math.max(MIN_THICKNESS_STEP_NM, maxFieldThicknessNm(s) / LATTICE_THICKNESSES);
-  const bins = spectralBins(spectralWeights(s.illuminant, s.normalization), EXACT_SPECTRAL_BINS);
+  const bins = spectralBins(spectralWeights(s.illuminant, s.normalization), DEFAULT_FILM_QUALITY.exactSpectralBins);
   const cache = new Map<string, Rgb>();
   const node = (k: number, j: number, fromInside: boolean): Rgb => {
     const key = `${k}|${j}|${fromInside}`;

@@ -5,6 +5,8 @@ import { POLARIZATIONS } from '../../src/physics/filmReflectance.ts';
 import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
 import { type Xyz, filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/render/filmQuality.ts';
+import { type DeltaStats, deltaStats } from './harness/deltaStats.ts';
 import type { ParityGroup, ParityMode } from './harness/parityCase.ts';
 
 /**
@@ -90,12 +92,8 @@ function stressDomain(): Group[] {
   return groups;
 }
 
-interface Figures {
-  cases: number;
-  max: number;
-  p99: number;
-  mean: number;
-  worst: string;
+interface Figures extends DeltaStats {
+  readonly worst: string;
 }
 
 function compare(groups: readonly Group[], rendered: number[][][]): { figures: Figures; deltas: number[]; nonFinite: string[] } {
@@ -114,21 +112,13 @@ function compare(groups: readonly Group[], rendered: number[][][]): { figures: F
       deltas.push(d);
     });
   });
-  const sorted = [...deltas].sort((a, b) => a - b);
-  const figures = {
-    cases: deltas.length,
-    max: sorted[sorted.length - 1]!,
-    p99: sorted[Math.min(sorted.length - 1, Math.floor(0.99 * sorted.length))]!,
-    mean: deltas.reduce((s, d) => s + d, 0) / deltas.length,
-    worst,
-  };
-  return { figures, deltas, nonFinite };
+  return { figures: { ...deltaStats(deltas), worst }, deltas, nonFinite };
 }
 
-async function render(page: Page, groups: readonly Group[], mode: ParityMode): Promise<number[][][]> {
+async function render(page: Page, groups: readonly Group[], mode: ParityMode, quality: FilmQuality = DEFAULT_FILM_QUALITY): Promise<number[][][]> {
   await page.goto('/tests/e2e/harness/parity.html');
   await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
-  return page.evaluate(([g, m]) => window.renderFilmXyz!(g, m), [groups.map(toParity), mode] as const);
+  return page.evaluate(([g, m, q]) => window.renderFilmXyz!(g, m, q), [groups.map(toParity), mode, quality] as const);
 }
 
 const results: Record<string, Figures> = {};
@@ -157,3 +147,21 @@ for (const mode of ['exact', 'table'] as const) {
     expect(figures.max, figures.worst).toBeLessThan(MAX_DELTA_E00_STRESS);
   });
 }
+
+/**
+ * GPUs without float render targets get a half-float table (FilmTable picks it). Half floats keep
+ * 11 significant bits, ~5e-4 relative: the table's colours must still meet the fixed-grid bound.
+ */
+test(`the half-float table matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°, and stays finite on the stress cases`, async ({ page }) => {
+  const half = { ...DEFAULT_FILM_QUALITY, tablePrecision: 'half' } as const;
+  const fixed = fixedDomain();
+  const fixedResult = compare(fixed, await render(page, fixed, 'table', half));
+  const stress = stressDomain();
+  const stressResult = compare(stress, await render(page, stress, 'table', half));
+  results['table-half/fixed'] = fixedResult.figures;
+  results['table-half/stress'] = stressResult.figures;
+  console.log(`parity half-float table: ${JSON.stringify({ fixed: fixedResult.figures, stress: stressResult.figures })}`);
+  expect([...fixedResult.nonFinite, ...stressResult.nonFinite]).toEqual([]);
+  expect(fixedResult.figures.max, fixedResult.figures.worst).toBeLessThanOrEqual(MAX_DELTA_E00_FIXED);
+  expect(stressResult.figures.max, stressResult.figures.worst).toBeLessThan(MAX_DELTA_E00_STRESS);
+});

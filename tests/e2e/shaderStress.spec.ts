@@ -3,7 +3,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { POLARIZATIONS, filmOptics } from '../../src/physics/filmReflectance.ts';
 import { type Xyz, binnedXyz, filmXyz, spectralBins, spectralWeights, whiteXyz } from '../../src/physics/spectralIntegration.ts';
-import { EXACT_SPECTRAL_BINS } from '../../src/render/filmSettings.ts';
+import { DEFAULT_FILM_QUALITY } from '../../src/render/filmQuality.ts';
 import type { ParityGroup, ParityMode } from './harness/parityCase.ts';
 
 /**
@@ -66,7 +66,7 @@ for (const mode of ['exact', 'table'] as const) {
 
 /** The float64 twin of the shader's method: the same 90 bins and closed-form means. */
 function binned64(g: ParityGroup, thicknessNm: number, angleDeg: number): Xyz {
-  const bins = spectralBins(spectralWeights(g.illuminant, g.normalization), EXACT_SPECTRAL_BINS);
+  const bins = spectralBins(spectralWeights(g.illuminant, g.normalization), DEFAULT_FILM_QUALITY.exactSpectralBins);
   return binnedXyz(filmOptics({ ...g, thicknessNm, angleDeg }, g.polarization), bins);
 }
 

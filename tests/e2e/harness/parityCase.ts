@@ -1,3 +1,4 @@
+import type { FilmQuality } from '../../../src/render/filmQuality.ts';
 import type { FilmSettings } from '../../../src/render/filmSettings.ts';
 
 /**
@@ -15,6 +16,6 @@ export type ParityMode = FilmSettings['mode'];
 declare global {
   interface Window {
     /** XYZ per case of every group, in the groups' order, as the shader computes it. */
-    renderFilmXyz?: (groups: readonly ParityGroup[], mode: ParityMode) => number[][][];
+    renderFilmXyz?: (groups: readonly ParityGroup[], mode: ParityMode, quality?: FilmQuality) => number[][][];
   }
 }

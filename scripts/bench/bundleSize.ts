@@ -1,0 +1,34 @@
+/** Builds the demo (vite build) and reports the gzipped size of its JavaScript. */
+import { readFileSync, readdirSync } from 'node:fs';
+import { join, relative } from 'node:path';
+import { gzipSync } from 'node:zlib';
+import { build } from 'vite';
+
+/** The embeddable element's bundle, where the build makes one. */
+export const ELEMENT_BUNDLE = 'dist/thin-film-bubble.js';
+
+export interface BundleSizes {
+  /** every JS file in dist: path → bytes and gzipped bytes */
+  readonly files: Record<string, { readonly bytes: number; readonly gzipBytes: number }>;
+  readonly demoGzipBytes: number;
+  readonly elementGzipBytes: number | null;
+}
+
+const jsFiles = (dir: string): string[] =>
+  readdirSync(dir, { withFileTypes: true }).flatMap((e) =>
+    e.isDirectory() ? jsFiles(join(dir, e.name)) : e.name.endsWith('.js') ? [join(dir, e.name)] : [],
+  );
+
+export async function buildAndMeasure(): Promise<BundleSizes> {
+  await build({ logLevel: 'silent' });
+  const files: Record<string, { bytes: number; gzipBytes: number }> = {};
+  for (const path of jsFiles('dist')) {
+    const text = readFileSync(path);
+    files[relative('.', path)] = { bytes: text.length, gzipBytes: gzipSync(text, { level: 9 }).length };
+  }
+  const element = files[ELEMENT_BUNDLE]?.gzipBytes ?? null;
+  const demo = Object.entries(files)
+    .filter(([path]) => path !== ELEMENT_BUNDLE)
+    .reduce((sum, [, f]) => sum + f.gzipBytes, 0);
+  return { files, demoGzipBytes: demo, elementGzipBytes: element };
+}

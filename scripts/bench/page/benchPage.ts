@@ -1,0 +1,76 @@
+/**
+ * The benchmark page: one row per page load. It builds the demo's BubbleView with the row's
+ * settings and quality, times frames synced with a 1-pixel readPixels, and renders the error
+ * grids through the same film shader (FilmXyzProbe) on its own renderer.
+ */
+import { DataTexture, Mesh, MeshBasicMaterial, RGBAFormat, SRGBColorSpace, WebGLRenderer } from 'three';
+import { BubbleView, createBubbleRenderer } from '../../../src/scene/bubbleView.ts';
+import { FilmXyzProbe } from '../../../tests/e2e/harness/filmXyzProbe.ts';
+import type { BenchRowSpec } from '../benchRow.ts';
+
+const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
+if (!canvas) throw new Error('bench.html must hold #bubble');
+
+const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
+
+/** A 256² sRGB texture for the floor row: the sphere then costs one texture fetch per pixel. */
+function checkerTexture(): DataTexture {
+  const size = 256;
+  const data = new Uint8Array(4 * size * size);
+  for (let i = 0; i < size * size; i++) {
+    const v = ((i % size >> 4) + ((i / size) >> 4)) % 2 ? 220 : 90;
+    data.set([v, (v * 3) >> 2, 255 - v, 255], 4 * i);
+  }
+  const t = new DataTexture(data, size, size, RGBAFormat);
+  t.colorSpace = SRGBColorSpace;
+  t.needsUpdate = true;
+  return t;
+}
+
+window.benchRow = (spec: BenchRowSpec) => {
+  const view = new BubbleView(createBubbleRenderer(canvas), spec.settings, spec.quality);
+  if (spec.kind === 'textured') {
+    view.bubble.visible = false;
+    view.scene.add(new Mesh(view.bubble.geometry, new MeshBasicMaterial({ map: checkerTexture() })));
+  }
+  const gl = view.renderer.getContext();
+  const pixel = new Uint8Array(4);
+  let time = spec.settings.timeSeconds;
+  const frame = () => {
+    const started = performance.now();
+    time += 1 / 60; // the animated field moves, as in the demo's loop
+    view.apply({ ...view.current, timeSeconds: time });
+    view.render();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    return performance.now() - started;
+  };
+  const [firstWidth, firstHeight] = spec.sizes[0]!;
+  view.resize(firstWidth, firstHeight);
+  view.render();
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+  const firstFrameMs = performance.now();
+  const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? view.table.lastBuildMs : null;
+  const buildsBefore = view.table.builds;
+
+  const frames = spec.sizes.map(([width, height]) => {
+    view.resize(width, height);
+    const first = frame();
+    // A frame longer than the budget is its own measurement (the shader compiled with the first frame).
+    if (first > spec.frameBudgetMs) return { medianMs: first, count: 1 };
+    const warm = [first, frame(), frame()];
+    const count = Math.max(3, Math.min(spec.frames, Math.floor(spec.frameBudgetMs / Math.min(...warm))));
+    const times = Array.from({ length: count }, frame);
+    return { medianMs: median(times), count };
+  });
+  const rebuildsWhileAnimating = view.table.builds - buildsBefore;
+  view.dispose();
+
+  let xyz: number[][][] = [];
+  if (spec.grids.length > 0 && spec.settings.mode !== undefined && spec.kind === 'bubble') {
+    const renderer = new WebGLRenderer({ canvas: document.createElement('canvas') });
+    xyz = new FilmXyzProbe(renderer).render(spec.grids, spec.settings.mode, spec.quality);
+    renderer.dispose();
+  }
+  return { firstFrameMs, tableBuildMs, rebuildsWhileAnimating, frames, xyz };
+};
+document.body.dataset.ready = 'yes';

@@ -1,0 +1,110 @@
+/**
+ * Renders film XYZ through the real shaders (shaders/filmColor.glsl, via shaderSource) into a
+ * float target and reads it back: one draw per group, one pixel per case, no colour conversion.
+ * In `table` mode the table is built by the app's own FilmTable pass, covering the group's
+ * largest thickness (as the bubble's table covers its field's). Used by the parity harness and
+ * the benchmark's error columns.
+ */
+import {
+  DataTexture,
+  FloatType,
+  Mesh,
+  NearestFilter,
+  OrthographicCamera,
+  PlaneGeometry,
+  RGBAFormat,
+  ShaderMaterial,
+  WebGLRenderTarget,
+  type WebGLRenderer,
+} from 'three';
+import { filmColorDefines } from '../../../src/render/bubbleMaterial.ts';
+import { type FilmQuality } from '../../../src/render/filmQuality.ts';
+import { DEFAULT_SETTINGS } from '../../../src/render/filmSettings.ts';
+import { FilmTable } from '../../../src/render/filmTable.ts';
+import { shaderSource } from '../../../src/render/shaderSource.ts';
+import { spectralBinsTexture } from '../../../src/render/spectralBinsTexture.ts';
+import type { ParityGroup, ParityMode } from './parityCase.ts';
+
+const FRAGMENT = `${shaderSource('filmColor.glsl')}
+uniform sampler2D uInputs; // r: thickness in nm, g: cos θ_i
+void main() {
+  vec2 film = texelFetch(uInputs, ivec2(gl_FragCoord.xy), 0).rg;
+  gl_FragColor = vec4(filmXyz(film.x, film.y, false), 1.0);
+}`;
+
+export class FilmXyzProbe {
+  private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
+  private readonly quad = new Mesh(new PlaneGeometry(2, 2));
+  private readonly materials = new Map<string, ShaderMaterial>();
+  private readonly tables = new Map<string, FilmTable>();
+
+  constructor(private readonly renderer: WebGLRenderer) {}
+
+  /** XYZ per case of every group, in the groups' order, as the shader computes it. */
+  render(groups: readonly ParityGroup[], mode: ParityMode, quality: FilmQuality): number[][][] {
+    return groups.map((g) => this.renderGroup(g, mode, quality));
+  }
+
+  private material(mode: ParityMode, g: ParityGroup, quality: FilmQuality): ShaderMaterial {
+    const defines = filmColorDefines({ ...g, mode }, quality);
+    const key = JSON.stringify(defines);
+    const hit = this.materials.get(key);
+    if (hit) return hit;
+    const m = new ShaderMaterial({
+      defines,
+      uniforms: {
+        uInputs: { value: null },
+        uSpectralBins: { value: null },
+        uNOutside: { value: 1 },
+        uNFilm: { value: 1.33 },
+        uNInside: { value: 1 },
+        uFilmTable: { value: null },
+        uTableMaxThicknessNm: { value: 1 },
+      },
+      vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
+      fragmentShader: FRAGMENT,
+    });
+    this.materials.set(key, m);
+    return m;
+  }
+
+  private table(quality: FilmQuality): FilmTable {
+    const key = JSON.stringify(quality);
+    const table = this.tables.get(key) ?? new FilmTable(quality);
+    this.tables.set(key, table);
+    return table;
+  }
+
+  private renderGroup(g: ParityGroup, mode: ParityMode, quality: FilmQuality): number[][] {
+    const count = g.inputs.length;
+    const inputs = new Float32Array(4 * count);
+    g.inputs.forEach(([thicknessNm, cosIncidence], i) => inputs.set([thicknessNm, cosIncidence, 0, 0], 4 * i));
+    const inputTexture = new DataTexture(inputs, count, 1, RGBAFormat, FloatType);
+    inputTexture.minFilter = inputTexture.magFilter = NearestFilter;
+    inputTexture.needsUpdate = true;
+    const m = this.material(mode, g, quality);
+    const u = m.uniforms;
+    u.uInputs!.value = inputTexture;
+    u.uSpectralBins!.value = spectralBinsTexture(g.illuminant, g.normalization, quality.exactSpectralBins);
+    u.uNOutside!.value = g.nOutside;
+    u.uNFilm!.value = g.nFilm;
+    u.uNInside!.value = g.nInside;
+    if (mode === 'table') {
+      const table = this.table(quality);
+      const maxThicknessNm = Math.max(...g.inputs.map(([t]) => t));
+      table.update(this.renderer, { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: maxThicknessNm, mode });
+      u.uFilmTable!.value = table.texture;
+      u.uTableMaxThicknessNm!.value = table.maxThicknessNm;
+    }
+    const target = new WebGLRenderTarget(count, 1, { type: FloatType, format: RGBAFormat, depthBuffer: false });
+    this.quad.material = m;
+    this.renderer.setRenderTarget(target);
+    this.renderer.render(this.quad, this.camera);
+    const out = new Float32Array(4 * count);
+    this.renderer.readRenderTargetPixels(target, 0, 0, count, 1, out);
+    this.renderer.setRenderTarget(null);
+    target.dispose();
+    inputTexture.dispose();
+    return g.inputs.map((_, i) => [out[4 * i]!, out[4 * i + 1]!, out[4 * i + 2]!]);
+  }
+}
