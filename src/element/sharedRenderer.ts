@@ -1,5 +1,4 @@
 import type { WebGLRenderer } from 'three';
-import { disposeSpectralBinsTextures } from '../render/spectralBinsTexture.ts';
 import { createBubbleRenderer } from '../scene/bubbleView.ts';
 
 let renderer: WebGLRenderer | null = null;
@@ -8,7 +7,8 @@ let users = 0;
 /**
  * One WebGL renderer for every <thin-film-bubble> on a page: each element draws with it and
  * copies the frame to its own canvas, so shader programs are compiled and spectral textures
- * uploaded once per page, and a page of bubbles holds one WebGL context, not one each.
+ * uploaded once per page, and a page of bubbles holds one WebGL context, not one each. (Each
+ * view frees its own resources; the shared spectral textures go with their last user.)
  */
 export function acquireSharedRenderer(): WebGLRenderer {
   renderer ??= createBubbleRenderer(document.createElement('canvas'));
@@ -19,7 +19,6 @@ export function acquireSharedRenderer(): WebGLRenderer {
 /** Gives the renderer back; the last user's release frees it and its context. */
 export function releaseSharedRenderer(): void {
   if (--users > 0 || !renderer) return;
-  disposeSpectralBinsTextures();
   renderer.dispose();
   renderer.forceContextLoss();
   renderer = null;

@@ -28,12 +28,18 @@ export interface SpectralWeights {
 }
 
 const weightsCache = new Map<string, SpectralWeights>();
+/** Weights kept (11 kB each): a CCT slider dragged for an hour must not grow the cache without end. */
+const MAX_CACHED_WEIGHTS = 64;
 
-/** The weights of eqs (15)–(18) for an illuminant and normalisation (cached). */
+/** The weights of eqs (15)–(18) for an illuminant and normalisation (the last 64 used are cached). */
 export function spectralWeights(illuminant: IlluminantSpec, normalization: Normalization = 'white'): SpectralWeights {
   const key = `${illuminantKey(illuminant)}|${normalization}`;
   const cached = weightsCache.get(key);
-  if (cached) return cached;
+  if (cached) {
+    weightsCache.delete(key); // most recently used last
+    weightsCache.set(key, cached);
+    return cached;
+  }
   const spd = illuminantSpd(illuminant);
   const n = SPAN_NM + 1;
   const cmf = (t: readonly number[], l: number) => interpolateTable(t, CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, l);
@@ -53,6 +59,7 @@ export function spectralWeights(illuminant: IlluminantSpec, normalization: Norma
   for (const t of [x, y, z]) for (let i = 0; i < n; i++) t[i] = (t[i] as number) / k;
   const w = { x, y, z };
   weightsCache.set(key, w);
+  if (weightsCache.size > MAX_CACHED_WEIGHTS) weightsCache.delete(weightsCache.keys().next().value!);
   return w;
 }
 

@@ -9,11 +9,11 @@ import { type FilmQuality } from './filmQuality.ts';
 import { FIELDS, FILM_METHODS, type FilmSettings } from './filmSettings.ts';
 import { filmTableLayoutDefines } from './filmTableLayout.ts';
 import { shaderSource } from './shaderSource.ts';
-import { spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
+import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 
 const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
-export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'illuminant' | 'normalization'>;
+export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization'>;
 
 /**
  * The defines shaders/filmColor.glsl needs: the method and polarisation in use, and only the
@@ -21,7 +21,7 @@ export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'il
  */
 export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
   const method = { FILM_MODE: FILM_METHODS.indexOf(s.mode), POLARIZATION: POLARIZATIONS.indexOf(s.polarization) };
-  if (s.mode === 'exact') return { ...method, ...spectralBinDefines(s.illuminant, s.normalization, q.exactSpectralBins, q.spectralTailTolerance) };
+  if (s.mode === 'exact') return { ...method, ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
   if (s.mode === 'table') return { ...method, ...filmTableLayoutDefines(q.table) };
   return method;
 }
@@ -75,7 +75,11 @@ export function updateBubbleUniforms(
     m.defines = defines;
     m.needsUpdate = true;
   }
-  u.uSpectralBins!.value = s.mode === 'exact' ? spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins) : null;
+  if (s.mode === 'exact') u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins, m);
+  else {
+    releaseSpectralBinsTexture(m);
+    u.uSpectralBins!.value = null;
+  }
   u.uFilmTable!.value = table?.texture ?? null;
   u.uTableMaxThicknessNm!.value = table?.maxThicknessNm ?? 1;
   u.uNOutside!.value = s.nOutside;

@@ -16,7 +16,7 @@ import { type FilmQuality } from './filmQuality.ts';
 import { type FilmSettings, maxFieldThicknessNm } from './filmSettings.ts';
 import { filmTableLayoutDefines } from './filmTableLayout.ts';
 import { shaderSource } from './shaderSource.ts';
-import { spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
+import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 
 /** What the table depends on; anything else (the field's animation, exposure, space) leaves it alone. */
 export function tableKey(s: FilmSettings): string {
@@ -43,7 +43,18 @@ export class FilmTable {
   private key = '';
   private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly quad = new Mesh(new PlaneGeometry(2, 2));
-  private readonly materials = new Map<string, ShaderMaterial>();
+  /** The table pass; its defines follow the polarisation (the old program is freed on a change). */
+  private readonly pass = new ShaderMaterial({
+    uniforms: {
+      uSpectralBins: { value: null },
+      uNOutside: { value: 1 },
+      uNFilm: { value: 1.33 },
+      uNInside: { value: 1 },
+      uTableMaxThicknessNm: { value: 1 },
+    },
+    vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
+    fragmentShader: shaderSource('filmTable.glsl'),
+  });
   maxThicknessNm = 1;
   /** Milliseconds the last rebuild took (synced with a 1-pixel read), and how many there were: for the benchmark. */
   lastBuildMs = 0;
@@ -74,7 +85,7 @@ export class FilmTable {
     }
     this.maxThicknessNm = maxFieldThicknessNm(s);
     const material = this.material(s);
-    material.uniforms.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins);
+    material.uniforms.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
     material.uniforms.uNOutside!.value = s.nOutside;
     material.uniforms.uNFilm!.value = s.nFilm;
     material.uniforms.uNInside!.value = s.nInside;
@@ -99,32 +110,21 @@ export class FilmTable {
   private material(s: FilmSettings): ShaderMaterial {
     const defines = {
       POLARIZATION: POLARIZATIONS.indexOf(s.polarization),
-      ...spectralBinDefines(s.illuminant, s.normalization, this.quality.table.spectralBins, this.quality.spectralTailTolerance),
+      ...spectralBinDefines(this.quality.table.spectralBins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),
     };
-    const key = JSON.stringify(defines);
-    const hit = this.materials.get(key);
-    if (hit) return hit;
-    const m = new ShaderMaterial({
-      defines,
-      uniforms: {
-        uSpectralBins: { value: null },
-        uNOutside: { value: 1 },
-        uNFilm: { value: 1.33 },
-        uNInside: { value: 1 },
-        uTableMaxThicknessNm: { value: 1 },
-      },
-      vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
-      fragmentShader: shaderSource('filmTable.glsl'),
-    });
-    this.materials.set(key, m);
-    return m;
+    if (JSON.stringify(defines) !== JSON.stringify(this.pass.defines)) {
+      this.pass.dispose();
+      this.pass.defines = defines;
+      this.pass.needsUpdate = true;
+    }
+    return this.pass;
   }
 
   dispose(): void {
     this.target.dispose();
     this.quad.geometry.dispose();
-    for (const m of this.materials.values()) m.dispose();
-    this.materials.clear();
+    this.pass.dispose();
+    releaseSpectralBinsTexture(this);
   }
 }

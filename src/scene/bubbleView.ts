@@ -16,6 +16,7 @@ import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../render/filmQuality.ts
 import { FilmTable } from '../render/filmTable.ts';
 import { type FilmSettings } from '../render/filmSettings.ts';
 import { shaderSource } from '../render/shaderSource.ts';
+import { releaseSpectralBinsTexture } from '../render/spectralBinsTexture.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
 
 ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
@@ -137,6 +138,7 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     this.filmProbe.dispose();
     this.table.dispose();
     this.bubble.geometry.dispose();
+    releaseSpectralBinsTexture(this.bubble.material);
     this.bubble.material.dispose();
     this.sky.geometry.dispose();
     this.sky.material.dispose();

@@ -85,7 +85,7 @@ export class FilmXyzProbe {
     const m = this.material(mode, g, quality);
     const u = m.uniforms;
     u.uInputs!.value = inputTexture;
-    u.uSpectralBins!.value = spectralBinsTexture(g.illuminant, g.normalization, quality.exactSpectralBins);
+    u.uSpectralBins!.value = spectralBinsTexture(g.illuminant, g.normalization, quality.exactSpectralBins, m);
     u.uNOutside!.value = g.nOutside;
     u.uNFilm!.value = g.nFilm;
     u.uNInside!.value = g.nInside;
