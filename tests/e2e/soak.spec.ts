@@ -1,0 +1,133 @@
+import { expect, test, type Page } from '@playwright/test';
+import { BUILT_URL } from './servers.ts';
+
+/**
+ * A long session in one page (issue 6 §4), on the built element: 10 000 changes through one
+ * bubble's lil-gui panel (sliders, illuminant, colour space, mode, …) with frames drawn along the
+ * way, then that bubble removed and 10 more inserted and removed. Another bubble stays all along:
+ * the shared renderer's live GPU objects (three's renderer.info) must come back to what that one
+ * bubble needed at the start, the JS heap after garbage collection must not grow beyond
+ * HEAP_GROWTH_BOUND, and the console must stay clean.
+ */
+
+const CHANGES = 10_000;
+/** A frame is drawn after every this many changes (40 frames: table rebuilds, exact frames, plots). */
+const CHANGES_PER_FRAME = 250;
+const CYCLES = 10;
+/** What the page may keep after all that: caches the code bounds on purpose (64 spectral weight sets of 11 kB). */
+const HEAP_GROWTH_BOUND_MB = 4;
+
+const SIZE = 'style="display: inline-block; width: 120px; height: 90px"';
+
+async function heapUsedMb(page: Page): Promise<number> {
+  const cdp = await page.context().newCDPSession(page);
+  await cdp.send('HeapProfiler.collectGarbage');
+  const { usedSize } = await cdp.send('Runtime.getHeapUsage');
+  await cdp.detach();
+  return usedSize / 2 ** 20;
+}
+
+type Bubble = HTMLElement & { gpuResources: { geometries: number; textures: number; programs: number } | null };
+
+test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap and console as they were', async ({ page }) => {
+  test.setTimeout(300_000);
+  const problems: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error' || m.type() === 'warning') problems.push(m.text());
+  });
+  page.on('pageerror', (e) => problems.push(e.message));
+  await page.route(`${BUILT_URL}/soak.html`, (route) =>
+    route.fulfill({
+      contentType: 'text/html',
+      body: `<!doctype html><meta charset="utf-8"><script type="module" src="/thin-film-bubble.js"></script>
+<thin-film-bubble id="anchor" ${SIZE} field="uniform" animate="0"></thin-film-bubble><div id="slot"></div>`,
+    }),
+  );
+  await page.goto(`${BUILT_URL}/soak.html`);
+  const anchor = page.locator('#anchor');
+  await expect(anchor).toHaveAttribute('data-frames', /\d+/);
+  const resources = () => anchor.evaluate((e) => (e as Bubble).gpuResources);
+  const start = await resources();
+  const startHeap = await heapUsedMb(page);
+
+  const done = await page.evaluate(
+    async ({ changes, perFrame, size }) => {
+      const slot = document.querySelector('#slot')!;
+      slot.insertAdjacentHTML('beforeend', `<thin-film-bubble id="soaked" ${size} controls plots animate="0"></thin-film-bubble>`);
+      const soaked = document.querySelector<HTMLElement>('#soaked')!;
+      const frame = () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+      while (!soaked.dataset.frames) await frame(); // its first frame drawn
+      type Counts = { geometries: number; textures: number; programs: number };
+      const counts = () => (soaked as HTMLElement & { gpuResources: Counts }).gpuResources;
+      const withSoaked = counts();
+      const most = { ...withSoaked };
+      // mulberry32: the same session every run.
+      let a = 20261123;
+      const random = () => {
+        a = (a + 0x6d2b79f5) | 0;
+        let t = Math.imul(a ^ (a >>> 15), 1 | a);
+        t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+      };
+      // Slider ranges for the session (the panel allows more; kept where a frame stays fast on SwiftShader).
+      const ranges: Record<string, [number, number]> = {
+        'thickness (nm)': [0, 2000],
+        'range (nm)': [0, 2000],
+        'swirl speed': [0, 10],
+        'n film': [1, 2],
+        'n outside': [1, 1.5],
+        'n inside': [1, 1.5],
+        'daylight CCT (K)': [4000, 25000],
+        exposure: [0, 4],
+      };
+      const controllers = [...soaked.querySelectorAll<HTMLElement>('.lil-controller')];
+      const sliders = controllers
+        .filter((c) => c.querySelector('.lil-name')!.textContent! in ranges)
+        .map((c) => ({ range: ranges[c.querySelector('.lil-name')!.textContent!]!, input: c.querySelector('input')! }));
+      const selects = controllers.map((c) => c.querySelector('select')).filter((s): s is HTMLSelectElement => s !== null);
+      let count = 0;
+      for (let i = 0; i < changes; i++) {
+        if (random() < 0.6) {
+          const { range, input } = sliders[Math.floor(random() * sliders.length)]!;
+          input.value = String(+(range[0] + random() * (range[1] - range[0])).toFixed(2));
+          input.dispatchEvent(new Event('input', { bubbles: true }));
+        } else {
+          const select = selects[Math.floor(random() * selects.length)]!;
+          select.selectedIndex = Math.floor(random() * select.options.length);
+          select.dispatchEvent(new Event('change', { bubbles: true }));
+        }
+        count++;
+        if ((i + 1) % perFrame === 0) {
+          await frame();
+          for (const [k, v] of Object.entries(counts())) most[k as keyof Counts] = Math.max(most[k as keyof Counts], v);
+        }
+      }
+      soaked.remove();
+      return { count, sliders: sliders.length, selects: selects.length, withSoaked, most };
+    },
+    { changes: CHANGES, perFrame: CHANGES_PER_FRAME, size: SIZE },
+  );
+  // Every slider and every list of the panel: field, illuminant, polarisation, normalisation, space, mode, environment, sides.
+  expect(done).toMatchObject({ count: CHANGES, sliders: 8, selects: 8 });
+  // While the session runs, the panel's bubble holds one program per part it draws (bubble, table
+  // pass, sky, probe), whatever it was switched through: never more than its own count at the start plus
+  // SWITCH_ALLOWANCE (parts its first settings did not draw), and as many geometries and textures.
+  const SWITCH_ALLOWANCE = 2;
+  console.log(`soak: during the session ${JSON.stringify(done.withSoaked)} at its start, at most ${JSON.stringify(done.most)}`);
+  expect(done.most.programs).toBeLessThanOrEqual(done.withSoaked.programs + SWITCH_ALLOWANCE);
+  expect(done.most.textures).toBeLessThanOrEqual(done.withSoaked.textures + SWITCH_ALLOWANCE);
+  expect(done.most.geometries).toBe(done.withSoaked.geometries);
+
+  for (let i = 0; i < CYCLES; i++) {
+    await page.evaluate((size) => document.querySelector('#slot')!.insertAdjacentHTML('beforeend', `<thin-film-bubble id="cycled" ${size} plots field="drainage" illuminant="${5000 + 1000 * Math.random()}"></thin-film-bubble>`), SIZE);
+    await expect(page.locator('#cycled')).toHaveAttribute('data-frames', /\d+/);
+    await page.evaluate(() => document.querySelector('#cycled')!.remove());
+  }
+
+  const end = await resources();
+  const endHeap = await heapUsedMb(page);
+  console.log(`soak: GPU objects ${JSON.stringify(start)} → ${JSON.stringify(end)}; heap ${startHeap.toFixed(1)} → ${endHeap.toFixed(1)} MB`);
+  expect(end).toEqual(start);
+  expect(endHeap - startHeap).toBeLessThan(HEAP_GROWTH_BOUND_MB);
+  expect(problems).toEqual([]);
+});
