@@ -1,4 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
+import { watchProblems } from './pageWatch.ts';
 import { MAX_CODE_DIFFERENCE, referenceSrgb8, worstCodeDifference } from './referenceColor.ts';
 
 /**
@@ -27,11 +28,7 @@ const centre = (page: Page) =>
 
 for (const mode of ['table', 'exact'] as const) {
   test(`${mode} mode: after a lost and restored context the bubble redraws itself, table rebuilt, nothing leaked`, async ({ page }) => {
-    const problems: string[] = [];
-    page.on('pageerror', (e) => problems.push(e.message));
-    page.on('console', (m) => {
-      if (m.type() === 'error') problems.push(m.text());
-    });
+    const problems = watchProblems(page);
     await page.setViewportSize({ width: 320, height: 240 });
     await page.goto(`/?field=uniform&thickness=450&env=none&sides=front&animate=0&mode=${mode}`);
     await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');

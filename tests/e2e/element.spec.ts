@@ -1,5 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { MAX_CODE_DIFFERENCE, referenceSrgb8, worstCodeDifference } from './referenceColor.ts';
+import { watchProblems, withoutWebGL } from './pageWatch.ts';
 import { BUILT_URL } from './servers.ts';
 
 /**
@@ -58,16 +59,6 @@ async function centre(page: Page, i: number): Promise<number[]> {
   });
 }
 
-function watchProblems(page: Page): string[] {
-  const problems: string[] = [];
-  page.on('console', (m) => {
-    // The test's own getImageData reads draw Chrome's advice on willReadFrequently: not the element's.
-    if ((m.type() === 'error' || m.type() === 'warning') && !m.text().includes('willReadFrequently')) problems.push(m.text());
-  });
-  page.on('pageerror', (e) => problems.push(e.message));
-  return problems;
-}
-
 test('the built element renders the reference centre colour; two elements share one context and its programs', async ({ page }) => {
   const problems = watchProblems(page);
   await countGl(page);
@@ -124,12 +115,7 @@ test('the built teaching page shows all its bubbles without an error', async ({ 
 
 test('without WebGL2 the element shows a message and a CPU image of the bubble with the reference colour', async ({ page }) => {
   const problems = watchProblems(page);
-  await page.addInitScript(() => {
-    const getContext = HTMLCanvasElement.prototype.getContext;
-    HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, kind: string, ...rest: unknown[]) {
-      return kind === 'webgl2' || kind === 'webgl' ? null : (getContext as (...a: unknown[]) => unknown).call(this, kind, ...rest);
-    } as typeof getContext;
-  });
+  await withoutWebGL(page);
   await plainPage(page, `<thin-film-bubble ${FILM}></thin-film-bubble>`);
   const el = page.locator('thin-film-bubble');
   await expect(el).toHaveAttribute('data-frames', 'fallback', { timeout: 30_000 });

@@ -1,4 +1,5 @@
 import { test, expect, type Page } from '@playwright/test';
+import { watchProblems } from './pageWatch.ts';
 import { MAX_CODE_DIFFERENCE, referenceSrgb8, worstCodeDifference } from './referenceColor.ts';
 
 /** Draws a frame and reads the centre of the drawing buffer in the same task. */
@@ -19,11 +20,7 @@ test('the demo page loads with its title and a WebGL2 context', async ({ page })
 });
 
 test('a bad URL parameter shows a message naming it and its range, uses the default, and logs no error', async ({ page }) => {
-  const problems: string[] = [];
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(m.text());
-  });
-  page.on('pageerror', (e) => problems.push(e.message));
+  const problems = watchProblems(page);
   await page.goto('/?nFilm=<img src=x onerror=alert(1)>&field=uniform&animate=0&env=none');
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
   await expect(page.locator('#messages')).toContainText('nFilm');

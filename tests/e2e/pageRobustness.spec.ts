@@ -1,28 +1,11 @@
-import { expect, test, type Page } from '@playwright/test';
-import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } from '../../src/physics/colorConversions.ts';
-import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
-import { filmXyz } from '../../src/physics/spectralIntegration.ts';
+import { expect, test } from '@playwright/test';
+import { watchProblems, withoutWebGL } from './pageWatch.ts';
+import { referenceSrgb8 } from './referenceColor.ts';
 
 /**
  * Bad links and a browser without WebGL2: the page says what is wrong, in text, and still
  * teaches; nothing reaches the console as an error or warning.
  */
-
-/** Collects console errors and warnings and uncaught page errors. */
-function watchProblems(page: Page): string[] {
-  const problems: string[] = [];
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(`${m.type()}: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  return problems;
-}
-
-/** The reference 8-bit sRGB of a soap film in air seen head-on under D65 (what the CLI's srgb8 is). */
-function referenceSrgb8(thicknessNm: number): number[] {
-  const xyz = filmXyz({ ...SOAP_FILM_IN_AIR, thicknessNm, angleDeg: 0 }, { illuminant: 'D65' });
-  return mapToGamut(applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz), xyz[1]).map(encode8);
-}
 
 test('several bad URL parameters: a message for each naming its range, defaults used, no console error', async ({ page }) => {
   const problems = watchProblems(page);
@@ -48,12 +31,7 @@ const FALLBACK_MAX_CODE_DIFFERENCE = 1;
 
 test('without WebGL2: a message where the canvas was and a CPU image of the bubble with the reference colour', async ({ page }) => {
   const problems = watchProblems(page);
-  await page.addInitScript(() => {
-    const getContext = HTMLCanvasElement.prototype.getContext;
-    HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, kind: string, ...rest: unknown[]) {
-      return kind === 'webgl2' || kind === 'webgl' ? null : (getContext as (...a: unknown[]) => unknown).call(this, kind, ...rest);
-    } as typeof getContext;
-  });
+  await withoutWebGL(page);
   await page.goto('/?field=uniform&thickness=450&env=none&sides=front&animate=0');
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'fallback', { timeout: 30_000 });
   await expect(page.locator('body')).toHaveAttribute('data-webgl2', 'no');
@@ -63,7 +41,7 @@ test('without WebGL2: a message where the canvas was and a CPU image of the bubb
     const image = document.querySelector<HTMLCanvasElement>('.cpu-fallback canvas')!;
     return [...image.getContext('2d')!.getImageData(image.width >> 1, image.height >> 1, 1, 1).data];
   });
-  const expected = referenceSrgb8(450);
+  const expected = referenceSrgb8({ thicknessNm: 450 });
   console.log(`fallback centre ${centre} reference ${expected}`);
   expect(centre[3]).toBe(255);
   for (let i = 0; i < 3; i++) expect(Math.abs(centre[i]! - expected[i]!), `${centre} vs ${expected}`).toBeLessThanOrEqual(FALLBACK_MAX_CODE_DIFFERENCE);

@@ -8,6 +8,7 @@ import { type Xyz, filmXyz, whiteXyz } from '../../src/physics/spectralIntegrati
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/render/filmQuality.ts';
 import { type DeltaStats, deltaStats } from './harness/deltaStats.ts';
 import type { ParityGroup, ParityMode } from './harness/parityCase.ts';
+import { mulberry32 } from '../seededRandom.ts';
 
 /**
  * Shader parity as numbers (STYLE.md §7): the real GLSL (shaders/filmColor.glsl, both FILM_MODEs)
@@ -28,17 +29,6 @@ const MAX_DELTA_E00_STRESS = 10;
 
 const ILLUMINANTS: readonly IlluminantSpec[] = ['D55', 'D65', 'D93', 'E', 'D65-table', { daylightCct: 4000 }, { daylightCct: 12000 }];
 
-/** mulberry32: a seeded generator, so every run checks the same cases. */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = Math.imul(a ^ (a >>> 15), 1 | a);
-    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
 interface Case {
   readonly thicknessNm: number;
   readonly angleDeg: number;
@@ -51,7 +41,7 @@ const toParity = (g: Group): ParityGroup => ({ ...g, inputs: g.cases.map((c) => 
 
 /** Every illuminant × every polarisation, nFilm drawn in 1.2–1.6, thickness 0–2000 nm, 0–85°, ends included. */
 function fixedDomain(): Group[] {
-  const next = random(1);
+  const next = mulberry32(1);
   const groups: Group[] = [];
   for (const illuminant of ILLUMINANTS) {
     for (const polarization of POLARIZATIONS) {
@@ -66,7 +56,7 @@ function fixedDomain(): Group[] {
 
 /** Thick films to 20 µm, grazing light to 90°, high index, and TIR (n_a > n_b > n_c). */
 function stressDomain(): Group[] {
-  const next = random(2);
+  const next = mulberry32(2);
   const stacks = [
     { nOutside: 1, nFilm: 1.33, nInside: 1, maxNm: 20000, minDeg: 0 },
     { nOutside: 1, nFilm: 1.33, nInside: 1, maxNm: 2000, minDeg: 80 },

@@ -1,4 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
+import { mulberry32 } from '../seededRandom.ts';
+import { watchProblems } from './pageWatch.ts';
 import { BUILT_URL } from './servers.ts';
 
 /**
@@ -31,11 +33,7 @@ type Bubble = HTMLElement & { gpuResources: { geometries: number; textures: numb
 
 test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap and console as they were', async ({ page }) => {
   test.setTimeout(300_000);
-  const problems: string[] = [];
-  page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(m.text());
-  });
-  page.on('pageerror', (e) => problems.push(e.message));
+  const problems = watchProblems(page);
   await page.route(`${BUILT_URL}/soak.html`, (route) =>
     route.fulfill({
       contentType: 'text/html',
@@ -51,7 +49,7 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
   const startHeap = await heapUsedMb(page);
 
   const done = await page.evaluate(
-    async ({ changes, perFrame, size }) => {
+    async ({ changes, perFrame, size, draws }) => {
       const slot = document.querySelector('#slot')!;
       slot.insertAdjacentHTML('beforeend', `<thin-film-bubble id="soaked" ${size} controls plots animate="0"></thin-film-bubble>`);
       const soaked = document.querySelector<HTMLElement>('#soaked')!;
@@ -61,14 +59,8 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
       const counts = () => (soaked as HTMLElement & { gpuResources: Counts }).gpuResources;
       const withSoaked = counts();
       const most = { ...withSoaked };
-      // mulberry32: the same session every run.
-      let a = 20261123;
-      const random = () => {
-        a = (a + 0x6d2b79f5) | 0;
-        let t = Math.imul(a ^ (a >>> 15), 1 | a);
-        t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-      };
+      let drawn = 0;
+      const random = () => draws[drawn++]!;
       // Slider ranges for the session (the panel allows more; kept where a frame stays fast on SwiftShader).
       const ranges: Record<string, [number, number]> = {
         'thickness (nm)': [0, 2000],
@@ -105,7 +97,8 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
       soaked.remove();
       return { count, sliders: sliders.length, selects: selects.length, withSoaked, most };
     },
-    { changes: CHANGES, perFrame: CHANGES_PER_FRAME, size: SIZE },
+    // The same session every run: the page takes its random draws from a seeded generator here.
+    { changes: CHANGES, perFrame: CHANGES_PER_FRAME, size: SIZE, draws: Array.from({ length: 3 * CHANGES }, mulberry32(20261123)) },
   );
   // Every slider and every list of the panel: field, illuminant, polarisation, normalisation, space, mode, environment, sides.
   expect(done).toMatchObject({ count: CHANGES, sliders: 8, selects: 8 });
@@ -119,7 +112,11 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
   expect(done.most.geometries).toBe(done.withSoaked.geometries);
 
   for (let i = 0; i < CYCLES; i++) {
-    await page.evaluate((size) => document.querySelector('#slot')!.insertAdjacentHTML('beforeend', `<thin-film-bubble id="cycled" ${size} plots field="drainage" illuminant="${5000 + 1000 * Math.random()}"></thin-film-bubble>`), SIZE);
+    await page.evaluate(
+      ({ size, illuminant }) =>
+        document.querySelector('#slot')!.insertAdjacentHTML('beforeend', `<thin-film-bubble id="cycled" ${size} plots field="drainage" illuminant="${illuminant}"></thin-film-bubble>`),
+      { size: SIZE, illuminant: 5000 + 100 * i },
+    );
     await expect(page.locator('#cycled')).toHaveAttribute('data-frames', /\d+/);
     await page.evaluate(() => document.querySelector('#cycled')!.remove());
   }

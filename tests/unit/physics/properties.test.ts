@@ -1,20 +1,10 @@
 import { describe, expect, it } from 'vitest';
 import { filmOptics, reflectanceAt, transmittanceAt, POLARIZATIONS } from '../../../src/physics/filmReflectance.ts';
+import { mulberry32 } from '../../seededRandom.ts';
 
 /** R + T = 1 holds to rounding; the issue's bound. */
 const ENERGY_TOL = 1e-12;
 const CASES = 100_000;
-
-/** A small deterministic generator (mulberry32), so a failure can be replayed. */
-function mulberry32(seed: number): () => number {
-  let a = seed;
-  return () => {
-    a = (a + 0x6d2b79f5) | 0;
-    let t = Math.imul(a ^ (a >>> 15), 1 | a);
-    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 describe(`properties over ${CASES} random inputs in the whole domain`, () => {
   it('R and T are finite, 0 ≤ R ≤ 1, and R + T = 1 (physical modes), TIR and frustrated TIR included', () => {
