@@ -1,4 +1,4 @@
-/** Builds the demo (vite build) and reports the gzipped size of its JavaScript. */
+/** Builds the demo and the element (as `npm run build` does) and reports the gzipped size of their JavaScript. */
 import { readFileSync, readdirSync } from 'node:fs';
 import { join, relative } from 'node:path';
 import { gzipSync } from 'node:zlib';
@@ -21,6 +21,7 @@ const jsFiles = (dir: string): string[] =>
 
 export async function buildAndMeasure(): Promise<BundleSizes> {
   await build({ logLevel: 'silent' });
+  await build({ logLevel: 'silent', mode: 'element' });
   const files: Record<string, { bytes: number; gzipBytes: number }> = {};
   for (const path of jsFiles('dist')) {
     const text = readFileSync(path);
