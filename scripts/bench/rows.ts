@@ -58,6 +58,8 @@ export const ROWS: readonly BenchRow[] = [
   table({ width: 1024 }),
   table({}, ' (default)'),
   table({ rows: 128 }),
+  table({ width: 1024, rows: 128 }),
+  table({ width: 1024, rows: 128, cosPower: 2 }),
   table({ width: 512, rows: 32, spectralBins: 45 }),
   table({}, ' (default layout)', 'half'),
   sceneStep('default table, uniform field (swirl off)', { field: 'uniform' }),

@@ -16,7 +16,7 @@ export interface FilmQuality {
 
 export const DEFAULT_FILM_QUALITY: FilmQuality = {
   exactSpectralBins: 90,
-  table: { width: 2048, rows: 64, spectralBins: 90, thicknessPower: 2, cosPower: 1.5 },
+  table: { width: 1024, rows: 128, spectralBins: 90, thicknessPower: 2, cosPower: 2 },
   tablePrecision: 'auto',
   spectralTailTolerance: 1e-5,
 };
