@@ -8,6 +8,7 @@ import {
 import { type FilmQuality } from './filmQuality.ts';
 import { FIELDS, FILM_METHODS, type FilmSettings } from './filmSettings.ts';
 import { filmTableLayoutDefines } from './filmTableLayout.ts';
+import { setDefines } from './materialDefines.ts';
 import { shaderSource } from './shaderSource.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 
@@ -69,12 +70,7 @@ export function updateBubbleUniforms(
   displayIsP3: boolean,
 ): void {
   const u = m.uniforms;
-  const defines = bubbleDefines(s, q);
-  if (JSON.stringify(defines) !== JSON.stringify(m.defines)) {
-    m.dispose(); // frees the old program (three keeps one per define set until the material is disposed)
-    m.defines = defines;
-    m.needsUpdate = true;
-  }
+  setDefines(m, bubbleDefines(s, q));
   if (s.mode === 'exact') u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins, m);
   else {
     releaseSpectralBinsTexture(m);

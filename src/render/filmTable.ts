@@ -15,6 +15,7 @@ import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { type FilmQuality } from './filmQuality.ts';
 import { type FilmSettings, maxFieldThicknessNm } from './filmSettings.ts';
 import { filmTableLayoutDefines } from './filmTableLayout.ts';
+import { setDefines } from './materialDefines.ts';
 import { shaderSource } from './shaderSource.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 
@@ -108,16 +109,11 @@ export class FilmTable {
   }
 
   private material(s: FilmSettings): ShaderMaterial {
-    const defines = {
+    setDefines(this.pass, {
       POLARIZATION: POLARIZATIONS.indexOf(s.polarization),
       ...spectralBinDefines(this.quality.table.spectralBins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),
-    };
-    if (JSON.stringify(defines) !== JSON.stringify(this.pass.defines)) {
-      this.pass.dispose();
-      this.pass.defines = defines;
-      this.pass.needsUpdate = true;
-    }
+    });
     return this.pass;
   }
 

@@ -30,7 +30,6 @@ export interface BubbleAppParts {
  * on screen (IntersectionObserver) and in a visible page.
  */
 export class BubbleApp {
-  private settings: FilmSettings;
   private gui: GUI | null = null;
   private readonly panel: PlotPanel | null;
   private onScreen = true;
@@ -44,7 +43,6 @@ export class BubbleApp {
   private readonly marker: HTMLElement | null;
 
   constructor(private readonly parts: BubbleAppParts) {
-    this.settings = parts.view.current;
     this.panel = parts.plots ? new PlotPanel(parts.surface.ownerDocument) : null;
     if (this.panel) parts.plots!.append(this.panel.element);
     this.marker = this.panel ? parts.surface.ownerDocument.createElement('div') : null;
@@ -82,7 +80,7 @@ export class BubbleApp {
   }
 
   get current(): FilmSettings {
-    return this.settings;
+    return this.parts.view.current;
   }
 
   get renderer(): WebGLRenderer {
@@ -91,7 +89,6 @@ export class BubbleApp {
 
   /** Shows new (validated) settings; the panel follows when `rebuildControls`. */
   set(s: FilmSettings, rebuildControls = false): void {
-    this.settings = s;
     this.parts.view.apply(s);
     this.plotsDue = true;
     if (rebuildControls) this.buildControls();
@@ -120,6 +117,11 @@ export class BubbleApp {
     this.panel?.element.remove();
     this.marker?.remove();
     this.parts.view.dispose();
+  }
+
+  /** The settings shown: the view holds them. */
+  private get settings(): FilmSettings {
+    return this.parts.view.current;
   }
 
   private get showing(): boolean {
@@ -168,8 +170,7 @@ export class BubbleApp {
     if (this.animating) {
       if (!this.looping) this.clockOrigin = now - this.settings.timeSeconds * 1000;
       this.looping = true;
-      this.settings = { ...this.settings, timeSeconds: (now - this.clockOrigin) / 1000 };
-      this.parts.view.apply(this.settings);
+      this.parts.view.apply({ ...this.settings, timeSeconds: (now - this.clockOrigin) / 1000 });
     } else {
       this.looping = false;
     }

@@ -13,6 +13,7 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import type { Xyz } from '../physics/spectralIntegration.ts';
+import { setDefines } from '../render/materialDefines.ts';
 
 /** What the bubble shows at one point of the view: the near wall's film there. */
 export interface ProbeReading {
@@ -79,19 +80,8 @@ export class FilmProbe {
 
   /** The bubble's material with PROBE defined, sharing its uniforms; follows its defines. */
   private probeMaterial(shown: ShaderMaterial): ShaderMaterial {
-    const defines = { ...shown.defines, PROBE: 1 };
-    if (!this.material) {
-      this.material = new ShaderMaterial({
-        defines,
-        uniforms: shown.uniforms,
-        vertexShader: shown.vertexShader,
-        fragmentShader: shown.fragmentShader,
-      });
-    } else if (JSON.stringify(defines) !== JSON.stringify(this.material.defines)) {
-      this.material.dispose(); // frees the old program
-      this.material.defines = defines;
-      this.material.needsUpdate = true;
-    }
+    this.material ??= new ShaderMaterial({ uniforms: shown.uniforms, vertexShader: shown.vertexShader, fragmentShader: shown.fragmentShader });
+    setDefines(this.material, { ...shown.defines, PROBE: 1 });
     return this.material;
   }
 
