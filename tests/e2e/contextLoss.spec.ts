@@ -1,6 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
+import { centrePixel } from './drawingBuffer.ts';
 import { watchProblems } from './pageWatch.ts';
-import { MAX_CODE_DIFFERENCE, referenceSrgb8, worstCodeDifference } from './referenceColor.ts';
+import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 
 /**
  * The GPU going away and coming back (WEBGL_lose_context): the bubble redraws by itself with its
@@ -16,15 +17,6 @@ const gpuObjects = (page: Page) =>
     return { geometries: info.memory.geometries, textures: info.memory.textures, programs: info.programs?.length ?? 0 };
   });
 
-/** The centre of the drawing buffer as the page last drew it (no extra frame drawn here). */
-const centre = (page: Page) =>
-  page.evaluate(() => {
-    const gl = (window as unknown as Window_).bubbleView.renderer.getContext();
-    const pixel = new Uint8Array(4);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    gl.readPixels(gl.drawingBufferWidth >> 1, gl.drawingBufferHeight >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-    return [pixel[0]!, pixel[1]!, pixel[2]!];
-  });
 
 for (const mode of ['table', 'exact'] as const) {
   test(`${mode} mode: after a lost and restored context the bubble redraws itself, table rebuilt, nothing leaked`, async ({ page }) => {
@@ -32,8 +24,8 @@ for (const mode of ['table', 'exact'] as const) {
     await page.setViewportSize({ width: 320, height: 240 });
     await page.goto(`/?field=uniform&thickness=450&env=none&sides=front&animate=0&mode=${mode}`);
     await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
-    const expected = referenceSrgb8({ thicknessNm: 450 });
-    expect(worstCodeDifference(await centre(page), expected)).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+    const expected = reference8({ thicknessNm: 450 });
+    expect(worstCodeDifference(await centrePixel(page, false), expected)).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
     const before = await gpuObjects(page);
 
     await page.evaluate(async () => {
@@ -51,7 +43,7 @@ for (const mode of ['table', 'exact'] as const) {
     await page.locator('.lil-controller', { hasText: 'thickness (nm)' }).locator('input').fill('450');
     await page.evaluate(() => (window as unknown as { loseContextExtension: WEBGL_lose_context }).loseContextExtension.restoreContext());
     await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
-    expect(worstCodeDifference(await centre(page), expected), 'centre after restore').toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+    expect(worstCodeDifference(await centrePixel(page, false), expected), 'centre after restore').toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
     expect(await gpuObjects(page)).toEqual(before);
     expect(problems).toEqual([]);
   });

@@ -1,5 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
-import { MAX_CODE_DIFFERENCE, referenceSrgb8, worstCodeDifference } from './referenceColor.ts';
+import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 import { watchProblems, withoutWebGL } from './pageWatch.ts';
 import { BUILT_URL } from './servers.ts';
 
@@ -72,7 +72,7 @@ test('the built element renders the reference centre colour; two elements share 
   console.log(`element centre: D55 ${d55} (alone ${one}), D93 ${d93}; shader compiles: one element ${single.compiles}, two ${pair.compiles}`);
 
   for (const [rgb, illuminant] of [[one, 'D55'], [d55, 'D55'], [d93, 'D93']] as const) {
-    expect(worstCodeDifference(rgb, referenceSrgb8({ thicknessNm: 450 }, illuminant)), `${illuminant}: ${rgb}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+    expect(worstCodeDifference(rgb, reference8({ thicknessNm: 450 }, illuminant)), `${illuminant}: ${rgb}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
   }
   expect(pair.liveContexts).toBe(1);
   expect(pair.compiles).toBe(single.compiles);
@@ -88,12 +88,12 @@ test('attributes: a bad one is named with its range and its default kept; a chan
   await expect(el.locator('.tfb-messages')).toContainText('[1, 4]');
   await expect(el.locator('.tfb-messages')).toContainText('illuminant');
   expect(await el.locator('.tfb-messages b').count()).toBe(0);
-  expect(worstCodeDifference(await centre(page, 0), referenceSrgb8({ thicknessNm: 450 }, 'D65'))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  expect(worstCodeDifference(await centre(page, 0), reference8({ thicknessNm: 450 }, 'D65'))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 
   const frames = Number(await el.getAttribute('data-frames'));
   await el.evaluate((e) => e.setAttribute('thickness', '300'));
   await expect(el).not.toHaveAttribute('data-frames', String(frames));
-  expect(worstCodeDifference(await centre(page, 0), referenceSrgb8({ thicknessNm: 300 }, 'D65'))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  expect(worstCodeDifference(await centre(page, 0), reference8({ thicknessNm: 300 }, 'D65'))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 
   await el.evaluate((e) => e.remove());
   expect((await glCounts(page)).liveContexts).toBe(0);
@@ -124,6 +124,6 @@ test('without WebGL2 the element shows a message and a CPU image of the bubble w
     const c = e.querySelector('canvas')!;
     return [...c.getContext('2d')!.getImageData(c.width >> 1, c.height >> 1, 1, 1).data.slice(0, 3)];
   });
-  expect(worstCodeDifference(rgb, referenceSrgb8({ thicknessNm: 450 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  expect(worstCodeDifference(rgb, reference8({ thicknessNm: 450 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
   expect(problems).toEqual([]);
 });

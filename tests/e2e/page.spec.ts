@@ -1,17 +1,8 @@
-import { test, expect, type Page } from '@playwright/test';
+import { test, expect } from '@playwright/test';
+import { centrePixel } from './drawingBuffer.ts';
 import { watchProblems } from './pageWatch.ts';
-import { MAX_CODE_DIFFERENCE, referenceSrgb8, worstCodeDifference } from './referenceColor.ts';
+import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 
-/** Draws a frame and reads the centre of the drawing buffer in the same task. */
-const centrePixel = (page: Page) =>
-  page.evaluate(() => {
-    const view = (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView;
-    view.render();
-    const gl = view.renderer.getContext();
-    const pixel = new Uint8Array(4);
-    gl.readPixels(gl.drawingBufferWidth >> 1, gl.drawingBufferHeight >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-    return [pixel[0]!, pixel[1]!, pixel[2]!];
-  });
 
 test('the demo page loads with its title and a WebGL2 context', async ({ page }) => {
   await page.goto('/');
@@ -43,11 +34,11 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   await expect(page).toHaveURL(/thickness=300/);
   const current = () => page.evaluate(() => (window as unknown as { bubbleView: { current: { field: string; env: string; thicknessNm: number } } }).bubbleView.current);
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
-  expect(worstCodeDifference(await centrePixel(page), referenceSrgb8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 
   await page.goto(page.url());
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
   await expect(page.getByRole('combobox', { name: 'thickness field' })).toHaveValue('uniform');
-  expect(worstCodeDifference(await centrePixel(page), referenceSrgb8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 });

@@ -1,6 +1,6 @@
 import { expect, test } from '@playwright/test';
 import { watchProblems, withoutWebGL } from './pageWatch.ts';
-import { referenceSrgb8 } from './referenceColor.ts';
+import { reference8 } from './referenceColor.ts';
 
 /**
  * Bad links and a browser without WebGL2: the page says what is wrong, in text, and still
@@ -41,7 +41,7 @@ test('without WebGL2: a message where the canvas was and a CPU image of the bubb
     const image = document.querySelector<HTMLCanvasElement>('.cpu-fallback canvas')!;
     return [...image.getContext('2d')!.getImageData(image.width >> 1, image.height >> 1, 1, 1).data];
   });
-  const expected = referenceSrgb8({ thicknessNm: 450 });
+  const expected = reference8({ thicknessNm: 450 });
   console.log(`fallback centre ${centre} reference ${expected}`);
   expect(centre[3]).toBe(255);
   for (let i = 0; i < 3; i++) expect(Math.abs(centre[i]! - expected[i]!), `${centre} vs ${expected}`).toBeLessThanOrEqual(FALLBACK_MAX_CODE_DIFFERENCE);

@@ -2,7 +2,7 @@ import { expect, test } from '@playwright/test';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
-import { referenceSrgb8 } from './referenceColor.ts';
+import { reference8 } from './referenceColor.ts';
 
 /**
  * Clicking the bubble probes that pixel; the readout's numbers are checked against geometry
@@ -56,7 +56,7 @@ test('a click probes the film there: thickness, angle, colour and ΔE00 agree wi
   expect(Math.abs(angleDeg - expectedAngle)).toBeLessThan(ANGLE_TOL_DEG);
 
   const hex = (await readout(page, 'hex'))!.trim();
-  const expected = referenceSrgb8({ thicknessNm, angleDeg });
+  const expected = reference8({ thicknessNm, angleDeg });
   expect(hex).toBe(`#${expected.map((v) => v.toString(16).padStart(2, '0')).join('')}`);
   const xyz = (await readout(page, 'xyz'))!.split(' ').map(Number);
   const reference = filmXyz({ ...SOAP_FILM_IN_AIR, thicknessNm, angleDeg });
