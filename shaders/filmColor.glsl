@@ -1,6 +1,8 @@
 // The film's XYZ at a thickness and cos θ_i, by the method FILM_MODE selects:
 //   0 exact: the binned spectral integral per fragment;  1 table: one filtered lookup;
-//   2 three.js's iridescence (Belcour–Barla, `evalIridescence`), the benchmark's peer.
+//   2 fourier: the Airy series per fragment (airySeries.glsl; by bins where it has no real path or
+//     needs more than AIRY_SERIES_MAX_ORDERS terms);
+//   3 three.js's iridescence (Belcour–Barla, `evalIridescence`), the benchmark's peer.
 // fromInside swaps the outer and inner media (the far wall seen through the bubble).
 #ifndef THIN_FILM_COLOR
 #define THIN_FILM_COLOR
@@ -29,6 +31,16 @@ vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float rowOffset = fromInside ? float(FILM_TABLE_ROWS) : 0.0;
   vec2 texel = vec2(uv.x * float(FILM_TABLE_WIDTH - 1), rowOffset + uv.y * float(FILM_TABLE_ROWS - 1)) + 0.5;
   return texture(uFilmTable, texel / size).xyz;
+}
+#elif FILM_MODE == 2
+#include "airySeries.glsl"
+#include "spectralIntegration.glsl"
+
+vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
+  float na = fromInside ? uNInside : uNOutside;
+  float nc = fromInside ? uNOutside : uNInside;
+  FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
+  return o.opticalPathNm.y == 0.0 && airySeriesConverges(o) ? airySeriesXyz(o) : binnedXyz(o, 0.0);
 }
 #else
 #define USE_IRIDESCENCE

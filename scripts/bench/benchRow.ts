@@ -26,9 +26,19 @@ export interface BenchRowResult {
   readonly rebuildsWhileAnimating: number;
   /** per size: median ms/frame and how many frames it is the median of */
   readonly frames: readonly { readonly medianMs: number; readonly count: number }[];
+  /** per change of CHANGES: the change applied → the next frame drawn and read back, ms (median of 3) */
+  readonly changeToFrameMs: readonly number[];
   /** per grid, per case: XYZ */
   readonly xyz: readonly number[][][];
 }
+
+/** The changes timed per row, as a user makes them in the panel: n film, the light, the polarisation, the range. */
+export const CHANGES: readonly { readonly name: string; readonly values: readonly Partial<FilmSettings>[] }[] = [
+  { name: 'n film', values: [{ nFilm: 1.4 }, { nFilm: 1.33 }] },
+  { name: 'light', values: [{ illuminant: 'D93' }, { illuminant: 'D65' }] },
+  { name: 'polarisation', values: [{ polarization: 's' }, { polarization: 'unpolarized' }] },
+  { name: 'range', values: [{ thicknessRangeNm: 1200 }, { thicknessRangeNm: 800 }] },
+];
 
 declare global {
   interface Window {

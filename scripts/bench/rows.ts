@@ -27,7 +27,7 @@ const exact = (bins: number, tails: 'skipped' | 'kept' = 'skipped'): BenchRow =>
   measuresError: true,
 });
 const layoutName = (l: FilmTableLayout) =>
-  `${l.width}×${l.rows}×2, ${l.spectralBins} bins, ${l.thicknessPower === 1 ? 'linear d' : `d ∝ u^${l.thicknessPower}`}, ${l.cosPower === 1 ? 'linear cos θ' : `cos θ ∝ v^${l.cosPower}`}`;
+  `${l.width}×${l.rows}×2, ${l.fill === 'series' ? 'Airy series' : `${l.spectralBins} bins`}, ${l.thicknessPower === 1 ? 'linear d' : `d ∝ u^${l.thicknessPower}`}, ${l.cosPower === 1 ? 'linear cos θ' : `cos θ ∝ v^${l.cosPower}`}`;
 const table = (l: Partial<FilmTableLayout>, note = '', precision: FilmQuality['tablePrecision'] = 'auto'): BenchRow => {
   const layout = { ...q.table, ...l };
   return {
@@ -38,6 +38,13 @@ const table = (l: Partial<FilmTableLayout>, note = '', precision: FilmQuality['t
     measuresError: true,
   };
 };
+const fourier = (maxOrders: number = q.airySeriesMaxOrders, note = ''): BenchRow => ({
+  name: `fourier, Airy series per fragment, ${maxOrders === q.airySeriesMaxOrders ? 'every order (tail bound 1e-5)' : `m ≤ ${maxOrders}`}${note}`,
+  kind: 'bubble',
+  settings: view('fourier'),
+  quality: { ...q, airySeriesMaxOrders: maxOrders },
+  measuresError: true,
+});
 const sceneStep = (name: string, more: Partial<FilmSettings>): BenchRow => ({
   name,
   kind: 'bubble',
@@ -49,17 +56,17 @@ const sceneStep = (name: string, more: Partial<FilmSettings>): BenchRow => ({
 export const ROWS: readonly BenchRow[] = [
   { name: 'plain textured sphere (the floor)', kind: 'textured', settings: view('table'), quality: q, measuresError: false },
   { name: 'three.js iridescence (evalIridescence, soap film)', kind: 'bubble', settings: view('three-iridescence'), quality: q, measuresError: true },
-  exact(45, 'kept'),
+  fourier(),
+  fourier(2, ' (three.js/glTF keep m ≤ 2)'),
+  fourier(3, ' (Blender Cycles keeps m ≤ 3)'),
   exact(45),
   exact(90),
-  table({ width: 1024, rows: 64, thicknessPower: 1, cosPower: 1 }, ' (before: main)'),
-  table({ width: 1024, rows: 64, thicknessPower: 1, cosPower: 2 }),
-  table({ width: 1024, rows: 64, thicknessPower: 2, cosPower: 2 }),
-  table({ width: 2048, rows: 64, cosPower: 1.5 }, ' (the previous default)'),
-  table({ width: 2048, rows: 128, cosPower: 1.5 }),
-  table({ width: 1024, rows: 128, cosPower: 1.5 }),
+  table({ fill: 'binned' }, ' (before: the previous default)'),
   table({}, ' (default)'),
-  table({ width: 512, rows: 32, spectralBins: 45, cosPower: 1.5 }),
+  table({ width: 1024, rows: 64 }),
+  table({ width: 512, rows: 128 }),
+  table({ width: 512, rows: 64 }),
+  table({ width: 256, rows: 64 }),
   table({}, ' (default layout)', 'half'),
   sceneStep('default table, uniform field (swirl off)', { field: 'uniform' }),
   sceneStep('default table, drainage field (swirl off)', { field: 'drainage' }),

@@ -10,6 +10,7 @@ import { FIELDS, FILM_METHODS, type FilmSettings } from './filmSettings.ts';
 import { filmTableLayoutDefines } from './filmTableLayout.ts';
 import { setDefines } from './materialDefines.ts';
 import { shaderSource } from './shaderSource.ts';
+import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 
 const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
@@ -24,7 +25,30 @@ export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<s
   const method = { FILM_MODE: FILM_METHODS.indexOf(s.mode), POLARIZATION: POLARIZATIONS.indexOf(s.polarization) };
   if (s.mode === 'exact') return { ...method, ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
   if (s.mode === 'table') return { ...method, ...filmTableLayoutDefines(q.table) };
+  // The series, and the binned integral for evanescent films (which have no real optical path).
+  if (s.mode === 'fourier') return { ...method, ...airySeriesDefines(q.airySeriesMaxOrders), ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
   return method;
+}
+
+/**
+ * Points a film-colour material at the light's textures its method reads (the bin weights, the
+ * spectral transform), held for it, and lets go of those it does not read.
+ */
+export function updateFilmColorTextures(m: ShaderMaterial, s: FilmColorSettings & Pick<FilmSettings, 'illuminant' | 'normalization'>, q: FilmQuality): void {
+  const u = m.uniforms;
+  const binned = s.mode === 'exact' || s.mode === 'fourier';
+  if (binned) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins, m);
+  else releaseSpectralBinsTexture(m);
+  if (s.mode === 'fourier') u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, m);
+  else releaseSpectralTransformTexture(m);
+  if (!binned) u.uSpectralBins!.value = null;
+  if (s.mode !== 'fourier') u.uSpectralTransform!.value = null;
+}
+
+/** Frees what a film-colour material holds (call before disposing it). */
+export function releaseFilmColorTextures(m: ShaderMaterial): void {
+  releaseSpectralBinsTexture(m);
+  releaseSpectralTransformTexture(m);
 }
 
 /** The compile-time switches: a shader holds only the mode, field, sides and options in use. */
@@ -44,6 +68,7 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
     defines: bubbleDefines(s, q),
     uniforms: {
       uSpectralBins: { value: null },
+      uSpectralTransform: { value: null },
       uFilmTable: { value: null },
       uTableMaxThicknessNm: { value: 1 },
       uNOutside: { value: 1 },
@@ -71,11 +96,7 @@ export function updateBubbleUniforms(
 ): void {
   const u = m.uniforms;
   setDefines(m, bubbleDefines(s, q));
-  if (s.mode === 'exact') u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins, m);
-  else {
-    releaseSpectralBinsTexture(m);
-    u.uSpectralBins!.value = null;
-  }
+  updateFilmColorTextures(m, s, q);
   u.uFilmTable!.value = table?.texture ?? null;
   u.uTableMaxThicknessNm!.value = table?.maxThicknessNm ?? 1;
   u.uNOutside!.value = s.nOutside;

@@ -1,3 +1,4 @@
+import { AIRY_SERIES_MAX_ORDERS } from '../physics/airySeries.ts';
 import { type FilmTableLayout } from './filmTableLayout.ts';
 
 /**
@@ -12,11 +13,14 @@ export interface FilmQuality {
   readonly tablePrecision: 'auto' | 'half';
   /** spectral tails lighter than this fraction of the white are skipped (`significantBins`; 0 keeps all) */
   readonly spectralTailTolerance: number;
+  /** the most orders of the Airy series in `fourier` mode (2, 3: the peers' truncations) */
+  readonly airySeriesMaxOrders: number;
 }
 
 export const DEFAULT_FILM_QUALITY: FilmQuality = {
   exactSpectralBins: 90,
-  table: { width: 1024, rows: 128, spectralBins: 90, thicknessPower: 2, cosPower: 2 },
+  table: { width: 1024, rows: 128, spectralBins: 90, thicknessPower: 2, cosPower: 2, fill: 'series' },
   tablePrecision: 'auto',
   spectralTailTolerance: 1e-5,
+  airySeriesMaxOrders: AIRY_SERIES_MAX_ORDERS,
 };

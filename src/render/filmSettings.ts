@@ -3,7 +3,12 @@ import { FILM_STACK_DOMAIN, type Polarization } from '../physics/filmReflectance
 import { type Normalization } from '../physics/spectralIntegration.ts';
 
 export const SPACES = ['srgb', 'display-p3', 'wide-gamut'] as const;
-export const MODES = ['exact', 'table'] as const;
+/**
+ * How the film colour is computed: `exact` the binned spectral integral per fragment (the
+ * accuracy reference), `table` one lookup in a GPU-built table, `fourier` the Airy sum as a
+ * Fourier series per fragment (a few lookups of the light's spectral transform; nothing to build).
+ */
+export const MODES = ['exact', 'table', 'fourier'] as const;
 /** What a film shader can compute: the modes, and three.js's own iridescence (the benchmark's peer). */
 export const FILM_METHODS = [...MODES, 'three-iridescence'] as const;
 export const FIELDS = ['uniform', 'drainage', 'swirl'] as const;

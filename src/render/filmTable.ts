@@ -17,6 +17,7 @@ import { type FilmSettings, maxFieldThicknessNm } from './filmSettings.ts';
 import { filmTableLayoutDefines } from './filmTableLayout.ts';
 import { setDefines } from './materialDefines.ts';
 import { shaderSource } from './shaderSource.ts';
+import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 
 /** What the table depends on; anything else (the field's animation, exposure, space) leaves it alone. */
@@ -48,6 +49,7 @@ export class FilmTable {
   private readonly pass = new ShaderMaterial({
     uniforms: {
       uSpectralBins: { value: null },
+      uSpectralTransform: { value: null },
       uNOutside: { value: 1 },
       uNFilm: { value: 1.33 },
       uNInside: { value: 1 },
@@ -87,6 +89,7 @@ export class FilmTable {
     this.maxThicknessNm = maxFieldThicknessNm(s);
     const material = this.material(s);
     material.uniforms.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
+    material.uniforms.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
     material.uniforms.uNOutside!.value = s.nOutside;
     material.uniforms.uNFilm!.value = s.nFilm;
     material.uniforms.uNInside!.value = s.nInside;
@@ -113,6 +116,7 @@ export class FilmTable {
       POLARIZATION: POLARIZATIONS.indexOf(s.polarization),
       ...spectralBinDefines(this.quality.table.spectralBins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),
+      ...airySeriesDefines(),
     });
     return this.pass;
   }
@@ -122,5 +126,6 @@ export class FilmTable {
     this.quad.geometry.dispose();
     this.pass.dispose();
     releaseSpectralBinsTexture(this);
+    releaseSpectralTransformTexture(this);
   }
 }

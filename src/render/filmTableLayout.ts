@@ -13,6 +13,8 @@ export interface FilmTableLayout {
   readonly spectralBins: number;
   readonly thicknessPower: number;
   readonly cosPower: number;
+  /** how texels are filled: `binned` (cell-averaged bins) or `series` (the Airy series at the texel) */
+  readonly fill: 'binned' | 'series';
 }
 
 /** The defines shaders/filmTableLayout.glsl reads. */
@@ -21,4 +23,5 @@ export const filmTableLayoutDefines = (l: FilmTableLayout): Record<string, numbe
   FILM_TABLE_ROWS: l.rows,
   FILM_TABLE_THICKNESS_POWER: l.thicknessPower,
   FILM_TABLE_COS_POWER: l.cosPower,
+  TABLE_FILL: l.fill === 'series' ? 1 : 0,
 });

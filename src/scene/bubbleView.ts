@@ -11,12 +11,11 @@ import {
   WebGLRenderer,
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
-import { createBubbleMaterial, updateBubbleUniforms } from '../render/bubbleMaterial.ts';
+import { createBubbleMaterial, releaseFilmColorTextures, updateBubbleUniforms } from '../render/bubbleMaterial.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../render/filmQuality.ts';
 import { FilmTable } from '../render/filmTable.ts';
 import { type FilmSettings } from '../render/filmSettings.ts';
 import { shaderSource } from '../render/shaderSource.ts';
-import { releaseSpectralBinsTexture } from '../render/spectralBinsTexture.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
 
 ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
@@ -138,7 +137,7 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     this.filmProbe.dispose();
     this.table.dispose();
     this.bubble.geometry.dispose();
-    releaseSpectralBinsTexture(this.bubble.material);
+    releaseFilmColorTextures(this.bubble.material);
     this.bubble.material.dispose();
     this.sky.geometry.dispose();
     this.sky.material.dispose();

@@ -6,7 +6,7 @@
 import { DataTexture, Mesh, MeshBasicMaterial, RGBAFormat, SRGBColorSpace, WebGLRenderer } from 'three';
 import { BubbleView, createBubbleRenderer } from '../../../src/scene/bubbleView.ts';
 import { FilmXyzProbe } from '../../../tests/e2e/harness/filmXyzProbe.ts';
-import type { BenchRowSpec } from '../benchRow.ts';
+import { type BenchRowSpec, CHANGES } from '../benchRow.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 if (!canvas) throw new Error('bench.html must hold #bubble');
@@ -63,6 +63,20 @@ window.benchRow = (spec: BenchRowSpec) => {
     return { medianMs: median(times), count };
   });
   const rebuildsWhileAnimating = view.table.builds - buildsBefore;
+  // Each change and its way back, three times (the light's transform is then cached, as in a session).
+  view.resize(firstWidth, firstHeight);
+  const changeToFrameMs = CHANGES.map(({ values }) => {
+    const times = [0, 1, 2].flatMap(() =>
+      values.map((v) => {
+        const started = performance.now();
+        view.apply({ ...view.current, ...v });
+        view.render();
+        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+        return performance.now() - started;
+      }),
+    );
+    return median(times);
+  });
   view.dispose();
 
   let xyz: number[][][] = [];
@@ -71,6 +85,6 @@ window.benchRow = (spec: BenchRowSpec) => {
     xyz = new FilmXyzProbe(renderer).render(spec.grids, spec.settings.mode, spec.quality);
     renderer.dispose();
   }
-  return { firstFrameMs, tableBuildMs, rebuildsWhileAnimating, frames, xyz };
+  return { firstFrameMs, tableBuildMs, rebuildsWhileAnimating, frames, changeToFrameMs, xyz };
 };
 document.body.dataset.ready = 'yes';

@@ -17,12 +17,11 @@ import {
   WebGLRenderTarget,
   type WebGLRenderer,
 } from 'three';
-import { filmColorDefines } from '../../../src/render/bubbleMaterial.ts';
+import { filmColorDefines, updateFilmColorTextures } from '../../../src/render/bubbleMaterial.ts';
 import { type FilmQuality } from '../../../src/render/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../../src/render/filmSettings.ts';
 import { FilmTable } from '../../../src/render/filmTable.ts';
 import { shaderSource } from '../../../src/render/shaderSource.ts';
-import { spectralBinsTexture } from '../../../src/render/spectralBinsTexture.ts';
 import type { ParityGroup, ParityMode } from './parityCase.ts';
 
 const FRAGMENT = `${shaderSource('filmColor.glsl')}
@@ -55,6 +54,7 @@ export class FilmXyzProbe {
       uniforms: {
         uInputs: { value: null },
         uSpectralBins: { value: null },
+        uSpectralTransform: { value: null },
         uNOutside: { value: 1 },
         uNFilm: { value: 1.33 },
         uNInside: { value: 1 },
@@ -85,7 +85,7 @@ export class FilmXyzProbe {
     const m = this.material(mode, g, quality);
     const u = m.uniforms;
     u.uInputs!.value = inputTexture;
-    u.uSpectralBins!.value = spectralBinsTexture(g.illuminant, g.normalization, quality.exactSpectralBins, m);
+    updateFilmColorTextures(m, { ...g, mode }, quality);
     u.uNOutside!.value = g.nOutside;
     u.uNFilm!.value = g.nFilm;
     u.uNInside!.value = g.nInside;

@@ -1,0 +1,114 @@
+// The film's XYZ from the Airy sum as a Fourier series in the phase, eqs (11)-(18):
+//   X_j = C0 W_j + 2 Re( B sum_{m>=1} q^(m-1) F_j(m x) ),  x = 2 n_b d cos θ_r (eq 12),
+// with C0, B, q from one channel's Fresnel terms and F_j the light's spectral transform, a table
+// (uSpectralTransform) of H_j(x) = F_j(x) e^{-i2πσ0 x} every SPECTRAL_TRANSFORM_STEP_NM of x:
+// rows 0 .. SPECTRAL_TRANSFORM_ROWS-1 hold Re H (xyz), the next SPECTRAL_TRANSFORM_ROWS rows Im H.
+// Domain: a real optical path (not an evanescent film). Mirrors src/physics/airySeries.ts; the
+// derivation is in docs/physics.md.
+#ifndef THIN_FILM_AIRY_SERIES
+#define THIN_FILM_AIRY_SERIES
+#include "filmReflectance.glsl"
+
+// The truncation rule of airySeriesXyz (TypeScript): stop when the terms left are below
+// AIRY_SERIES_TOLERANCE of the white, when F runs off its table, or at AIRY_SERIES_MAX_ORDERS;
+// airySeriesConverges says whether the first two come before the last.
+#ifndef AIRY_SERIES_MAX_ORDERS
+#define AIRY_SERIES_MAX_ORDERS 64
+#endif
+#ifndef AIRY_SERIES_TOLERANCE
+#define AIRY_SERIES_TOLERANCE 1e-5
+#endif
+
+uniform sampler2D uSpectralTransform;
+
+struct AirySeriesTerms { float c0; vec2 b; vec2 q; };
+
+AirySeriesTerms airySeriesTerms(AiryTerms c) {
+  float rab2 = cAbs2(c.rab);
+  if (c.multiple == vec2(0.0)) return AirySeriesTerms(rab2, vec2(0.0), vec2(0.0));
+  float g = cAbs2(c.multiple) / (1.0 - cAbs2(c.roundTrip));
+  return AirySeriesTerms(rab2 + g, cMul(c.multiple, vec2(c.rab.x, -c.rab.y)) + g * c.roundTrip, c.roundTrip);
+}
+
+// H at entry i, real and imaginary parts.
+void transformEntry(int i, out vec3 re, out vec3 im) {
+  ivec2 p = ivec2(i % SPECTRAL_TRANSFORM_WIDTH, i / SPECTRAL_TRANSFORM_WIDTH);
+  re = texelFetch(uSpectralTransform, p, 0).xyz;
+  im = texelFetch(uSpectralTransform, p + ivec2(0, SPECTRAL_TRANSFORM_ROWS), 0).xyz;
+}
+
+// F(x) = H(x) e^{i2πσ0 x}, H linear between entries; false past the table (F taken as 0).
+bool transformAt(float pathNm, out vec3 re, out vec3 im) {
+  float pos = pathNm / float(SPECTRAL_TRANSFORM_STEP_NM);
+  float first = floor(pos);
+  if (first >= float(SPECTRAL_TRANSFORM_COUNT - 1)) return false;
+  int i = int(first);
+  vec3 re0, im0, re1, im1;
+  transformEntry(i, re0, im0);
+  transformEntry(i + 1, re1, im1);
+  float f = pos - first;
+  vec3 hr = mix(re0, re1, f);
+  vec3 hi = mix(im0, im1, f);
+  // The carrier's phase in turns, reduced before the 2π so float32 keeps its digits.
+  float angle = 6.283185307179586 * fract(float(SPECTRAL_TRANSFORM_CARRIER_PER_NM) * pathNm);
+  float c = cos(angle), s = sin(angle);
+  re = hr * c - hi * s;
+  im = hr * s + hi * c;
+  return true;
+}
+
+// |B| / (1 - |q|): with |q|^(m-1), a bound on the terms from order m on (|F| <= W).
+float airySeriesTailScale(AirySeriesTerms t) {
+  return length(t.b) / max(1.0 - length(t.q), 1e-7);
+}
+
+// Whether AIRY_SERIES_MAX_ORDERS terms reach the tolerance or the end of F's table. They do not
+// for high-finesse thin films near grazing incidence (|q| -> 1), which callers integrate by bins.
+bool airySeriesConverges(FilmOptics o) {
+  float orders = float(AIRY_SERIES_MAX_ORDERS);
+  if (o.opticalPathNm.x * orders >= float(SPECTRAL_TRANSFORM_STEP_NM) * float(SPECTRAL_TRANSFORM_COUNT - 1)) return true;
+  for (int c = 0; c < FILM_CHANNELS; c++) {
+    AirySeriesTerms t = airySeriesTerms(o.channels[c]);
+    float scale = airySeriesTailScale(t);
+    float rho = length(t.q);
+    if (scale >= AIRY_SERIES_TOLERANCE && (rho >= 1.0 || (orders - 1.0) * log(rho) > log(AIRY_SERIES_TOLERANCE / scale))) return false;
+  }
+  return true;
+}
+
+vec3 airySeriesXyz(FilmOptics o) {
+  float x = o.opticalPathNm.x;
+  AirySeriesTerms t[FILM_CHANNELS];
+  vec3 sumRe[FILM_CHANNELS];
+  vec3 sumIm[FILM_CHANNELS];
+  vec2 power[FILM_CHANNELS];
+  float powerAbs[FILM_CHANNELS];
+  float leftScale[FILM_CHANNELS];
+  for (int c = 0; c < FILM_CHANNELS; c++) {
+    t[c] = airySeriesTerms(o.channels[c]);
+    sumRe[c] = vec3(0.0);
+    sumIm[c] = vec3(0.0);
+    power[c] = vec2(1.0, 0.0);
+    powerAbs[c] = 1.0;
+    leftScale[c] = airySeriesTailScale(t[c]);
+  }
+  for (int m = 1; m <= AIRY_SERIES_MAX_ORDERS; m++) {
+    float left = 0.0;
+    for (int c = 0; c < FILM_CHANNELS; c++) left = max(left, leftScale[c] * powerAbs[c]);
+    if (left < AIRY_SERIES_TOLERANCE) break;
+    vec3 fr, fi;
+    if (!transformAt(float(m) * x, fr, fi)) break;
+    for (int c = 0; c < FILM_CHANNELS; c++) {
+      sumRe[c] += power[c].x * fr - power[c].y * fi;
+      sumIm[c] += power[c].x * fi + power[c].y * fr;
+      power[c] = cMul(power[c], t[c].q);
+      powerAbs[c] *= length(t[c].q);
+    }
+  }
+  vec3 white = texelFetch(uSpectralTransform, ivec2(0), 0).xyz;
+  vec3 xyz = vec3(0.0);
+  for (int c = 0; c < FILM_CHANNELS; c++) xyz += t[c].c0 * white + 2.0 * (t[c].b.x * sumRe[c] - t[c].b.y * sumIm[c]);
+  return xyz / float(FILM_CHANNELS);
+}
+
+#endif

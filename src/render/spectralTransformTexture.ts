@@ -1,0 +1,51 @@
+import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
+import { type IlluminantSpec } from '../physics/illuminants.ts';
+import { type Normalization, spectralWeights } from '../physics/spectralIntegration.ts';
+import {
+  SPECTRAL_TRANSFORM_CARRIER_PER_NM,
+  SPECTRAL_TRANSFORM_COUNT,
+  SPECTRAL_TRANSFORM_STEP_NM,
+  spectralTransform,
+} from '../physics/spectralTransform.ts';
+import { AIRY_SERIES_MAX_ORDERS, AIRY_SERIES_TOLERANCE } from '../physics/airySeries.ts';
+import { SharedTextures } from './sharedTextures.ts';
+
+/** Entries per texture row (WebGL2 guarantees 2048; 4096 is common, SwiftShader has 8192). */
+const WIDTH = 2048;
+const ROWS = Math.ceil(SPECTRAL_TRANSFORM_COUNT / WIDTH);
+
+const shared = new SharedTextures((key) => {
+  const { illuminant, normalization } = JSON.parse(key) as { illuminant: IlluminantSpec; normalization: Normalization };
+  const { values, count } = spectralTransform(spectralWeights(illuminant, normalization));
+  // Rows 0 .. ROWS-1: Re H (x, y, z); rows ROWS .. 2 ROWS-1: Im H, entry i at (i mod WIDTH, i div WIDTH).
+  const data = new Float32Array(4 * WIDTH * 2 * ROWS);
+  for (let i = 0; i < count; i++) {
+    data.set([values[6 * i]!, values[6 * i + 1]!, values[6 * i + 2]!, 0], 4 * i);
+    data.set([values[6 * i + 3]!, values[6 * i + 4]!, values[6 * i + 5]!, 0], 4 * (i + WIDTH * ROWS));
+  }
+  const texture = new DataTexture(data, WIDTH, 2 * ROWS, RGBAFormat, FloatType);
+  texture.minFilter = texture.magFilter = NearestFilter;
+  texture.needsUpdate = true;
+  return texture;
+});
+
+/**
+ * The light's spectral transform (src/physics/spectralTransform.ts) as a float texture read by
+ * shaders/airySeries.glsl, for `holder`; computed on the CPU when a light is first asked for
+ * (~30 ms) and shared by the holders of the same light (SharedTextures).
+ */
+export const spectralTransformTexture = (illuminant: IlluminantSpec, normalization: Normalization, holder: object): DataTexture =>
+  shared.hold(JSON.stringify({ illuminant, normalization }), holder);
+
+export const releaseSpectralTransformTexture = (holder: object): void => shared.release(holder);
+
+/** The defines shaders/airySeries.glsl reads; `maxOrders` below the default truncates the series (the peers' m ≤ 2, 3). */
+export const airySeriesDefines = (maxOrders = AIRY_SERIES_MAX_ORDERS): Record<string, number> => ({
+  SPECTRAL_TRANSFORM_WIDTH: WIDTH,
+  SPECTRAL_TRANSFORM_ROWS: ROWS,
+  SPECTRAL_TRANSFORM_COUNT,
+  SPECTRAL_TRANSFORM_STEP_NM,
+  SPECTRAL_TRANSFORM_CARRIER_PER_NM,
+  AIRY_SERIES_MAX_ORDERS: maxOrders,
+  AIRY_SERIES_TOLERANCE,
+});
