@@ -27,9 +27,9 @@ uniform float uTableMaxThicknessNm;
 vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   // Texel centres sit at the ends of the ranges (BROWSER.md: otherwise visibly off).
   vec2 uv = filmTableUv(thicknessNm, cosIncidence, uTableMaxThicknessNm);
-  vec2 size = vec2(float(FILM_TABLE_WIDTH), float(2 * FILM_TABLE_ROWS));
+  vec2 size = vec2(uFilmTableWidth, float(2 * FILM_TABLE_ROWS));
   float rowOffset = fromInside ? float(FILM_TABLE_ROWS) : 0.0;
-  vec2 texel = vec2(uv.x * float(FILM_TABLE_WIDTH - 1), rowOffset + uv.y * float(FILM_TABLE_ROWS - 1)) + 0.5;
+  vec2 texel = vec2(uv.x * (uFilmTableWidth - 1.0), rowOffset + uv.y * float(FILM_TABLE_ROWS - 1)) + 0.5;
   return texture(uFilmTable, texel / size).xyz;
 }
 #elif FILM_MODE == 2

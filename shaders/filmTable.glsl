@@ -1,4 +1,4 @@
-// The table of film XYZ over (thickness, cos θ_i), FILM_TABLE_WIDTH x 2 * FILM_TABLE_ROWS texels:
+// The table of film XYZ over (thickness, cos θ_i), uFilmTableWidth x 2 * FILM_TABLE_ROWS texels:
 // the lower half for light arriving from outside (n_a = uNOutside), the upper half from inside
 // (media swapped: the far wall of the bubble). Texel positions: filmTableLayout.glsl.
 // Filled by TABLE_FILL: 0 the binned integral, each texel averaged over its thickness cell so
@@ -18,9 +18,9 @@ void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   bool fromInside = texel.y >= FILM_TABLE_ROWS;
   int row = fromInside ? texel.y - FILM_TABLE_ROWS : texel.y;
-  float u = float(texel.x) / float(FILM_TABLE_WIDTH - 1);
+  float u = float(texel.x) / (uFilmTableWidth - 1.0);
   float thicknessNm = filmTableThicknessNm(u, uTableMaxThicknessNm);
-  float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / float(FILM_TABLE_WIDTH - 1);
+  float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
   float cosIncidence = filmTableCosIncidence(float(row) / float(FILM_TABLE_ROWS - 1));
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;

@@ -1,16 +1,18 @@
 // Where (thickness, cos θ_i) sit in the film table: one mapping for the table pass (filmTable.glsl)
 // and the lookup (filmColor.glsl). u, v in [0, 1] run from the first to the last texel centre:
 //   d = max · u^FILM_TABLE_THICKNESS_POWER,   cos θ_i = v^FILM_TABLE_COS_POWER.
-// Powers above 1 spend texels on thin films and grazing light. Sizes and powers (defines) come
-// from src/render/filmTableLayout.ts.
+// Powers above 1 spend texels on thin films and grazing light. Rows and powers (defines) come
+// from src/render/filmTableLayout.ts; the width, uFilmTableWidth texels, follows the thickness range.
 #ifndef THIN_FILM_TABLE_LAYOUT
 #define THIN_FILM_TABLE_LAYOUT
+
+uniform float uFilmTableWidth;
 
 float filmTableThicknessNm(float u, float maxThicknessNm) {
   return maxThicknessNm * pow(u, float(FILM_TABLE_THICKNESS_POWER));
 }
 
-// d d / d u: a texel's thickness cell is this × 1 / (FILM_TABLE_WIDTH - 1).
+// d d / d u: a texel's thickness cell is this × 1 / (uFilmTableWidth - 1).
 float filmTableThicknessSlopeNm(float u, float maxThicknessNm) {
   float power = float(FILM_TABLE_THICKNESS_POWER);
   return maxThicknessNm * power * pow(max(u, 1e-6), power - 1.0); // pow(0, 0) is undefined in GLSL

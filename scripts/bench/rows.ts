@@ -27,7 +27,7 @@ const exact = (bins: number, tails: 'skipped' | 'kept' = 'skipped'): BenchRow =>
   measuresError: true,
 });
 const layoutName = (l: FilmTableLayout) =>
-  `${l.width}×${l.rows}×2, ${l.fill === 'series' ? 'Airy series' : `${l.spectralBins} bins`}, ${l.thicknessPower === 1 ? 'linear d' : `d ∝ u^${l.thicknessPower}`}, ${l.cosPower === 1 ? 'linear cos θ' : `cos θ ∝ v^${l.cosPower}`}`;
+  `${l.width === q.table.width && l.thickEndCellNm === q.table.thickEndCellNm ? `≤ ${l.width} (${l.thickEndCellNm} nm cells at the thick end)` : l.width}×${l.rows}×2, ${l.fill === 'series' ? 'Airy series' : `${l.spectralBins} bins`}, ${l.thicknessPower === 1 ? 'linear d' : `d ∝ u^${l.thicknessPower}`}, ${l.cosPower === 1 ? 'linear cos θ' : `cos θ ∝ v^${l.cosPower}`}`;
 const table = (l: Partial<FilmTableLayout>, note = '', precision: FilmQuality['tablePrecision'] = 'auto'): BenchRow => {
   const layout = { ...q.table, ...l };
   return {
@@ -61,12 +61,12 @@ export const ROWS: readonly BenchRow[] = [
   fourier(3, ' (Blender Cycles keeps m ≤ 3)'),
   exact(45),
   exact(90),
-  table({ fill: 'binned' }, ' (before: the previous default)'),
+  table({ fill: 'binned', thickEndCellNm: 0 }, ' (before: the previous default)'),
   table({}, ' (default)'),
+  table({ thickEndCellNm: 0 }),
   table({ width: 1024, rows: 64 }),
-  table({ width: 512, rows: 128 }),
+  table({ cosPower: 1.5 }),
   table({ width: 512, rows: 64 }),
-  table({ width: 256, rows: 64 }),
   table({}, ' (default layout)', 'half'),
   sceneStep('default table, uniform field (swirl off)', { field: 'uniform' }),
   sceneStep('default table, drainage field (swirl off)', { field: 'drainage' }),

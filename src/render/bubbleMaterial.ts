@@ -1,4 +1,4 @@
-import { Matrix3, ShaderMaterial, type Texture } from 'three';
+import { Matrix3, ShaderMaterial } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import {
   type Matrix3 as Rows3,
@@ -71,6 +71,7 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
       uSpectralTransform: { value: null },
       uFilmTable: { value: null },
       uTableMaxThicknessNm: { value: 1 },
+      uFilmTableWidth: { value: 1 },
       uNOutside: { value: 1 },
       uNFilm: { value: 1.33 },
       uNInside: { value: 1 },
@@ -91,14 +92,14 @@ export function updateBubbleUniforms(
   m: ShaderMaterial,
   s: FilmSettings,
   q: FilmQuality,
-  table: { texture: Texture; maxThicknessNm: number } | null,
+  table: { bind(uniforms: ShaderMaterial['uniforms']): void } | null,
   displayIsP3: boolean,
 ): void {
   const u = m.uniforms;
   setDefines(m, bubbleDefines(s, q));
   updateFilmColorTextures(m, s, q);
-  u.uFilmTable!.value = table?.texture ?? null;
-  u.uTableMaxThicknessNm!.value = table?.maxThicknessNm ?? 1;
+  if (table) table.bind(u);
+  else u.uFilmTable!.value = null;
   u.uNOutside!.value = s.nOutside;
   u.uNFilm!.value = s.nFilm;
   u.uNInside!.value = s.nInside;

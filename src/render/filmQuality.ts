@@ -19,7 +19,7 @@ export interface FilmQuality {
 
 export const DEFAULT_FILM_QUALITY: FilmQuality = {
   exactSpectralBins: 90,
-  table: { width: 1024, rows: 128, spectralBins: 90, thicknessPower: 2, cosPower: 2, fill: 'series' },
+  table: { width: 1024, thickEndCellNm: 8, rows: 128, spectralBins: 90, thicknessPower: 2, cosPower: 2, fill: 'series' },
   tablePrecision: 'auto',
   spectralTailTolerance: 1e-5,
   airySeriesMaxOrders: AIRY_SERIES_MAX_ORDERS,

@@ -7,14 +7,13 @@ import {
   PlaneGeometry,
   RGBAFormat,
   ShaderMaterial,
-  type Texture,
   type WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { type FilmQuality } from './filmQuality.ts';
 import { type FilmSettings, maxFieldThicknessNm } from './filmSettings.ts';
-import { filmTableLayoutDefines } from './filmTableLayout.ts';
+import { filmTableLayoutDefines, filmTableWidth } from './filmTableLayout.ts';
 import { setDefines } from './materialDefines.ts';
 import { shaderSource } from './shaderSource.ts';
 import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
@@ -54,6 +53,7 @@ export class FilmTable {
       uNFilm: { value: 1.33 },
       uNInside: { value: 1 },
       uTableMaxThicknessNm: { value: 1 },
+      uFilmTableWidth: { value: 1 },
     },
     vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
     fragmentShader: shaderSource('filmTable.glsl'),
@@ -64,7 +64,7 @@ export class FilmTable {
   builds = 0;
 
   constructor(private readonly quality: FilmQuality) {
-    this.target = new WebGLRenderTarget(quality.table.width, 2 * quality.table.rows, {
+    this.target = new WebGLRenderTarget(1, 2 * quality.table.rows, {
       format: RGBAFormat,
       minFilter: LinearFilter,
       magFilter: LinearFilter,
@@ -72,8 +72,11 @@ export class FilmTable {
     });
   }
 
-  get texture(): Texture {
-    return this.target.texture;
+  /** Points a material that looks the table up (shaders/filmColor.glsl, table mode) at it. */
+  bind(uniforms: ShaderMaterial['uniforms']): void {
+    uniforms.uFilmTable!.value = this.target.texture;
+    uniforms.uTableMaxThicknessNm!.value = this.maxThicknessNm;
+    uniforms.uFilmTableWidth!.value = this.target.width;
   }
 
   /** Rebuilds the table if a parameter it depends on changed; returns whether it did. */
@@ -87,6 +90,8 @@ export class FilmTable {
       this.target.texture.type = type;
     }
     this.maxThicknessNm = maxFieldThicknessNm(s);
+    const width = filmTableWidth(this.quality.table, this.maxThicknessNm);
+    if (this.target.width !== width) this.target.setSize(width, 2 * this.quality.table.rows);
     const material = this.material(s);
     material.uniforms.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
     material.uniforms.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
@@ -94,6 +99,7 @@ export class FilmTable {
     material.uniforms.uNFilm!.value = s.nFilm;
     material.uniforms.uNInside!.value = s.nInside;
     material.uniforms.uTableMaxThicknessNm!.value = this.maxThicknessNm;
+    material.uniforms.uFilmTableWidth!.value = width;
     this.quad.material = material;
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(this.target);

@@ -6,8 +6,13 @@
  * grazing incidence (R rises steeply as cos θ_i → 0).
  */
 export interface FilmTableLayout {
-  /** texels along thickness */
+  /** texels along thickness at most */
   readonly width: number;
+  /**
+   * The thickness cell wanted at the table's thick end: a table over thin films needs fewer
+   * texels (`filmTableWidth`), and a smaller table is built sooner.
+   */
+  readonly thickEndCellNm: number;
   /** rows per half (outside view, inside view) */
   readonly rows: number;
   readonly spectralBins: number;
@@ -17,9 +22,17 @@ export interface FilmTableLayout {
   readonly fill: 'binned' | 'series';
 }
 
-/** The defines shaders/filmTableLayout.glsl reads. */
+/**
+ * Texels along thickness for a table up to `maxThicknessNm`: enough that the thick end's cell,
+ * max · thicknessPower / (width − 1), is at most `thickEndCellNm`, in steps of 64, at most `width`.
+ */
+export function filmTableWidth(l: FilmTableLayout, maxThicknessNm: number): number {
+  const wanted = (maxThicknessNm * l.thicknessPower) / l.thickEndCellNm + 1;
+  return Math.min(l.width, 64 * Math.max(1, Math.ceil(wanted / 64)));
+}
+
+/** The defines shaders/filmTableLayout.glsl reads (its width is a uniform: it follows the thickness range). */
 export const filmTableLayoutDefines = (l: FilmTableLayout): Record<string, number> => ({
-  FILM_TABLE_WIDTH: l.width,
   FILM_TABLE_ROWS: l.rows,
   FILM_TABLE_THICKNESS_POWER: l.thicknessPower,
   FILM_TABLE_COS_POWER: l.cosPower,

@@ -98,7 +98,7 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
   /** Rebuilds the table if a parameter it depends on changed since it was drawn (once per frame at most). */
   private syncTable(): void {
     if (this.settings.mode !== 'table' || !this.table.update(this.renderer, this.settings)) return;
-    this.bubble.material.uniforms.uTableMaxThicknessNm!.value = this.table.maxThicknessNm;
+    this.table.bind(this.bubble.material.uniforms);
   }
 
   /** Whether the renderer's WebGL context is lost (nothing can be drawn or read until it is restored). */

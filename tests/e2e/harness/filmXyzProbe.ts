@@ -60,6 +60,7 @@ export class FilmXyzProbe {
         uNInside: { value: 1 },
         uFilmTable: { value: null },
         uTableMaxThicknessNm: { value: 1 },
+        uFilmTableWidth: { value: 1 },
       },
       vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
       fragmentShader: FRAGMENT,
@@ -93,8 +94,7 @@ export class FilmXyzProbe {
       const table = this.table(quality);
       const maxThicknessNm = Math.max(...g.inputs.map(([t]) => t));
       table.update(this.renderer, { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: maxThicknessNm, mode });
-      u.uFilmTable!.value = table.texture;
-      u.uTableMaxThicknessNm!.value = table.maxThicknessNm;
+      table.bind(u);
     }
     const target = new WebGLRenderTarget(count, 1, { type: FloatType, format: RGBAFormat, depthBuffer: false });
     this.quad.material = m;
