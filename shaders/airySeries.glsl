@@ -13,7 +13,7 @@
 // AIRY_SERIES_TOLERANCE of the white, when F runs off its table, or at AIRY_SERIES_MAX_ORDERS;
 // airySeriesConverges says whether the first two come before the last.
 #ifndef AIRY_SERIES_MAX_ORDERS
-#define AIRY_SERIES_MAX_ORDERS 64
+#define AIRY_SERIES_MAX_ORDERS 128
 #endif
 #ifndef AIRY_SERIES_TOLERANCE
 #define AIRY_SERIES_TOLERANCE 1e-5
@@ -37,8 +37,13 @@ void transformEntry(int i, out vec3 re, out vec3 im) {
   im = texelFetch(uSpectralTransform, p + ivec2(0, SPECTRAL_TRANSFORM_ROWS), 0).xyz;
 }
 
-// F(x) = H(x) e^{i2πσ0 x}, H linear between entries; false past the table (F taken as 0).
-bool transformAt(float pathNm, out vec3 re, out vec3 im) {
+// The carrier e^{i2πσ0 x}, its phase reduced to turns before the 2π so float32 keeps its digits.
+vec2 transformCarrier(float pathNm) {
+  return cExpI(vec2(6.283185307179586 * fract(float(SPECTRAL_TRANSFORM_CARRIER_PER_NM) * pathNm), 0.0));
+}
+
+// F(x) = H(x) carrier, H linear between entries; false past the table (F taken as 0).
+bool transformAt(float pathNm, vec2 carrier, out vec3 re, out vec3 im) {
   float pos = pathNm / float(SPECTRAL_TRANSFORM_STEP_NM);
   float first = floor(pos);
   if (first >= float(SPECTRAL_TRANSFORM_COUNT - 1)) return false;
@@ -49,11 +54,8 @@ bool transformAt(float pathNm, out vec3 re, out vec3 im) {
   float f = pos - first;
   vec3 hr = mix(re0, re1, f);
   vec3 hi = mix(im0, im1, f);
-  // The carrier's phase in turns, reduced before the 2π so float32 keeps its digits.
-  float angle = 6.283185307179586 * fract(float(SPECTRAL_TRANSFORM_CARRIER_PER_NM) * pathNm);
-  float c = cos(angle), s = sin(angle);
-  re = hr * c - hi * s;
-  im = hr * s + hi * c;
+  re = hr * carrier.x - hi * carrier.y;
+  im = hr * carrier.y + hi * carrier.x;
   return true;
 }
 
@@ -83,6 +85,7 @@ vec3 airySeriesXyz(FilmOptics o) {
   vec3 sumIm[FILM_CHANNELS];
   vec2 power[FILM_CHANNELS];
   float powerAbs[FILM_CHANNELS];
+  float rho[FILM_CHANNELS];
   float leftScale[FILM_CHANNELS];
   for (int c = 0; c < FILM_CHANNELS; c++) {
     t[c] = airySeriesTerms(o.channels[c]);
@@ -90,19 +93,24 @@ vec3 airySeriesXyz(FilmOptics o) {
     sumIm[c] = vec3(0.0);
     power[c] = vec2(1.0, 0.0);
     powerAbs[c] = 1.0;
+    rho[c] = length(t[c].q);
     leftScale[c] = airySeriesTailScale(t[c]);
   }
+  // The carrier of order m is the first one's m-th power (a product per order, not a sine).
+  vec2 step = transformCarrier(x);
+  vec2 carrier = step;
   for (int m = 1; m <= AIRY_SERIES_MAX_ORDERS; m++) {
     float left = 0.0;
     for (int c = 0; c < FILM_CHANNELS; c++) left = max(left, leftScale[c] * powerAbs[c]);
     if (left < AIRY_SERIES_TOLERANCE) break;
     vec3 fr, fi;
-    if (!transformAt(float(m) * x, fr, fi)) break;
+    if (!transformAt(float(m) * x, carrier, fr, fi)) break;
+    carrier = cMul(carrier, step);
     for (int c = 0; c < FILM_CHANNELS; c++) {
       sumRe[c] += power[c].x * fr - power[c].y * fi;
       sumIm[c] += power[c].x * fi + power[c].y * fr;
       power[c] = cMul(power[c], t[c].q);
-      powerAbs[c] *= length(t[c].q);
+      powerAbs[c] *= rho[c];
     }
   }
   vec3 white = texelFetch(uSpectralTransform, ivec2(0), 0).xyz;

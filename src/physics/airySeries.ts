@@ -42,7 +42,7 @@ export const AIRY_SERIES_TOLERANCE = 1e-5;
  * Terms at most. A soap film needs 3–6 to 80°; high-finesse thin films near grazing incidence
  * (|q| → 1) need thousands, and `airySeriesConverges` sends them to the binned integral instead.
  */
-export const AIRY_SERIES_MAX_ORDERS = 64;
+export const AIRY_SERIES_MAX_ORDERS = 128;
 
 /** |B| / (1 − |q|): times |q|^{m−1}, a bound on the terms from order m on, relative to the white. */
 const tailScale = (t: AirySeriesTerms): number => Math.hypot(t.b.re, t.b.im) / Math.max(1 - Math.hypot(t.q.re, t.q.im), 1e-7);
@@ -57,18 +57,24 @@ export function airySeriesConverges(optics: FilmOptics, t: SpectralTransform, ma
   });
 }
 
-/** H(x) e^{i2πσ₀x}, linear in H between entries; 0 past the table. Returns [Re X, Re Y, Re Z, Im X, Im Y, Im Z]. */
-export function transformAt(t: SpectralTransform, pathNm: number): number[] {
-  const pos = pathNm / t.stepNm;
-  const i = Math.floor(pos);
-  if (i >= t.count - 1) return [0, 0, 0, 0, 0, 0];
-  const f = pos - i;
+/** The carrier e^{i2πσ₀x}, its phase reduced to turns first (as the shader does, for float32). */
+export function transformCarrier(t: SpectralTransform, pathNm: number): Complex {
   const turn = t.carrierPerNm * pathNm;
   const angle = 2 * Math.PI * (turn - Math.floor(turn));
-  const cos = Math.cos(angle);
-  const sin = Math.sin(angle);
+  return { re: Math.cos(angle), im: Math.sin(angle) };
+}
+
+/**
+ * F(x) = H(x) · carrier, H linear between entries, or null past the table (F taken as 0).
+ * Returns [Re X, Re Y, Re Z, Im X, Im Y, Im Z].
+ */
+export function transformAt(t: SpectralTransform, pathNm: number, carrier: Complex): number[] | null {
+  const pos = pathNm / t.stepNm;
+  const i = Math.floor(pos);
+  if (i >= t.count - 1) return null;
+  const f = pos - i;
   const h = Array.from({ length: 6 }, (_, k) => (t.values[6 * i + k] as number) * (1 - f) + (t.values[6 * i + 6 + k] as number) * f);
-  return [0, 1, 2].flatMap((j) => [h[j]! * cos - h[j + 3]! * sin]).concat([0, 1, 2].map((j) => h[j]! * sin + h[j + 3]! * cos));
+  return [0, 1, 2].map((j) => h[j]! * carrier.re - h[j + 3]! * carrier.im).concat([0, 1, 2].map((j) => h[j]! * carrier.im + h[j + 3]! * carrier.re));
 }
 
 /**
@@ -83,11 +89,15 @@ export function airySeriesXyz(optics: FilmOptics, t: SpectralTransform, maxOrder
   const sums = terms.map(() => [0, 0, 0, 0, 0, 0]);
   const powers = terms.map(() => ({ re: 1, im: 0 }) as Complex);
   const scales = terms.map(tailScale);
+  // The carrier of order m is the first one's m-th power.
+  const step = transformCarrier(t, x);
+  let carrier = step;
   for (let m = 1; m <= maxOrders; m++) {
     const left = Math.max(...terms.map((_, i) => scales[i]! * Math.hypot(powers[i]!.re, powers[i]!.im)));
     if (left < AIRY_SERIES_TOLERANCE) break;
-    if (m * x >= (t.count - 1) * t.stepNm) break;
-    const f = transformAt(t, m * x);
+    const f = transformAt(t, m * x, carrier);
+    if (!f) break;
+    carrier = cMul(carrier, step);
     terms.forEach((s, i) => {
       const p = powers[i]!;
       const sum = sums[i]!;

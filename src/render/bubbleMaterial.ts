@@ -24,7 +24,8 @@ export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization'>;
 export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
   const method = { FILM_MODE: FILM_METHODS.indexOf(s.mode), POLARIZATION: POLARIZATIONS.indexOf(s.polarization) };
   if (s.mode === 'exact') return { ...method, ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
-  if (s.mode === 'table') return { ...method, ...filmTableLayoutDefines(q.table) };
+  // The lookup does not depend on the polarisation (the table pass does), so changing it compiles no bubble.
+  if (s.mode === 'table') return { FILM_MODE: method.FILM_MODE, ...filmTableLayoutDefines(q.table) };
   // The series, and the binned integral for evanescent films (which have no real optical path).
   if (s.mode === 'fourier') return { ...method, ...airySeriesDefines(q.airySeriesMaxOrders), ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
   return method;
