@@ -8,6 +8,9 @@ const port = DEV_PORT;
 export default defineConfig({
   testDir: 'tests/e2e',
   timeout: 120_000,
+  // Assertions wait for their condition (a frame drawn, a table built), returning as soon as it
+  // holds. Here the slowest first frame takes ~3 s; 60 s leaves room for a machine many times slower.
+  expect: { timeout: 60_000 },
   fullyParallel: false,
   workers: 1,
   reporter: [['list']],

@@ -1,6 +1,6 @@
 import { type Complex, cAbs2, cMul } from './complex.ts';
 import { type AiryTerms, type FilmOptics } from './filmReflectance.ts';
-import { type Xyz } from './spectralIntegration.ts';
+import { type SpectralBins, type Xyz, binnedXyz } from './spectralIntegration.ts';
 import { type SpectralTransform } from './spectralTransform.ts';
 
 /**
@@ -118,3 +118,11 @@ export function airySeriesXyz(optics: FilmOptics, t: SpectralTransform, maxOrder
   });
   return [xyz[0]!, xyz[1]!, xyz[2]!];
 }
+
+/**
+ * The `fourier` method (shaders/filmColor.glsl, mode 2): the series where it has a real optical
+ * path and converges within AIRY_SERIES_MAX_ORDERS terms, else the binned integral (evanescent
+ * films; high-finesse thin films near grazing incidence).
+ */
+export const fourierXyz = (optics: FilmOptics, t: SpectralTransform, bins: SpectralBins): Xyz =>
+  optics.opticalPathNm.im === 0 && airySeriesConverges(optics, t) ? airySeriesXyz(optics, t) : binnedXyz(optics, bins);

@@ -106,6 +106,9 @@ export class FilmTable {
     renderer.render(this.quad, this.camera);
     renderer.readRenderTargetPixels(this.target, 0, 0, 1, 1, type === FloatType ? new Float32Array(4) : new Uint16Array(4));
     renderer.setRenderTarget(previous);
+    // The pass reads the light's textures only while it draws: let go of them until the next build.
+    releaseSpectralBinsTexture(this);
+    releaseSpectralTransformTexture(this);
     this.lastBuildMs = performance.now() - started;
     this.builds++;
     this.key = key;

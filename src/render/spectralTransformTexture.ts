@@ -14,7 +14,15 @@ import { SharedTextures } from './sharedTextures.ts';
 const WIDTH = 2048;
 const ROWS = Math.ceil(SPECTRAL_TRANSFORM_COUNT / WIDTH);
 
-const shared = new SharedTextures((key) => {
+/**
+ * The texels of the last light asked for (0.85 MB): the table pass lets go of its texture after
+ * each build, and the next build for the same light (an index changed) then uploads them again
+ * instead of computing them again.
+ */
+let last: { readonly key: string; readonly data: Float32Array } | null = null;
+
+function texels(key: string): Float32Array {
+  if (last?.key === key) return last.data;
   const { illuminant, normalization } = JSON.parse(key) as { illuminant: IlluminantSpec; normalization: Normalization };
   const { values, count } = spectralTransform(spectralWeights(illuminant, normalization));
   // Rows 0 .. ROWS-1: Re H (x, y, z); rows ROWS .. 2 ROWS-1: Im H, entry i at (i mod WIDTH, i div WIDTH).
@@ -23,6 +31,12 @@ const shared = new SharedTextures((key) => {
     data.set([values[6 * i]!, values[6 * i + 1]!, values[6 * i + 2]!, 0], 4 * i);
     data.set([values[6 * i + 3]!, values[6 * i + 4]!, values[6 * i + 5]!, 0], 4 * (i + WIDTH * ROWS));
   }
+  last = { key, data };
+  return data;
+}
+
+const shared = new SharedTextures((key) => {
+  const data = texels(key);
   const texture = new DataTexture(data, WIDTH, 2 * ROWS, RGBAFormat, FloatType);
   texture.minFilter = texture.magFilter = NearestFilter;
   texture.needsUpdate = true;

@@ -6,12 +6,13 @@ import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
 import { type Xyz, filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/render/filmQuality.ts';
+import { MODES } from '../../src/render/filmSettings.ts';
 import { type DeltaStats, deltaStats } from './harness/deltaStats.ts';
 import type { ParityGroup, ParityMode } from './harness/parityCase.ts';
 import { mulberry32 } from '../seededRandom.ts';
 
 /**
- * Shader parity as numbers (STYLE.md §7): the real GLSL (shaders/filmColor.glsl, both FILM_MODEs)
+ * Shader parity as numbers: the real GLSL (shaders/filmColor.glsl, every mode of MODES)
  * renders film XYZ into a float target (tests/e2e/harness/parity.ts); the float64 reference
  * (src/physics/spectralIntegration.ts filmXyz, adaptive and converged) computes the same cases;
  * they are compared by ΔE00 under the case's illuminant white.
@@ -117,7 +118,7 @@ test.afterAll(() => {
   writeFileSync(new URL('./parity-figures.json', import.meta.url), `${JSON.stringify(results, null, 2)}\n`);
 });
 
-for (const mode of ['exact', 'table'] as const) {
+for (const mode of MODES) {
   test(`${mode} mode matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°`, async ({ page }) => {
     const groups = fixedDomain();
     const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
