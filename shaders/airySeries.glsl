@@ -64,23 +64,21 @@ float airySeriesTailScale(AirySeriesTerms t) {
   return length(t.b) / max(1.0 - length(t.q), 1e-7);
 }
 
-// Whether AIRY_SERIES_MAX_ORDERS terms reach the tolerance or the end of F's table. They do not
-// for high-finesse thin films near grazing incidence (|q| -> 1), which callers integrate by bins.
-bool airySeriesConverges(FilmOptics o) {
+// Whether AIRY_SERIES_MAX_ORDERS terms reach the tolerance or the end of F's table at path x. They
+// do not for high-finesse thin films near grazing incidence (|q| -> 1): callers integrate those by bins.
+bool airySeriesConvergesAt(AirySeriesTerms t[FILM_CHANNELS], float x) {
   float orders = float(AIRY_SERIES_MAX_ORDERS);
-  if (o.opticalPathNm.x * orders >= float(SPECTRAL_TRANSFORM_STEP_NM) * float(SPECTRAL_TRANSFORM_COUNT - 1)) return true;
+  if (x * orders >= float(SPECTRAL_TRANSFORM_STEP_NM) * float(SPECTRAL_TRANSFORM_COUNT - 1)) return true;
   for (int c = 0; c < FILM_CHANNELS; c++) {
-    AirySeriesTerms t = airySeriesTerms(o.channels[c]);
-    float scale = airySeriesTailScale(t);
-    float rho = length(t.q);
+    float scale = airySeriesTailScale(t[c]);
+    float rho = length(t[c].q);
     if (scale >= AIRY_SERIES_TOLERANCE && (rho >= 1.0 || (orders - 1.0) * log(rho) > log(AIRY_SERIES_TOLERANCE / scale))) return false;
   }
   return true;
 }
 
-vec3 airySeriesXyz(FilmOptics o) {
-  float x = o.opticalPathNm.x;
-  AirySeriesTerms t[FILM_CHANNELS];
+// X_j = C0 W_j + 2 Re(B sum q^(m-1) F_j(m x)), averaged over the channels.
+vec3 airySeriesSum(AirySeriesTerms t[FILM_CHANNELS], float x) {
   vec3 sumRe[FILM_CHANNELS];
   vec3 sumIm[FILM_CHANNELS];
   vec2 power[FILM_CHANNELS];
@@ -88,7 +86,6 @@ vec3 airySeriesXyz(FilmOptics o) {
   float rho[FILM_CHANNELS];
   float leftScale[FILM_CHANNELS];
   for (int c = 0; c < FILM_CHANNELS; c++) {
-    t[c] = airySeriesTerms(o.channels[c]);
     sumRe[c] = vec3(0.0);
     sumIm[c] = vec3(0.0);
     power[c] = vec2(1.0, 0.0);
@@ -117,6 +114,22 @@ vec3 airySeriesXyz(FilmOptics o) {
   vec3 xyz = vec3(0.0);
   for (int c = 0; c < FILM_CHANNELS; c++) xyz += t[c].c0 * white + 2.0 * (t[c].b.x * sumRe[c] - t[c].b.y * sumIm[c]);
   return xyz / float(FILM_CHANNELS);
+}
+
+void airySeriesTermsOf(FilmOptics o, out AirySeriesTerms t[FILM_CHANNELS]) {
+  for (int c = 0; c < FILM_CHANNELS; c++) t[c] = airySeriesTerms(o.channels[c]);
+}
+
+bool airySeriesConverges(FilmOptics o) {
+  AirySeriesTerms t[FILM_CHANNELS];
+  airySeriesTermsOf(o, t);
+  return airySeriesConvergesAt(t, o.opticalPathNm.x);
+}
+
+vec3 airySeriesXyz(FilmOptics o) {
+  AirySeriesTerms t[FILM_CHANNELS];
+  airySeriesTermsOf(o, t);
+  return airySeriesSum(t, o.opticalPathNm.x);
 }
 
 #endif

@@ -3,7 +3,9 @@
 // (media swapped: the far wall of the bubble). Texel positions: filmTableLayout.glsl.
 // Filled by TABLE_FILL: 0 the binned integral, each texel averaged over its thickness cell so
 // fringes finer than a cell do not alias; 1 the Airy series (airySeries.glsl) at the texel's film,
-// or the bins where the series has no real path or needs too many terms.
+// or the bins where the series has no real path or needs too many terms. The series' C0, B, q
+// depend on the row only: uAirySeriesRows holds them per row (src/render/airySeriesRows.ts,
+// computed in float64), so a texel only sums the series.
 // Built by src/render/filmTable.ts.
 #include "spectralIntegration.glsl"
 #include "airySeries.glsl"
@@ -14,6 +16,24 @@ uniform float uNFilm;
 uniform float uNInside;
 uniform float uTableMaxThicknessNm;
 
+#if TABLE_FILL == 1
+// Row y, texels 0-2: C0, B, q of channel 0, then of channel 1, then the path per nm of thickness
+// (2 n_b cos θ_r) and 1 where it is real (0: an evanescent film, no series).
+uniform sampler2D uAirySeriesRows;
+
+bool rowSeries(int y, out AirySeriesTerms t[FILM_CHANNELS], out float pathPerNm) {
+  vec4 a = texelFetch(uAirySeriesRows, ivec2(0, y), 0);
+  vec4 b = texelFetch(uAirySeriesRows, ivec2(1, y), 0);
+  vec4 c = texelFetch(uAirySeriesRows, ivec2(2, y), 0);
+  t[0] = AirySeriesTerms(a.x, a.yz, vec2(a.w, b.x));
+#if FILM_CHANNELS == 2
+  t[1] = AirySeriesTerms(b.y, b.zw, c.xy);
+#endif
+  pathPerNm = c.z;
+  return c.w == 1.0;
+}
+#endif
+
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   bool fromInside = texel.y >= FILM_TABLE_ROWS;
@@ -22,15 +42,18 @@ void main() {
   float thicknessNm = filmTableThicknessNm(u, uTableMaxThicknessNm);
   float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
   float cosIncidence = filmTableCosIncidence(float(row) / float(FILM_TABLE_ROWS - 1));
-  float na = fromInside ? uNInside : uNOutside;
-  float nc = fromInside ? uNOutside : uNInside;
-  FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
 #if TABLE_FILL == 1
-  if (o.opticalPathNm.y == 0.0 && airySeriesConverges(o)) {
-    gl_FragColor = vec4(airySeriesXyz(o), 1.0);
+  AirySeriesTerms terms[FILM_CHANNELS];
+  float pathPerNm;
+  // Thickness 0 is the bare interface (filmOptics), as in the reference.
+  if (thicknessNm > 0.0 && rowSeries(texel.y, terms, pathPerNm) && airySeriesConvergesAt(terms, pathPerNm * thicknessNm)) {
+    gl_FragColor = vec4(airySeriesSum(terms, pathPerNm * thicknessNm), 1.0);
     return;
   }
 #endif
+  float na = fromInside ? uNInside : uNOutside;
+  float nc = fromInside ? uNOutside : uNInside;
+  FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   // Phase half-width of a cell at λ: 2π · 2 n_b cos θ_r · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).
   float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : 2.0 * uNFilm * refractedCos(uNFilm, na, cosIncidence).x;
   gl_FragColor = vec4(binnedXyz(o, 3.141592653589793 * perNmPath * cellNm), 1.0);

@@ -1,4 +1,5 @@
 import {
+  type DataTexture,
   FloatType,
   HalfFloatType,
   LinearFilter,
@@ -11,6 +12,7 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { type FilmQuality } from './filmQuality.ts';
 import { type FilmSettings, maxFieldThicknessNm } from './filmSettings.ts';
 import { filmTableLayoutDefines, filmTableWidth } from './filmTableLayout.ts';
@@ -49,6 +51,7 @@ export class FilmTable {
     uniforms: {
       uSpectralBins: { value: null },
       uSpectralTransform: { value: null },
+      uAirySeriesRows: { value: null },
       uNOutside: { value: 1 },
       uNFilm: { value: 1.33 },
       uNInside: { value: 1 },
@@ -58,12 +61,15 @@ export class FilmTable {
     vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
     fragmentShader: shaderSource('filmTable.glsl'),
   });
+  /** The series' terms per row, from the reference (src/render/airySeriesRows.ts). */
+  private readonly rows: DataTexture;
   maxThicknessNm = 1;
   /** Milliseconds the last rebuild took (synced with a 1-pixel read), and how many there were: for the benchmark. */
   lastBuildMs = 0;
   builds = 0;
 
   constructor(private readonly quality: FilmQuality) {
+    this.rows = airySeriesRowsTexture(quality.table);
     this.target = new WebGLRenderTarget(1, 2 * quality.table.rows, {
       format: RGBAFormat,
       minFilter: LinearFilter,
@@ -95,6 +101,9 @@ export class FilmTable {
     const material = this.material(s);
     material.uniforms.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
     material.uniforms.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
+    airySeriesRows(s, this.quality.table, this.rows.image.data as Float32Array);
+    this.rows.needsUpdate = true;
+    material.uniforms.uAirySeriesRows!.value = this.rows;
     material.uniforms.uNOutside!.value = s.nOutside;
     material.uniforms.uNFilm!.value = s.nFilm;
     material.uniforms.uNInside!.value = s.nInside;
@@ -134,6 +143,7 @@ export class FilmTable {
     this.target.dispose();
     this.quad.geometry.dispose();
     this.pass.dispose();
+    this.rows.dispose();
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);
   }

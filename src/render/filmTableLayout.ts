@@ -31,6 +31,9 @@ export function filmTableWidth(l: FilmTableLayout, maxThicknessNm: number): numb
   return Math.min(l.width, 64 * Math.max(1, Math.ceil(wanted / 64)));
 }
 
+/** cos θ_i of the table's row `row` of `l.rows` (twin of filmTableCosIncidence in the GLSL). */
+export const filmTableCosIncidence = (l: FilmTableLayout, row: number): number => (row / (l.rows - 1)) ** l.cosPower;
+
 /** The defines shaders/filmTableLayout.glsl reads (its width is a uniform: it follows the thickness range). */
 export const filmTableLayoutDefines = (l: FilmTableLayout): Record<string, number> => ({
   FILM_TABLE_ROWS: l.rows,
