@@ -11,7 +11,7 @@ import { chromiumLaunchOptions } from './chromium.ts';
 import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './bench/errorGrids.ts';
 import { FRAME_BUDGET_MS, FRAMES, SIZES, runRow, warmUp } from './bench/browserRows.ts';
 import { buildAndMeasure, ELEMENT_BUNDLE } from './bench/bundleSize.ts';
-import { demoPageFigures } from './bench/demoPage.ts';
+import { PANEL_CHANGES, demoPageFigures } from './bench/demoPage.ts';
 import { referenceSpeed, referenceSpeedMarkdown } from './bench/referenceSpeed.ts';
 import { ROWS } from './bench/rows.ts';
 import { rowsMarkdown } from './bench/rowsMarkdown.ts';
@@ -68,6 +68,8 @@ console.log(`
 | frames drawn / tables built in 1 s: still (\`animate=0\`) | ${demo.still.frames} / ${demo.still.tableBuilds} |
 | … swirl animating | ${demo.animating.frames} / ${demo.animating.tableBuilds} |
 | … canvas hidden (display: none) | ${demo.canvasHidden.frames} / ${demo.canvasHidden.tableBuilds} |
-| … page hidden | ${demo.pageHidden.frames} / ${demo.pageHidden.tableBuilds} |`);
+| … page hidden | ${demo.pageHidden.frames} / ${demo.pageHidden.tableBuilds} |
+| frame while the swirl animates (1280×720, median) | ${demo.frameMs.toFixed(0)} ms |
+${PANEL_CHANGES.map(([name], i) => `| panel: ${name} → next frame (median of 6) | ${demo.panelChangeMs[i]!.toFixed(0)} ms (${(demo.panelChangeMs[i]! / demo.frameMs).toFixed(1)}× the frame) |`).join('\n')}`);
 writeFileSync('bench-results.json', JSON.stringify({ reference, rows, bundle, demo, seconds: (performance.now() - started) / 1000 }, null, 2));
 log('done; bench-results.json written');

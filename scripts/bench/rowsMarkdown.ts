@@ -23,7 +23,7 @@ export function rowsMarkdown(
       return `${ms(f.medianMs)} (${ratio.toFixed(2)}×)${f.count < how.frames ? ` [${f.count}]` : ''}`;
     });
     const table = r.tableBuildMs === null ? '—' : ms(r.tableBuildMs);
-    const change = `${r.changeToFrameMs.map(ms).join(' / ')} (${(Math.max(...r.changeToFrameMs) / r.frames[0]!.medianMs).toFixed(1)}×)`;
+    const change = r === floor ? '—' : `${r.changeToFrameMs.map(ms).join(' / ')} (${(Math.max(...r.changeToFrameMs) / r.frames[0]!.medianMs).toFixed(1)}×)`;
     return [r.name, ...frames, table, change, String(r.rebuildsWhileAnimating), ms(r.firstFrameMs), stats(r.errors?.[0]), stats(r.errors?.[1])];
   });
   return [
