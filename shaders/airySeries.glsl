@@ -18,6 +18,10 @@
 #ifndef AIRY_SERIES_TOLERANCE
 #define AIRY_SERIES_TOLERANCE 1e-5
 #endif
+// 1: the series cut at AIRY_SERIES_MAX_ORDERS as peers do (the benchmark's m <= 2, m <= 3 rows).
+#ifndef AIRY_SERIES_TRUNCATED
+#define AIRY_SERIES_TRUNCATED 0
+#endif
 
 uniform sampler2D uSpectralTransform;
 

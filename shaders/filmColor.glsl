@@ -27,9 +27,10 @@ uniform float uTableMaxThicknessNm;
 vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   // Texel centres sit at the ends of the ranges (BROWSER.md: otherwise visibly off).
   vec2 uv = filmTableUv(thicknessNm, cosIncidence, uTableMaxThicknessNm);
-  vec2 size = vec2(uFilmTableWidth, float(2 * FILM_TABLE_ROWS));
-  float rowOffset = fromInside ? float(FILM_TABLE_ROWS) : 0.0;
-  vec2 texel = vec2(uv.x * (uFilmTableWidth - 1.0), rowOffset + uv.y * float(FILM_TABLE_ROWS - 1)) + 0.5;
+  // The grid may fill only the texture's lower left corner (a coarse table, FilmTable).
+  vec2 size = vec2(textureSize(uFilmTable, 0));
+  float rowOffset = fromInside ? uFilmTableRows : 0.0;
+  vec2 texel = vec2(uv.x * (uFilmTableWidth - 1.0), rowOffset + uv.y * (uFilmTableRows - 1.0)) + 0.5;
   return texture(uFilmTable, texel / size).xyz;
 }
 #elif FILM_MODE == 2
@@ -40,7 +41,7 @@ vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
   FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
-  return o.opticalPathNm.y == 0.0 && airySeriesConverges(o) ? airySeriesXyz(o) : binnedXyz(o, 0.0);
+  return o.opticalPathNm.y == 0.0 && (AIRY_SERIES_TRUNCATED == 1 || airySeriesConverges(o)) ? airySeriesXyz(o) : binnedXyz(o, 0.0);
 }
 #else
 #define USE_IRIDESCENCE

@@ -1,4 +1,4 @@
-// The table of film XYZ over (thickness, cos θ_i), uFilmTableWidth x 2 * FILM_TABLE_ROWS texels:
+// The table of film XYZ over (thickness, cos θ_i), uFilmTableWidth x 2 uFilmTableRows texels:
 // the lower half for light arriving from outside (n_a = uNOutside), the upper half from inside
 // (media swapped: the far wall of the bubble). Texel positions: filmTableLayout.glsl.
 // Filled by TABLE_FILL: 0 the binned integral, each texel averaged over its thickness cell so
@@ -36,12 +36,13 @@ bool rowSeries(int y, out AirySeriesTerms t[FILM_CHANNELS], out float pathPerNm)
 
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
-  bool fromInside = texel.y >= FILM_TABLE_ROWS;
-  int row = fromInside ? texel.y - FILM_TABLE_ROWS : texel.y;
+  int rows = int(uFilmTableRows);
+  bool fromInside = texel.y >= rows;
+  int row = fromInside ? texel.y - rows : texel.y;
   float u = float(texel.x) / (uFilmTableWidth - 1.0);
   float thicknessNm = filmTableThicknessNm(u, uTableMaxThicknessNm);
   float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
-  float cosIncidence = filmTableCosIncidence(float(row) / float(FILM_TABLE_ROWS - 1));
+  float cosIncidence = filmTableCosIncidence(float(row) / (uFilmTableRows - 1.0));
 #if TABLE_FILL == 1
   AirySeriesTerms terms[FILM_CHANNELS];
   float pathPerNm;

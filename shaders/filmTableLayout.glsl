@@ -1,12 +1,15 @@
 // Where (thickness, cos θ_i) sit in the film table: one mapping for the table pass (filmTable.glsl)
 // and the lookup (filmColor.glsl). u, v in [0, 1] run from the first to the last texel centre:
 //   d = max · u^FILM_TABLE_THICKNESS_POWER,   cos θ_i = v^FILM_TABLE_COS_POWER.
-// Powers above 1 spend texels on thin films and grazing light. Rows and powers (defines) come
-// from src/render/filmTableLayout.ts; the width, uFilmTableWidth texels, follows the thickness range.
+// Powers above 1 spend texels on thin films and grazing light. The powers (defines) come from
+// src/render/filmTableLayout.ts; the grid (uniforms) from src/render/filmTable.ts.
 #ifndef THIN_FILM_TABLE_LAYOUT
 #define THIN_FILM_TABLE_LAYOUT
 
+// The grid the table holds now (FilmTable may hold a coarse one for a frame): texels along
+// thickness and rows per half.
 uniform float uFilmTableWidth;
+uniform float uFilmTableRows;
 
 float filmTableThicknessNm(float u, float maxThicknessNm) {
   return maxThicknessNm * pow(u, float(FILM_TABLE_THICKNESS_POWER));

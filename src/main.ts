@@ -38,7 +38,9 @@ function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement): void {
     controls: 'page',
     plots,
     onChange: followInUrl,
-    onFrame: () => (document.body.dataset.frames = 'ready'),
+    onFrame: (complete) => {
+      if (complete) document.body.dataset.frames = 'ready';
+    },
   });
   app.renderNow();
   Object.assign(window, { bubbleView: view, bubbleApp: app });

@@ -12,8 +12,10 @@ export interface DemoPageFigures {
   readonly animating: FrameCounts;
   readonly canvasHidden: FrameCounts;
   readonly pageHidden: FrameCounts;
-  /** per change of PANEL_CHANGES: panel input → the next frame drawn (plots included) and read back, median ms */
+  /** per change of PANEL_CHANGES: panel input → the next frame drawn and read back, median ms */
   readonly panelChangeMs: readonly number[];
+  /** … → the first frame that shows the change in full (not from a coarse table), median ms */
+  readonly panelChangeFullMs: readonly number[];
   /** the default view's median frame time while the swirl animates, for the ratio */
   readonly frameMs: number;
 }
@@ -29,26 +31,33 @@ export const PANEL_CHANGES = [
 /**
  * Each change through the lil-gui panel (a number box's input event, or a list's change event),
  * three times there and back, timed from the event to the end of the next frame the app draws
- * (renderNow: the table if due, the bubble, the plots), synced by a 1-pixel read.
+ * (the table if due, coarse first, the bubble), synced by a 1-pixel read; and to the end of the
+ * first frame drawn in full, plots included.
  */
-async function panelChanges(page: Page): Promise<{ panelChangeMs: number[]; frameMs: number }> {
+async function panelChanges(page: Page): Promise<{ panelChangeMs: number[]; panelChangeFullMs: number[]; frameMs: number }> {
   return page.evaluate(async (changes) => {
-    type App = { renderNow(): void };
-    const app = (window as unknown as { bubbleApp: App }).bubbleApp;
+    type View = { render(quick?: boolean): void; coarse: boolean };
+    const view = (window as unknown as { bubbleView: View }).bubbleView;
     const gl = document.querySelector<HTMLCanvasElement>('#bubble')!.getContext('webgl2')!;
     const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
-    const nextFrame = (act: () => void) =>
-      new Promise<number>((resolve) => {
-        const draw = app.renderNow;
+    const afterFrame = () => new Promise((resolve) => setTimeout(resolve, 0)); // the plots follow a complete frame in the same task
+    /** [ms to the next frame, ms to the first complete frame] after `act`. */
+    const nextFrames = (act: () => void) =>
+      new Promise<[number, number]>((resolve) => {
+        const render = view.render;
         const started = performance.now();
-        app.renderNow = () => {
-          draw.call(app);
+        let first = 0;
+        view.render = (quick?: boolean) => {
+          render.call(view, quick);
           gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
-          app.renderNow = draw;
-          resolve(performance.now() - started);
+          first ||= performance.now() - started;
+          if (view.coarse) return;
+          view.render = render;
+          void afterFrame().then(() => resolve([first, performance.now() - started]));
         };
         act();
       });
+    const nextFrame = async (act: () => void) => (await nextFrames(act))[0];
     const controller = (name: string) =>
       [...document.querySelectorAll<HTMLElement>('.lil-controller')].find((c) => c.querySelector('.lil-name')!.textContent === name)!;
     const set = (name: string, value: string) => () => {
@@ -66,15 +75,17 @@ async function panelChanges(page: Page): Promise<{ panelChangeMs: number[]; fram
     const frames: number[] = [];
     for (let i = 0; i < 9; i++) frames.push(await nextFrame(() => {}));
     const panelChangeMs: number[] = [];
+    const panelChangeFullMs: number[] = [];
     for (const [name, value, back] of changes) {
-      const times: number[] = [];
+      const times: [number, number][] = [];
       for (let i = 0; i < 3; i++) {
-        times.push(await nextFrame(set(name, value)));
-        times.push(await nextFrame(set(name, back)));
+        times.push(await nextFrames(set(name, value)));
+        times.push(await nextFrames(set(name, back)));
       }
-      panelChangeMs.push(median(times));
+      panelChangeMs.push(median(times.map((t) => t[0])));
+      panelChangeFullMs.push(median(times.map((t) => t[1])));
     }
-    return { panelChangeMs, frameMs: median(frames) };
+    return { panelChangeMs, panelChangeFullMs, frameMs: median(frames) };
   }, PANEL_CHANGES);
 }
 export interface FrameCounts {
@@ -120,7 +131,7 @@ export async function demoPageFigures(browser: Browser, baseUrl: string): Promis
   await still.page.close();
   const { page, firstFrameMs } = await open(browser, `${baseUrl}/`);
   const animating = await countOneSecond(page);
-  const { panelChangeMs, frameMs } = await panelChanges(page);
+  const { panelChangeMs, panelChangeFullMs, frameMs } = await panelChanges(page);
   await page.evaluate(() => (document.querySelector<HTMLCanvasElement>('#bubble')!.style.display = 'none'));
   const canvasHidden = await countOneSecond(page);
   await page.evaluate(() => {
@@ -130,5 +141,5 @@ export async function demoPageFigures(browser: Browser, baseUrl: string): Promis
   });
   const pageHidden = await countOneSecond(page);
   await page.close();
-  return { firstFrameMs, still: stillCounts, animating, canvasHidden, pageHidden, panelChangeMs, frameMs };
+  return { firstFrameMs, still: stillCounts, animating, canvasHidden, pageHidden, panelChangeMs, panelChangeFullMs, frameMs };
 }

@@ -73,6 +73,7 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
       uFilmTable: { value: null },
       uTableMaxThicknessNm: { value: 1 },
       uFilmTableWidth: { value: 1 },
+      uFilmTableRows: { value: 1 },
       uNOutside: { value: 1 },
       uNFilm: { value: 1.33 },
       uNInside: { value: 1 },

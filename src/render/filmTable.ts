@@ -36,14 +36,24 @@ export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['
   return precision === 'auto' && e.has('EXT_color_buffer_float') && e.has('OES_texture_float_linear') ? FloatType : HalfFloatType;
 }
 
+/** A coarse table has this many times fewer texels along each side than the full one. */
+const COARSE_DIVISOR = 4;
+
 /**
  * The `table` method: a GPU pass running shaders/filmTable.glsl fills a float texture with the
  * film's XYZ over (thickness 0..max, cos θ_i 0..1), for light from outside and from inside, laid
  * out as `quality.table` says. It is rebuilt only when `tableKey` changes.
+ *
+ * A `quick` update (the app's frames after a change) fills only a coarse grid, 1/16 of the
+ * texels, in the texture's lower left corner, so the next frame shows the change at once; the
+ * next update, quick or not, fills the full grid. Without `quick` (the first table, tests,
+ * screenshots) the full grid is built at once.
  */
 export class FilmTable {
   private readonly target: WebGLRenderTarget;
-  private key = '';
+  /** What the texture holds: the settings' tableKey ('' for nothing) and whether on the coarse grid. */
+  private shown = { key: '', coarse: false };
+  private grid = { width: 1, rows: 1 };
   private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly quad = new Mesh(new PlaneGeometry(2, 2));
   /** The table pass; its defines follow the polarisation (the old program is freed on a change). */
@@ -57,6 +67,7 @@ export class FilmTable {
       uNInside: { value: 1 },
       uTableMaxThicknessNm: { value: 1 },
       uFilmTableWidth: { value: 1 },
+      uFilmTableRows: { value: 1 },
     },
     vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
     fragmentShader: shaderSource('filmTable.glsl'),
@@ -64,7 +75,7 @@ export class FilmTable {
   /** The series' terms per row, from the reference (src/render/airySeriesRows.ts). */
   private readonly rows: DataTexture;
   maxThicknessNm = 1;
-  /** Milliseconds the last rebuild took (synced with a 1-pixel read), and how many there were: for the benchmark. */
+  /** Milliseconds the last full build took (synced with a 1-pixel read), and how many there were: for the benchmark. */
   lastBuildMs = 0;
   builds = 0;
 
@@ -78,37 +89,60 @@ export class FilmTable {
     });
   }
 
+  /** Whether the texture holds a coarse table: another update will make it full. */
+  get coarse(): boolean {
+    return this.shown.coarse;
+  }
+
   /** Points a material that looks the table up (shaders/filmColor.glsl, table mode) at it. */
   bind(uniforms: ShaderMaterial['uniforms']): void {
     uniforms.uFilmTable!.value = this.target.texture;
     uniforms.uTableMaxThicknessNm!.value = this.maxThicknessNm;
-    uniforms.uFilmTableWidth!.value = this.target.width;
+    uniforms.uFilmTableWidth!.value = this.grid.width;
+    uniforms.uFilmTableRows!.value = this.grid.rows;
   }
 
-  /** Rebuilds the table if a parameter it depends on changed; returns whether it did. */
-  update(renderer: WebGLRenderer, s: FilmSettings): boolean {
+  /** Brings the table up to date with the settings (coarsely at first if `quick`); returns whether it drew. */
+  update(renderer: WebGLRenderer, s: FilmSettings, quick = false): boolean {
     const key = tableKey(s);
-    if (key === this.key) return false;
+    if (key === this.shown.key && !this.shown.coarse) return false;
+    const coarse = quick && this.shown.key !== '' && key !== this.shown.key;
     const started = performance.now();
+    const layout = this.quality.table;
+    this.maxThicknessNm = maxFieldThicknessNm(s);
+    const full = { width: filmTableWidth(layout, this.maxThicknessNm), rows: layout.rows };
+    this.grid = coarse ? { width: Math.max(2, Math.ceil(full.width / COARSE_DIVISOR)), rows: Math.ceil(full.rows / COARSE_DIVISOR) } : full;
+    this.draw(renderer, s, full);
+    this.shown = { key, coarse };
+    if (!coarse) {
+      this.lastBuildMs = performance.now() - started;
+      this.builds++;
+    }
+    return true;
+  }
+
+  /** Runs the pass over the grid (the lower left corner of the texture, sized for `full`, if coarse). */
+  private draw(renderer: WebGLRenderer, s: FilmSettings, full: { width: number; rows: number }): void {
     const type = tableTexelType(renderer, this.quality.tablePrecision);
     if (this.target.texture.type !== type) {
       this.target.dispose(); // reallocated at the new type on the next render
       this.target.texture.type = type;
     }
-    this.maxThicknessNm = maxFieldThicknessNm(s);
-    const width = filmTableWidth(this.quality.table, this.maxThicknessNm);
-    if (this.target.width !== width) this.target.setSize(width, 2 * this.quality.table.rows);
+    if (this.target.width !== full.width) this.target.setSize(full.width, 2 * full.rows);
+    this.target.viewport.set(0, 0, this.grid.width, 2 * this.grid.rows);
     const material = this.material(s);
-    material.uniforms.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
-    material.uniforms.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
-    airySeriesRows(s, this.quality.table, this.rows.image.data as Float32Array);
+    const u = material.uniforms;
+    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
+    u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
+    airySeriesRows(s, { ...this.quality.table, rows: this.grid.rows }, this.rows.image.data as Float32Array);
     this.rows.needsUpdate = true;
-    material.uniforms.uAirySeriesRows!.value = this.rows;
-    material.uniforms.uNOutside!.value = s.nOutside;
-    material.uniforms.uNFilm!.value = s.nFilm;
-    material.uniforms.uNInside!.value = s.nInside;
-    material.uniforms.uTableMaxThicknessNm!.value = this.maxThicknessNm;
-    material.uniforms.uFilmTableWidth!.value = width;
+    u.uAirySeriesRows!.value = this.rows;
+    u.uNOutside!.value = s.nOutside;
+    u.uNFilm!.value = s.nFilm;
+    u.uNInside!.value = s.nInside;
+    u.uTableMaxThicknessNm!.value = this.maxThicknessNm;
+    u.uFilmTableWidth!.value = this.grid.width;
+    u.uFilmTableRows!.value = this.grid.rows;
     this.quad.material = material;
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(this.target);
@@ -118,15 +152,11 @@ export class FilmTable {
     // The pass reads the light's textures only while it draws: let go of them until the next build.
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);
-    this.lastBuildMs = performance.now() - started;
-    this.builds++;
-    this.key = key;
-    return true;
   }
 
   /** Forces a rebuild on the next update (after a lost context). */
   invalidate(): void {
-    this.key = '';
+    this.shown = { key: '', coarse: false };
   }
 
   private material(s: FilmSettings): ShaderMaterial {

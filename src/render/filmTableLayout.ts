@@ -34,9 +34,8 @@ export function filmTableWidth(l: FilmTableLayout, maxThicknessNm: number): numb
 /** cos θ_i of the table's row `row` of `l.rows` (twin of filmTableCosIncidence in the GLSL). */
 export const filmTableCosIncidence = (l: FilmTableLayout, row: number): number => (row / (l.rows - 1)) ** l.cosPower;
 
-/** The defines shaders/filmTableLayout.glsl reads (its width is a uniform: it follows the thickness range). */
+/** The defines shaders/filmTableLayout.glsl reads (its grid is uniforms: the width follows the thickness range, and a coarse table has fewer texels). */
 export const filmTableLayoutDefines = (l: FilmTableLayout): Record<string, number> => ({
-  FILM_TABLE_ROWS: l.rows,
   FILM_TABLE_THICKNESS_POWER: l.thicknessPower,
   FILM_TABLE_COS_POWER: l.cosPower,
   TABLE_FILL: l.fill === 'series' ? 1 : 0,

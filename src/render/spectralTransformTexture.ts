@@ -62,4 +62,6 @@ export const airySeriesDefines = (maxOrders = AIRY_SERIES_MAX_ORDERS): Record<st
   SPECTRAL_TRANSFORM_CARRIER_PER_NM,
   AIRY_SERIES_MAX_ORDERS: maxOrders,
   AIRY_SERIES_TOLERANCE,
+  // A peer's truncation is the series cut short, with no fallback to bins where it needs more terms.
+  AIRY_SERIES_TRUNCATED: maxOrders < AIRY_SERIES_MAX_ORDERS ? 1 : 0,
 });

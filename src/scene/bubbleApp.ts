@@ -20,8 +20,8 @@ export interface BubbleAppParts {
   readonly plots?: HTMLElement;
   /** Called when the panel or a click changes the settings. */
   readonly onChange?: (s: FilmSettings) => void;
-  /** Called after every frame. */
-  readonly onFrame?: () => void;
+  /** Called after every frame; `complete` is false for a frame drawn from a coarse table (another follows). */
+  readonly onFrame?: (complete: boolean) => void;
 }
 
 /**
@@ -101,12 +101,19 @@ export class BubbleApp {
     this.wake();
   }
 
-  /** Draws a frame now (tests and screenshots), whatever the scheduling. */
+  /** Draws a complete frame now (tests and screenshots), whatever the scheduling. */
   renderNow(): void {
-    this.parts.view.render();
+    this.draw(false);
+  }
+
+  /** One frame; `quick`: from a coarse table if the table must be rebuilt (the plots wait for the full one). */
+  private draw(quick: boolean): void {
+    const view = this.parts.view;
+    view.render(quick);
     this.parts.present?.();
-    this.updatePlots(performance.now());
-    this.parts.onFrame?.();
+    const complete = !view.coarse;
+    if (complete) this.updatePlots(performance.now());
+    this.parts.onFrame?.(complete);
   }
 
   dispose(): void {
@@ -174,8 +181,8 @@ export class BubbleApp {
     } else {
       this.looping = false;
     }
-    this.renderNow();
-    if (this.looping) this.requestFrame();
+    this.draw(true);
+    if (this.looping || this.parts.view.coarse) this.requestFrame();
   }
 
   private updatePlots(now: number): void {

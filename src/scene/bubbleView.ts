@@ -95,10 +95,15 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     updateBubbleUniforms(this.bubble.material, s, this.quality, s.mode === 'table' ? this.table : null, this.displayIsP3);
   }
 
-  /** Rebuilds the table if a parameter it depends on changed since it was drawn (once per frame at most). */
-  private syncTable(): void {
-    if (this.settings.mode !== 'table' || !this.table.update(this.renderer, this.settings)) return;
+  /** Rebuilds the table if a parameter it depends on changed since it was drawn (coarsely first if `quick`). */
+  private syncTable(quick = false): void {
+    if (this.settings.mode !== 'table' || !this.table.update(this.renderer, this.settings, quick)) return;
     this.table.bind(this.bubble.material.uniforms);
+  }
+
+  /** Whether the last frame was drawn from a coarse table (FilmTable): the next one will be full. */
+  get coarse(): boolean {
+    return this.settings.mode === 'table' && this.table.coarse;
   }
 
   /** Whether the renderer's WebGL context is lost (nothing can be drawn or read until it is restored). */
@@ -113,15 +118,19 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     this.camera.updateProjectionMatrix();
   }
 
-  /** Draws one frame into the renderer's canvas, sized to this view first. */
-  render(): void {
+  /**
+   * Draws one frame into the renderer's canvas, sized to this view first. `quick` (the app's
+   * frames): a table that has to be rebuilt is drawn coarsely first, so a change shows in the next
+   * frame; the frame after completes it.
+   */
+  render(quick = false): void {
     const { width, height, pixelRatio } = this.size;
     const r = this.renderer;
     if (r.getPixelRatio() !== pixelRatio) r.setPixelRatio(pixelRatio);
     const drawn = r.getSize(SIZE);
     if (drawn.x !== width || drawn.y !== height) r.setSize(width, height, false);
     if (this.contextLost) return;
-    this.syncTable();
+    this.syncTable(quick);
     r.render(this.scene, this.camera);
   }
 

@@ -61,6 +61,7 @@ export class FilmXyzProbe {
         uFilmTable: { value: null },
         uTableMaxThicknessNm: { value: 1 },
         uFilmTableWidth: { value: 1 },
+        uFilmTableRows: { value: 1 },
       },
       vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
       fragmentShader: FRAGMENT,
