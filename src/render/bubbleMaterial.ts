@@ -39,11 +39,15 @@ export function updateFilmColorTextures(m: ShaderMaterial, s: FilmColorSettings 
   const u = m.uniforms;
   const binned = s.mode === 'exact' || s.mode === 'fourier';
   if (binned) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins, m);
-  else releaseSpectralBinsTexture(m);
+  else {
+    releaseSpectralBinsTexture(m);
+    u.uSpectralBins!.value = null;
+  }
   if (s.mode === 'fourier') u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, m);
-  else releaseSpectralTransformTexture(m);
-  if (!binned) u.uSpectralBins!.value = null;
-  if (s.mode !== 'fourier') u.uSpectralTransform!.value = null;
+  else {
+    releaseSpectralTransformTexture(m);
+    u.uSpectralTransform!.value = null;
+  }
 }
 
 /** Frees what a film-colour material holds (call before disposing it). */
