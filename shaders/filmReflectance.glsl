@@ -1,6 +1,8 @@
 // Film reflectance by the Airy sum, eqs (1)-(14), and its closed-form mean over a phase window.
 // Mirrors src/physics/filmReflectance.ts. Defines:
 //   POLARIZATION  0 unpolarized (R_s + R_p)/2 | 1 paper (eqs 4, 8: amplitudes averaged) | 2 s | 3 p
+//   POLARIZATION_UNIFORM  1: the polarisation is the uniform uPolarization (same codes) and there are
+//     always two channels (a single polarisation twice): one program for every polarisation.
 #ifndef THIN_FILM_REFLECTANCE
 #define THIN_FILM_REFLECTANCE
 #include "complex.glsl"
@@ -10,10 +12,13 @@
 #ifndef POLARIZATION
 #define POLARIZATION 0
 #endif
-#if POLARIZATION == 0
+#if POLARIZATION == 0 || defined(POLARIZATION_UNIFORM)
 #define FILM_CHANNELS 2
 #else
 #define FILM_CHANNELS 1
+#endif
+#ifdef POLARIZATION_UNIFORM
+uniform int uPolarization;
 #endif
 
 // The λ-independent factors of eq (13) for one channel:
@@ -41,7 +46,9 @@ AiryTerms airyTerms(InterfaceCoefficients ab, InterfaceCoefficients ba, Interfac
 }
 
 int channelKind(int i) {
-#if POLARIZATION == 0
+#ifdef POLARIZATION_UNIFORM
+  return uPolarization == 0 ? i : (uPolarization == 1 ? 2 : uPolarization - 2);
+#elif POLARIZATION == 0
   return i;
 #elif POLARIZATION == 1
   return 2;

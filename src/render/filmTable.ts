@@ -56,12 +56,13 @@ export class FilmTable {
   private grid = { width: 1, rows: 1 };
   private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly quad = new Mesh(new PlaneGeometry(2, 2));
-  /** The table pass; its defines follow the polarisation (the old program is freed on a change). */
+  /** The table pass: one program for every polarisation (a uniform), so changing it compiles nothing. */
   private readonly pass = new ShaderMaterial({
     uniforms: {
       uSpectralBins: { value: null },
       uSpectralTransform: { value: null },
       uAirySeriesRows: { value: null },
+      uPolarization: { value: 0 },
       uNOutside: { value: 1 },
       uNFilm: { value: 1.33 },
       uNInside: { value: 1 },
@@ -130,13 +131,14 @@ export class FilmTable {
     }
     if (this.target.width !== full.width) this.target.setSize(full.width, 2 * full.rows);
     this.target.viewport.set(0, 0, this.grid.width, 2 * this.grid.rows);
-    const material = this.material(s);
+    const material = this.material();
     const u = material.uniforms;
     u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
     airySeriesRows(s, { ...this.quality.table, rows: this.grid.rows }, this.rows.image.data as Float32Array);
     this.rows.needsUpdate = true;
     u.uAirySeriesRows!.value = this.rows;
+    u.uPolarization!.value = POLARIZATIONS.indexOf(s.polarization);
     u.uNOutside!.value = s.nOutside;
     u.uNFilm!.value = s.nFilm;
     u.uNInside!.value = s.nInside;
@@ -159,9 +161,9 @@ export class FilmTable {
     this.shown = { key: '', coarse: false };
   }
 
-  private material(s: FilmSettings): ShaderMaterial {
+  private material(): ShaderMaterial {
     setDefines(this.pass, {
-      POLARIZATION: POLARIZATIONS.indexOf(s.polarization),
+      POLARIZATION_UNIFORM: 1,
       ...spectralBinDefines(this.quality.table.spectralBins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),
       ...airySeriesDefines(),
