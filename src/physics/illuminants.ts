@@ -58,7 +58,7 @@ export function daylightWeights(cctK: number): { m1: number; m2: number } {
 }
 
 /** Linear interpolation in a table sampled every `stepNm` from `startNm` (CIE's rule for daylight). */
-export function interpolateTable(table: readonly number[], startNm: number, stepNm: number, lambdaNm: number): number {
+export function interpolateTable(table: ArrayLike<number>, startNm: number, stepNm: number, lambdaNm: number): number {
   const u = (lambdaNm - startNm) / stepNm;
   const i = Math.min(Math.max(Math.floor(u), 0), table.length - 2);
   const f = u - i;

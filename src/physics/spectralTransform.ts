@@ -1,4 +1,5 @@
 import FFT from 'fft.js';
+import { interpolateTable } from './illuminants.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type SpectralWeights } from './spectralIntegration.ts';
 
 /**
@@ -37,14 +38,6 @@ export const SPECTRAL_TRANSFORM_CARRIER_PER_NM = (SIGMA_MIN + SIGMA_MAX) / 2;
 
 let fft: FFT | null = null;
 
-/** w at λ, linear between the 1 nm knots (as the reference integrates it). */
-function weightAt(t: Float64Array, lambdaNm: number): number {
-  const u = lambdaNm - LAMBDA_MIN_NM;
-  const i = Math.min(Math.max(Math.floor(u), 0), t.length - 2);
-  const f = u - i;
-  return (t[i] as number) * (1 - f) + (t[i + 1] as number) * f;
-}
-
 /**
  * F_j for a light's weights. With σ = 1/λ, dλ = dσ/σ², F_j(x) = ∫ v_j(σ) e^{i2πxσ} dσ,
  * v_j(σ) = w_j(1/σ)/σ²; the trapezoid rule on BAND_SAMPLES equal steps of σ makes every x_k = kΔx
@@ -60,7 +53,8 @@ export function spectralTransform(w: SpectralWeights): SpectralTransform {
     for (let j = 0; j <= BAND_SAMPLES; j++) {
       const sigma = SIGMA_MIN + j * D_SIGMA;
       const trapezoid = j === 0 || j === BAND_SAMPLES ? 0.5 : 1;
-      input[j] = (trapezoid * D_SIGMA * weightAt(t, 1 / sigma)) / (sigma * sigma);
+      // w linear between its 1 nm knots, as the reference integrates it.
+      input[j] = (trapezoid * D_SIGMA * interpolateTable(t, LAMBDA_MIN_NM, 1, 1 / sigma)) / (sigma * sigma);
     }
     fft!.realTransform(out, input);
     for (let k = 0; k < count; k++) {
