@@ -5,6 +5,9 @@
 // rows 0 .. SPECTRAL_TRANSFORM_ROWS-1 hold Re H (xyz), the next SPECTRAL_TRANSFORM_ROWS rows Im H.
 // Domain: a real optical path (not an evanescent film). Mirrors src/physics/airySeries.ts; the
 // derivation is in docs/physics.md.
+// airySeriesConvergesAt and airySeriesSum take the terms, computed once by the caller (per
+// fragment from the optics, or per table row from uAirySeriesRows); their TypeScript twins,
+// airySeriesConverges and airySeriesXyz, take the optics.
 #ifndef THIN_FILM_AIRY_SERIES
 #define THIN_FILM_AIRY_SERIES
 #include "filmReflectance.glsl"
@@ -122,18 +125,6 @@ vec3 airySeriesSum(AirySeriesTerms t[FILM_CHANNELS], float x) {
 
 void airySeriesTermsOf(FilmOptics o, out AirySeriesTerms t[FILM_CHANNELS]) {
   for (int c = 0; c < FILM_CHANNELS; c++) t[c] = airySeriesTerms(o.channels[c]);
-}
-
-bool airySeriesConverges(FilmOptics o) {
-  AirySeriesTerms t[FILM_CHANNELS];
-  airySeriesTermsOf(o, t);
-  return airySeriesConvergesAt(t, o.opticalPathNm.x);
-}
-
-vec3 airySeriesXyz(FilmOptics o) {
-  AirySeriesTerms t[FILM_CHANNELS];
-  airySeriesTermsOf(o, t);
-  return airySeriesSum(t, o.opticalPathNm.x);
 }
 
 #endif

@@ -41,7 +41,10 @@ vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
   FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
-  return o.opticalPathNm.y == 0.0 && (AIRY_SERIES_TRUNCATED == 1 || airySeriesConverges(o)) ? airySeriesXyz(o) : binnedXyz(o, 0.0);
+  AirySeriesTerms t[FILM_CHANNELS];
+  airySeriesTermsOf(o, t);
+  float x = o.opticalPathNm.x;
+  return o.opticalPathNm.y == 0.0 && (AIRY_SERIES_TRUNCATED == 1 || airySeriesConvergesAt(t, x)) ? airySeriesSum(t, x) : binnedXyz(o, 0.0);
 }
 #else
 #define USE_IRIDESCENCE
