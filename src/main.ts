@@ -1,8 +1,8 @@
-import { type FilmSettings } from './render/filmSettings.ts';
-import { BubbleApp } from './scene/bubbleApp.ts';
+import { BubbleApp } from './app/bubbleApp.ts';
+import { hasWebGL2, showCpuFallback } from './app/cpuFallback.ts';
+import { parseSettings, settingsToQuery } from './app/settingsQuery.ts';
+import type { ViewSettings } from './app/viewParameters.ts';
 import { BubbleView, createBubbleRenderer } from './scene/bubbleView.ts';
-import { hasWebGL2, showCpuFallback } from './scene/cpuFallback.ts';
-import { parseSettings, settingsToQuery } from './scene/params.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 const messages = document.querySelector<HTMLElement>('#messages');
@@ -19,7 +19,7 @@ errors.forEach(say);
 
 // The URL follows the controls without a history entry per slider step.
 let urlTimer = 0;
-function followInUrl(s: FilmSettings) {
+function followInUrl(s: ViewSettings) {
   clearTimeout(urlTimer);
   urlTimer = window.setTimeout(() => {
     const query = settingsToQuery({ ...s, timeSeconds: s.animate ? 0 : s.timeSeconds });
@@ -41,7 +41,7 @@ function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement): void {
     onFrame: (complete) => {
       if (complete) document.body.dataset.frames = 'ready';
     },
-  });
+  }, settings);
   app.renderNow();
   Object.assign(window, { bubbleView: view, bubbleApp: app });
 }

@@ -5,8 +5,8 @@
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
 import { type Xyz, filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
-import { type DeltaStats, deltaStats } from '../../tests/e2e/harness/deltaStats.ts';
-import type { ParityGroup } from '../../tests/e2e/harness/parityCase.ts';
+import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
+import type { ParityGroup } from '../../src/render/parityCase.ts';
 
 const SOAP = { nOutside: 1, nFilm: 1.33, nInside: 1, illuminant: 'D65', polarization: 'unpolarized', normalization: 'white' } as const;
 const range = (n: number, f: (i: number) => number) => Array.from({ length: n }, (_, i) => f(i));

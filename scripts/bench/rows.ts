@@ -5,7 +5,8 @@
  * unless its settings say otherwise.
  */
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/render/filmQuality.ts';
-import { DEFAULT_SETTINGS, type FilmSettings } from '../../src/render/filmSettings.ts';
+import { DEFAULT_SETTINGS } from '../../src/render/filmParameters.ts';
+import type { FilmSettings } from '../../src/render/filmSettings.ts';
 import type { FilmTableLayout } from '../../src/render/filmTableLayout.ts';
 
 export interface BenchRow {

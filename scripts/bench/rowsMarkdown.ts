@@ -1,5 +1,5 @@
 /** The benchmark's main table, as Markdown. */
-import type { DeltaStats } from '../../tests/e2e/harness/deltaStats.ts';
+import type { DeltaStats } from '../../src/physics/deltaStats.ts';
 import type { BenchRowResult } from './benchRow.ts';
 
 export interface MeasuredRow extends Omit<BenchRowResult, 'xyz'> {

@@ -1,18 +1,10 @@
-import { ParameterError } from '../physics/validate.ts';
+import { ParameterError, shorten } from '../physics/validate.ts';
 
 /**
  * How bad input becomes an error. Every message is one line of the form
  * "<field>: <value> is not allowed; expected <what is allowed>", with the value written as JSON
  * (so a newline in it cannot break the line) and cut short when long.
  */
-
-/** How many characters of a bad value an error message repeats before cutting it short. */
-export const MAX_ECHOED_CHARS = 40;
-
-/** `text` cut to `max` characters, saying how long it was when cut. */
-export function shorten(text: string, max = MAX_ECHOED_CHARS): string {
-  return text.length <= max ? text : `${text.slice(0, max)}… (${text.length} characters)`;
-}
 
 /** A file path as it appears in an error message: quoted, cut only when absurd. */
 export const describePath = (path: string): string => shorten(JSON.stringify(path), 200);

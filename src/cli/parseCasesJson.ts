@@ -1,6 +1,7 @@
 import { ParameterError } from '../physics/validate.ts';
 import { CASE_FIELDS, type CaseField, type ColorCase, type RawCase, isValidId, validateColorCase } from './colorCase.ts';
-import { describePath, describeValue, rejectValue, shorten } from './inputErrors.ts';
+import { shorten } from '../physics/validate.ts';
+import { describePath, describeValue, rejectValue } from './inputErrors.ts';
 
 /** More cases than this in one file is a mistake, not a workload. */
 export const MAX_CASES = 100_000;

@@ -1,9 +1,9 @@
 import { addPlotStyles } from '../plots/plotStyles.ts';
-import { DEFAULT_SETTINGS, type FilmSettings } from '../render/filmSettings.ts';
-import { BubbleApp } from '../scene/bubbleApp.ts';
+import { BubbleApp } from '../app/bubbleApp.ts';
+import { hasWebGL2, showCpuFallback } from '../app/cpuFallback.ts';
+import { parseSettings, settingsToQuery } from '../app/settingsQuery.ts';
+import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../app/viewParameters.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
-import { hasWebGL2, showCpuFallback } from '../scene/cpuFallback.ts';
-import { PARAMETERS, parseSettings, settingsToQuery } from '../scene/params.ts';
 import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
 
 const STYLE = `
@@ -34,7 +34,7 @@ function addElementStyles(doc: Document): void {
  * Events: `change` (detail: { settings, query }) when its panel or a click changes the view.
  */
 export class ThinFilmBubble extends HTMLElement {
-  static readonly observedAttributes = [...Object.keys(PARAMETERS), 'controls', 'plots'];
+  static readonly observedAttributes = [...VIEW_PARAMETERS.map((row) => row.attribute), 'controls', 'plots'];
   private app: BubbleApp | null = null;
   private canvas: HTMLCanvasElement | null = null;
   private messages: HTMLElement | null = null;
@@ -52,7 +52,7 @@ export class ThinFilmBubble extends HTMLElement {
   }
 
   /** The settings shown now (null before the element is on a page). */
-  get settings(): FilmSettings | null {
+  get settings(): ViewSettings | null {
     return this.app?.current ?? null;
   }
 
@@ -75,7 +75,7 @@ export class ThinFilmBubble extends HTMLElement {
     if (plots) layout.append(plots);
     this.replaceChildren(layout);
 
-    const settings = this.readAttributes(DEFAULT_SETTINGS);
+    const settings = this.readAttributes(DEFAULT_VIEW_SETTINGS);
     if (!hasWebGL2()) {
       // The page still teaches: a message and a still image computed on the CPU.
       showCpuFallback(this.canvas, settings, () => (this.dataset.frames = 'fallback'));
@@ -101,7 +101,7 @@ export class ThinFilmBubble extends HTMLElement {
       onChange: (s) => {
         this.dispatchEvent(new CustomEvent('change', { detail: { settings: s, query: settingsToQuery(s) } }));
       },
-    });
+    }, settings);
   }
 
   disconnectedCallback(): void {
@@ -123,15 +123,15 @@ export class ThinFilmBubble extends HTMLElement {
       return;
     }
     // A removed attribute goes back to its default; otherwise the panel's changes are kept.
-    this.app.set(this.readAttributes(value === null ? DEFAULT_SETTINGS : this.app.current), true);
+    this.app.set(this.readAttributes(value === null ? DEFAULT_VIEW_SETTINGS : this.app.current), true);
   }
 
   /** The settings the attributes ask for; a bad one is reported and `base`'s value kept. */
-  private readAttributes(base: FilmSettings): FilmSettings {
+  private readAttributes(base: ViewSettings): ViewSettings {
     const query = new URLSearchParams();
-    for (const name of Object.keys(PARAMETERS)) {
-      const value = this.getAttribute(name);
-      if (value !== null) query.set(name, value);
+    for (const row of VIEW_PARAMETERS) {
+      const value = this.getAttribute(row.attribute);
+      if (value !== null) query.set(row.url, value);
     }
     const { settings, errors } = parseSettings(query.toString(), base);
     this.messages?.replaceChildren(

@@ -6,7 +6,7 @@ import {
   CIE_DAYLIGHT_START_NM,
   CIE_DAYLIGHT_STEP_NM,
 } from './data/cieDaylightComponents.ts';
-import { ParameterError, assertInRange } from './validate.ts';
+import { type NumberDomain, ParameterError, assertInRange } from './validate.ts';
 
 /**
  * Incident spectra I_in(λ) for eq (15).
@@ -25,6 +25,9 @@ export type IlluminantSpec = NamedIlluminant | { readonly daylightCct: number };
 
 export const DAYLIGHT_CCT_MIN_K = 4000;
 export const DAYLIGHT_CCT_MAX_K = 25000;
+export const DAYLIGHT_CCT_DOMAIN_K: NumberDomain = { min: DAYLIGHT_CCT_MIN_K, max: DAYLIGHT_CCT_MAX_K, unit: 'K' };
+/** What an illuminant may be, as every message (URL, element, CLI, this module) states it. */
+export const ILLUMINANT_EXPECTED = `one of ${NAMED_ILLUMINANTS.join(', ')} or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`;
 /** The c2 correction between the nominal and the current temperature scale. */
 export const C2_CORRECTION = 1.4388 / 1.438;
 const NOMINAL_CCT: Record<'D55' | 'D65' | 'D93', number> = { D55: 5500, D65: 6500, D93: 9300 };
@@ -70,7 +73,9 @@ export function illuminantSpd(spec: IlluminantSpec): (lambdaNm: number) => numbe
   if (spec === 'E') return () => 1;
   if (spec === 'D65-table') return (l) => interpolateTable(CIE_D65, CIE_D65_START_NM, CIE_D65_STEP_NM, l);
   const cct = daylightCctOf(spec);
-  if (cct === null) throw new ParameterError("illuminant", `illuminant: ${JSON.stringify(spec)} is not allowed; expected one of ${NAMED_ILLUMINANTS.join(", ")} or { daylightCct: ${DAYLIGHT_CCT_MIN_K}–${DAYLIGHT_CCT_MAX_K} }`);
+  if (cct === null) {
+    throw new ParameterError('illuminant', `illuminant: ${JSON.stringify(spec)} is not allowed; expected ${ILLUMINANT_EXPECTED}`);
+  }
   const { m1, m2 } = daylightWeights(cct);
   const at = (t: readonly number[], l: number) => interpolateTable(t, CIE_DAYLIGHT_START_NM, CIE_DAYLIGHT_STEP_NM, l);
   return (l) => at(CIE_DAYLIGHT_S0, l) + m1 * at(CIE_DAYLIGHT_S1, l) + m2 * at(CIE_DAYLIGHT_S2, l);

@@ -12,6 +12,14 @@ export class ParameterError extends RangeError {
   }
 }
 
+/** How many characters of a bad value a message repeats before cutting it short (URL, element, CLI). */
+export const MAX_ECHOED_CHARS = 40;
+
+/** `text` cut to `max` characters, saying how long it was when cut. */
+export function shorten(text: string, max = MAX_ECHOED_CHARS): string {
+  return text.length <= max ? text : `${text.slice(0, max)}… (${text.length} characters)`;
+}
+
 /** A closed interval of allowed numbers, with its unit for messages ('' for none). */
 export interface NumberDomain {
   readonly min: number;

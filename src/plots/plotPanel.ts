@@ -59,10 +59,13 @@ export class PlotPanel {
     this.element.append(readout, this.spectrum, legend, this.chromaticity, this.strip);
   }
 
-  /** Redraws for new settings and a new reading (null: the probe is off the bubble). */
-  update(s: FilmSettings, reading: ProbeReading | null, displayIsP3: boolean): void {
+  /**
+   * Redraws for new settings and a new reading at `probe` (fractions of the view; a null reading:
+   * the probe is off the bubble).
+   */
+  update(s: FilmSettings, probe: readonly [number, number], reading: ProbeReading | null, displayIsP3: boolean): void {
     const show = (f: (typeof FIELDS)[number], text: string) => (this.values.get(f)!.textContent = text);
-    this.element.dataset.probe = `${s.probe.join(',')} ${reading ? 'bubble' : 'miss'}`;
+    this.element.dataset.probe = `${probe.join(',')} ${reading ? 'bubble' : 'miss'}`;
     if (!reading) {
       for (const f of FIELDS) show(f, '—');
       show('thickness', 'off the bubble');

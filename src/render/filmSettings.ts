@@ -15,7 +15,7 @@ export const FIELDS = ['uniform', 'drainage', 'swirl'] as const;
 export const SIDES = ['both', 'front'] as const;
 export const ENVIRONMENTS = ['sky', 'none'] as const;
 
-/** Everything a rendered bubble depends on. Ranges are in `src/scene/params.ts`. */
+/** Everything a rendered bubble depends on. Ranges and defaults: `filmParameters.ts`. */
 export interface FilmSettings {
   readonly nOutside: number;
   readonly nFilm: number;
@@ -32,33 +32,8 @@ export interface FilmSettings {
   readonly sides: (typeof SIDES)[number];
   readonly env: (typeof ENVIRONMENTS)[number];
   readonly exposure: number;
-  readonly animate: boolean;
   readonly timeSeconds: number;
-  /** Where the plots probe the view: fractions of its width and height from the top left. */
-  readonly probe: readonly [number, number];
 }
-
-/** The default view: a swirling soap bubble in daylight. */
-export const DEFAULT_SETTINGS: FilmSettings = {
-  nOutside: 1,
-  nFilm: 1.33,
-  nInside: 1,
-  illuminant: 'D65',
-  polarization: 'unpolarized',
-  normalization: 'white',
-  space: 'srgb',
-  mode: 'table',
-  field: 'swirl',
-  thicknessNm: 550,
-  thicknessRangeNm: 800,
-  swirlSpeed: 0.4,
-  sides: 'both',
-  env: 'sky',
-  exposure: 1,
-  animate: true,
-  timeSeconds: 0,
-  probe: [0.5, 0.5],
-};
 
 /** The largest thickness the field reaches, which the table must cover (the field is clamped to the domain's 20 µm). */
 export function maxFieldThicknessNm(s: Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm'>): number {

@@ -7,8 +7,8 @@ import { cosDeg } from '../../src/physics/snell.ts';
 import { type Xyz, filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/render/filmQuality.ts';
 import { MODES } from '../../src/render/filmSettings.ts';
-import { type DeltaStats, deltaStats } from './harness/deltaStats.ts';
-import type { ParityGroup, ParityMode } from './harness/parityCase.ts';
+import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
+import type { ParityGroup, ParityMode } from '../../src/render/parityCase.ts';
 import { mulberry32 } from '../seededRandom.ts';
 
 /**

@@ -5,7 +5,7 @@ import { POLARIZATIONS, filmOptics } from '../../src/physics/filmReflectance.ts'
 import { type Xyz, binnedXyz, filmXyz, spectralBins, spectralWeights, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { DEFAULT_FILM_QUALITY } from '../../src/render/filmQuality.ts';
 import { MODES } from '../../src/render/filmSettings.ts';
-import type { ParityGroup, ParityMode } from './harness/parityCase.ts';
+import type { ParityGroup, ParityMode } from '../../src/render/parityCase.ts';
 
 /**
  * The shader under numerical stress (issue 6 §2), through the float-target harness

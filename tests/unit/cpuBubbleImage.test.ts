@@ -2,14 +2,15 @@ import { describe, expect, it } from 'vitest';
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } from '../../src/physics/colorConversions.ts';
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
-import { DEFAULT_SETTINGS, type FilmSettings } from '../../src/render/filmSettings.ts';
+import { DEFAULT_SETTINGS } from '../../src/render/filmParameters.ts';
+import type { FilmSettings } from '../../src/render/filmSettings.ts';
 import { cpuBubbleImage } from '../../src/scene/cpuBubbleImage.ts';
 
 /** The image uses the shader's binned integral (ΔE00 ≤ 0.11 from the reference): one 8-bit code. */
 const MAX_CODE_DIFFERENCE = 1;
 const SIZE = 240;
 const film = (over: Partial<FilmSettings>): FilmSettings => ({
-  ...DEFAULT_SETTINGS, field: 'uniform', env: 'none', sides: 'front', animate: false, ...over,
+  ...DEFAULT_SETTINGS, field: 'uniform', env: 'none', sides: 'front', ...over,
 });
 const pixel = (image: Uint8ClampedArray, col: number, row: number) => [...image.slice(4 * (row * SIZE + col), 4 * (row * SIZE + col) + 4)];
 

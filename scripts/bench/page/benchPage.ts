@@ -5,7 +5,7 @@
  */
 import { DataTexture, Mesh, MeshBasicMaterial, RGBAFormat, SRGBColorSpace, WebGLRenderer } from 'three';
 import { BubbleView, createBubbleRenderer } from '../../../src/scene/bubbleView.ts';
-import { FilmXyzProbe } from '../../../tests/e2e/harness/filmXyzProbe.ts';
+import { FilmXyzProbe } from '../../../src/render/filmXyzProbe.ts';
 import { type BenchRowSpec, CHANGES } from '../benchRow.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');

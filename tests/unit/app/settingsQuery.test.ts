@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_SETTINGS } from '../../src/render/filmSettings.ts';
-import { MAX_ECHOED_CHARS, PARAMETERS, parseSettings, settingsToQuery } from '../../src/scene/params.ts';
-import { ABSURDLY_LONG, NOT_NUMBERS, notNames, outsideRange } from './fixtures/badValues.ts';
+import { parseSettings, settingsToQuery } from '../../../src/app/settingsQuery.ts';
+import { DEFAULT_VIEW_SETTINGS as DEFAULT_SETTINGS, VIEW_PARAMETERS } from '../../../src/app/viewParameters.ts';
+import { MAX_ECHOED_CHARS } from '../../../src/physics/validate.ts';
+import { ABSURDLY_LONG, NOT_NUMBERS, notNames, outsideRange } from '../fixtures/badValues.ts';
 
 describe('URL parameters', () => {
   it('reads every documented parameter', () => {
@@ -67,7 +68,7 @@ describe('URL parameters', () => {
   ];
 
   it('the table of bad values covers every parameter', () => {
-    expect(new Set(rows.map(([name]) => name))).toEqual(new Set(Object.keys(PARAMETERS)));
+    expect(new Set(rows.map(([name]) => name))).toEqual(new Set(VIEW_PARAMETERS.map((row) => row.url)));
   });
 
   it.each(rows)('refuses %s=%s, names the parameter and %s, keeps the default', (name, value, range) => {

@@ -17,11 +17,11 @@ import {
   WebGLRenderTarget,
   type WebGLRenderer,
 } from 'three';
-import { filmColorDefines, updateFilmColorTextures } from '../../../src/render/bubbleMaterial.ts';
-import { type FilmQuality } from '../../../src/render/filmQuality.ts';
-import { DEFAULT_SETTINGS } from '../../../src/render/filmSettings.ts';
-import { FilmTable } from '../../../src/render/filmTable.ts';
-import { shaderSource } from '../../../src/render/shaderSource.ts';
+import { filmColorDefines, updateFilmColorTextures } from './bubbleMaterial.ts';
+import { type FilmQuality } from './filmQuality.ts';
+import { DEFAULT_SETTINGS } from './filmParameters.ts';
+import { FilmTable } from './filmTable.ts';
+import { shaderSource } from './shaderSource.ts';
 import type { ParityGroup, ParityMode } from './parityCase.ts';
 
 const FRAGMENT = `${shaderSource('filmColor.glsl')}

@@ -1,5 +1,5 @@
-import type { FilmQuality } from '../../../src/render/filmQuality.ts';
-import type { FilmSettings } from '../../../src/render/filmSettings.ts';
+import type { FilmQuality } from './filmQuality.ts';
+import type { FilmSettings } from './filmSettings.ts';
 
 /**
  * What the parity harness and its spec share. A group holds the cases that differ only in

@@ -1,5 +1,5 @@
 import type { FilmSettings } from '../render/filmSettings.ts';
-import { cpuBubbleImage } from './cpuBubbleImage.ts';
+import { cpuBubbleImage } from '../scene/cpuBubbleImage.ts';
 
 /** The still image's size in pixels (square; shown scaled to fit). */
 export const FALLBACK_IMAGE_PX = 240;

@@ -1,9 +1,9 @@
 import type GUI from 'lil-gui';
 import type { WebGLRenderer } from 'three';
 import { PlotPanel } from '../plots/plotPanel.ts';
-import type { FilmSettings } from '../render/filmSettings.ts';
-import type { BubbleView } from './bubbleView.ts';
+import type { BubbleView } from '../scene/bubbleView.ts';
 import { createControlPanel } from './controlPanel.ts';
+import type { AppSettings, ViewSettings } from './viewParameters.ts';
 
 /** While the swirl animates, the plots follow the probed film this often. */
 const PLOT_INTERVAL_MS = 250;
@@ -19,7 +19,7 @@ export interface BubbleAppParts {
   /** Where the plots go, if any. */
   readonly plots?: HTMLElement;
   /** Called when the panel or a click changes the settings. */
-  readonly onChange?: (s: FilmSettings) => void;
+  readonly onChange?: (s: ViewSettings) => void;
   /** Called after every frame; `complete` is false for a frame drawn from a coarse table (another follows). */
   readonly onFrame?: (complete: boolean) => void;
 }
@@ -42,7 +42,14 @@ export class BubbleApp {
   /** A ring over the bubble where the probe is (only with plots). */
   private readonly marker: HTMLElement | null;
 
-  constructor(private readonly parts: BubbleAppParts) {
+  /** The page's own settings (the view holds the film's). */
+  private app: AppSettings;
+
+  constructor(
+    private readonly parts: BubbleAppParts,
+    initial: AppSettings,
+  ) {
+    this.app = { animate: initial.animate, probe: initial.probe };
     this.panel = parts.plots ? new PlotPanel(parts.surface.ownerDocument) : null;
     if (this.panel) parts.plots!.append(this.panel.element);
     this.marker = this.panel ? parts.surface.ownerDocument.createElement('div') : null;
@@ -79,8 +86,8 @@ export class BubbleApp {
     this.fit();
   }
 
-  get current(): FilmSettings {
-    return this.parts.view.current;
+  get current(): ViewSettings {
+    return { ...this.parts.view.current, ...this.app };
   }
 
   get renderer(): WebGLRenderer {
@@ -88,8 +95,10 @@ export class BubbleApp {
   }
 
   /** Shows new (validated) settings; the panel follows when `rebuildControls`. */
-  set(s: FilmSettings, rebuildControls = false): void {
-    this.parts.view.apply(s);
+  set(s: ViewSettings, rebuildControls = false): void {
+    const { animate, probe, ...film } = s;
+    this.app = { animate, probe };
+    this.parts.view.apply(film);
     this.plotsDue = true;
     if (rebuildControls) this.buildControls();
     this.requestFrame();
@@ -126,9 +135,9 @@ export class BubbleApp {
     this.parts.view.dispose();
   }
 
-  /** The settings shown: the view holds them. */
-  private get settings(): FilmSettings {
-    return this.parts.view.current;
+  /** The settings shown. */
+  private get settings(): ViewSettings {
+    return this.current;
   }
 
   private get showing(): boolean {
@@ -139,7 +148,7 @@ export class BubbleApp {
     return this.settings.animate && this.settings.field === 'swirl';
   }
 
-  private change(s: FilmSettings): void {
+  private change(s: ViewSettings): void {
     this.set({ ...s, timeSeconds: this.settings.timeSeconds });
     this.parts.onChange?.(this.settings);
   }
@@ -177,7 +186,7 @@ export class BubbleApp {
     if (this.animating) {
       if (!this.looping) this.clockOrigin = now - this.settings.timeSeconds * 1000;
       this.looping = true;
-      this.parts.view.apply({ ...this.settings, timeSeconds: (now - this.clockOrigin) / 1000 });
+      this.parts.view.apply({ ...this.parts.view.current, timeSeconds: (now - this.clockOrigin) / 1000 });
     } else {
       this.looping = false;
     }
@@ -190,7 +199,7 @@ export class BubbleApp {
     const [fx, fy] = this.settings.probe;
     const { offsetLeft, offsetTop, clientWidth, clientHeight } = this.parts.surface;
     Object.assign(this.marker!.style, { left: `${offsetLeft + fx * clientWidth}px`, top: `${offsetTop + fy * clientHeight}px` });
-    this.panel.update(this.settings, this.parts.view.probe(fx, fy), this.parts.view.displayIsP3);
+    this.panel.update(this.settings, this.settings.probe, this.parts.view.probe(fx, fy), this.parts.view.displayIsP3);
     this.plotsDue = false;
     this.lastPlotMs = now;
   }

@@ -1,0 +1,41 @@
+import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from './viewParameters.ts';
+import { shorten } from '../physics/validate.ts';
+
+/** Longer values are refused outright (a mangled link, not a number). */
+export const MAX_VALUE_LENGTH = 64;
+
+/** The schema's rows by URL name (own keys only: `?constructor=` must not reach Object.prototype). */
+const BY_URL = new Map(VIEW_PARAMETERS.map((row) => [row.url, row]));
+
+export interface ParsedSettings {
+  readonly settings: ViewSettings;
+  /** One line per refused parameter, naming it and its allowed range; its default was kept. */
+  readonly errors: readonly string[];
+}
+
+/**
+ * Reads settings from a query string. A bad value (or one longer than MAX_VALUE_LENGTH) is
+ * reported and never used: the setting keeps its value from `base`, or from an earlier good
+ * occurrence of the same parameter. Unknown names belong to others (the embedding page) and are skipped.
+ */
+export function parseSettings(query: string, base: ViewSettings = DEFAULT_VIEW_SETTINGS): ParsedSettings {
+  let settings = base;
+  const errors: string[] = [];
+  for (const [name, raw] of new URLSearchParams(query)) {
+    const row = BY_URL.get(name);
+    if (!row) continue;
+    const read = raw.length > MAX_VALUE_LENGTH ? null : row.read(raw);
+    if (read) settings = { ...settings, ...read };
+    else {
+      const tooLong = raw.length > MAX_VALUE_LENGTH ? ` of at most ${MAX_VALUE_LENGTH} characters` : '';
+      errors.push(`${name}=${shorten(JSON.stringify(raw))} ignored: expected ${row.expected}${tooLong}`);
+    }
+  }
+  return { settings, errors };
+}
+
+/** The query string that `parseSettings` turns back into these settings (defaults left out). */
+export function settingsToQuery(s: ViewSettings): string {
+  const pairs = VIEW_PARAMETERS.map((row) => [row.url, row.write(s), row.defaultText] as const);
+  return new URLSearchParams(pairs.filter(([, v, d]) => v !== d).map(([k, v]) => [k, v])).toString();
+}

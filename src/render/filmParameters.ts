@@ -1,0 +1,33 @@
+import { FILM_STACK_DOMAIN, POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { NORMALIZATIONS } from '../physics/spectralIntegration.ts';
+import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES } from './filmSettings.ts';
+import { type ParameterRow, choiceRow, defaultsOf, illuminantRow, numberRow } from './parameterRow.ts';
+
+type Row = ParameterRow<FilmSettings>;
+
+/**
+ * The schema of what a rendered bubble depends on: one row per parameter, with its names (URL,
+ * attribute, colour-tool flag), domain or choices, default (the default view: a swirling soap
+ * bubble in daylight), label and panel control. The film's own domains are FILM_STACK_DOMAIN's.
+ */
+export const FILM_PARAMETERS: readonly Row[] = [
+  choiceRow({ key: 'field', url: 'field', label: 'thickness field' }, FIELDS, 'swirl', 'film'),
+  numberRow({ key: 'thicknessNm', url: 'thickness', cli: 'thickness', label: 'thickness (nm)' }, FILM_STACK_DOMAIN.thicknessNm, 550, 'film', 1),
+  numberRow({ key: 'thicknessRangeNm', url: 'thicknessRange', label: 'range (nm)' }, FILM_STACK_DOMAIN.thicknessNm, 800, 'film', 1),
+  numberRow({ key: 'swirlSpeed', url: 'speed', label: 'swirl speed' }, { min: 0, max: 10, unit: '' }, 0.4, 'film', 0.05),
+  numberRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film', label: 'n film' }, FILM_STACK_DOMAIN.nFilm, 1.33, 'film', 0.01),
+  numberRow({ key: 'nOutside', url: 'nOutside', cli: 'n-outside', label: 'n outside' }, FILM_STACK_DOMAIN.nOutside, 1, 'film', 0.01),
+  numberRow({ key: 'nInside', url: 'nInside', cli: 'n-inside', label: 'n inside' }, FILM_STACK_DOMAIN.nInside, 1, 'film', 0.01),
+  illuminantRow({ key: 'illuminant', url: 'illuminant', cli: 'illuminant', label: 'illuminant' }, 'D65', 'light and colour'),
+  choiceRow({ key: 'polarization', url: 'polarization', cli: 'polarization', label: 'polarization' }, POLARIZATIONS, 'unpolarized', 'light and colour'),
+  choiceRow({ key: 'normalization', url: 'normalization', cli: 'normalization', label: 'normalization' }, NORMALIZATIONS, 'white', 'light and colour'),
+  choiceRow({ key: 'space', url: 'space', label: 'colour space' }, SPACES, 'srgb', 'light and colour'),
+  numberRow({ key: 'exposure', url: 'exposure', label: 'exposure' }, { min: 0, max: 100, unit: '' }, 1, 'light and colour', 0.01),
+  choiceRow({ key: 'mode', url: 'mode', label: 'evaluation' }, MODES, 'table', 'view'),
+  choiceRow({ key: 'env', url: 'env', label: 'environment' }, ENVIRONMENTS, 'sky', 'view'),
+  choiceRow({ key: 'sides', url: 'sides', label: 'sides' }, SIDES, 'both', 'view'),
+  numberRow({ key: 'timeSeconds', url: 'time', label: 'time (s)' }, { min: 0, max: 1e6, unit: 's' }, 0, null),
+];
+
+/** The default view. */
+export const DEFAULT_SETTINGS: FilmSettings = defaultsOf(FILM_PARAMETERS);

@@ -1,0 +1,132 @@
+import { ILLUMINANT_EXPECTED, DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
+import { type NumberDomain, expectedNumber, isInDomain, parseDecimal } from '../physics/validate.ts';
+
+/** Where a parameter sits in the control panel, and how it is shown there. */
+export type PanelControl =
+  | { readonly folder: PanelFolder; readonly kind: 'slider'; readonly min: number; readonly max: number; readonly step: number }
+  | { readonly folder: PanelFolder; readonly kind: 'choice'; readonly choices: readonly string[] }
+  | { readonly folder: PanelFolder; readonly kind: 'toggle' }
+  /** A named illuminant or a daylight CCT: a list of names plus a CCT slider. */
+  | { readonly folder: PanelFolder; readonly kind: 'illuminant' };
+
+export const PANEL_FOLDERS = ['film', 'light and colour', 'view'] as const;
+export type PanelFolder = (typeof PANEL_FOLDERS)[number];
+
+/**
+ * One user-facing parameter of a settings object `S`: one row of the schema from which the URL
+ * parser and printer, the element's attributes, the control panel and the command lines' usage
+ * are derived.
+ */
+export interface ParameterRow<S> {
+  /** The settings field it sets. */
+  readonly key: keyof S & string;
+  /** Its name in the URL query and the render command (`--name`). */
+  readonly url: string;
+  /** Its `<thin-film-bubble>` attribute (HTML attribute names are lower case). */
+  readonly attribute: string;
+  /** Its flag in the colour tool (`--name`), where the tool takes it. */
+  readonly cli: string | null;
+  /** Its label in the panel and usage texts, unit included. */
+  readonly label: string;
+  /** What it accepts, as every refusal states it. */
+  readonly expected: string;
+  /** The default. */
+  readonly defaultValue: S[keyof S];
+  /** The default, as the URL writes it. */
+  readonly defaultText: string;
+  /** Its reading of a URL value, or null when refused. */
+  readonly read: (raw: string) => Partial<S> | null;
+  /** The URL value that `read` turns back into `s`'s value. */
+  readonly write: (s: S) => string;
+  /** How the panel shows it; null: not in the panel. */
+  readonly control: PanelControl | null;
+}
+
+/** What every builder takes: the field, its names and label, and where the panel shows it. */
+interface RowNames<S, K extends keyof S & string> {
+  readonly key: K;
+  readonly url: string;
+  readonly cli?: string;
+  readonly label: string;
+}
+
+/** The fields common to every row. */
+const named = <S, K extends keyof S & string>(n: RowNames<S, K>, defaultValue: S[K], write: (s: S) => string) => ({
+  key: n.key,
+  url: n.url,
+  attribute: n.url.toLowerCase(),
+  cli: n.cli ?? null,
+  label: n.label,
+  defaultValue,
+  defaultText: write({ [n.key]: defaultValue } as S),
+  write,
+});
+
+/** A number in a closed domain; the panel's slider spans the whole domain in steps of `step`. */
+export function numberRow<S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  domain: NumberDomain,
+  defaultValue: S[K],
+  folder: PanelFolder | null,
+  step = 0,
+): ParameterRow<S> {
+  return {
+    ...named(n, defaultValue, (s) => String(s[n.key])),
+    expected: expectedNumber(domain),
+    read: (raw) => {
+      const v = parseDecimal(raw);
+      return isInDomain(v, domain) ? ({ [n.key]: v } as Partial<S>) : null;
+    },
+    control: folder && { folder, kind: 'slider', min: domain.min, max: domain.max, step },
+  };
+}
+
+/** One of a list of names. */
+export function choiceRow<S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  choices: readonly S[K][] & readonly string[],
+  defaultValue: S[K],
+  folder: PanelFolder | null,
+): ParameterRow<S> {
+  return {
+    ...named(n, defaultValue, (s) => String(s[n.key])),
+    expected: `one of ${choices.join(', ')}`,
+    read: (raw) => (choices.includes(raw) ? ({ [n.key]: raw } as Partial<S>) : null),
+    control: folder && { folder, kind: 'choice', choices },
+  };
+}
+
+/** On or off, written 1 or 0. */
+export function flagRow<S, K extends keyof S & string>(n: RowNames<S, K>, defaultValue: S[K], folder: PanelFolder | null): ParameterRow<S> {
+  return {
+    ...named(n, defaultValue, (s) => (s[n.key] ? '1' : '0')),
+    expected: '0 or 1',
+    read: (raw) => (raw === '0' || raw === '1' ? ({ [n.key]: raw === '1' } as Partial<S>) : null),
+    control: folder && { folder, kind: 'toggle' },
+  };
+}
+
+/** An illuminant: a name, or a number read as a daylight CCT in kelvin. */
+export function illuminantRow<S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  defaultValue: S[K] & IlluminantSpec,
+  folder: PanelFolder | null,
+): ParameterRow<S> {
+  return {
+    ...named(n, defaultValue, (s) => illuminantText(s[n.key] as IlluminantSpec)),
+    expected: ILLUMINANT_EXPECTED,
+    read: (raw) => {
+      if ((NAMED_ILLUMINANTS as readonly string[]).includes(raw)) return { [n.key]: raw } as Partial<S>;
+      const cct = parseDecimal(raw);
+      return isInDomain(cct, DAYLIGHT_CCT_DOMAIN_K) ? ({ [n.key]: { daylightCct: cct } } as Partial<S>) : null;
+    },
+    control: folder && { folder, kind: 'illuminant' },
+  };
+}
+
+/** An illuminant as the URL writes it: its name, or its CCT in kelvin. */
+export const illuminantText = (i: IlluminantSpec): string => (typeof i === 'object' ? String(i.daylightCct) : i);
+
+/** The settings that every row's default makes. */
+export const defaultsOf = <S>(rows: readonly ParameterRow<S>[]): S =>
+  Object.fromEntries(rows.map((row) => [row.key, row.defaultValue])) as S;
