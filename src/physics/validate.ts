@@ -53,9 +53,3 @@ export function assertInRange(name: string, value: number, min: number, max: num
     throw new ParameterError(name, `${name}: ${String(value)} is not allowed; expected ${expectedNumber({ min, max, unit })}`);
   }
 }
-
-export function assertOneOf<T extends string>(name: string, value: unknown, allowed: readonly T[]): asserts value is T {
-  if (!allowed.includes(value as T)) {
-    throw new ParameterError(name, `${name}: ${JSON.stringify(value)} is not allowed; expected one of ${allowed.join(', ')}`);
-  }
-}
