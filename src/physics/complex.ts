@@ -10,7 +10,6 @@ export interface Complex {
   readonly im: number;
 }
 
-
 export const cAdd = (a: Complex, b: Complex): Complex => ({ re: a.re + b.re, im: a.im + b.im });
 
 export const cSub = (a: Complex, b: Complex): Complex => ({ re: a.re - b.re, im: a.im - b.im });
