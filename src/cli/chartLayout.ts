@@ -48,7 +48,6 @@ export interface ChartLabel {
 export interface ChartLayout {
   readonly width: number;
   readonly height: number;
-  readonly stripHeight: number;
   readonly cells: readonly ChartCell[];
   readonly ticks: readonly ChartTick[];
   readonly labels: readonly ChartLabel[];
@@ -126,5 +125,5 @@ export function chartLayout(input: ChartInput): ChartLayout {
       labels.push({ x: x + TICK_PX + 2, y: Math.max(0, y - 3), text: String(anglesDeg[j]), anchor: 'start' });
     }
   }
-  return { width, height, stripHeight, cells, ticks, labels };
+  return { width, height, cells, ticks, labels };
 }
