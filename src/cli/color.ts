@@ -3,7 +3,8 @@
  * stdout; bad input gives exit status 2 and one line on stderr. See usage.ts or `--help`.
  * This file is the only one that touches the process and the file system.
  */
-import { readFileSync, statSync } from 'node:fs';
+import { readFileSync, renameSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { basename, dirname, join } from 'node:path';
 import { ParameterError } from '../physics/validate.ts';
 import { describePath } from './inputErrors.ts';
 import { runColorCommand } from './runColorCommand.ts';
@@ -25,7 +26,25 @@ function readCasesFile(path: string): string {
   }
 }
 
-const result = runColorCommand(process.argv.slice(2), readCasesFile);
+/**
+ * Writes `data` to `path` atomically: to a temporary name in the same folder, then renamed over
+ * it, so a failed write never leaves half a file. An error is a one-line message naming --out.
+ */
+function writeFileAtomically(path: string, data: Buffer | string): string | null {
+  const temporary = join(dirname(path), `.${basename(path)}.${process.pid}.tmp`);
+  try {
+    writeFileSync(temporary, data);
+    renameSync(temporary, path);
+    return null;
+  } catch (error) {
+    rmSync(temporary, { force: true });
+    return `color: --out: ${describePath(path)} cannot be written (${(error as NodeJS.ErrnoException).code ?? 'error'}); expected a path in a writable folder\n`;
+  }
+}
+
+const computed = runColorCommand(process.argv.slice(2), readCasesFile);
+const writeError = computed.file ? writeFileAtomically(computed.file.path, computed.file.data) : null;
+const result = writeError === null ? computed : { stdout: '', stderr: writeError, exitCode: 2 };
 // A reader that stops early (`| head`) is not an error of ours.
 process.stdout.on('error', (error: NodeJS.ErrnoException) => {
   if (error.code !== 'EPIPE') throw error;

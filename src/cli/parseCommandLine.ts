@@ -13,6 +13,7 @@ import {
   validateColorCase,
 } from './colorCase.ts';
 import { describeValue, oneOf, rejectValue } from './inputErrors.ts';
+import { CELL_HEIGHT_2D_PX, STRIP_HEIGHT_PX, checkChartSize } from './chartLayout.ts';
 import { parseStrictNumber } from './parseStrictNumber.ts';
 import { parseColonRange, parseRange } from './tableValues.ts';
 
@@ -29,13 +30,17 @@ const FLAG_FIELDS = {
   wavelengths: 'wavelengthsNm',
 } as const satisfies Record<string, Exclude<CaseField, 'id'>>;
 type CaseFlag = keyof typeof FLAG_FIELDS;
-const MODE_FLAGS = ['cases', 'from', 'to', 'step', 'angles', 'format', 'gamut'] as const;
+const MODE_FLAGS = ['cases', 'from', 'to', 'step', 'angles', 'format', 'gamut', 'out', 'height'] as const;
 type Flag = CaseFlag | (typeof MODE_FLAGS)[number];
 const VALUE_FLAGS = [...(Object.keys(FLAG_FIELDS) as CaseFlag[]), ...MODE_FLAGS];
 const ALL_FLAGS = [...VALUE_FLAGS, 'help'].map((f) => `--${f}`).join(', ');
 
-export const OUTPUT_FORMATS = ['json', 'csv'] as const;
+export const OUTPUT_FORMATS = ['json', 'csv', 'png', 'svg'] as const;
 export type OutputFormat = (typeof OUTPUT_FORMATS)[number];
+/** The formats that draw a chart into the file --out names, instead of printing a table. */
+export const CHART_FORMATS = ['png', 'svg'] as const satisfies readonly OutputFormat[];
+export type ChartFormat = (typeof CHART_FORMATS)[number];
+const isChartFormat = (f: OutputFormat): f is ChartFormat => (CHART_FORMATS as readonly string[]).includes(f);
 
 export type Command =
   | { readonly kind: 'help' }
@@ -47,7 +52,18 @@ export type Command =
       readonly values: readonly number[];
       readonly base: ColorCase;
       readonly gamut: GamutMapping;
-      readonly format: OutputFormat;
+      readonly format: Exclude<OutputFormat, ChartFormat>;
+    }
+  | {
+      readonly kind: 'chart';
+      readonly thicknessNm: readonly number[];
+      /** null: a 1-D strip at the base case's angle. */
+      readonly anglesDeg: readonly number[] | null;
+      readonly base: ColorCase;
+      readonly gamut: GamutMapping;
+      readonly format: ChartFormat;
+      readonly out: string;
+      readonly stripHeightPx: number;
     };
 
 /**
@@ -65,7 +81,10 @@ export function parseCommandLine(argv: readonly string[]): Command {
   const format = oneOf('--format', flags.get('format') ?? 'json', OUTPUT_FORMATS);
   const thicknessTable = (['from', 'to', 'step'] as const).filter(has);
   const isTable = thicknessTable.length > 0 || has('angles');
-  if (format === 'csv' && !isTable) clash('format', 'as csv without a table (--from/--to/--step or --angles)');
+  if (format !== 'json' && !isTable) clash('format', `as ${format} without a table (--from/--to/--step or --angles)`);
+  if (isChartFormat(format)) return chartCommand(flags, format, gamut);
+  if (has('out')) clash('out', `with --format ${format} (it prints to stdout; --out is for png and svg)`);
+  if (has('height')) clash('height', `with --format ${format} (--height is for png and svg)`);
 
   if (has('cases')) {
     const other = VALUE_FLAGS.find((f) => has(f) && !['cases', 'gamut', 'format'].includes(f));
@@ -76,19 +95,49 @@ export function parseCommandLine(argv: readonly string[]): Command {
   if (!isTable) return { kind: 'cases', cases: [caseFromFlags(flags)], gamut };
 
   if (has('angles')) {
-    if (thicknessTable[0]) clash(thicknessTable[0], 'with --angles (a table varies one parameter)');
+    if (thicknessTable[0]) clash(thicknessTable[0], 'with --angles (a table varies one parameter; a png or svg chart may vary both)');
     if (has('angle')) clash('angle', 'with --angles (the table varies the angle)');
     const values = parseColonRange('--angles', flags.get('angles') ?? '', NUMBER_FIELDS.angleDeg);
     return { kind: 'table', variable: 'angleDeg', values, base: caseFromFlags(flags), gamut, format };
   }
-  if (has('thickness')) clash('thickness', 'with --from/--to/--step (the table varies the thickness)');
-  const missing = (['from', 'to', 'step'] as const).find((f) => !has(f));
+  return { kind: 'table', variable: 'thicknessNm', values: thicknessRange(flags), base: caseFromFlags(flags), gamut, format };
+}
+
+/** The values of --from/--to/--step; refuses --thickness, which they replace. */
+function thicknessRange(flags: Map<Flag, string>): number[] {
+  if (flags.has('thickness')) {
+    throw new ParameterError('--thickness', '--thickness: not allowed with --from/--to/--step (the table varies the thickness)');
+  }
+  const missing = (['from', 'to', 'step'] as const).find((f) => !flags.has(f));
   if (missing) {
     throw new ParameterError(`--${missing}`, `--${missing}: missing; --from, --to and --step make a thickness table together`);
   }
   const [from, to, step] = (['from', 'to', 'step'] as const).map((f) => flags.get(f) ?? '') as [string, string, string];
-  const values = parseRange({ from, to, step }, NUMBER_FIELDS.thicknessNm, { from: '--from', to: '--to', step: '--step' });
-  return { kind: 'table', variable: 'thicknessNm', values, base: caseFromFlags(flags), gamut, format };
+  return parseRange({ from, to, step }, NUMBER_FIELDS.thicknessNm, { from: '--from', to: '--to', step: '--step' });
+}
+
+/** A chart: thickness along x (--from/--to/--step), and with --angles, angle down y. */
+function chartCommand(flags: Map<Flag, string>, format: ChartFormat, gamut: GamutMapping): Command {
+  const out = flags.get('out');
+  if (out === undefined || out === '') return rejectValue('--out', out, `the path of the ${format} file to write`);
+  const thicknessNm = thicknessRange(flags);
+  let anglesDeg: number[] | null = null;
+  if (flags.has('angles')) {
+    if (flags.has('angle')) throw new ParameterError('--angle', '--angle: not allowed with --angles (the chart varies the angle)');
+    if (flags.has('height')) {
+      const message = `--height: not allowed with --angles (each cell of a 2-D chart is 1 × ${CELL_HEIGHT_2D_PX} px)`;
+      throw new ParameterError('--height', message);
+    }
+    anglesDeg = parseColonRange('--angles', flags.get('angles') ?? '', NUMBER_FIELDS.angleDeg);
+  }
+  const heightText = flags.get('height');
+  const expected = `a whole number of pixels in [${STRIP_HEIGHT_PX.min}, ${STRIP_HEIGHT_PX.max}]`;
+  const stripHeightPx = heightText === undefined ? STRIP_HEIGHT_PX.fallback : parseStrictNumber('--height', heightText, expected);
+  if (!Number.isInteger(stripHeightPx) || stripHeightPx < STRIP_HEIGHT_PX.min || stripHeightPx > STRIP_HEIGHT_PX.max) {
+    rejectValue('--height', stripHeightPx, expected);
+  }
+  checkChartSize(thicknessNm.length, anglesDeg?.length ?? null, stripHeightPx);
+  return { kind: 'chart', thicknessNm, anglesDeg, base: caseFromFlags(flags), gamut, format, out, stripHeightPx };
 }
 
 /** Flag name → raw text, or 'help'. Rejects unknown and repeated flags and positionals. */

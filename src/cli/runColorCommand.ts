@@ -1,7 +1,11 @@
+import type { GamutMapping } from '../physics/colorConversions.ts';
 import { ParameterError } from '../physics/validate.ts';
+import { chartLayout } from './chartLayout.ts';
+import { chartPng } from './chartPng.ts';
+import { chartSvg } from './chartSvg.ts';
 import type { ColorCase } from './colorCase.ts';
 import { computeCaseColor } from './computeCaseColor.ts';
-import { jsonLines, tableCsv, tableRow } from './formatOutput.ts';
+import { type TableRow, jsonLines, tableCsv, tableRow } from './formatOutput.ts';
 import { type Command, parseCommandLine } from './parseCommandLine.ts';
 import { parseCasesJson } from './parseCasesJson.ts';
 import { USAGE } from './usage.ts';
@@ -11,6 +15,8 @@ export interface CommandResult {
   readonly stderr: string;
   /** 0 done, 1 an internal error, 2 bad input. */
   readonly exitCode: 0 | 1 | 2;
+  /** A file to write (a chart) before stdout is printed; the caller writes it atomically. */
+  readonly file?: { readonly path: string; readonly data: Buffer | string };
 }
 
 /** Reads a file as text, or throws a ParameterError saying why it cannot. */
@@ -23,7 +29,9 @@ export type ReadTextFile = (path: string) => string;
  */
 export function runColorCommand(argv: readonly string[], readTextFile: ReadTextFile): CommandResult {
   try {
-    return { stdout: render(parseCommandLine(argv), readTextFile), stderr: '', exitCode: 0 };
+    const command = parseCommandLine(argv);
+    if (command.kind === 'chart') return { ...renderChart(command), stderr: '', exitCode: 0 };
+    return { stdout: render(command, readTextFile), stderr: '', exitCode: 0 };
   } catch (error) {
     if (error instanceof ParameterError) return { stdout: '', stderr: errorLine(error.message), exitCode: 2 };
     const message = error instanceof Error ? error.message : String(error);
@@ -33,7 +41,26 @@ export function runColorCommand(argv: readonly string[], readTextFile: ReadTextF
 
 const errorLine = (message: string): string => `color: ${message.replace(/[\r\n]+/g, ' ')}\n`;
 
-function render(command: Command, readTextFile: ReadTextFile): string {
+/** The rows of a table that varies `variable` over `values`, the rest of the case `base`. */
+function tableRows(base: ColorCase, variable: 'thicknessNm' | 'angleDeg', values: readonly number[], gamut: GamutMapping): TableRow[] {
+  return values.map((value, index) => {
+    const c: ColorCase = { ...base, id: index, stack: { ...base.stack, [variable]: value } };
+    return tableRow(c, computeCaseColor(c, gamut));
+  });
+}
+
+/** A chart's file, and one JSON line on stdout saying what was written. */
+function renderChart(command: Extract<Command, { kind: 'chart' }>): { stdout: string; file: NonNullable<CommandResult['file']> } {
+  const { base, thicknessNm, anglesDeg, gamut } = command;
+  const rowAt = (angleDeg: number) => tableRows({ ...base, stack: { ...base.stack, angleDeg } }, 'thicknessNm', thicknessNm, gamut);
+  const colors = (anglesDeg ?? [base.stack.angleDeg]).map(rowAt);
+  const layout = chartLayout({ thicknessNm, anglesDeg, colors, stripHeightPx: command.stripHeightPx });
+  const data = command.format === 'png' ? chartPng(layout) : chartSvg(layout);
+  const summary = { out: command.out, format: command.format, width: layout.width, height: layout.height, cells: layout.cells.length };
+  return { stdout: `${JSON.stringify(summary)}\n`, file: { path: command.out, data } };
+}
+
+function render(command: Exclude<Command, { kind: 'chart' }>, readTextFile: ReadTextFile): string {
   switch (command.kind) {
     case 'help':
       return USAGE;
@@ -45,10 +72,7 @@ function render(command: Command, readTextFile: ReadTextFile): string {
     }
     case 'table': {
       const { base, variable, gamut } = command;
-      const rows = command.values.map((value, index) => {
-        const c: ColorCase = { ...base, id: index, stack: { ...base.stack, [variable]: value } };
-        return tableRow(c, computeCaseColor(c, gamut));
-      });
+      const rows = tableRows(base, variable, command.values, gamut);
       return command.format === 'csv' ? tableCsv(rows, base.wavelengthsNm) : jsonLines(rows);
     }
   }

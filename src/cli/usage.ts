@@ -3,7 +3,8 @@ import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
 import { NORMALIZATIONS } from '../physics/spectralIntegration.ts';
 import { CASE_FIELDS, MAX_WAVELENGTHS } from './colorCase.ts';
-import { MAX_CASES } from './parseCasesJson.ts';
+import { CELL_HEIGHT_2D_PX, MAX_CHART_COLUMNS, MAX_CHART_PIXELS, STRIP_HEIGHT_PX } from './chartLayout.ts';
+import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseCasesJson.ts';
 import { MAX_TABLE_ROWS } from './tableValues.ts';
 
 /** `--help`: how to call the command. */
@@ -28,11 +29,22 @@ Many cases:
                         ${CASE_FIELDS.join(', ')};
                         illuminant is a name or { "daylightCct": K }; wavelengthsNm an array
                         (at most ${MAX_WAVELENGTHS}); id defaults to the case's index.
+                        Nested at most ${MAX_CASES_NESTING_DEPTH} levels deep.
 
 A table (at most ${MAX_TABLE_ROWS} rows), one row per thickness or angle, with #rrggbb:
   --from NM --to NM --step NM   over thickness (the other case flags apply to every row)
   --angles FROM:TO:STEP         over angle, at --thickness
   --format json|csv             (json)
+
+A chart instead of a table, written to a file (at most ${MAX_CHART_COLUMNS} columns, ${MAX_CHART_PIXELS} pixels):
+  --format png|svg              with --from/--to/--step: column i is row i of the table, in srgb8
+  --out FILE                    the file to write (replaced atomically); stdout gets one JSON line
+                                { out, format, width, height, cells }
+  --height PX                   the strip's height, ${STRIP_HEIGHT_PX.min}–${STRIP_HEIGHT_PX.max} px (${STRIP_HEIGHT_PX.fallback})
+  --angles FROM:TO:STEP         with --from/--to/--step: a 2-D chart, thickness along x, angle down
+                                y from the top, each cell 1 × ${CELL_HEIGHT_2D_PX} px
+                                Thickness ticks (nm) below the chart, angle ticks (degrees) right.
+                                svg: one rect per cell, ticks as lines, labels as text.
 
 Output: a JSON array, one object per case, in input order:
   { id, illuminant, normalization, xyz, linearSrgb, srgb8, linearWideGamut, displayP3_8, reflectance }

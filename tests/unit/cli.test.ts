@@ -6,14 +6,18 @@
  * a few spawn the real CLI to prove the process glue: exit status, stderr, empty stdout.
  */
 import { spawnSync } from 'node:child_process';
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { ParameterError } from '../../src/physics/validate.ts';
 import { describeValue } from '../../src/cli/inputErrors.ts';
 import { parseStrictNumber } from '../../src/cli/parseStrictNumber.ts';
 import { runColorCommand } from '../../src/cli/runColorCommand.ts';
+import { jsonNestingDepth } from '../../src/cli/jsonNestingDepth.ts';
 import { MAX_TABLE_ROWS, evenlySpaced } from '../../src/cli/tableValues.ts';
-import { ABSURDLY_LONG, NOT_NUMBERS, notNames, outsideRange } from './fixtures/badValues.ts';
+import { ABSURDLY_LONG, DEEPLY_NESTED, NOT_NUMBERS, notNames, outsideRange } from './fixtures/badValues.ts';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const FIXTURES = 'tests/unit/fixtures';
@@ -183,7 +187,10 @@ describe('color CLI, gamut mapping', () => {
 });
 
 describe('color CLI, bad input through the process', () => {
+  const nested = join(mkdtempSync(join(tmpdir(), 'color-cli-')), 'nested.json');
+  writeFileSync(nested, DEEPLY_NESTED);
   const rows: [string[], string][] = [
+    [['--cases', nested], '--cases: '],
     [['--thickness', '12abc'], '--thickness'],
     [['--bogus', '1'], '--bogus'],
     [['--cases', `${FIXTURES}/cli-cases-malformed.json`], '--cases'],
@@ -219,6 +226,8 @@ const FILES: Record<string, string> = {
   'bad-normalization': '[{ "id": "norm", "normalization": "max" }]',
   'long-id': `[{ "id": "${'x'.repeat(5000)}" }]`,
   'object-id': '[{ "id": { "a": 1 } }]',
+  'deeply-nested': DEEPLY_NESTED,
+  'nested-in-case': `[{ "id": "deep", "wavelengthsNm": ${'['.repeat(17)}${']'.repeat(17)} }]`,
 };
 const readFake = (path: string): string => {
   const text = FILES[path];
@@ -288,6 +297,8 @@ describe('color CLI, bad input (in-process: the whole command but the process)',
     [['--cases', 'bad-normalization'], 'normalization', '"norm"'],
     [['--cases', 'long-id'], 'id', 'index 0'],
     [['--cases', 'object-id'], 'id', 'index 0'],
+    [['--cases', 'deeply-nested'], '--cases', 'malformed'],
+    [['--cases', 'nested-in-case'], '--cases', 'malformed'],
   ];
   it.each(rows)('%j → exit 2, one line naming %s', (args, name, caseLabel) => {
     const r = runColorCommand(args, readFake);
@@ -304,6 +315,18 @@ describe('color CLI, bad input (in-process: the whole command but the process)',
     expect(runColorCommand(['--angle', '91'], readFake).stderr).toContain('[0, 90]');
     expect(runColorCommand(['--illuminant', '3000'], readFake).stderr).toContain('[4000, 25000]');
     expect(runColorCommand(['--cases', 'thick-second'], readFake).stderr).toContain('[0, 20000] nm');
+  });
+
+  it('says how deeply a malformed cases file nests (100 000 brackets, and 17 + 1 inside a case)', () => {
+    expect(runColorCommand(['--cases', 'deeply-nested'], readFake).stderr).toContain('nest 100000 deep');
+    expect(runColorCommand(['--cases', 'nested-in-case'], readFake).stderr).toContain('nest 19 deep');
+  });
+
+  it('brackets inside strings do not count as nesting', () => {
+    const text = `[{ "id": "${'['.repeat(90)}\\\"${'{'.repeat(90)}" }]`;
+    const r = runColorCommand(['--cases', 'c.json'], () => text);
+    expect(r.stderr).toBe('');
+    expect(r.exitCode).toBe(0);
   });
 });
 
@@ -431,6 +454,14 @@ describe('strict parsing helpers', () => {
     expect(evenlySpaced(7, 7, 1, names)).toEqual([7]);
     expect(evenlySpaced(0, MAX_TABLE_ROWS - 1, 1, names)).toHaveLength(MAX_TABLE_ROWS);
     expect(() => evenlySpaced(0, MAX_TABLE_ROWS, 1, names)).toThrow(ParameterError);
+  });
+
+  it('jsonNestingDepth counts open brackets, not those in strings', () => {
+    expect(jsonNestingDepth('')).toBe(0);
+    expect(jsonNestingDepth('[]')).toBe(1);
+    expect(jsonNestingDepth('[{}, [[]], {"a": {"b": []}}]')).toBe(4);
+    expect(jsonNestingDepth('["[[[", "\\"[{", {"k": "}}]]"}]')).toBe(2);
+    expect(jsonNestingDepth(DEEPLY_NESTED)).toBe(100_000);
   });
 
   it('describeValue keeps a message to one short line', () => {
