@@ -18,7 +18,7 @@ export function chromiumExecutable(): string | undefined {
   return fail('no Chromium found.');
 }
 
-/** WebGL2 headless on SwiftShader (../shared/BROWSER.md); the first also enables the timer query. */
+/** WebGL2 headless on SwiftShader (docs/browser.md#launch-flags); the first also enables the timer query. */
 export const CHROMIUM_ARGS = ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist', '--disable-quic'];
 
 /** Playwright launch options for that Chromium. */

@@ -25,7 +25,7 @@ uniform sampler2D uFilmTable;
 uniform float uTableMaxThicknessNm;
 
 vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
-  // Texel centres sit at the ends of the ranges (BROWSER.md: otherwise visibly off).
+  // Texel centres sit at the ends of the ranges (docs/gpu.md#texel-centres: otherwise visibly off).
   vec2 uv = filmTableUv(thicknessNm, cosIncidence, uTableMaxThicknessNm);
   // The grid may fill only the texture's lower left corner (a coarse table, FilmTable).
   vec2 size = vec2(textureSize(uFilmTable, 0));

@@ -8,7 +8,7 @@ export const SIZES = [
   [1280, 720],
   [1920, 1080],
 ] as const;
-/** The issue asks for the median of ≥ 30 frames; slow rows stop at this much time per size (≥ 5 frames). */
+/** A frame time is the median of ≥ 30 frames; slow rows stop at this much time per size (≥ 5 frames). */
 export const FRAMES = 30;
 export const FRAME_BUDGET_MS = 3000;
 

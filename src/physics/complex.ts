@@ -2,7 +2,7 @@
  * Complex arithmetic for the Fresnel and Airy formulas (float64).
  *
  * Cosines of refraction angles become imaginary under total internal reflection, and the film
- * phase becomes complex with them (PHYSICS.md §1, "Complex angles"), so every quantity from
+ * phase becomes complex with them (docs/physics.md#complex-angles), so every quantity from
  * Snell's law onward is complex. Mirrored by `shaders/complex.glsl` (vec2 = re, im).
  */
 export interface Complex {

@@ -7,7 +7,7 @@ import { type NumberDomain, assertInRange } from './validate.ts';
  * How the two polarisations are combined:
  * - `unpolarized`: R = (R_s + R_p)/2, each with its own Airy sum (physical; the default);
  * - `paper`: the paper's eqs (4) and (8), which average the s and p *amplitudes* first and then
- *   sum once. Its r_ab vanishes at normal incidence, so R ≡ 0 there (PHYSICS.md §2);
+ *   sum once. Its r_ab vanishes at normal incidence, so R ≡ 0 there (docs/physics.md#paper-mode-at-normal-incidence);
  * - `s`, `p`: one polarisation only.
  */
 export const POLARIZATIONS = ['unpolarized', 'paper', 's', 'p'] as const;
@@ -183,7 +183,7 @@ export const filmTransmittance = (lambdaNm: number, stack: FilmStack, polarizati
  * ln(D(ψ0+w)/D(ψ0−w)) / (2w) (both formed without cancellation),
  *   R̄ = (a0 (1 + δA) + Re u (2ρ² + (1 + ρ²) δA)) / (1 − ρ²) − Im u · L.
  * This is how fringes finer than a wavelength bin or a table cell average instead of aliasing
- * (PHYSICS.md §3). Domain: real φ0, w ≥ 0, ρ < 1 (ρ → 1 only at grazing, where R is |r_ab|²).
+ * (docs/physics.md#closed-form-mean). Domain: real φ0, w ≥ 0, ρ < 1 (ρ → 1 only at grazing, where R is |r_ab|²).
  */
 export function meanChannelReflectance(c: AiryTerms, phaseCenter: number, halfWidth: number): number {
   const alpha = c.rab;

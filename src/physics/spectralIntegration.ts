@@ -95,7 +95,7 @@ export function integrateXyz(reflectance: (lambdaNm: number) => number, w: Spect
 }
 
 /**
- * Sampling that converges at every thickness (PHYSICS.md §3). R(λ) is periodic in the phase φ
+ * Sampling that converges at every thickness (docs/physics.md#sampling). R(λ) is periodic in the phase φ
  * with one fringe per 2π, and a fringe spans about λ²/Δ nm, narrowest at 380 nm. The trapezoid
  * rule on a periodic analytic function converges geometrically with the number of samples per
  * period, at a rate set by how close eq (13)'s pole 1/(r_ba r_bc) is to the unit circle, so:

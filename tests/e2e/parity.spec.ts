@@ -18,7 +18,7 @@ import { mulberry32 } from '../seededRandom.ts';
  * they are compared by ΔE00 under the case's illuminant white.
  */
 
-/** The bound on the documented domain: well under a just-noticeable difference (~1). */
+/** The bound on the documented domain: well under a just-noticeable difference (~1). */
 const MAX_DELTA_E00_FIXED = 0.5;
 /**
  * The stress domain (20 µm films, grazing light, total internal reflection, n to 2.5) is held to

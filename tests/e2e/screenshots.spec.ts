@@ -1,7 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
 
 /**
- * The look, guarded by screenshots made deterministic first (STYLE.md §7): animate=0 freezes the
+ * The look, guarded by screenshots made deterministic first: animate=0 freezes the
  * field at a fixed `time`, the viewport is fixed at 640×480 (playwright.config.ts), and the
  * default `table` mode keeps SwiftShader fast. The numbers are guarded by parity.spec.ts.
  */

@@ -8,7 +8,7 @@ import { MODES } from '../../src/render/filmSettings.ts';
 import type { ParityGroup, ParityMode } from '../../src/render/parityCase.ts';
 
 /**
- * The shader under numerical stress (issue 6 §2), through the float-target harness
+ * The shader under numerical stress (docs/gpu.md#float32-limits), through the float-target harness
  * (tests/e2e/harness/parity.ts, the real shaders/filmColor.glsl): a dense grid over the whole
  * domain never gives NaN, ±Infinity, a negative or an impossibly bright XYZ, in either mode;
  * then where float32 stops being good enough in `exact` mode, against the float64 reference.

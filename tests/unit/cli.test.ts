@@ -1,6 +1,6 @@
 /**
  * The command-line tool (src/cli). Expected values come from outside the code under test: the
- * golden film reflectance of PHYSICS.md, the normal-incidence Fresnel formula, the sRGB transfer
+ * golden film reflectance (docs/physics.md#golden-value), the normal-incidence Fresnel formula, the sRGB transfer
  * function as IEC 61966-2-1 defines it, and the definition of the CIE 1931 observer (equal-energy
  * white has x = y = z). Most bad-input rows run the whole command in-process (`runColorCommand`);
  * a few spawn the real CLI to prove the process glue: exit status, stderr, empty stdout.
@@ -23,7 +23,7 @@ const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const FIXTURES = 'tests/unit/fixtures';
 /** Each spawn starts tsx (~0.5 s); allow for a loaded machine. */
 const SPAWN_TIMEOUT_MS = 30_000;
-/** PHYSICS.md gives the golden reflectance to 7 decimals. */
+/** docs/physics.md#golden-value gives the golden reflectance to 7 decimals. */
 const GOLDEN_TOLERANCE = 5e-8;
 /** Rounding only: the film is no film, or R is constant over λ. */
 const FLOAT_TOLERANCE = 1e-12;
@@ -124,7 +124,7 @@ describe('color CLI, cases file', () => {
     expect(empty.illuminant).toBe('D65');
     expect(empty.normalization).toBe('white');
     expect(empty.reflectance).toEqual([]);
-    // The paper's amplitude average vanishes at normal incidence (PHYSICS.md §2): a black film.
+    // The paper's amplitude average vanishes at normal incidence (docs/physics.md#paper-mode-at-normal-incidence): a black film.
     expect(paper.reflectance).toEqual([0, 0]);
     expect(paper.xyz).toEqual([0, 0, 0]);
     // s and p are the same wave at normal incidence.
@@ -331,7 +331,7 @@ describe('color CLI, bad input (in-process: the whole command but the process)',
 });
 
 /**
- * The issue's list of bad values for every numeric and named flag and every cases-file field.
+ * The table of bad values for every numeric and named flag and every cases-file field.
  * Ranges and names are written out as the README documents them, not read from src/cli.
  */
 describe('color CLI, the table of bad values', () => {

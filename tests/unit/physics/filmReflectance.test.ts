@@ -14,7 +14,7 @@ import { cosDeg, refractedCos } from '../../../src/physics/snell.ts';
 
 /** Float64 formulas that are algebraically equal agree to a few ulps of their O(1) terms. */
 const ALGEBRAIC_TOL = 1e-12;
-/** The golden value in PHYSICS.md is given to 7 decimals. */
+/** The golden value (docs/physics.md#golden-value) is given to 7 decimals. */
 const GOLDEN_TOL = 5e-8;
 
 const stack = (over: Partial<FilmStack>): FilmStack => ({ nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 0, ...over });

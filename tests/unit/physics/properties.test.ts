@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { filmOptics, reflectanceAt, transmittanceAt, POLARIZATIONS } from '../../../src/physics/filmReflectance.ts';
 import { mulberry32 } from '../../seededRandom.ts';
 
-/** R + T = 1 holds to rounding; the bound. */
+/** R + T = 1 holds to rounding (docs/physics.md#energy-conservation). */
 const ENERGY_TOL = 1e-12;
 const CASES = 100_000;
 

@@ -4,9 +4,9 @@ import { deltaE00 } from '../../../src/physics/colorDifference.ts';
 import { C2_CORRECTION, daylightChromaticity } from '../../../src/physics/illuminants.ts';
 import { filmXyz, integrateXyz, spectralWeights, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
 
-/** Published chromaticities are given to 4–5 decimals; the issue asks for 1e-4. */
+/** Published chromaticities are given to 4–5 decimals: one unit of the fourth. */
 const CHROMATICITY_TOL = 1e-4;
-/** The convergence bound the issue sets for default sampling against a 0.01 nm step. */
+/** The convergence bound for default sampling against a 0.01 nm step (docs/physics.md#sampling). */
 const CONVERGENCE_DE00 = 0.1;
 
 describe('XYZ integration, eqs (15)–(18)', () => {
