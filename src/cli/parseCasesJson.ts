@@ -1,6 +1,5 @@
-import { ParameterError } from '../physics/validate.ts';
+import { ParameterError, shorten } from '../physics/validate.ts';
 import { CASE_FIELDS, type CaseField, type ColorCase, type RawCase, isValidId, validateColorCase } from './colorCase.ts';
-import { shorten } from '../physics/validate.ts';
 import { describePath, describeValue, rejectValue } from './inputErrors.ts';
 import { jsonNestingDepth } from './jsonNestingDepth.ts';
 
