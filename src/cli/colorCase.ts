@@ -1,7 +1,8 @@
 import { FILM_STACK_DOMAIN, type FilmStack, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
-import { DAYLIGHT_CCT_MAX_K, DAYLIGHT_CCT_MIN_K, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
+import { DAYLIGHT_CCT_DOMAIN_K, ILLUMINANT_EXPECTED, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralIntegration.ts';
 import { type NumberDomain, expectedNumber, isInDomain } from '../physics/validate.ts';
+import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../render/filmParameters.ts';
 import { oneOf, rejectValue } from './inputErrors.ts';
 
 /** One film to colour: what the command line or one entry of a cases file describes. */
@@ -42,10 +43,35 @@ export type CaseField = (typeof CASE_FIELDS)[number];
 export const WAVELENGTH_DOMAIN_NM: NumberDomain = { min: 300, max: 830, unit: 'nm' };
 export const MAX_WAVELENGTHS = 10_000;
 export const MAX_ID_CHARS = 200;
-export const DAYLIGHT_CCT_DOMAIN_K: NumberDomain = { min: DAYLIGHT_CCT_MIN_K, max: DAYLIGHT_CCT_MAX_K, unit: 'K' };
+/** A flag that sets one field of a case (or of every row of a table), as the usage shows it. */
+export interface CaseFlag {
+  readonly flag: string;
+  readonly field: Exclude<CaseField, 'id'>;
+  readonly label: string;
+  readonly expected: string;
+  /** The default, as the usage shows it ('' for none). */
+  readonly defaultText: string;
+}
 
-export const ILLUMINANT_EXPECTED =
-  `one of ${NAMED_ILLUMINANTS.join(', ')} or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`;
+/** The case fields the view's parameter schema also has: their flag, label and domain come from its rows. */
+const SHARED_FLAGS: readonly CaseFlag[] = FILM_PARAMETERS.flatMap((row) =>
+  row.cli === null
+    ? []
+    : [{
+        flag: row.cli,
+        field: row.key as CaseFlag['field'],
+        label: row.label,
+        expected: row.expected,
+        defaultText: row.key in NUMBER_FIELDS ? String(NUMBER_FIELDS[row.key as NumberField].fallback) : row.defaultText,
+      }],
+);
+
+/** The colour tool's case flags: the shared ones, then its own. */
+export const CASE_FLAGS: readonly CaseFlag[] = [
+  ...SHARED_FLAGS,
+  { flag: 'angle', field: 'angleDeg', label: 'angle of incidence (degrees)', expected: expectedNumber(NUMBER_FIELDS.angleDeg), defaultText: '0' },
+  { flag: 'wavelengths', field: 'wavelengthsNm', label: 'also report R(λ) at these wavelengths', expected: `comma-separated, each ${expectedNumber(WAVELENGTH_DOMAIN_NM)}`, defaultText: '' },
+];
 
 /** A case's fields before checking: numbers already numbers, absent fields undefined. */
 export type RawCase = Readonly<Partial<Record<CaseField, unknown>>>;
@@ -72,8 +98,8 @@ export function validateColorCase(raw: RawCase, index: number, nameOf: (field: C
       angleDeg: number('angleDeg'),
     },
     illuminant: validateIlluminant(raw.illuminant, nameOf('illuminant')),
-    polarization: oneOf(nameOf('polarization'), orDefault('polarization', 'unpolarized'), POLARIZATIONS),
-    normalization: oneOf(nameOf('normalization'), orDefault('normalization', 'white'), NORMALIZATIONS),
+    polarization: oneOf(nameOf('polarization'), orDefault('polarization', DEFAULT_SETTINGS.polarization), POLARIZATIONS),
+    normalization: oneOf(nameOf('normalization'), orDefault('normalization', DEFAULT_SETTINGS.normalization), NORMALIZATIONS),
     wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm')),
   };
 }
@@ -88,7 +114,7 @@ function validateId(id: unknown, index: number, name: string): string | number {
 }
 
 function validateIlluminant(value: unknown, name: string): IlluminantSpec {
-  if (value === undefined) return 'D65';
+  if (value === undefined) return DEFAULT_SETTINGS.illuminant;
   if (typeof value === 'string' && (NAMED_ILLUMINANTS as readonly string[]).includes(value)) return value as IlluminantSpec;
   const isObject = typeof value === 'object' && value !== null && !Array.isArray(value);
   if (isObject && Object.keys(value).join() === 'daylightCct') {

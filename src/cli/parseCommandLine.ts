@@ -1,12 +1,11 @@
 import { parseArgs } from 'node:util';
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
-import { NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
+import { DAYLIGHT_CCT_DOMAIN_K, ILLUMINANT_EXPECTED, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
 import { ParameterError, expectedNumber, isInDomain } from '../physics/validate.ts';
 import {
+  CASE_FLAGS,
   type CaseField,
   type ColorCase,
-  DAYLIGHT_CCT_DOMAIN_K,
-  ILLUMINANT_EXPECTED,
   NUMBER_FIELDS,
   type NumberField,
   WAVELENGTH_DOMAIN_NM,
@@ -17,22 +16,10 @@ import { CELL_HEIGHT_2D_PX, STRIP_HEIGHT_PX, checkChartSize } from './chartLayou
 import { parseStrictNumber } from './parseStrictNumber.ts';
 import { parseColonRange, parseRange } from './tableValues.ts';
 
-/** The flags that set one field of the case (or of every row of a table). */
-const FLAG_FIELDS = {
-  thickness: 'thicknessNm',
-  angle: 'angleDeg',
-  'n-outside': 'nOutside',
-  'n-film': 'nFilm',
-  'n-inside': 'nInside',
-  illuminant: 'illuminant',
-  polarization: 'polarization',
-  normalization: 'normalization',
-  wavelengths: 'wavelengthsNm',
-} as const satisfies Record<string, Exclude<CaseField, 'id'>>;
-type CaseFlag = keyof typeof FLAG_FIELDS;
+type CaseFlagName = (typeof CASE_FLAGS)[number]['flag'];
 const MODE_FLAGS = ['cases', 'from', 'to', 'step', 'angles', 'format', 'gamut', 'out', 'height'] as const;
-type Flag = CaseFlag | (typeof MODE_FLAGS)[number];
-const VALUE_FLAGS = [...(Object.keys(FLAG_FIELDS) as CaseFlag[]), ...MODE_FLAGS];
+type Flag = CaseFlagName | (typeof MODE_FLAGS)[number];
+const VALUE_FLAGS = [...CASE_FLAGS.map((f) => f.flag), ...MODE_FLAGS];
 const ALL_FLAGS = [...VALUE_FLAGS, 'help'].map((f) => `--${f}`).join(', ');
 
 export const OUTPUT_FORMATS = ['json', 'csv', 'png', 'svg'] as const;
@@ -172,7 +159,7 @@ function readFlags(argv: readonly string[]): Map<Flag, string> | 'help' {
 function caseFromFlags(flags: Map<Flag, string>): ColorCase {
   const raw: Partial<Record<CaseField, unknown>> = {};
   const flagOf: Partial<Record<CaseField, string>> = {};
-  for (const [flag, field] of Object.entries(FLAG_FIELDS) as [CaseFlag, (typeof FLAG_FIELDS)[CaseFlag]][]) {
+  for (const { flag, field } of CASE_FLAGS) {
     flagOf[field] = `--${flag}`;
     const text = flags.get(flag);
     if (text !== undefined) raw[field] = flagValue(field, `--${flag}`, text);

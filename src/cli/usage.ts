@@ -1,11 +1,17 @@
 import { GAMUT_MAPPINGS } from '../physics/colorConversions.ts';
-import { POLARIZATIONS } from '../physics/filmReflectance.ts';
-import { NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
-import { NORMALIZATIONS } from '../physics/spectralIntegration.ts';
-import { CASE_FIELDS, MAX_WAVELENGTHS } from './colorCase.ts';
+import { CASE_FIELDS, CASE_FLAGS, MAX_WAVELENGTHS } from './colorCase.ts';
 import { CELL_HEIGHT_2D_PX, MAX_CHART_COLUMNS, MAX_CHART_PIXELS, STRIP_HEIGHT_PX } from './chartLayout.ts';
 import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseCasesJson.ts';
 import { MAX_TABLE_ROWS } from './tableValues.ts';
+
+/** Where a flag's description starts. */
+const DESCRIPTION_COLUMN = 24;
+
+/** One line per case flag: `--flag`, its label, what it accepts and its default. */
+const caseFlagLines = (): string =>
+  CASE_FLAGS.map(({ flag, label, expected, defaultText }) =>
+    `  --${flag}`.padEnd(DESCRIPTION_COLUMN) + `${label}: ${expected}${defaultText ? ` (${defaultText})` : ''}`,
+  ).join('\n');
 
 /** `--help`: how to call the command. */
 export const USAGE = `Colour of a thin film (a soap bubble) from the spectral interference integral.
@@ -13,15 +19,7 @@ export const USAGE = `Colour of a thin film (a soap bubble) from the spectral in
 Usage: npm run --silent color -- [flags]
 
 One case (defaults: a 500 nm soap film in air, seen head-on, under D65):
-  --thickness NM        film thickness d, 0–20000 nm (500)
-  --angle DEG           angle of incidence, 0–90 degrees (0)
-  --n-outside N         index of the outside medium, 1–4 (1)
-  --n-film N            index of the film, 1–4 (1.33)
-  --n-inside N          index of the inside medium, 1–4 (1)
-  --illuminant NAME|K   ${NAMED_ILLUMINANTS.join(' | ')} | a daylight CCT in kelvin, 4000–25000 (D65)
-  --polarization P      ${POLARIZATIONS.join(' | ')} (unpolarized)
-  --normalization N     ${NORMALIZATIONS.join(' | ')} (white: Y = 1 for a perfect white reflector)
-  --wavelengths L,L,…   also report R(λ) at these wavelengths, 300–830 nm
+${caseFlagLines()}
   --gamut G             ${GAMUT_MAPPINGS.join(' | ')}: how out-of-gamut colours become 8-bit codes (clip)
 
 Many cases:

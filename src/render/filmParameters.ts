@@ -1,4 +1,4 @@
-import { FILM_STACK_DOMAIN, POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { NORMALIZATIONS } from '../physics/spectralIntegration.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES } from './filmSettings.ts';
 import { type ParameterRow, choiceRow, defaultsOf, illuminantRow, numberRow } from './parameterRow.ts';
@@ -15,9 +15,9 @@ export const FILM_PARAMETERS: readonly Row[] = [
   numberRow({ key: 'thicknessNm', url: 'thickness', cli: 'thickness', label: 'thickness (nm)' }, FILM_STACK_DOMAIN.thicknessNm, 550, 'film', 1),
   numberRow({ key: 'thicknessRangeNm', url: 'thicknessRange', label: 'range (nm)' }, FILM_STACK_DOMAIN.thicknessNm, 800, 'film', 1),
   numberRow({ key: 'swirlSpeed', url: 'speed', label: 'swirl speed' }, { min: 0, max: 10, unit: '' }, 0.4, 'film', 0.05),
-  numberRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film', label: 'n film' }, FILM_STACK_DOMAIN.nFilm, 1.33, 'film', 0.01),
-  numberRow({ key: 'nOutside', url: 'nOutside', cli: 'n-outside', label: 'n outside' }, FILM_STACK_DOMAIN.nOutside, 1, 'film', 0.01),
-  numberRow({ key: 'nInside', url: 'nInside', cli: 'n-inside', label: 'n inside' }, FILM_STACK_DOMAIN.nInside, 1, 'film', 0.01),
+  numberRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film', label: 'n film' }, FILM_STACK_DOMAIN.nFilm, SOAP_FILM_IN_AIR.nFilm, 'film', 0.01),
+  numberRow({ key: 'nOutside', url: 'nOutside', cli: 'n-outside', label: 'n outside' }, FILM_STACK_DOMAIN.nOutside, SOAP_FILM_IN_AIR.nOutside, 'film', 0.01),
+  numberRow({ key: 'nInside', url: 'nInside', cli: 'n-inside', label: 'n inside' }, FILM_STACK_DOMAIN.nInside, SOAP_FILM_IN_AIR.nInside, 'film', 0.01),
   illuminantRow({ key: 'illuminant', url: 'illuminant', cli: 'illuminant', label: 'illuminant' }, 'D65', 'light and colour'),
   choiceRow({ key: 'polarization', url: 'polarization', cli: 'polarization', label: 'polarization' }, POLARIZATIONS, 'unpolarized', 'light and colour'),
   choiceRow({ key: 'normalization', url: 'normalization', cli: 'normalization', label: 'normalization' }, NORMALIZATIONS, 'white', 'light and colour'),
