@@ -1,5 +1,5 @@
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from './viewParameters.ts';
-import { shorten } from '../physics/validate.ts';
+import { quoted } from '../physics/validate.ts';
 
 /** Longer values are refused outright (a mangled link, not a number). */
 export const MAX_VALUE_LENGTH = 64;
@@ -28,7 +28,7 @@ export function parseSettings(query: string, base: ViewSettings = DEFAULT_VIEW_S
     if (read) settings = { ...settings, ...read };
     else {
       const tooLong = raw.length > MAX_VALUE_LENGTH ? ` of at most ${MAX_VALUE_LENGTH} characters` : '';
-      errors.push(`${name}=${shorten(JSON.stringify(raw))} ignored: expected ${row.expected}${tooLong}`);
+      errors.push(`${name}=${quoted(raw)} ignored: expected ${row.expected}${tooLong}`);
     }
   }
   return { settings, errors };

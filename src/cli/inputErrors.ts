@@ -1,4 +1,4 @@
-import { ParameterError, shorten } from '../physics/validate.ts';
+import { ParameterError, quoted, shorten } from '../physics/validate.ts';
 
 /**
  * How bad input becomes an error. Every message is one line of the form
@@ -13,6 +13,7 @@ export const describePath = (path: string): string => shorten(JSON.stringify(pat
 export function describeValue(value: unknown): string {
   if (typeof value === 'number') return String(value);
   if (value === undefined) return 'no value';
+  if (typeof value === 'string') return quoted(value);
   return shorten(JSON.stringify(value) ?? String(value));
 }
 

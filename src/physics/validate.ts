@@ -20,6 +20,11 @@ export function shorten(text: string, max = MAX_ECHOED_CHARS): string {
   return text.length <= max ? text : `${text.slice(0, max)}… (${text.length} characters)`;
 }
 
+/** A text as a message repeats it: quoted as JSON (a newline cannot break the line), cut short when long. */
+export function quoted(text: string, max = MAX_ECHOED_CHARS): string {
+  return text.length <= max ? JSON.stringify(text) : `${JSON.stringify(text.slice(0, max))}… (${text.length} characters)`;
+}
+
 /** A closed interval of allowed numbers, with its unit for messages ('' for none). */
 export interface NumberDomain {
   readonly min: number;
