@@ -44,6 +44,7 @@ async function panelChanges(page: Page): Promise<{ panelChangeMs: number[]; pane
     /** [ms to the next frame, ms to the first complete frame] after `act`. */
     const nextFrames = (act: () => void) =>
       new Promise<[number, number]>((resolve) => {
+        // eslint-disable-next-line @typescript-eslint/unbound-method -- wrapped below and called with .call(this)
         const render = view.render;
         const started = performance.now();
         let first = 0;

@@ -14,7 +14,8 @@ export function describeValue(value: unknown): string {
   if (typeof value === 'number') return String(value);
   if (value === undefined) return 'no value';
   if (typeof value === 'string') return quoted(value);
-  return shorten(JSON.stringify(value) ?? String(value));
+  // JSON for everything the tool reads (JSON values); a symbol or function says its type instead.
+  return shorten(JSON.stringify(value) ?? typeof value);
 }
 
 export function rejectValue(field: string, value: unknown, expected: string): never {

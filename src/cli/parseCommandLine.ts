@@ -16,9 +16,9 @@ import { CELL_HEIGHT_2D_PX, STRIP_HEIGHT_PX, checkChartSize } from './chartLayou
 import { parseStrictNumber } from './parseStrictNumber.ts';
 import { parseColonRange, parseRange } from './tableValues.ts';
 
-type CaseFlagName = (typeof CASE_FLAGS)[number]['flag'];
 const MODE_FLAGS = ['cases', 'from', 'to', 'step', 'angles', 'format', 'gamut', 'out', 'height'] as const;
-type Flag = CaseFlagName | (typeof MODE_FLAGS)[number];
+/** A flag's name: a case flag's (from the schema) or one of MODE_FLAGS. */
+type Flag = string;
 const VALUE_FLAGS = [...CASE_FLAGS.map((f) => f.flag), ...MODE_FLAGS];
 const ALL_FLAGS = [...VALUE_FLAGS, 'help'].map((f) => `--${f}`).join(', ');
 
@@ -129,7 +129,10 @@ function chartCommand(flags: Map<Flag, string>, format: ChartFormat, gamut: Gamu
 
 /** Flag name → raw text, or 'help'. Rejects unknown and repeated flags and positionals. */
 function readFlags(argv: readonly string[]): Map<Flag, string> | 'help' {
-  const options = Object.fromEntries([...VALUE_FLAGS.map((f) => [f, { type: 'string' }]), ['help', { type: 'boolean' }]]);
+  const options = Object.fromEntries<{ type: 'string' | 'boolean' }>([
+    ...VALUE_FLAGS.map((f): [string, { type: 'string' }] => [f, { type: 'string' }]),
+    ['help', { type: 'boolean' }],
+  ]);
   const { tokens } = parseArgs({ args: [...argv], options, strict: false, allowPositionals: true, tokens: true });
   const flags = new Map<Flag, string>();
   let help = false;
@@ -146,11 +149,11 @@ function readFlags(argv: readonly string[]): Map<Flag, string> | 'help' {
     if (!(VALUE_FLAGS as readonly string[]).includes(token.name)) {
       throw new ParameterError(token.rawName, `${describeValue(token.rawName)}: unknown flag; expected one of ${ALL_FLAGS}`);
     }
-    if (flags.has(token.name as Flag)) throw new ParameterError(flag, `${flag}: given more than once; expected it at most once`);
+    if (flags.has(token.name)) throw new ParameterError(flag, `${flag}: given more than once; expected it at most once`);
     // A flag with nothing after it reads as an empty value, which every check below rejects.
     // An absurdly long value is refused by the same checks (numbers are at most 32 characters),
     // so its message names the allowed range, with the value cut short.
-    flags.set(token.name as Flag, token.value ?? '');
+    flags.set(token.name, token.value ?? '');
   }
   return help ? 'help' : flags;
 }

@@ -87,7 +87,7 @@ export function airySeriesXyz(optics: FilmOptics, t: SpectralTransform, maxOrder
   const terms = optics.channels.map(airySeriesTerms);
   const white = [t.values[0] as number, t.values[1] as number, t.values[2] as number];
   const sums = terms.map(() => [0, 0, 0, 0, 0, 0]);
-  const powers = terms.map(() => ({ re: 1, im: 0 }) as Complex);
+  const powers = terms.map(() => ({ re: 1, im: 0 }));
   const scales = terms.map(tailScale);
   // The carrier of order m is the first one's m-th power.
   const step = transformCarrier(t, x);

@@ -4,7 +4,7 @@
  * dropped; include guards in the files keep repeats harmless). three.js's own `#include <chunk>`
  * lines are left for three to resolve.
  */
-const files = import.meta.glob('../../shaders/*.glsl', { query: '?raw', import: 'default', eager: true }) as Record<string, string>;
+const files = import.meta.glob<string>('../../shaders/*.glsl', { query: '?raw', import: 'default', eager: true });
 const byName = new Map(Object.entries(files).map(([path, text]) => [path.slice(path.lastIndexOf('/') + 1), text]));
 
 export function shaderSource(name: string, including: readonly string[] = []): string {

@@ -28,11 +28,13 @@ async function countGl(page: Page): Promise<void> {
     const w = window as unknown as { glCanvases: Set<HTMLCanvasElement>; compiles: number };
     w.glCanvases = new Set();
     w.compiles = 0;
+    // eslint-disable-next-line @typescript-eslint/unbound-method -- wrapped below and called with .call(this)
     const getContext = HTMLCanvasElement.prototype.getContext;
     HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, kind: string, ...rest: unknown[]) {
       if (kind === 'webgl2') w.glCanvases.add(this);
       return (getContext as (...a: unknown[]) => unknown).call(this, kind, ...rest);
     } as typeof getContext;
+    // eslint-disable-next-line @typescript-eslint/unbound-method -- wrapped below and called with .call(this)
     const compile = WebGL2RenderingContext.prototype.compileShader;
     WebGL2RenderingContext.prototype.compileShader = function (this: WebGL2RenderingContext, s: WebGLShader) {
       w.compiles++;

@@ -16,6 +16,7 @@ export function watchProblems(page: Page): string[] {
 /** Makes the page's browser one without WebGL (getContext gives null for webgl2 and webgl), from before any script runs. */
 export async function withoutWebGL(page: Page): Promise<void> {
   await page.addInitScript(() => {
+    // eslint-disable-next-line @typescript-eslint/unbound-method -- wrapped below and called with .call(this)
     const getContext = HTMLCanvasElement.prototype.getContext;
     HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, kind: string, ...rest: unknown[]) {
       return kind === 'webgl2' || kind === 'webgl' ? null : (getContext as (...a: unknown[]) => unknown).call(this, kind, ...rest);

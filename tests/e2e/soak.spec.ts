@@ -74,8 +74,8 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
       };
       const controllers = [...soaked.querySelectorAll<HTMLElement>('.lil-controller')];
       const sliders = controllers
-        .filter((c) => c.querySelector('.lil-name')!.textContent! in ranges)
-        .map((c) => ({ range: ranges[c.querySelector('.lil-name')!.textContent!]!, input: c.querySelector('input')! }));
+        .filter((c) => c.querySelector('.lil-name')!.textContent in ranges)
+        .map((c) => ({ range: ranges[c.querySelector('.lil-name')!.textContent]!, input: c.querySelector('input')! }));
       const selects = controllers.map((c) => c.querySelector('select')).filter((s): s is HTMLSelectElement => s !== null);
       let count = 0;
       for (let i = 0; i < changes; i++) {

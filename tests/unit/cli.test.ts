@@ -113,7 +113,7 @@ describe('color CLI, cases file', () => {
   it('answers every case, in input order, with defaults filled in and stated', { timeout: SPAWN_TIMEOUT_MS }, () => {
     const cases = out();
     expect(cases.map((c) => c.id)).toEqual(['bare-glass', 1, 42, 's-head-on', 'p-head-on', 'paper-normalization']);
-    const [bare, empty, paper, s, p, paperNorm] = cases as CaseOutput[] as [
+    const [bare, empty, paper, s, p, paperNorm] = cases as [
       CaseOutput, CaseOutput, CaseOutput, CaseOutput, CaseOutput, CaseOutput,
     ];
     // Bare glass under equal energy: R = 0.04 everywhere and X = Y = Z (CIE 1931's equal-energy white).
@@ -323,7 +323,7 @@ describe('color CLI, bad input (in-process: the whole command but the process)',
   });
 
   it('brackets inside strings do not count as nesting', () => {
-    const text = `[{ "id": "${'['.repeat(90)}\\\"${'{'.repeat(90)}" }]`;
+    const text = `[{ "id": "${'['.repeat(90)}\\"${'{'.repeat(90)}" }]`;
     const r = runColorCommand(['--cases', 'c.json'], () => text);
     expect(r.stderr).toBe('');
     expect(r.exitCode).toBe(0);
