@@ -14,4 +14,15 @@ vec3 environmentRadiance(vec3 direction) {
 #endif
 }
 
+// The light a wall reflects from the mirror direction: with ENVIRONMENT 0 the illuminant's white
+// (luminance 1 from every direction: the reference views' film colour, unchanged); otherwise
+// the environment itself.
+vec3 reflectedRadiance(vec3 direction) {
+#if ENVIRONMENT == 0
+  return vec3(1.0);
+#else
+  return environmentRadiance(direction);
+#endif
+}
+
 #endif

@@ -46,6 +46,17 @@ export function environmentRadiance(direction: Vec3, env: FilmSettings['env']): 
     : mix([0.2, 0.22, 0.16], [0.05, 0.08, 0.04], smoothstep(0, -0.6, y));
 }
 
+/** shaders/environment.glsl's reflectedRadiance: the illuminant's white with `env=none`, else the environment. */
+export function reflectedRadiance(direction: Vec3, env: FilmSettings['env']): Rgb {
+  return env === 'none' ? [1, 1, 1] : environmentRadiance(direction, env);
+}
+
+/** GLSL's reflect(): d mirrored in the plane of the unit normal n. */
+const reflect = (d: Vec3, n: Vec3): Vec3 => {
+  const k = 2 * dot(d, n);
+  return [d[0] - k * n[0], d[1] - k * n[1], d[2] - k * n[2]];
+};
+
 type FilmColor = (thicknessNm: number, cosIncidence: number, fromInside: boolean) => Rgb;
 
 /** The film's linear sRGB (eq 19 after eqs 1–18) at a thickness and cos θ_i, from the memoised lattice. */
@@ -78,8 +89,8 @@ function filmColorLattice(s: FilmSettings): FilmColor {
 
 /**
  * A still image of the bubble computed on the CPU by src/physics, for pages without WebGL2:
- * the geometry and light paths of shaders/bubble.frag.glsl (near wall, far wall seen from inside
- * at the same θ_i, environment behind) at `settings.timeSeconds`, in sRGB (8-bit, clipped).
+ * the geometry and light paths of shaders/bubble.frag.glsl (near wall and far wall seen from
+ * inside at the same θ_i, each reflecting the environment in its mirror direction, environment behind) at `settings.timeSeconds`, in sRGB (8-bit, clipped).
  * Row 0 is the top. Differences from the GPU: sRGB even where a wide gamut was asked for (no
  * hatching), film colours interpolated on a lattice (see COS_STEPS), one ray per pixel (no antialiasing).
  */
@@ -114,11 +125,13 @@ function bubbleRadiance(s: FilmSettings, film: FilmColor, eye: Vec3, dir: Vec3, 
   const cos = clamp01(Math.abs(dot(p, dir)));
   const nearR = film(thicknessAt(p, s), cos, false);
   let behind = environmentRadiance(dir, s.env);
+  const nearLight = reflectedRadiance(reflect(dir, p), s.env);
   if (s.sides === 'both') {
     // The chord through a unit sphere at incidence θ has length 2 cos θ (toEye = −dir).
     const far = normalize([p[0] + 2 * cos * dir[0], p[1] + 2 * cos * dir[1], p[2] + 2 * cos * dir[2]]);
     const farR = film(thicknessAt(far, s), cos, true);
-    behind = [0, 1, 2].map((i) => s.exposure * farR[i]! + clamp01(1 - farR[i]!) * behind[i]!) as unknown as Rgb;
+    const farLight = reflectedRadiance(reflect(dir, far), s.env);
+    behind = [0, 1, 2].map((i) => s.exposure * farR[i]! * farLight[i]! + clamp01(1 - farR[i]!) * behind[i]!) as unknown as Rgb;
   }
-  return [0, 1, 2].map((i) => s.exposure * nearR[i]! + clamp01(1 - nearR[i]!) * behind[i]!) as unknown as Rgb;
+  return [0, 1, 2].map((i) => s.exposure * nearR[i]! * nearLight[i]! + clamp01(1 - nearR[i]!) * behind[i]!) as unknown as Rgb;
 }
