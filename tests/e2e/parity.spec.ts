@@ -10,6 +10,7 @@ import { MODES } from '../../src/render/filmSettings.ts';
 import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
 import type { ParityGroup, ParityMode } from '../../src/render/parityCase.ts';
 import { mulberry32 } from '../seededRandom.ts';
+import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS } from '../tolerances.ts';
 
 /**
  * Shader parity as numbers: the real GLSL (shaders/filmColor.glsl, every mode of MODES)
@@ -18,15 +19,6 @@ import { mulberry32 } from '../seededRandom.ts';
  * they are compared by ΔE00 under the case's illuminant white.
  */
 
-/** The bound on the documented domain: well under a just-noticeable difference (~1). */
-const MAX_DELTA_E00_FIXED = 0.5;
-/**
- * The stress domain (20 µm films, grazing light, total internal reflection, n to 2.5) is held to
- * the benchmark's stress goal, 1: about a just-noticeable difference. Measured: exact 0.82 (n 2.5,
- * 14.6 µm, 79°), table 0.88. (Before the float32 guard near grazing and the 1024 × 128 cos θ ∝ v²
- * table it was 3.5 for the table and 6.2 before that.)
- */
-const MAX_DELTA_E00_STRESS = 1;
 
 const ILLUMINANTS: readonly IlluminantSpec[] = ['D55', 'D65', 'D93', 'E', 'D65-table', { daylightCct: 4000 }, { daylightCct: 12000 }];
 

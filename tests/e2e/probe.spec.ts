@@ -3,6 +3,7 @@ import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { reference8 } from './referenceColor.ts';
+import { ANGLE_TOL_DEG } from '../tolerances.ts';
 
 /**
  * Clicking the bubble probes that pixel; the readout's numbers are checked against geometry
@@ -27,8 +28,6 @@ function incidenceDeg(fx: number, fy: number, aspect: number): number {
   return (Math.acos(cos) * 180) / Math.PI;
 }
 
-/** The angle is read from the pixel's corner, not its centre, and shown to 0.01°. */
-const ANGLE_TOL_DEG = 0.3;
 /** The readout shows XYZ to 4 decimals and θ_i to 0.01°: for a dim film that rounding alone is a few hundredths. */
 const READOUT_ROUNDING_DELTA_E00 = 0.05;
 /** The shader's film colour against the reference at the same film: parity.spec.ts's bound. */

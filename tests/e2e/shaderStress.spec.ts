@@ -6,6 +6,7 @@ import { type Xyz, binnedXyz, filmXyz, spectralBins, spectralWeights, whiteXyz }
 import { DEFAULT_FILM_QUALITY } from '../../src/render/filmQuality.ts';
 import { MODES } from '../../src/render/filmSettings.ts';
 import type { ParityGroup, ParityMode } from '../../src/render/parityCase.ts';
+import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS, WHITE_BOUND_SLACK } from '../tolerances.ts';
 
 /**
  * The shader under numerical stress (docs/gpu.md#float32-limits), through the float-target harness
@@ -14,8 +15,6 @@ import type { ParityGroup, ParityMode } from '../../src/render/parityCase.ts';
  * then where float32 stops being good enough in `exact` mode, against the float64 reference.
  */
 
-/** R ≤ 1 and non-negative bin weights bound XYZ by the illuminant's white; float32 sums of 90 terms round by ~1e-6. */
-const WHITE_BOUND_SLACK = 1e-4;
 
 /** Indices 1–4 in every order: film above, below, equal to its media; TIR at either face; frustrated TIR. */
 const STACKS = [
@@ -72,7 +71,7 @@ function binned64(g: ParityGroup, thicknessNm: number, angleDeg: number): Xyz {
 }
 
 /** ΔE00 steps where float32 is called no longer good enough: the parity bound, and a just-noticeable difference. */
-const LIMITS = [0.5, 1] as const;
+const LIMITS = [MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS] as const;
 
 test('exact mode: where float32 stops being good enough, along thickness and along angle', async ({ page }) => {
   const soap = { nOutside: 1, nFilm: 1.33, nInside: 1, illuminant: 'D65', polarization: 'unpolarized', normalization: 'white' } as const;
@@ -101,7 +100,8 @@ test('exact mode: where float32 stops being good enough, along thickness and alo
   writeFileSync(new URL('./float32-figures.json', import.meta.url), `${JSON.stringify(figures, null, 2)}\n`);
   // Measured: float32 alone stays under the parity bound along every sweep (max 0.36, 300 nm near grazing).
   for (const f of figures) expect(f.maxFloat32Only, f.sweep).toBeLessThanOrEqual(LIMITS[0]);
-  for (const f of figures) expect(Number.isFinite(f.maxVsReference), f.sweep).toBe(true);
+  // Against the reference the 90 bins' own sampling error adds (beyond 18.25 µm); measured max 0.71.
+  for (const f of figures) expect(f.maxVsReference, f.sweep).toBeLessThanOrEqual(LIMITS[1]);
 });
 
 /** Inside this fraction of the bubble's radius a pixel sees film over sky or ground, never pure black. */

@@ -2,6 +2,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { mulberry32 } from '../seededRandom.ts';
 import { watchProblems } from './pageWatch.ts';
 import { BUILT_URL } from './servers.ts';
+import { HEAP_GROWTH_BOUND_MB } from '../tolerances.ts';
 
 /**
  * A long session in one page (README, *Robustness*), on the built element: 10 000 changes through one
@@ -16,8 +17,6 @@ const CHANGES = 10_000;
 /** A frame is drawn after every this many changes (40 frames: table rebuilds, exact frames, plots). */
 const CHANGES_PER_FRAME = 250;
 const CYCLES = 10;
-/** What the page may keep after all that: caches the code bounds on purpose (64 spectral weight sets of 11 kB). */
-const HEAP_GROWTH_BOUND_MB = 4;
 
 const SIZE = 'style="display: inline-block; width: 120px; height: 90px"';
 

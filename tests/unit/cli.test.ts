@@ -18,17 +18,12 @@ import { runColorCommand } from '../../src/cli/runColorCommand.ts';
 import { jsonNestingDepth } from '../../src/cli/jsonNestingDepth.ts';
 import { MAX_TABLE_ROWS, evenlySpaced } from '../../src/cli/tableValues.ts';
 import { ABSURDLY_LONG, DEEPLY_NESTED, NOT_NUMBERS, notNames, outsideRange } from './fixtures/badValues.ts';
+import { EQUAL_ENERGY_TOLERANCE, FLOAT_TOLERANCE, GOLDEN_TOL } from '../tolerances.ts';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const FIXTURES = 'tests/unit/fixtures';
 /** Each spawn starts tsx (~0.5 s); allow for a loaded machine. */
 const SPAWN_TIMEOUT_MS = 30_000;
-/** docs/physics.md#golden-value gives the golden reflectance to 7 decimals. */
-const GOLDEN_TOLERANCE = 5e-8;
-/** Rounding only: the film is no film, or R is constant over λ. */
-const FLOAT_TOLERANCE = 1e-12;
-/** ∫x̄, ∫ȳ, ∫z̄ agree to ~3e-4 over 360–830 nm; the 380 nm cut-off adds a little. */
-const EQUAL_ENERGY_TOLERANCE = 2e-3;
 
 interface Spawned {
   readonly status: number | null;
@@ -77,7 +72,7 @@ describe('color CLI, one case from flags', () => {
     expect(c.normalization).toBe('white');
     expect(c.illuminant).toBe('D65');
     expect(c.reflectance).toHaveLength(1);
-    expect(Math.abs((c.reflectance[0] as number) - 0.1215919)).toBeLessThan(GOLDEN_TOLERANCE);
+    expect(Math.abs((c.reflectance[0] as number) - 0.1215919)).toBeLessThan(GOLDEN_TOL);
   });
 
   it('a film of thickness 0 between equal media reflects nothing: black', { timeout: SPAWN_TIMEOUT_MS }, () => {

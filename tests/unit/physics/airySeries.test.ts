@@ -5,11 +5,8 @@ import { airySeriesConverges, airySeriesTerms, airySeriesXyz, fourierXyz } from 
 import { type FilmStack, SOAP_FILM_IN_AIR, filmOptics, reflectanceAt } from '../../../src/physics/filmReflectance.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, filmXyz, spectralBins, spectralWeights, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
 import { spectralTransform } from '../../../src/physics/spectralTransform.ts';
+import { IDENTITY_TOL, SERIES_DE00 } from '../../tolerances.ts';
 
-/** The series is exact; what is left is F's tabulation (10 nm of path) and the truncation bound 1e-5. */
-const SERIES_DE00 = 0.1;
-/** An identity of eqs (13)–(14): the Fourier series of R(φ) summed to convergence. */
-const IDENTITY_TOL = 1e-12;
 
 const weights = spectralWeights('D65');
 const transform = spectralTransform(weights);

@@ -5,9 +5,8 @@
 import { describe, expect, it } from 'vitest';
 import { FILM_STACK_DOMAIN, type FilmStack, POLARIZATIONS, filmReflectance, filmTransmittance } from '../../../src/physics/filmReflectance.ts';
 import { ParameterError } from '../../../src/physics/validate.ts';
+import { ALGEBRAIC_TOL } from '../../tolerances.ts';
 
-/** Analytically equal values computed two ways differ by rounding of O(1) terms only. */
-const ALGEBRAIC_TOL = 1e-12;
 /** Indices chosen to make every ordering: film above, below and between its media; TIR and frustrated TIR. */
 const INDICES = [1, 1.33, 1.5, 2.5, 4] as const;
 const LAMBDA_NM = 537;

@@ -11,11 +11,8 @@ import {
 } from '../../../src/physics/filmReflectance.ts';
 import { fresnelCoefficients } from '../../../src/physics/fresnel.ts';
 import { cosDeg, refractedCos } from '../../../src/physics/snell.ts';
+import { ALGEBRAIC_TOL, GOLDEN_TOL, QUADRATURE_TOL } from '../../tolerances.ts';
 
-/** Float64 formulas that are algebraically equal agree to a few ulps of their O(1) terms. */
-const ALGEBRAIC_TOL = 1e-12;
-/** The golden value (docs/physics.md#golden-value) is given to 7 decimals. */
-const GOLDEN_TOL = 5e-8;
 
 const stack = (over: Partial<FilmStack>): FilmStack => ({ nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 0, ...over });
 
@@ -164,9 +161,51 @@ describe('the closed-form mean of R over a phase window', () => {
       const optics = filmOptics(s, pol);
       optics.channels.forEach((c, i) => {
         for (const [phi0, w] of [[9.3, 0.01], [17.1, 0.5], [100.2, 2], [40, 3.14159], [60, 10]] as const) {
-          expect(Math.abs(meanChannelReflectance(c, phi0, w) - numericMean(optics, i, phi0, w))).toBeLessThan(1e-7);
+          expect(Math.abs(meanChannelReflectance(c, phi0, w) - numericMean(optics, i, phi0, w))).toBeLessThan(QUADRATURE_TOL);
         }
       });
+    }
+  });
+  it('equals an independent quadrature of eqs (5)–(14) written out here (real angles, s and p)', () => {
+    // Fresnel amplitudes (5), (6), (9), (10) and the Airy sum (13)–(14), from the equations alone.
+    const cosIn = (n: number, na: number, angleDeg: number) => Math.sqrt(1 - ((na * Math.sin((angleDeg * Math.PI) / 180)) / n) ** 2);
+    const airyMean = (s: FilmStack, pol: 's' | 'p', phi0: number, w: number) => {
+      const [na, nb, nc] = [s.nOutside, s.nFilm, s.nInside];
+      const [ca, cb, cc] = [cosIn(na, na, s.angleDeg), cosIn(nb, na, s.angleDeg), cosIn(nc, na, s.angleDeg)];
+      const r = (n1: number, c1: number, n2: number, c2: number) =>
+        pol === 's' ? (n1 * c1 - n2 * c2) / (n1 * c1 + n2 * c2) : (n2 * c1 - n1 * c2) / (n2 * c1 + n1 * c2);
+      const t = (n1: number, c1: number, n2: number, c2: number) =>
+        pol === 's' ? (2 * n1 * c1) / (n1 * c1 + n2 * c2) : (2 * n1 * c1) / (n2 * c1 + n1 * c2);
+      const [rab, rba, rbc] = [r(na, ca, nb, cb), r(nb, cb, na, ca), r(nb, cb, nc, cc)];
+      const T = t(na, ca, nb, cb) * t(nb, cb, na, ca);
+      const n = 40000; // Simpson's rule on |r(φ)|² over [φ0 − w, φ0 + w]
+      const reflectance = (phi: number) => {
+        // r = r_ab + T r_bc e^{iφ} / (1 − r_ba r_bc e^{iφ}), all coefficients real here
+        const [cr, ci] = [Math.cos(phi), Math.sin(phi)];
+        const [dr, di] = [1 - rba * rbc * cr, -rba * rbc * ci];
+        const d2 = dr * dr + di * di;
+        const [nr, ni] = [T * rbc * cr, T * rbc * ci];
+        const re = rab + (nr * dr + ni * di) / d2;
+        const im = (ni * dr - nr * di) / d2;
+        return re * re + im * im;
+      };
+      const h = (2 * w) / n;
+      let sum = reflectance(phi0 - w) + reflectance(phi0 + w);
+      for (let k = 1; k < n; k++) sum += (k % 2 ? 4 : 2) * reflectance(phi0 - w + k * h);
+      return (sum * h) / 3 / (2 * w);
+    };
+    const cases: [FilmStack, 's' | 'p'][] = [
+      [stack({ angleDeg: 30 }), 's'],
+      [stack({ angleDeg: 30 }), 'p'],
+      [{ nOutside: 1, nFilm: 2.5, nInside: 1.2, thicknessNm: 500, angleDeg: 80 }, 'p'],
+      [{ nOutside: 1.5, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 40 }, 's'],
+      [stack({ angleDeg: 89 }), 's'],
+    ];
+    for (const [s, pol] of cases) {
+      const channel = filmOptics(s, pol).channels[0]!;
+      for (const [phi0, w] of [[9.3, 0.01], [17.1, 0.5], [100.2, 2], [40, 3.14159], [60, 10]] as const) {
+        expect(Math.abs(meanChannelReflectance(channel, phi0, w) - airyMean(s, pol, phi0, w)), `${pol} ${s.angleDeg}° ${phi0}±${w}`).toBeLessThan(QUADRATURE_TOL);
+      }
     }
   });
   it('is the point value for a zero-width window', () => {

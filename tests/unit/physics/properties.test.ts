@@ -1,9 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { filmOptics, reflectanceAt, transmittanceAt, POLARIZATIONS } from '../../../src/physics/filmReflectance.ts';
 import { mulberry32 } from '../../seededRandom.ts';
+import { ENERGY_TOL } from '../../tolerances.ts';
 
-/** R + T = 1 holds to rounding (docs/physics.md#energy-conservation). */
-const ENERGY_TOL = 1e-12;
 const CASES = 100_000;
 
 describe(`properties over ${CASES} random inputs in the whole domain`, () => {

@@ -2,11 +2,8 @@ import { describe, expect, it } from 'vitest';
 import { deltaE00 } from '../../../src/physics/colorDifference.ts';
 import { filmOptics } from '../../../src/physics/filmReflectance.ts';
 import { binnedXyz, significantBins, spectralBins, spectralWeights, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
+import { MAX_SKIP_DE00, TAIL_TOLERANCE } from '../../tolerances.ts';
 
-/** The shaders' tolerance (DEFAULT_FILM_QUALITY.spectralTailTolerance). */
-const TAIL_TOLERANCE = 1e-5;
-/** What skipping may cost: far below a just-noticeable difference (~1). */
-const MAX_SKIP_DE00 = 0.02;
 
 describe('significantBins: the spectral tails a shader may skip', () => {
   for (const illuminant of ['D55', 'D65', 'D93', 'E', { daylightCct: 4000 }, { daylightCct: 25000 }] as const) {
