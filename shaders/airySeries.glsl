@@ -13,17 +13,17 @@
 #include "filmReflectance.glsl"
 
 // The truncation rule of airySeriesXyz (TypeScript): stop when the terms left are below
-// AIRY_SERIES_TOLERANCE of the white, when F runs off its table, or at AIRY_SERIES_MAX_ORDERS;
+// TFC_AIRY_SERIES_TOLERANCE of the white, when F runs off its table, or at TFC_AIRY_SERIES_MAX_ORDERS;
 // airySeriesConverges says whether the first two come before the last.
-#ifndef AIRY_SERIES_MAX_ORDERS
-#define AIRY_SERIES_MAX_ORDERS 128
+#ifndef TFC_AIRY_SERIES_MAX_ORDERS
+#define TFC_AIRY_SERIES_MAX_ORDERS 128
 #endif
-#ifndef AIRY_SERIES_TOLERANCE
-#define AIRY_SERIES_TOLERANCE 1e-5
+#ifndef TFC_AIRY_SERIES_TOLERANCE
+#define TFC_AIRY_SERIES_TOLERANCE 1e-5
 #endif
-// 1: the series cut at AIRY_SERIES_MAX_ORDERS as peers do (the benchmark's m <= 2, m <= 3 rows).
-#ifndef AIRY_SERIES_TRUNCATED
-#define AIRY_SERIES_TRUNCATED 0
+// 1: the series cut at TFC_AIRY_SERIES_MAX_ORDERS as peers do (the benchmark's m <= 2, m <= 3 rows).
+#ifndef TFC_AIRY_SERIES_TRUNCATED
+#define TFC_AIRY_SERIES_TRUNCATED 0
 #endif
 
 uniform sampler2D uSpectralTransform;
@@ -71,28 +71,28 @@ float airySeriesTailScale(AirySeriesTerms t) {
   return length(t.b) / max(1.0 - length(t.q), 1e-7);
 }
 
-// Whether AIRY_SERIES_MAX_ORDERS terms reach the tolerance or the end of F's table at path x. They
+// Whether TFC_AIRY_SERIES_MAX_ORDERS terms reach the tolerance or the end of F's table at path x. They
 // do not for high-finesse thin films near grazing incidence (|q| -> 1): callers integrate those by bins.
-bool airySeriesConvergesAt(AirySeriesTerms t[FILM_CHANNELS], float x) {
-  float orders = float(AIRY_SERIES_MAX_ORDERS);
+bool airySeriesConvergesAt(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
+  float orders = float(TFC_AIRY_SERIES_MAX_ORDERS);
   if (x * orders >= float(SPECTRAL_TRANSFORM_STEP_NM) * float(SPECTRAL_TRANSFORM_COUNT - 1)) return true;
-  for (int c = 0; c < FILM_CHANNELS; c++) {
+  for (int c = 0; c < TFC_FILM_CHANNELS; c++) {
     float scale = airySeriesTailScale(t[c]);
     float rho = length(t[c].q);
-    if (scale >= AIRY_SERIES_TOLERANCE && (rho >= 1.0 || (orders - 1.0) * log(rho) > log(AIRY_SERIES_TOLERANCE / scale))) return false;
+    if (scale >= TFC_AIRY_SERIES_TOLERANCE && (rho >= 1.0 || (orders - 1.0) * log(rho) > log(TFC_AIRY_SERIES_TOLERANCE / scale))) return false;
   }
   return true;
 }
 
 // X_j = C0 W_j + 2 Re(B sum q^(m-1) F_j(m x)), averaged over the channels.
-vec3 airySeriesSum(AirySeriesTerms t[FILM_CHANNELS], float x) {
-  vec3 sumRe[FILM_CHANNELS];
-  vec3 sumIm[FILM_CHANNELS];
-  vec2 power[FILM_CHANNELS];
-  float powerAbs[FILM_CHANNELS];
-  float rho[FILM_CHANNELS];
-  float leftScale[FILM_CHANNELS];
-  for (int c = 0; c < FILM_CHANNELS; c++) {
+vec3 airySeriesSum(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
+  vec3 sumRe[TFC_FILM_CHANNELS];
+  vec3 sumIm[TFC_FILM_CHANNELS];
+  vec2 power[TFC_FILM_CHANNELS];
+  float powerAbs[TFC_FILM_CHANNELS];
+  float rho[TFC_FILM_CHANNELS];
+  float leftScale[TFC_FILM_CHANNELS];
+  for (int c = 0; c < TFC_FILM_CHANNELS; c++) {
     sumRe[c] = vec3(0.0);
     sumIm[c] = vec3(0.0);
     power[c] = vec2(1.0, 0.0);
@@ -103,14 +103,14 @@ vec3 airySeriesSum(AirySeriesTerms t[FILM_CHANNELS], float x) {
   // The carrier of order m is the first one's m-th power (a product per order, not a sine).
   vec2 step = transformCarrier(x);
   vec2 carrier = step;
-  for (int m = 1; m <= AIRY_SERIES_MAX_ORDERS; m++) {
+  for (int m = 1; m <= TFC_AIRY_SERIES_MAX_ORDERS; m++) {
     float left = 0.0;
-    for (int c = 0; c < FILM_CHANNELS; c++) left = max(left, leftScale[c] * powerAbs[c]);
-    if (left < AIRY_SERIES_TOLERANCE) break;
+    for (int c = 0; c < TFC_FILM_CHANNELS; c++) left = max(left, leftScale[c] * powerAbs[c]);
+    if (left < TFC_AIRY_SERIES_TOLERANCE) break;
     vec3 fr, fi;
     if (!transformAt(float(m) * x, carrier, fr, fi)) break;
     carrier = cMul(carrier, step);
-    for (int c = 0; c < FILM_CHANNELS; c++) {
+    for (int c = 0; c < TFC_FILM_CHANNELS; c++) {
       sumRe[c] += power[c].x * fr - power[c].y * fi;
       sumIm[c] += power[c].x * fi + power[c].y * fr;
       power[c] = cMul(power[c], t[c].q);
@@ -119,12 +119,12 @@ vec3 airySeriesSum(AirySeriesTerms t[FILM_CHANNELS], float x) {
   }
   vec3 white = texelFetch(uSpectralTransform, ivec2(0), 0).xyz;
   vec3 xyz = vec3(0.0);
-  for (int c = 0; c < FILM_CHANNELS; c++) xyz += t[c].c0 * white + 2.0 * (t[c].b.x * sumRe[c] - t[c].b.y * sumIm[c]);
-  return xyz / float(FILM_CHANNELS);
+  for (int c = 0; c < TFC_FILM_CHANNELS; c++) xyz += t[c].c0 * white + 2.0 * (t[c].b.x * sumRe[c] - t[c].b.y * sumIm[c]);
+  return xyz / float(TFC_FILM_CHANNELS);
 }
 
-void airySeriesTermsOf(FilmOptics o, out AirySeriesTerms t[FILM_CHANNELS]) {
-  for (int c = 0; c < FILM_CHANNELS; c++) t[c] = airySeriesTerms(o.channels[c]);
+void airySeriesTermsOf(FilmOptics o, out AirySeriesTerms t[TFC_FILM_CHANNELS]) {
+  for (int c = 0; c < TFC_FILM_CHANNELS; c++) t[c] = airySeriesTerms(o.channels[c]);
 }
 
 #endif

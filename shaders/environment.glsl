@@ -1,10 +1,10 @@
-// The environment seen through the bubble: ENVIRONMENT 0 none (black) | 1 a procedural sky
+// The environment seen through the bubble: TFC_ENVIRONMENT 0 none (black) | 1 a procedural sky
 // (blue zenith, pale horizon, dark green ground), in linear sRGB.
 #ifndef THIN_FILM_ENVIRONMENT
 #define THIN_FILM_ENVIRONMENT
 
 vec3 environmentRadiance(vec3 direction) {
-#if ENVIRONMENT == 0
+#if TFC_ENVIRONMENT == 0
   return vec3(0.0);
 #else
   float y = normalize(direction).y;
@@ -14,11 +14,11 @@ vec3 environmentRadiance(vec3 direction) {
 #endif
 }
 
-// The light a wall reflects from the mirror direction: with ENVIRONMENT 0 the illuminant's white
+// The light a wall reflects from the mirror direction: with TFC_ENVIRONMENT 0 the illuminant's white
 // (luminance 1 from every direction: the reference views' film colour, unchanged); otherwise
 // the environment itself.
 vec3 reflectedRadiance(vec3 direction) {
-#if ENVIRONMENT == 0
+#if TFC_ENVIRONMENT == 0
   return vec3(1.0);
 #else
   return environmentRadiance(direction);

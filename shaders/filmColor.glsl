@@ -1,7 +1,7 @@
-// The film's XYZ at a thickness and cos θ_i, by the method FILM_MODE selects:
+// The film's XYZ at a thickness and cos θ_i, by the method TFC_FILM_MODE selects:
 //   0 exact: the binned spectral integral per fragment;  1 table: one filtered lookup;
 //   2 fourier: the Airy series per fragment (airySeries.glsl; by bins where it has no real path or
-//     needs more than AIRY_SERIES_MAX_ORDERS terms);
+//     needs more than TFC_AIRY_SERIES_MAX_ORDERS terms);
 //   3 three.js's iridescence (Belcour–Barla, `evalIridescence`), the benchmark's peer.
 // fromInside swaps the outer and inner media (the far wall seen through the bubble).
 #ifndef THIN_FILM_COLOR
@@ -11,15 +11,15 @@ uniform float uNOutside;
 uniform float uNFilm;
 uniform float uNInside;
 
-#if FILM_MODE == 0
-#include "spectralIntegration.glsl"
+#if TFC_FILM_MODE == 0
+#include "binnedIntegration.glsl"
 
 vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
   return binnedXyz(filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence), 0.0);
 }
-#elif FILM_MODE == 1
+#elif TFC_FILM_MODE == 1
 #include "filmTableLayout.glsl"
 uniform sampler2D uFilmTable;
 uniform float uTableMaxThicknessNm;
@@ -33,18 +33,18 @@ vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   vec2 texel = vec2(uv.x * (uFilmTableWidth - 1.0), rowOffset + uv.y * (uFilmTableRows - 1.0)) + 0.5;
   return texture(uFilmTable, texel / size).xyz;
 }
-#elif FILM_MODE == 2
+#elif TFC_FILM_MODE == 2
 #include "airySeries.glsl"
-#include "spectralIntegration.glsl"
+#include "binnedIntegration.glsl"
 
 vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
   FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
-  AirySeriesTerms t[FILM_CHANNELS];
+  AirySeriesTerms t[TFC_FILM_CHANNELS];
   airySeriesTermsOf(o, t);
   float x = o.opticalPathNm.x;
-  return o.opticalPathNm.y == 0.0 && (AIRY_SERIES_TRUNCATED == 1 || airySeriesConvergesAt(t, x)) ? airySeriesSum(t, x) : binnedXyz(o, 0.0);
+  return o.opticalPathNm.y == 0.0 && (TFC_AIRY_SERIES_TRUNCATED == 1 || airySeriesConvergesAt(t, x)) ? airySeriesSum(t, x) : binnedXyz(o, 0.0);
 }
 #else
 #define USE_IRIDESCENCE

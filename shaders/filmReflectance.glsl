@@ -1,7 +1,7 @@
 // Film reflectance by the Airy sum, eqs (1)-(14), and its closed-form mean over a phase window.
 // Mirrors src/physics/filmReflectance.ts. Defines:
-//   POLARIZATION  0 unpolarized (R_s + R_p)/2 | 1 paper (eqs 4, 8: amplitudes averaged) | 2 s | 3 p
-//   POLARIZATION_UNIFORM  1: the polarisation is the uniform uPolarization (same codes) and there are
+//   TFC_POLARIZATION  0 unpolarized (R_s + R_p)/2 | 1 paper (eqs 4, 8: amplitudes averaged) | 2 s | 3 p
+//   TFC_POLARIZATION_UNIFORM  1: the polarisation is the uniform uPolarization (same codes) and there are
 //     always two channels (a single polarisation twice): one program for every polarisation.
 #ifndef THIN_FILM_REFLECTANCE
 #define THIN_FILM_REFLECTANCE
@@ -9,15 +9,15 @@
 #include "snell.glsl"
 #include "fresnel.glsl"
 
-#ifndef POLARIZATION
-#define POLARIZATION 0
+#ifndef TFC_POLARIZATION
+#define TFC_POLARIZATION 0
 #endif
-#if POLARIZATION == 0 || defined(POLARIZATION_UNIFORM)
-#define FILM_CHANNELS 2
+#if TFC_POLARIZATION == 0 || defined(TFC_POLARIZATION_UNIFORM)
+#define TFC_FILM_CHANNELS 2
 #else
-#define FILM_CHANNELS 1
+#define TFC_FILM_CHANNELS 1
 #endif
-#ifdef POLARIZATION_UNIFORM
+#ifdef TFC_POLARIZATION_UNIFORM
 uniform int uPolarization;
 #endif
 
@@ -26,7 +26,7 @@ uniform int uPolarization;
 struct AiryTerms { vec2 rab; vec2 multiple; vec2 roundTrip; };
 
 struct FilmOptics {
-  AiryTerms channels[FILM_CHANNELS];
+  AiryTerms channels[TFC_FILM_CHANNELS];
   // Δ = 2 n_b d cos θ_r (eq 12 reduced), complex past the critical angle
   vec2 opticalPathNm;
 };
@@ -46,13 +46,13 @@ AiryTerms airyTerms(InterfaceCoefficients ab, InterfaceCoefficients ba, Interfac
 }
 
 int channelKind(int i) {
-#ifdef POLARIZATION_UNIFORM
+#ifdef TFC_POLARIZATION_UNIFORM
   return uPolarization == 0 ? i : (uPolarization == 1 ? 2 : uPolarization - 2);
-#elif POLARIZATION == 0
+#elif TFC_POLARIZATION == 0
   return i;
-#elif POLARIZATION == 1
+#elif TFC_POLARIZATION == 1
   return 2;
-#elif POLARIZATION == 2
+#elif TFC_POLARIZATION == 2
   return 0;
 #else
   return 1;
@@ -68,13 +68,13 @@ FilmOptics filmOptics(float nOutside, float nFilm, float nInside, float thicknes
   if (thicknessNm == 0.0) {
     // A zero-thickness film is no film: the bare a|c interface.
     InterfaceCoefficients ac = fresnelCoefficients(nOutside, cosI, nInside, cosT);
-    for (int i = 0; i < FILM_CHANNELS; i++) o.channels[i] = AiryTerms(channelOf(ac, channelKind(i)).xy, vec2(0.0), vec2(0.0));
+    for (int i = 0; i < TFC_FILM_CHANNELS; i++) o.channels[i] = AiryTerms(channelOf(ac, channelKind(i)).xy, vec2(0.0), vec2(0.0));
     return o;
   }
   InterfaceCoefficients ab = fresnelCoefficients(nOutside, cosI, nFilm, cosR);
   InterfaceCoefficients ba = fresnelCoefficients(nFilm, cosR, nOutside, cosI);
   InterfaceCoefficients bc = fresnelCoefficients(nFilm, cosR, nInside, cosT);
-  for (int i = 0; i < FILM_CHANNELS; i++) o.channels[i] = airyTerms(ab, ba, bc, channelKind(i));
+  for (int i = 0; i < TFC_FILM_CHANNELS; i++) o.channels[i] = airyTerms(ab, ba, bc, channelKind(i));
   return o;
 }
 
@@ -88,8 +88,8 @@ float channelReflectance(AiryTerms c, vec2 z) {
 float reflectanceAt(FilmOptics o, float lambdaNm) {
   vec2 z = cExpI(o.opticalPathNm * (6.283185307179586 / lambdaNm));
   float sum = 0.0;
-  for (int i = 0; i < FILM_CHANNELS; i++) sum += channelReflectance(o.channels[i], z);
-  return min(1.0, sum / float(FILM_CHANNELS));
+  for (int i = 0; i < TFC_FILM_CHANNELS; i++) sum += channelReflectance(o.channels[i], z);
+  return min(1.0, sum / float(TFC_FILM_CHANNELS));
 }
 
 // The mean of one channel's R over phases [φ0 - w, φ0 + w] in closed form; the derivation is in
@@ -127,6 +127,7 @@ float meanChannelReflectance(AiryTerms c, float phaseCenter, float halfWidth) {
   float dMinus = 1.0 + rho2 - 2.0 * rho * cos(psi0 - w);
   float qOverW = 4.0 * rho * sin0 * sinc / (dPlus + dMinus);
   float q = qOverW * w;
+  // Below |q| = 1e-3, atanh(q)/q = 1 + q^2/3 to 2e-13, as in the TypeScript twin.
   float L = abs(q) < 1e-3 ? qOverW * (1.0 + q * q / 3.0) : atanh(q) / q * qOverW;
   float mean = (a0 * (1.0 + dA) + u.x * (2.0 * rho2 + (1.0 + rho2) * dA)) / (1.0 - rho2) - u.y * L;
   return clamp(mean, 0.0, 1.0);

@@ -1,13 +1,13 @@
 // The table of film XYZ over (thickness, cos θ_i), uFilmTableWidth x 2 uFilmTableRows texels:
 // the lower half for light arriving from outside (n_a = uNOutside), the upper half from inside
 // (media swapped: the far wall of the bubble). Texel positions: filmTableLayout.glsl.
-// Filled by TABLE_FILL: 0 the binned integral, each texel averaged over its thickness cell so
+// Filled by TFC_TABLE_FILL: 0 the binned integral, each texel averaged over its thickness cell so
 // fringes finer than a cell do not alias; 1 the Airy series (airySeries.glsl) at the texel's film,
 // or the bins where the series has no real path or needs too many terms. The series' C0, B, q
 // depend on the row only: uAirySeriesRows holds them per row (src/render/airySeriesRows.ts,
 // computed in float64), so a texel only sums the series.
 // Built by src/render/filmTable.ts.
-#include "spectralIntegration.glsl"
+#include "binnedIntegration.glsl"
 #include "airySeries.glsl"
 #include "filmTableLayout.glsl"
 
@@ -16,17 +16,17 @@ uniform float uNFilm;
 uniform float uNInside;
 uniform float uTableMaxThicknessNm;
 
-#if TABLE_FILL == 1
+#if TFC_TABLE_FILL == 1
 // Row y, texels 0-2: C0, B, q of channel 0, then of channel 1, then the path per nm of thickness
 // (2 n_b cos θ_r) and 1 where it is real (0: an evanescent film, no series).
 uniform sampler2D uAirySeriesRows;
 
-bool rowSeries(int y, out AirySeriesTerms t[FILM_CHANNELS], out float pathPerNm) {
+bool rowSeries(int y, out AirySeriesTerms t[TFC_FILM_CHANNELS], out float pathPerNm) {
   vec4 a = texelFetch(uAirySeriesRows, ivec2(0, y), 0);
   vec4 b = texelFetch(uAirySeriesRows, ivec2(1, y), 0);
   vec4 c = texelFetch(uAirySeriesRows, ivec2(2, y), 0);
   t[0] = AirySeriesTerms(a.x, a.yz, vec2(a.w, b.x));
-#if FILM_CHANNELS == 2
+#if TFC_FILM_CHANNELS == 2
   t[1] = AirySeriesTerms(b.y, b.zw, c.xy);
 #endif
   pathPerNm = c.z;
@@ -43,8 +43,8 @@ void main() {
   float thicknessNm = filmTableThicknessNm(u, uTableMaxThicknessNm);
   float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
   float cosIncidence = filmTableCosIncidence(float(row) / (uFilmTableRows - 1.0));
-#if TABLE_FILL == 1
-  AirySeriesTerms terms[FILM_CHANNELS];
+#if TFC_TABLE_FILL == 1
+  AirySeriesTerms terms[TFC_FILM_CHANNELS];
   float pathPerNm;
   // Thickness 0 is the bare interface (filmOptics), as in the reference.
   if (thicknessNm > 0.0 && rowSeries(texel.y, terms, pathPerNm) && airySeriesConvergesAt(terms, pathPerNm * thicknessNm)) {

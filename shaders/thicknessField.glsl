@@ -1,5 +1,5 @@
 // Film thickness over the bubble, deterministic in uTimeSeconds. p: a point on the unit sphere,
-// y up. THICKNESS_FIELD 0 uniform | 1 drainage | 2 swirl. Mirrors src/scene/thicknessField.ts.
+// y up. TFC_THICKNESS_FIELD 0 uniform | 1 drainage | 2 swirl. Mirrors src/scene/thicknessField.ts.
 #ifndef THIN_FILM_THICKNESS_FIELD
 #define THIN_FILM_THICKNESS_FIELD
 
@@ -9,11 +9,11 @@ uniform float uSwirlSpeed;
 uniform float uTimeSeconds;
 
 float thicknessAt(vec3 p) {
-#if THICKNESS_FIELD == 0
+#if TFC_THICKNESS_FIELD == 0
   return uThicknessNm;
 #else
   float h = p.y;
-#if THICKNESS_FIELD == 2
+#if TFC_THICKNESS_FIELD == 2
   // Swirling bands: the height is advected around the vertical axis by a slow, smooth flow.
   float t = uTimeSeconds * uSwirlSpeed;
   float azimuth = atan(p.z, p.x);

@@ -4,7 +4,8 @@
  */
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
-import { type Xyz, filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
+import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
+import { type Xyz } from '../../src/physics/spectralWeights.ts';
 import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
 import type { ParityGroup } from '../../src/render/parityCase.ts';
 

@@ -1,6 +1,6 @@
 import { FILM_STACK_DOMAIN, type FilmStack, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_DOMAIN_K, ILLUMINANT_EXPECTED, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
-import { type Normalization, NORMALIZATIONS } from '../physics/spectralIntegration.ts';
+import { type Normalization, NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { type NumberDomain, expectedNumber, isInDomain } from '../physics/validate.ts';
 import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../render/filmParameters.ts';
 import { oneOf, rejectValue } from './inputErrors.ts';

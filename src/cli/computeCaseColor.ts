@@ -10,7 +10,8 @@ import {
 } from '../physics/colorConversions.ts';
 import { filmOptics, reflectanceAt } from '../physics/filmReflectance.ts';
 import type { IlluminantSpec } from '../physics/illuminants.ts';
-import { type Normalization, type Xyz, filmXyz } from '../physics/spectralIntegration.ts';
+import { filmXyz } from '../physics/spectralIntegration.ts';
+import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 import type { ColorCase } from './colorCase.ts';
 
 /** What the CLI reports for one case. */

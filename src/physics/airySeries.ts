@@ -1,6 +1,7 @@
 import { type Complex, cAbs2, cMul } from './complex.ts';
 import { type AiryTerms, type FilmOptics } from './filmReflectance.ts';
-import { type SpectralBins, type Xyz, binnedXyz } from './spectralIntegration.ts';
+import { type SpectralBins, binnedXyz } from './binnedIntegration.ts';
+import { type Xyz } from './spectralWeights.ts';
 import { type SpectralTransform } from './spectralTransform.ts';
 
 /**

@@ -1,4 +1,4 @@
-import type { Xyz } from './spectralIntegration.ts';
+import type { Xyz } from './spectralWeights.ts';
 
 /** A 3×3 matrix, row-major. */
 export type Matrix3 = readonly [number, number, number, number, number, number, number, number, number];

@@ -1,5 +1,5 @@
 import { differenceCiede2000 } from 'culori';
-import type { Xyz } from './spectralIntegration.ts';
+import type { Xyz } from './spectralWeights.ts';
 
 /**
  * CIELAB (CIE 015:2018 §8.2.1) of a colour relative to a reference white (normally the

@@ -211,6 +211,8 @@ export function meanChannelReflectance(c: AiryTerms, phaseCenter: number, halfWi
   const dMinus = 1 + rho2 - 2 * rho * Math.cos(psi0 - w);
   const qOverW = (4 * rho * sin0 * sinc) / (dPlus + dMinus);
   const q = qOverW * w;
-  const L = Math.abs(q) < 1e-4 ? qOverW * (1 + (q * q) / 3) : (Math.atanh(q) / q) * qOverW;
+  // Below |q| = 1e-3, atanh(q)/q = 1 + q²/3 to 2e-13 (the next term is q⁴/5); the shader's twin uses the
+  // same threshold, where float32's atanh of a small q would also lose digits.
+  const L = Math.abs(q) < 1e-3 ? qOverW * (1 + (q * q) / 3) : (Math.atanh(q) / q) * qOverW;
   return (a0 * (1 + dA) + u.re * (2 * rho2 + (1 + rho2) * dA)) / (1 - rho2) - u.im * L;
 }

@@ -1,6 +1,6 @@
 import FFT from 'fft.js';
 import { interpolateTable } from './illuminants.ts';
-import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type SpectralWeights } from './spectralIntegration.ts';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type SpectralWeights } from './spectralWeights.ts';
 
 /**
  * The light's spectral transform (docs/physics.md, "The Airy sum as a Fourier series"):

@@ -1,6 +1,6 @@
 import { type FilmStack, type Polarization, filmOptics, reflectanceAt } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantSpd } from '../physics/illuminants.ts';
-import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralIntegration.ts';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
 
 /** The spectra behind a film's colour, sampled over the integration range (eqs 15–18's integrand). */
 export interface FilmSpectrum {

@@ -1,7 +1,8 @@
 import { type Matrix3, type Rgb, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
 import { type FilmStack, type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { type Normalization, type Xyz, filmXyz } from '../physics/spectralIntegration.ts';
+import { filmXyz } from '../physics/spectralIntegration.ts';
+import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 
 /** One film colour of the scale. */
 export interface ScaleColor {

@@ -2,7 +2,8 @@ import { type Matrix3, applyMatrix3, encode8, mapToGamut } from '../physics/colo
 import { deltaE00 } from '../physics/colorDifference.ts';
 import { type FilmStack, type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { type Normalization, type Xyz, filmXyz, whiteXyz } from '../physics/spectralIntegration.ts';
+import { filmXyz, whiteXyz } from '../physics/spectralIntegration.ts';
+import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 
 /** The reference's account of a probed film, and how far the rendered colour is from it. */
 export interface ProbeColor {

@@ -22,10 +22,10 @@ export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization'>;
  * sizes of that method (the spectral bins it visits, or the table's layout).
  */
 export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
-  const method = { FILM_MODE: FILM_METHODS.indexOf(s.mode), POLARIZATION: POLARIZATIONS.indexOf(s.polarization) };
+  const method = { TFC_FILM_MODE: FILM_METHODS.indexOf(s.mode), TFC_POLARIZATION: POLARIZATIONS.indexOf(s.polarization) };
   if (s.mode === 'exact') return { ...method, ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
   // The lookup does not depend on the polarisation (the table pass does), so changing it compiles no bubble.
-  if (s.mode === 'table') return { FILM_MODE: method.FILM_MODE, ...filmTableLayoutDefines(q.table) };
+  if (s.mode === 'table') return { TFC_FILM_MODE: method.TFC_FILM_MODE, ...filmTableLayoutDefines(q.table) };
   // The series, and the binned integral for evanescent films (which have no real optical path).
   if (s.mode === 'fourier') return { ...method, ...airySeriesDefines(q.airySeriesMaxOrders), ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
   return method;
@@ -60,10 +60,10 @@ export function releaseFilmColorTextures(m: ShaderMaterial): void {
 export function bubbleDefines(s: FilmSettings, q: FilmQuality): Record<string, number> {
   return {
     ...filmColorDefines(s, q),
-    THICKNESS_FIELD: FIELDS.indexOf(s.field),
-    SIDES: s.sides === 'both' ? 2 : 1,
-    ENVIRONMENT: s.env === 'sky' ? 1 : 0,
-    HATCH_OUT_OF_GAMUT: s.space === 'wide-gamut' ? 1 : 0,
+    TFC_THICKNESS_FIELD: FIELDS.indexOf(s.field),
+    TFC_SIDES: s.sides === 'both' ? 2 : 1,
+    TFC_ENVIRONMENT: s.env === 'sky' ? 1 : 0,
+    TFC_HATCH_OUT_OF_GAMUT: s.space === 'wide-gamut' ? 1 : 0,
   };
 }
 

@@ -1,5 +1,5 @@
 import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
-import { NORMALIZATIONS } from '../physics/spectralIntegration.ts';
+import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES } from './filmSettings.ts';
 import { type ParameterRow, choiceRow, defaultsOf, illuminantRow, numberRow } from './parameterRow.ts';
 

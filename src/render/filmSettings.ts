@@ -1,6 +1,6 @@
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { FILM_STACK_DOMAIN, type Polarization } from '../physics/filmReflectance.ts';
-import { type Normalization } from '../physics/spectralIntegration.ts';
+import { type Normalization } from '../physics/spectralWeights.ts';
 
 export const SPACES = ['srgb', 'display-p3', 'wide-gamut'] as const;
 /**

@@ -163,7 +163,7 @@ export class FilmTable {
 
   private material(): ShaderMaterial {
     setDefines(this.pass, {
-      POLARIZATION_UNIFORM: 1,
+      TFC_POLARIZATION_UNIFORM: 1,
       ...spectralBinDefines(this.quality.table.spectralBins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),
       ...airySeriesDefines(),

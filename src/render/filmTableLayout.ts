@@ -36,7 +36,7 @@ export const filmTableCosIncidence = (l: FilmTableLayout, row: number): number =
 
 /** The defines shaders/filmTableLayout.glsl reads (its grid is uniforms: the width follows the thickness range, and a coarse table has fewer texels). */
 export const filmTableLayoutDefines = (l: FilmTableLayout): Record<string, number> => ({
-  FILM_TABLE_THICKNESS_POWER: l.thicknessPower,
-  FILM_TABLE_COS_POWER: l.cosPower,
-  TABLE_FILL: l.fill === 'series' ? 1 : 0,
+  TFC_FILM_TABLE_THICKNESS_POWER: l.thicknessPower,
+  TFC_FILM_TABLE_COS_POWER: l.cosPower,
+  TFC_TABLE_FILL: l.fill === 'series' ? 1 : 0,
 });

@@ -1,7 +1,8 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { SharedTextures } from './sharedTextures.ts';
-import { type Normalization, significantBins, spectralBins, spectralWeights } from '../physics/spectralIntegration.ts';
+import { significantBins, spectralBins } from '../physics/binnedIntegration.ts';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type Normalization, spectralWeights } from '../physics/spectralWeights.ts';
 
 const shared = new SharedTextures((key) => {
   const { illuminant, normalization, count } = JSON.parse(key) as { illuminant: IlluminantSpec; normalization: Normalization; count: number };
@@ -29,7 +30,7 @@ const SPAN: readonly IlluminantSpec[] = ['E', { daylightCct: 4000 }, { daylightC
 const definesCache = new Map<string, Record<string, number>>();
 
 /**
- * The defines of shaders/spectralIntegration.glsl: `count` bins, of which the loop visits only
+ * The defines of shaders/binnedIntegration.glsl: `count` bins, of which the loop visits only
  * those where the colour-matching functions matter (`significantBins` with `tailTolerance`) under
  * any offered illuminant — so the defines, and the compiled program, do not depend on the light,
  * and bubbles under D55 and D93 share one program.
@@ -40,9 +41,12 @@ export function spectralBinDefines(count: number, tailTolerance: number): Record
   if (hit) return hit;
   const ranges = SPAN.map((i) => significantBins(spectralBins(spectralWeights(i, 'white'), count), tailTolerance));
   const defines = {
-    SPECTRAL_BINS: count,
-    SPECTRAL_BIN_FIRST: Math.min(...ranges.map((r) => r.first)),
-    SPECTRAL_BIN_END: Math.max(...ranges.map((r) => r.end)),
+    TFC_SPECTRAL_BINS: count,
+    // The integration's range, as the TypeScript reference holds it.
+    TFC_LAMBDA_MIN_NM: LAMBDA_MIN_NM,
+    TFC_LAMBDA_MAX_NM: LAMBDA_MAX_NM,
+    TFC_SPECTRAL_BIN_FIRST: Math.min(...ranges.map((r) => r.first)),
+    TFC_SPECTRAL_BIN_END: Math.max(...ranges.map((r) => r.end)),
   };
   definesCache.set(key, defines);
   return defines;

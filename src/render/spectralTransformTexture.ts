@@ -1,6 +1,6 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { type Normalization, spectralWeights } from '../physics/spectralIntegration.ts';
+import { type Normalization, spectralWeights } from '../physics/spectralWeights.ts';
 import {
   SPECTRAL_TRANSFORM_CARRIER_PER_NM,
   SPECTRAL_TRANSFORM_COUNT,
@@ -60,8 +60,8 @@ export const airySeriesDefines = (maxOrders = AIRY_SERIES_MAX_ORDERS): Record<st
   SPECTRAL_TRANSFORM_COUNT,
   SPECTRAL_TRANSFORM_STEP_NM,
   SPECTRAL_TRANSFORM_CARRIER_PER_NM,
-  AIRY_SERIES_MAX_ORDERS: maxOrders,
-  AIRY_SERIES_TOLERANCE,
+  TFC_AIRY_SERIES_MAX_ORDERS: maxOrders,
+  TFC_AIRY_SERIES_TOLERANCE: AIRY_SERIES_TOLERANCE,
   // A peer's truncation is the series cut short, with no fallback to bins where it needs more terms.
-  AIRY_SERIES_TRUNCATED: maxOrders < AIRY_SERIES_MAX_ORDERS ? 1 : 0,
+  TFC_AIRY_SERIES_TRUNCATED: maxOrders < AIRY_SERIES_MAX_ORDERS ? 1 : 0,
 });

@@ -61,7 +61,7 @@ export class BubbleView {
       new SphereGeometry(50, 32, 16),
       new ShaderMaterial({
         side: BackSide,
-        defines: { ENVIRONMENT: 1 },
+        defines: { TFC_ENVIRONMENT: 1 },
         vertexShader: 'varying vec3 vDirection; void main() { vDirection = position; gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0); }',
         fragmentShader: `${shaderSource('environment.glsl')}
 varying vec3 vDirection;

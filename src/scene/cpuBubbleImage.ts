@@ -1,6 +1,7 @@
 import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../physics/colorConversions.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
-import { binnedXyz, spectralBins, spectralWeights } from '../physics/spectralIntegration.ts';
+import { binnedXyz, spectralBins } from '../physics/binnedIntegration.ts';
+import { spectralWeights } from '../physics/spectralWeights.ts';
 import { filmOptics } from '../physics/filmReflectance.ts';
 import { DEFAULT_FILM_QUALITY } from '../render/filmQuality.ts';
 import { type FilmSettings, maxFieldThicknessNm } from '../render/filmSettings.ts';

@@ -12,7 +12,7 @@ import {
   type WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import type { Xyz } from '../physics/spectralIntegration.ts';
+import type { Xyz } from '../physics/spectralWeights.ts';
 import { setDefines } from '../render/materialDefines.ts';
 
 /** What the bubble shows at one point of the view: the near wall's film there. */
@@ -42,7 +42,7 @@ export function incidenceAngleDeg(camera: PerspectiveCamera, fx: number, fy: num
 
 /**
  * Reads the film at one pixel back from the GPU: the bubble is drawn once more through a
- * 1-pixel window of the camera (setViewOffset) with the material's PROBE output — the near
+ * 1-pixel window of the camera (setViewOffset) with the material's TFC_PROBE output — the near
  * wall's film XYZ and thickness — into a 1×1 float target.
  */
 export class FilmProbe {
@@ -78,10 +78,10 @@ export class FilmProbe {
     return { thicknessNm: pixel[3]!, angleDeg, renderedXyz: [pixel[0]!, pixel[1]!, pixel[2]!] };
   }
 
-  /** The bubble's material with PROBE defined, sharing its uniforms; follows its defines. */
+  /** The bubble's material with TFC_PROBE defined, sharing its uniforms; follows its defines. */
   private probeMaterial(shown: ShaderMaterial): ShaderMaterial {
     this.material ??= new ShaderMaterial({ uniforms: shown.uniforms, vertexShader: shown.vertexShader, fragmentShader: shown.fragmentShader });
-    setDefines(this.material, { ...shown.defines, PROBE: 1 });
+    setDefines(this.material, { ...shown.defines, TFC_PROBE: 1 });
     return this.material;
   }
 

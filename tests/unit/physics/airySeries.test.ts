@@ -3,7 +3,9 @@ import { type Complex, cAbs2, cAdd, cMul } from '../../../src/physics/complex.ts
 import { deltaE00 } from '../../../src/physics/colorDifference.ts';
 import { airySeriesConverges, airySeriesTerms, airySeriesXyz, fourierXyz } from '../../../src/physics/airySeries.ts';
 import { type FilmStack, SOAP_FILM_IN_AIR, filmOptics, reflectanceAt } from '../../../src/physics/filmReflectance.ts';
-import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, filmXyz, spectralBins, spectralWeights, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
+import { spectralBins } from '../../../src/physics/binnedIntegration.ts';
+import { filmXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { spectralTransform } from '../../../src/physics/spectralTransform.ts';
 import { IDENTITY_TOL, SERIES_DE00 } from '../../tolerances.ts';
 

@@ -1,7 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { deltaE00 } from '../../../src/physics/colorDifference.ts';
 import { filmOptics } from '../../../src/physics/filmReflectance.ts';
-import { binnedXyz, significantBins, spectralBins, spectralWeights, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
+import { binnedXyz, significantBins, spectralBins } from '../../../src/physics/binnedIntegration.ts';
+import { whiteXyz } from '../../../src/physics/spectralIntegration.ts';
+import { spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { MAX_SKIP_DE00, TAIL_TOLERANCE } from '../../tolerances.ts';
 
 

@@ -3,7 +3,8 @@ import { xyzToXy } from '../../../src/physics/colorConversions.ts';
 import { deltaE00 } from '../../../src/physics/colorDifference.ts';
 import { CIE1931_CMF_START_NM, CIE1931_YBAR } from '../../../src/physics/data/cie1931Cmf2deg.ts';
 import { C2_CORRECTION, daylightChromaticity, illuminantSpd } from '../../../src/physics/illuminants.ts';
-import { filmXyz, integrateXyz, spectralWeights, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
+import { filmXyz, integrateXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
+import { spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { CHROMATICITY_TOL, CONVERGENCE_DE00 } from '../../tolerances.ts';
 
 

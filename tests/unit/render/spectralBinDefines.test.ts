@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { NORMALIZATIONS, significantBins, spectralBins, spectralWeights } from '../../../src/physics/spectralIntegration.ts';
+import { significantBins, spectralBins } from '../../../src/physics/binnedIntegration.ts';
+import { NORMALIZATIONS, spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/render/filmQuality.ts';
 import { spectralBinDefines } from '../../../src/render/spectralBinsTexture.ts';
 
@@ -12,13 +13,13 @@ describe('the bins a shader visits do not depend on the light', () => {
     for (const illuminant of illuminants) {
       for (const normalization of NORMALIZATIONS) {
         const kept = significantBins(spectralBins(spectralWeights(illuminant, normalization), count), tolerance);
-        expect(kept.first, JSON.stringify(illuminant)).toBeGreaterThanOrEqual(d.SPECTRAL_BIN_FIRST!);
-        expect(kept.end, JSON.stringify(illuminant)).toBeLessThanOrEqual(d.SPECTRAL_BIN_END!);
+        expect(kept.first, JSON.stringify(illuminant)).toBeGreaterThanOrEqual(d.TFC_SPECTRAL_BIN_FIRST!);
+        expect(kept.end, JSON.stringify(illuminant)).toBeLessThanOrEqual(d.TFC_SPECTRAL_BIN_END!);
       }
     }
   });
 
   it('still skip the far red tail, where the colour-matching functions vanish', () => {
-    expect(d.SPECTRAL_BIN_END).toBeLessThan(count);
+    expect(d.TFC_SPECTRAL_BIN_END).toBeLessThan(count);
   });
 });

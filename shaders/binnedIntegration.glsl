@@ -1,21 +1,21 @@
-// XYZ of the reflected light, eqs (15)-(18), by SPECTRAL_BINS equal wavelength bins over
-// 380-830 nm: X = sum over bins of W_bin * mean R over the bin's phase window.
-// uSpectralBins (SPECTRAL_BINS x 1, RGBA float) holds each bin's integral of I_in x̄, ȳ, z̄ / k,
-// computed once in TypeScript. Mirrors binnedXyz in src/physics/spectralIntegration.ts.
+// XYZ of the reflected light, eqs (15)-(18), by TFC_SPECTRAL_BINS equal wavelength bins over
+// TFC_LAMBDA_MIN_NM-TFC_LAMBDA_MAX_NM (LAMBDA_MIN_NM, LAMBDA_MAX_NM of the TypeScript, set by spectralBinDefines): X = sum over bins of W_bin * mean R over the bin's phase window.
+// uSpectralBins (TFC_SPECTRAL_BINS x 1, RGBA float) holds each bin's integral of I_in x̄, ȳ, z̄ / k,
+// computed once in TypeScript. Mirrors binnedXyz in src/physics/binnedIntegration.ts.
 #ifndef THIN_FILM_SPECTRAL
 #define THIN_FILM_SPECTRAL
 #include "filmReflectance.glsl"
 
-#ifndef SPECTRAL_BINS
-#define SPECTRAL_BINS 90
+#ifndef TFC_SPECTRAL_BINS
+#define TFC_SPECTRAL_BINS 90
 #endif
 // The bins integrated, first <= b < end: significantBins (TypeScript) drops the tails where the
 // illuminant times the colour-matching functions hardly matters.
-#ifndef SPECTRAL_BIN_FIRST
-#define SPECTRAL_BIN_FIRST 0
+#ifndef TFC_SPECTRAL_BIN_FIRST
+#define TFC_SPECTRAL_BIN_FIRST 0
 #endif
-#ifndef SPECTRAL_BIN_END
-#define SPECTRAL_BIN_END SPECTRAL_BINS
+#ifndef TFC_SPECTRAL_BIN_END
+#define TFC_SPECTRAL_BIN_END TFC_SPECTRAL_BINS
 #endif
 
 uniform sampler2D uSpectralBins;
@@ -23,11 +23,11 @@ uniform sampler2D uSpectralBins;
 // extraHalfWidthPerInvNm widens each bin's phase window (in quadrature) by that × (nm / λ):
 // the table pass averages over a cell's thickness range with it.
 vec3 binnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
-  const float width = 450.0 / float(SPECTRAL_BINS);
+  const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
   vec2 path = o.opticalPathNm;
   vec3 xyz = vec3(0.0);
-  for (int b = SPECTRAL_BIN_FIRST; b < SPECTRAL_BIN_END; b++) {
-    float l1 = 380.0 + float(b) * width;
+  for (int b = TFC_SPECTRAL_BIN_FIRST; b < TFC_SPECTRAL_BIN_END; b++) {
+    float l1 = float(TFC_LAMBDA_MIN_NM) + float(b) * width;
     float l2 = l1 + width;
     float r = 0.0;
     if (path.y != 0.0) {
@@ -37,8 +37,8 @@ vec3 binnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
       float binHalf = 3.141592653589793 * path.x * (1.0 / l1 - 1.0 / l2);
       float extra = 2.0 * extraHalfWidthPerInvNm / (l1 + l2);
       float halfWidth = length(vec2(binHalf, extra));
-      for (int i = 0; i < FILM_CHANNELS; i++) r += meanChannelReflectance(o.channels[i], center, halfWidth);
-      r /= float(FILM_CHANNELS);
+      for (int i = 0; i < TFC_FILM_CHANNELS; i++) r += meanChannelReflectance(o.channels[i], center, halfWidth);
+      r /= float(TFC_FILM_CHANNELS);
     }
     xyz += r * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
   }
