@@ -61,3 +61,10 @@ export const HEAP_GROWTH_BOUND_MB = 4;
 
 /** A 20 000-point midpoint or 40 000-point Simpson average of |r(φ)|² meets the closed form to ~1e-9 even at 89°. */
 export const QUADRATURE_TOL = 1e-7;
+
+/**
+ * The thickness field's GLSL and TypeScript twins agree to float32 rounding: thicknesses to 20 µm
+ * carry ~1e-3 nm, and the swirl's sines at t·speed ≤ 10³ add ~1e-4 of h (a few nm at a 20 µm range).
+ */
+export const THICKNESS_TWIN_TOL_NM = 0.05;
+export const THICKNESS_TWIN_RELATIVE = 2e-4;

@@ -1,11 +1,14 @@
-/** The parity page: film XYZ of the given cases through the real shaders (FilmXyzProbe). */
+/** The parity page: film XYZ (FilmXyzProbe) and film thickness of the given cases through the real shaders. */
 import { WebGLRenderer } from 'three';
 import { DEFAULT_FILM_QUALITY } from '../../../src/render/filmQuality.ts';
 import { FilmXyzProbe } from '../../../src/render/filmXyzProbe.ts';
+import { renderThickness } from './thicknessFieldProbe.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');
 if (!canvas) throw new Error('parity.html must hold #gl');
-const probe = new FilmXyzProbe(new WebGLRenderer({ canvas }));
+const renderer = new WebGLRenderer({ canvas });
+const probe = new FilmXyzProbe(renderer);
 
 window.renderFilmXyz = (groups, mode, quality = DEFAULT_FILM_QUALITY) => probe.render(groups, mode, quality);
+window.renderThickness = (points, s) => renderThickness(renderer, points, s);
 document.body.dataset.ready = 'yes';
