@@ -65,16 +65,20 @@ FilmOptics filmOptics(float nOutside, float nFilm, float nInside, float thicknes
   vec2 cosT = refractedCos(nInside, nOutside, cosIncidence);
   FilmOptics o;
   o.opticalPathNm = 2.0 * nFilm * thicknessNm * cosR;
-  if (thicknessNm == 0.0) {
-    // A zero-thickness film is no film: the bare a|c interface.
-    InterfaceCoefficients ac = fresnelCoefficients(nOutside, cosI, nInside, cosT);
-    for (int i = 0; i < TFC_FILM_CHANNELS; i++) o.channels[i] = AiryTerms(channelOf(ac, channelKind(i)).xy, vec2(0.0), vec2(0.0));
-    return o;
-  }
   InterfaceCoefficients ab = fresnelCoefficients(nOutside, cosI, nFilm, cosR);
   InterfaceCoefficients ba = fresnelCoefficients(nFilm, cosR, nOutside, cosI);
   InterfaceCoefficients bc = fresnelCoefficients(nFilm, cosR, nInside, cosT);
   for (int i = 0; i < TFC_FILM_CHANNELS; i++) o.channels[i] = airyTerms(ab, ba, bc, channelKind(i));
+  if (thicknessNm == 0.0) {
+    // At d = 0 the physical channels (s, p) are the bare a|c interface, eq (13)'s own value there
+    // (the Stokes relations) and its limit at grazing; the paper's channel keeps eq (13). See
+    // bareInterface in the TypeScript twin.
+    InterfaceCoefficients ac = fresnelCoefficients(nOutside, cosI, nInside, cosT);
+    for (int i = 0; i < TFC_FILM_CHANNELS; i++) {
+      int kind = channelKind(i);
+      if (kind != 2) o.channels[i] = AiryTerms(channelOf(ac, kind).xy, vec2(0.0), vec2(0.0));
+    }
+  }
   return o;
 }
 

@@ -46,7 +46,7 @@ void main() {
 #if TFC_TABLE_FILL == 1
   AirySeriesTerms terms[TFC_FILM_CHANNELS];
   float pathPerNm;
-  // Thickness 0 is the bare interface (filmOptics), as in the reference.
+  // At thickness 0 filmOptics decides (the bare interface, or the paper mode's eq 13), as in the reference.
   if (thicknessNm > 0.0 && rowSeries(texel.y, terms, pathPerNm) && airySeriesConvergesAt(terms, pathPerNm * thicknessNm)) {
     gl_FragColor = vec4(airySeriesSum(terms, pathPerNm * thicknessNm), 1.0);
     return;

@@ -68,3 +68,6 @@ export const QUADRATURE_TOL = 1e-7;
  */
 export const THICKNESS_TWIN_TOL_NM = 0.05;
 export const THICKNESS_TWIN_RELATIVE = 2e-4;
+
+/** dR/dd is at most ~4π n_b/λ ≈ 0.05 per nm, so R moves < 1e-4 between d = 0 and d = 1e-3 nm. */
+export const CONTINUITY_TOL = 1e-4;

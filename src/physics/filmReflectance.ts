@@ -84,7 +84,14 @@ const average = (c: InterfaceCoefficients): Complex[] => [
   cScale(cAdd(c.ts, c.tp), 0.5),
 ];
 
-/** A zero-thickness film is no film: the bare a|c interface. */
+/**
+ * A zero-thickness film in the physical channels (s, p): the bare a|c interface. This is eq (13)'s
+ * own value at d = 0 (φ = 0): by the Stokes relations t_ab t_ba = 1 − r_ab², r_ba = −r_ab,
+ * r_ab + t_ab t_ba r_bc / (1 − r_ba r_bc) = r_ac. It also gives the θ → 90° limit where eq (13)
+ * read literally does not: at exact grazing t_ab = 0 makes it |r_ab|² = 1 even when n_a = n_c.
+ * The paper's averaged amplitudes (eqs 4, 8) obey no Stokes relation, so `paper` keeps eq (13) at
+ * d = 0 (R is then continuous in d; docs/physics.md, "Thickness 0").
+ */
 const bareInterface = ([r, t]: Complex[]): AiryTerms => ({
   rab: r as Complex,
   multiple: ZERO,
@@ -106,8 +113,9 @@ export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpol
   const cosR = refractedCos(nb, na, cos);
   const cosT = refractedCos(nc, na, cos);
   // At exact grazing incidence no energy crosses any real interface (R = 1); only where there is
-  // no interface at all (n_c = n_a and the film absent or index-matched) does the light go on.
-  const noInterface = na === nc && (d === 0 || na === nb);
+  // no interface at all (n_c = n_a and the film absent or index-matched) does the light go on. The
+  // paper mode keeps eq (13) at d = 0, whose t_ab = 0 at grazing reflects everything there too.
+  const noInterface = na === nc && ((d === 0 && polarization !== 'paper') || na === nb);
   const fluxRatio = cos > 0 ? (nc * cosT.re) / (na * cosI.re) : noInterface ? 1 : 0;
   const opticalPathNm = cScale(cosR, 2 * nb * d);
 
@@ -115,15 +123,12 @@ export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpol
     polarization === 'unpolarized' ? ['s', 'p'] : [polarization === 'paper' ? 'paper' : polarization];
   const select = (c: InterfaceCoefficients, kind: 's' | 'p' | 'paper') => (kind === 'paper' ? average(c) : pick(c, kind));
 
-  if (d === 0) {
-    const ac = fresnelCoefficients(na, cosI, nc, cosT);
-    return { channels: kinds.map((k) => bareInterface(select(ac, k))), opticalPathNm, fluxRatio };
-  }
   const ab = fresnelCoefficients(na, cosI, nb, cosR);
   const ba = fresnelCoefficients(nb, cosR, na, cosI);
   const bc = fresnelCoefficients(nb, cosR, nc, cosT);
+  const ac = d === 0 ? fresnelCoefficients(na, cosI, nc, cosT) : null;
   return {
-    channels: kinds.map((k) => airyTerms(select(ab, k), select(ba, k), select(bc, k))),
+    channels: kinds.map((k) => (ac && k !== 'paper' ? bareInterface(select(ac, k)) : airyTerms(select(ab, k), select(ba, k), select(bc, k)))),
     opticalPathNm,
     fluxRatio,
   };

@@ -11,7 +11,7 @@ import {
 } from '../../../src/physics/filmReflectance.ts';
 import { fresnelCoefficients } from '../../../src/physics/fresnel.ts';
 import { cosDeg, refractedCos } from '../../../src/physics/snell.ts';
-import { ALGEBRAIC_TOL, GOLDEN_TOL, QUADRATURE_TOL } from '../../tolerances.ts';
+import { ALGEBRAIC_TOL, CONTINUITY_TOL, GOLDEN_TOL, QUADRATURE_TOL } from '../../tolerances.ts';
 
 
 const stack = (over: Partial<FilmStack>): FilmStack => ({ nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 0, ...over });
@@ -212,5 +212,25 @@ describe('the closed-form mean of R over a phase window', () => {
     const optics = filmOptics(stack({ angleDeg: 20 }), 's');
     const phi = (2 * Math.PI * optics.opticalPathNm.re) / 500;
     expect(meanChannelReflectance(optics.channels[0]!, phi, 0)).toBeCloseTo(reflectanceAt(optics, 500), 12);
+  });
+});
+
+describe('thickness 0', () => {
+  it('is continuous in every polarisation mode, the paper mode following its own eq (13)', () => {
+    const stacks: FilmStack[] = [
+      { nOutside: 1.6, nFilm: 1.33, nInside: 1, thicknessNm: 0, angleDeg: 45 },
+      { nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 0, angleDeg: 30 },
+      { nOutside: 1, nFilm: 2.5, nInside: 1.5, thicknessNm: 0, angleDeg: 70 },
+      { nOutside: 1.5, nFilm: 1.33, nInside: 1.2, thicknessNm: 0, angleDeg: 60 }, // TIR in the film
+    ];
+    for (const s of stacks) {
+      for (const pol of POLARIZATIONS) {
+        for (const lambda of [400, 500, 700]) {
+          const at0 = reflectanceAt(filmOptics(s, pol), lambda);
+          const near = reflectanceAt(filmOptics({ ...s, thicknessNm: 1e-3 }, pol), lambda);
+          expect(Math.abs(at0 - near), `${pol} ${JSON.stringify(s)} ${lambda} nm`).toBeLessThan(CONTINUITY_TOL);
+        }
+      }
+    }
   });
 });
