@@ -40,7 +40,9 @@ try {
   for (const row of selected) {
     const result = await runRow(browser, `http://127.0.0.1:${DEV_PORT}`, row, grids);
     const errors = row.measuresError ? grids.map((g, i) => gridError(g, referenceColors[i]!, result.xyz[i]!)) : null;
-    log(`${row.name}: ${JSON.stringify({ frames: result.frames, table: result.tableBuildMs, errors: errors?.map((e) => [e.max.toFixed(2), e.worst]) })}`);
+    log(
+      `${row.name}: ${JSON.stringify({ frames: result.frames, table: result.tableBuildMs, errors: errors?.map((e) => [e.max.toFixed(2), e.worst]) })}`,
+    );
     rows.push({ name: row.name, settings: row.settings, quality: row.quality, ...result, xyz: undefined, errors });
   }
 } finally {
@@ -71,5 +73,8 @@ console.log(`
 | … page hidden | ${demo.pageHidden.frames} / ${demo.pageHidden.tableBuilds} |
 | frame while the swirl animates (1280×720, median) | ${demo.frameMs.toFixed(0)} ms |
 ${PANEL_CHANGES.map(([name], i) => `| panel: ${name} → next frame / → shown in full, plots included (median of 6) | ${demo.panelChangeMs[i]!.toFixed(0)} ms (${(demo.panelChangeMs[i]! / demo.frameMs).toFixed(1)}× the frame) / ${demo.panelChangeFullMs[i]!.toFixed(0)} ms |`).join('\n')}`);
-writeFileSync('bench-results.json', JSON.stringify({ reference, rows, bundle, demo, seconds: (performance.now() - started) / 1000 }, null, 2));
+writeFileSync(
+  'bench-results.json',
+  JSON.stringify({ reference, rows, bundle, demo, seconds: (performance.now() - started) / 1000 }, null, 2),
+);
 log('done; bench-results.json written');

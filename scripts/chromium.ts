@@ -28,8 +28,6 @@ export function chromiumLaunchOptions(): { executablePath?: string; args: string
 }
 
 function fail(why: string): never {
-  console.error(
-    `${why} Install one (Debian: apt-get install -y chromium; elsewhere: npx playwright install chromium) or set CHROME_PATH.`,
-  );
+  console.error(`${why} Install one (Debian: apt-get install -y chromium; elsewhere: npx playwright install chromium) or set CHROME_PATH.`);
   process.exit(1);
 }

@@ -32,16 +32,19 @@ function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement): void {
   const view = new BubbleView(createBubbleRenderer(canvas), settings);
   document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
   if (settings.space !== 'srgb' && !view.displayIsP3) say('This browser has no Display P3 canvas: showing sRGB.');
-  const app = new BubbleApp({
-    view,
-    surface: canvas,
-    controls: 'page',
-    plots,
-    onChange: followInUrl,
-    onFrame: (complete) => {
-      if (complete) document.body.dataset.frames = 'ready';
+  const app = new BubbleApp(
+    {
+      view,
+      surface: canvas,
+      controls: 'page',
+      plots,
+      onChange: followInUrl,
+      onFrame: (complete) => {
+        if (complete) document.body.dataset.frames = 'ready';
+      },
     },
-  }, settings);
+    settings,
+  );
   app.renderNow();
   Object.assign(window, { bubbleView: view, bubbleApp: app });
 }

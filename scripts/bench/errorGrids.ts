@@ -17,7 +17,10 @@ function grid(thicknessesNm: readonly number[], anglesDeg: readonly number[]): P
 }
 
 /** 0–2000 nm every 10 nm × 0–85° every 5°: 3618 films. */
-export const FIXED_GRID = grid(range(201, (i) => 10 * i), range(18, (i) => 5 * i));
+export const FIXED_GRID = grid(
+  range(201, (i) => 10 * i),
+  range(18, (i) => 5 * i),
+);
 
 /**
  * 0–20 µm, 161 thicknesses spaced quadratically (so thin films, whose colour changes fastest, get

@@ -56,7 +56,13 @@ const sceneStep = (name: string, more: Partial<FilmSettings>): BenchRow => ({
 
 export const ROWS: readonly BenchRow[] = [
   { name: 'plain textured sphere (the floor)', kind: 'textured', settings: view('table'), quality: q, measuresError: false },
-  { name: 'three.js iridescence (evalIridescence, soap film)', kind: 'bubble', settings: view('three-iridescence'), quality: q, measuresError: true },
+  {
+    name: 'three.js iridescence (evalIridescence, soap film)',
+    kind: 'bubble',
+    settings: view('three-iridescence'),
+    quality: q,
+    measuresError: true,
+  },
   fourier(),
   fourier(2, ' (three.js/glTF keep m ≤ 2)'),
   fourier(3, ' (Blender Cycles keeps m ≤ 3)'),

@@ -16,15 +16,36 @@ export function rowsMarkdown(
 ): string {
   const floor = rows[0]!; // the plain textured sphere
   const sizeHeads = how.sizes.map(([w, h]) => `${w}×${h} ms (× floor)`);
-  const head = ['method', ...sizeHeads, 'first table build ms (with compile)', 'change → next frame ms: n film / light / polarisation / range (max × own frame)', 'rebuilds while animating', 'first frame ms', 'fixed grid ΔE00 max / p99 / mean', 'stress grid ΔE00 max / p99 / mean'];
+  const head = [
+    'method',
+    ...sizeHeads,
+    'first table build ms (with compile)',
+    'change → next frame ms: n film / light / polarisation / range (max × own frame)',
+    'rebuilds while animating',
+    'first frame ms',
+    'fixed grid ΔE00 max / p99 / mean',
+    'stress grid ΔE00 max / p99 / mean',
+  ];
   const lines = rows.map((r) => {
     const frames = r.frames.map((f, i) => {
       const ratio = f.medianMs / floor.frames[i]!.medianMs;
       return `${ms(f.medianMs)} (${ratio.toFixed(2)}×)${f.count < how.frames ? ` [${f.count}]` : ''}`;
     });
     const table = r.tableBuildMs === null ? '—' : ms(r.tableBuildMs);
-    const change = r === floor ? '—' : `${r.changeToFrameMs.map(ms).join(' / ')} (${(Math.max(...r.changeToFrameMs) / r.frames[0]!.medianMs).toFixed(1)}×)`;
-    return [r.name, ...frames, table, change, String(r.rebuildsWhileAnimating), ms(r.firstFrameMs), stats(r.errors?.[0]), stats(r.errors?.[1])];
+    const change =
+      r === floor
+        ? '—'
+        : `${r.changeToFrameMs.map(ms).join(' / ')} (${(Math.max(...r.changeToFrameMs) / r.frames[0]!.medianMs).toFixed(1)}×)`;
+    return [
+      r.name,
+      ...frames,
+      table,
+      change,
+      String(r.rebuildsWhileAnimating),
+      ms(r.firstFrameMs),
+      stats(r.errors?.[0]),
+      stats(r.errors?.[1]),
+    ];
   });
   return [
     `| ${head.join(' | ')} |`,

@@ -195,7 +195,8 @@ export class BubbleApp {
   }
 
   private updatePlots(now: number): void {
-    if (!this.panel || this.parts.view.contextLost || !(this.plotsDue || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS))) return;
+    if (!this.panel || this.parts.view.contextLost || !(this.plotsDue || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS)))
+      return;
     const [fx, fy] = this.settings.probe;
     const { offsetLeft, offsetTop, clientWidth, clientHeight } = this.parts.surface;
     Object.assign(this.marker!.style, { left: `${offsetLeft + fx * clientWidth}px`, top: `${offsetTop + fy * clientHeight}px` });

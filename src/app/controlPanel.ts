@@ -59,7 +59,9 @@ function addControl(
       };
       illuminants.set(row.key, pair);
       folder.add(pair, 'name', [...NAMED_ILLUMINANTS, DAYLIGHT_CCT]).name(row.label);
-      folder.add(pair, 'cct', DAYLIGHT_CCT_DOMAIN_K.min, DAYLIGHT_CCT_DOMAIN_K.max, CCT_STEP_K).name(`daylight CCT (${DAYLIGHT_CCT_DOMAIN_K.unit})`);
+      folder
+        .add(pair, 'cct', DAYLIGHT_CCT_DOMAIN_K.min, DAYLIGHT_CCT_DOMAIN_K.max, CCT_STEP_K)
+        .name(`daylight CCT (${DAYLIGHT_CCT_DOMAIN_K.unit})`);
       return;
     }
   }

@@ -57,20 +57,34 @@ export interface CaseFlag {
 const SHARED_FLAGS: readonly CaseFlag[] = FILM_PARAMETERS.flatMap((row) =>
   row.cli === null
     ? []
-    : [{
-        flag: row.cli,
-        field: row.key as CaseFlag['field'],
-        label: row.label,
-        expected: row.expected,
-        defaultText: row.key in NUMBER_FIELDS ? String(NUMBER_FIELDS[row.key as NumberField].fallback) : row.defaultText,
-      }],
+    : [
+        {
+          flag: row.cli,
+          field: row.key as CaseFlag['field'],
+          label: row.label,
+          expected: row.expected,
+          defaultText: row.key in NUMBER_FIELDS ? String(NUMBER_FIELDS[row.key as NumberField].fallback) : row.defaultText,
+        },
+      ],
 );
 
 /** The colour tool's case flags: the shared ones, then its own. */
 export const CASE_FLAGS: readonly CaseFlag[] = [
   ...SHARED_FLAGS,
-  { flag: 'angle', field: 'angleDeg', label: 'angle of incidence (degrees)', expected: expectedNumber(NUMBER_FIELDS.angleDeg), defaultText: '0' },
-  { flag: 'wavelengths', field: 'wavelengthsNm', label: 'also report R(λ) at these wavelengths', expected: `comma-separated, each ${expectedNumber(WAVELENGTH_DOMAIN_NM)}`, defaultText: '' },
+  {
+    flag: 'angle',
+    field: 'angleDeg',
+    label: 'angle of incidence (degrees)',
+    expected: expectedNumber(NUMBER_FIELDS.angleDeg),
+    defaultText: '0',
+  },
+  {
+    flag: 'wavelengths',
+    field: 'wavelengthsNm',
+    label: 'also report R(λ) at these wavelengths',
+    expected: `comma-separated, each ${expectedNumber(WAVELENGTH_DOMAIN_NM)}`,
+    defaultText: '',
+  },
 ];
 
 /** A case's fields before checking: numbers already numbers, absent fields undefined. */

@@ -27,14 +27,35 @@ const channels = (name: string) => [`${name}R`, `${name}G`, `${name}B`];
 /** A table as CSV: a header line, then one line per row; R(λ) columns are named `R_<λ>nm`. */
 export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly number[]): string {
   const header = [
-    'id', 'thicknessNm', 'angleDeg', 'hex', 'illuminant', 'normalization', 'X', 'Y', 'Z',
-    ...channels('linearSrgb'), ...channels('srgb8'), ...channels('linearWideGamut'), ...channels('displayP3_8'),
+    'id',
+    'thicknessNm',
+    'angleDeg',
+    'hex',
+    'illuminant',
+    'normalization',
+    'X',
+    'Y',
+    'Z',
+    ...channels('linearSrgb'),
+    ...channels('srgb8'),
+    ...channels('linearWideGamut'),
+    ...channels('displayP3_8'),
     ...wavelengthsNm.map((l) => `R_${l}nm`),
   ];
   const line = (r: TableRow) =>
     [
-      r.id, r.thicknessNm, r.angleDeg, r.hex, illuminantKey(r.illuminant), r.normalization,
-      ...r.xyz, ...r.linearSrgb, ...r.srgb8, ...r.linearWideGamut, ...r.displayP3_8, ...r.reflectance,
+      r.id,
+      r.thicknessNm,
+      r.angleDeg,
+      r.hex,
+      illuminantKey(r.illuminant),
+      r.normalization,
+      ...r.xyz,
+      ...r.linearSrgb,
+      ...r.srgb8,
+      ...r.linearWideGamut,
+      ...r.displayP3_8,
+      ...r.reflectance,
     ].join(',');
   return `${[header.join(','), ...rows.map(line)].join('\n')}\n`;
 }

@@ -9,8 +9,9 @@ const DESCRIPTION_COLUMN = 24;
 
 /** One line per case flag: `--flag`, its label, what it accepts and its default. */
 const caseFlagLines = (): string =>
-  CASE_FLAGS.map(({ flag, label, expected, defaultText }) =>
-    `  --${flag}`.padEnd(DESCRIPTION_COLUMN) + `${label}: ${expected}${defaultText ? ` (${defaultText})` : ''}`,
+  CASE_FLAGS.map(
+    ({ flag, label, expected, defaultText }) =>
+      `  --${flag}`.padEnd(DESCRIPTION_COLUMN) + `${label}: ${expected}${defaultText ? ` (${defaultText})` : ''}`,
   ).join('\n');
 
 /** `--help`: how to call the command. */

@@ -84,24 +84,27 @@ export class ThinFilmBubble extends HTMLElement {
     const renderer = acquireSharedRenderer();
     const view = new BubbleView(renderer, settings);
     const canvas = this.canvas;
-    this.app = new BubbleApp({
-      view,
-      surface: stage,
-      controls,
-      plots,
-      present: () => {
-        const { width, height } = renderer.domElement;
-        if (canvas.width !== width || canvas.height !== height) Object.assign(canvas, { width, height });
-        canvas.getContext('2d')?.drawImage(renderer.domElement, 0, 0);
+    this.app = new BubbleApp(
+      {
+        view,
+        surface: stage,
+        controls,
+        plots,
+        present: () => {
+          const { width, height } = renderer.domElement;
+          if (canvas.width !== width || canvas.height !== height) Object.assign(canvas, { width, height });
+          canvas.getContext('2d')?.drawImage(renderer.domElement, 0, 0);
+        },
+        // Frames that show the settings in full (not from a coarse table) are counted.
+        onFrame: (complete) => {
+          if (complete) this.dataset.frames = String(Number(this.dataset.frames ?? 0) + 1);
+        },
+        onChange: (s) => {
+          this.dispatchEvent(new CustomEvent('change', { detail: { settings: s, query: settingsToQuery(s) } }));
+        },
       },
-      // Frames that show the settings in full (not from a coarse table) are counted.
-      onFrame: (complete) => {
-        if (complete) this.dataset.frames = String(Number(this.dataset.frames ?? 0) + 1);
-      },
-      onChange: (s) => {
-        this.dispatchEvent(new CustomEvent('change', { detail: { settings: s, query: settingsToQuery(s) } }));
-      },
-    }, settings);
+      settings,
+    );
   }
 
   disconnectedCallback(): void {

@@ -75,7 +75,9 @@ export function transformAt(t: SpectralTransform, pathNm: number, carrier: Compl
   if (i >= t.count - 1) return null;
   const f = pos - i;
   const h = Array.from({ length: 6 }, (_, k) => (t.values[6 * i + k] as number) * (1 - f) + (t.values[6 * i + 6 + k] as number) * f);
-  return [0, 1, 2].map((j) => h[j]! * carrier.re - h[j + 3]! * carrier.im).concat([0, 1, 2].map((j) => h[j]! * carrier.im + h[j + 3]! * carrier.re));
+  return [0, 1, 2]
+    .map((j) => h[j]! * carrier.re - h[j + 3]! * carrier.im)
+    .concat([0, 1, 2].map((j) => h[j]! * carrier.im + h[j + 3]! * carrier.re));
 }
 
 /**

@@ -41,7 +41,11 @@ export function spectralBins(w: SpectralWeights, count: number): SpectralBins {
  */
 export function significantBins(bins: SpectralBins, tolerance: number): SpectralBins {
   const w = bins.weights;
-  const white = [0, 1, 2].map((k) => { let s = 0; for (let b = 0; b < bins.count; b++) s += w[3 * b + k] as number; return s; });
+  const white = [0, 1, 2].map((k) => {
+    let s = 0;
+    for (let b = 0; b < bins.count; b++) s += w[3 * b + k] as number;
+    return s;
+  });
   const dropped = [0, 0, 0];
   const fits = (b: number) => [0, 1, 2].every((k) => (dropped[k] as number) + (w[3 * b + k] as number) <= tolerance * (white[k] as number));
   const take = (b: number) => [0, 1, 2].forEach((k) => (dropped[k] = (dropped[k] as number) + (w[3 * b + k] as number)));
@@ -49,8 +53,12 @@ export function significantBins(bins: SpectralBins, tolerance: number): Spectral
   let end = bins.count;
   // Drop from whichever end has the lighter next bin, while the total stays within tolerance.
   for (;;) {
-    const low = first < end && fits(first) ? Math.max(...[0, 1, 2].map((k) => (w[3 * first + k] as number) / (white[k] as number))) : Infinity;
-    const high = end - 1 > first && fits(end - 1) ? Math.max(...[0, 1, 2].map((k) => (w[3 * (end - 1) + k] as number) / (white[k] as number))) : Infinity;
+    const low =
+      first < end && fits(first) ? Math.max(...[0, 1, 2].map((k) => (w[3 * first + k] as number) / (white[k] as number))) : Infinity;
+    const high =
+      end - 1 > first && fits(end - 1)
+        ? Math.max(...[0, 1, 2].map((k) => (w[3 * (end - 1) + k] as number) / (white[k] as number)))
+        : Infinity;
     if (low === Infinity && high === Infinity) break;
     if (low <= high) take(first++);
     else take(--end);

@@ -17,9 +17,7 @@ export const XYZ_TO_LINEAR_SRGB: Matrix3 = [3.2406, -1.5372, -0.4989, -0.9686, 1
  * XYZ → linear "Wide Gamut" RGB, the paper's eq (20): Adobe Wide Gamut RGB, whose white is D50;
  * the paper applies it without chromatic adaptation and so do we.
  */
-export const XYZ_TO_LINEAR_WIDE_GAMUT: Matrix3 = [
-  1.4625, -0.1845, -0.2734, -0.5228, 1.4479, 0.0681, 0.0346, -0.0958, 1.2875,
-];
+export const XYZ_TO_LINEAR_WIDE_GAMUT: Matrix3 = [1.4625, -0.1845, -0.2734, -0.5228, 1.4479, 0.0681, 0.0346, -0.0958, 1.2875];
 
 type Xy = readonly [number, number];
 
@@ -38,12 +36,20 @@ export function rgbToXyzMatrix(red: Xy, green: Xy, blue: Xy, white: Xy): Matrix3
 
 export function invert3(m: Matrix3): Matrix3 {
   const [a, b, c, d, e, f, g, h, i] = m;
-  const A = e * i - f * h, B = f * g - d * i, C = d * h - e * g;
+  const A = e * i - f * h,
+    B = f * g - d * i,
+    C = d * h - e * g;
   const det = a * A + b * B + c * C;
   return [
-    A / det, (c * h - b * i) / det, (b * f - c * e) / det,
-    B / det, (a * i - c * g) / det, (c * d - a * f) / det,
-    C / det, (b * g - a * h) / det, (a * e - b * d) / det,
+    A / det,
+    (c * h - b * i) / det,
+    (b * f - c * e) / det,
+    B / det,
+    (a * i - c * g) / det,
+    (c * d - a * f) / det,
+    C / det,
+    (b * g - a * h) / det,
+    (a * e - b * d) / det,
   ];
 }
 

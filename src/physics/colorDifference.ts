@@ -9,7 +9,9 @@ export function xyzToLab([X, Y, Z]: Xyz, [Xn, Yn, Zn]: Xyz): { l: number; a: num
   const e = 216 / 24389;
   const k = 24389 / 27;
   const f = (t: number) => (t > e ? Math.cbrt(t) : (k * t + 16) / 116);
-  const fx = f(X / Xn), fy = f(Y / Yn), fz = f(Z / Zn);
+  const fx = f(X / Xn),
+    fy = f(Y / Yn),
+    fz = f(Z / Zn);
   return { l: 116 * fy - 16, a: 500 * (fx - fy), b: 200 * (fy - fz) };
 }
 

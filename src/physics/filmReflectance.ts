@@ -79,10 +79,7 @@ function airyTerms(ab: Complex[], ba: Complex[], bc: Complex[]): AiryTerms {
 
 const pick = (c: InterfaceCoefficients, pol: 's' | 'p'): Complex[] => (pol === 's' ? [c.rs, c.ts] : [c.rp, c.tp]);
 /** The paper's amplitude average, eqs (4) and (8). */
-const average = (c: InterfaceCoefficients): Complex[] => [
-  cScale(cAdd(c.rs, c.rp), 0.5),
-  cScale(cAdd(c.ts, c.tp), 0.5),
-];
+const average = (c: InterfaceCoefficients): Complex[] => [cScale(cAdd(c.rs, c.rp), 0.5), cScale(cAdd(c.ts, c.tp), 0.5)];
 
 /**
  * A zero-thickness film in the physical channels (s, p): the bare a|c interface. This is eq (13)'s
@@ -119,8 +116,7 @@ export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpol
   const fluxRatio = cos > 0 ? (nc * cosT.re) / (na * cosI.re) : noInterface ? 1 : 0;
   const opticalPathNm = cScale(cosR, 2 * nb * d);
 
-  const kinds: ('s' | 'p' | 'paper')[] =
-    polarization === 'unpolarized' ? ['s', 'p'] : [polarization === 'paper' ? 'paper' : polarization];
+  const kinds: ('s' | 'p' | 'paper')[] = polarization === 'unpolarized' ? ['s', 'p'] : [polarization === 'paper' ? 'paper' : polarization];
   const select = (c: InterfaceCoefficients, kind: 's' | 'p' | 'paper') => (kind === 'paper' ? average(c) : pick(c, kind));
 
   const ab = fresnelCoefficients(na, cosI, nb, cosR);
@@ -128,7 +124,9 @@ export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpol
   const bc = fresnelCoefficients(nb, cosR, nc, cosT);
   const ac = d === 0 ? fresnelCoefficients(na, cosI, nc, cosT) : null;
   return {
-    channels: kinds.map((k) => (ac && k !== 'paper' ? bareInterface(select(ac, k)) : airyTerms(select(ab, k), select(ba, k), select(bc, k)))),
+    channels: kinds.map((k) =>
+      ac && k !== 'paper' ? bareInterface(select(ac, k)) : airyTerms(select(ab, k), select(ba, k), select(bc, k)),
+    ),
     opticalPathNm,
     fluxRatio,
   };
@@ -206,7 +204,9 @@ export function meanChannelReflectance(c: AiryTerms, phaseCenter: number, halfWi
   const rho = Math.sqrt(rho2);
   const psi0 = phaseCenter + Math.atan2(c.roundTrip.im, c.roundTrip.re);
   const u = cDiv(ab, c.roundTrip);
-  const cosW = Math.cos(w), cos0 = Math.cos(psi0), sin0 = Math.sin(psi0);
+  const cosW = Math.cos(w),
+    cos0 = Math.cos(psi0),
+    sin0 = Math.sin(psi0);
   // δA = [A(ψ0+w) − A(ψ0−w)] / w, A(ψ) = arg(1 − ρ e^{−iψ}); the difference is one atan2.
   const y = 2 * rho * sinc * (cos0 - rho * cosW);
   const x = 1 - 2 * rho * cos0 * cosW + rho2 * Math.cos(2 * w);

@@ -82,5 +82,4 @@ export function illuminantSpd(spec: IlluminantSpec): (lambdaNm: number) => numbe
 }
 
 /** A short stable name for an illuminant, for cache keys and output. */
-export const illuminantKey = (spec: IlluminantSpec): string =>
-  typeof spec === 'object' ? `daylight-${spec.daylightCct}K` : spec;
+export const illuminantKey = (spec: IlluminantSpec): string => (typeof spec === 'object' ? `daylight-${spec.daylightCct}K` : spec);

@@ -13,9 +13,12 @@ export function integrateXyz(reflectance: (lambdaNm: number) => number, w: Spect
   let Y = 0;
   let Z = 0;
   for (let i = 0; i < LAMBDA_SPAN_NM; i++) {
-    const x0 = w.x[i] as number, x1 = w.x[i + 1] as number;
-    const y0 = w.y[i] as number, y1 = w.y[i + 1] as number;
-    const z0 = w.z[i] as number, z1 = w.z[i + 1] as number;
+    const x0 = w.x[i] as number,
+      x1 = w.x[i + 1] as number;
+    const y0 = w.y[i] as number,
+      y1 = w.y[i + 1] as number;
+    const z0 = w.z[i] as number,
+      z1 = w.z[i + 1] as number;
     for (let j = i === 0 ? 0 : 1; j <= stepsPerNm; j++) {
       const f = j * h;
       const r = reflectance(LAMBDA_MIN_NM + i + f) * (j === 0 || (j === stepsPerNm && i === LAMBDA_SPAN_NM - 1) ? 0.5 : 1);
@@ -69,4 +72,3 @@ export function filmXyz(stack: FilmStack, options: ColorOptions = {}): Xyz {
 /** XYZ of the illuminant itself (a perfect white reflector), the white point for CIELAB. */
 export const whiteXyz = (illuminant: IlluminantSpec, normalization: Normalization = 'white'): Xyz =>
   integrateXyz(() => 1, spectralWeights(illuminant, normalization), 1);
-

@@ -68,4 +68,3 @@ function trapezoid1nm(f: (lambdaNm: number, i: number) => number): number {
   for (let i = 0; i <= LAMBDA_SPAN_NM; i++) sum += f(LAMBDA_MIN_NM + i, i) * (i === 0 || i === LAMBDA_SPAN_NM ? 0.5 : 1);
   return sum;
 }
-

@@ -25,7 +25,10 @@ export function drawAxes(
   x: { min: number; max: number; ticks: number[]; label: string },
   y: { min: number; max: number; ticks: number[]; label: string },
 ): { px: (v: number) => number; py: (v: number) => number } {
-  const left = 38, right = box.width - 6, top = 6, bottom = box.height - 22;
+  const left = 38,
+    right = box.width - 6,
+    top = 6,
+    bottom = box.height - 22;
   const px = scale(x.min, x.max, left, right);
   const py = scale(y.min, y.max, bottom, top);
   ctx.strokeStyle = '#666';

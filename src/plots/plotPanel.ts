@@ -55,7 +55,8 @@ export class PlotPanel {
     this.chromaticity = el('canvas', 'tfb-chromaticity') as HTMLCanvasElement;
     this.strip = el('canvas', 'tfb-strip') as HTMLCanvasElement;
     const legend = el('div', 'tfb-legend');
-    for (const [text, color] of SPECTRUM_LEGEND) legend.append(Object.assign(el('span', ''), { textContent: text, style: `color: ${color}` }));
+    for (const [text, color] of SPECTRUM_LEGEND)
+      legend.append(Object.assign(el('span', ''), { textContent: text, style: `color: ${color}` }));
     this.element.append(readout, this.spectrum, legend, this.chromaticity, this.strip);
   }
 

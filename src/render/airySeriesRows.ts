@@ -12,7 +12,11 @@ const TEXELS_PER_ROW = 3;
  * (shaders/filmTable.glsl, `rowSeries`): 3 texels per row, the outside half's rows first, then the
  * inside half's (media swapped). ~1 ms for 256 rows, instead of the Fresnel terms per texel.
  */
-export function airySeriesRows(s: Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'>, layout: FilmTableLayout, data: Float32Array): void {
+export function airySeriesRows(
+  s: Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'>,
+  layout: FilmTableLayout,
+  data: Float32Array,
+): void {
   for (let half = 0; half < 2; half++) {
     const [nOutside, nInside] = half === 0 ? [s.nOutside, s.nInside] : [s.nInside, s.nOutside];
     for (let row = 0; row < layout.rows; row++) {
@@ -32,7 +36,13 @@ export function airySeriesRows(s: Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nIn
 
 /** A texture for airySeriesRows of a layout (filled and uploaded by FilmTable). */
 export function airySeriesRowsTexture(layout: FilmTableLayout): DataTexture {
-  const texture = new DataTexture(new Float32Array(4 * TEXELS_PER_ROW * 2 * layout.rows), TEXELS_PER_ROW, 2 * layout.rows, RGBAFormat, FloatType);
+  const texture = new DataTexture(
+    new Float32Array(4 * TEXELS_PER_ROW * 2 * layout.rows),
+    TEXELS_PER_ROW,
+    2 * layout.rows,
+    RGBAFormat,
+    FloatType,
+  );
   texture.minFilter = texture.magFilter = NearestFilter;
   return texture;
 }

@@ -1,10 +1,6 @@
 import { Matrix3, ShaderMaterial } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
-import {
-  type Matrix3 as Rows3,
-  XYZ_TO_LINEAR_DISPLAY_P3,
-  XYZ_TO_LINEAR_SRGB,
-} from '../physics/colorConversions.ts';
+import { type Matrix3 as Rows3, XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality } from './filmQuality.ts';
 import { FIELDS, FILM_METHODS, type FilmSettings } from './filmSettings.ts';
 import { filmTableLayoutDefines } from './filmTableLayout.ts';
@@ -27,7 +23,8 @@ export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<s
   // The lookup does not depend on the polarisation (the table pass does), so changing it compiles no bubble.
   if (s.mode === 'table') return { TFC_FILM_MODE: method.TFC_FILM_MODE, ...filmTableLayoutDefines(q.table) };
   // The series, and the binned integral for evanescent films (which have no real optical path).
-  if (s.mode === 'fourier') return { ...method, ...airySeriesDefines(q.airySeriesMaxOrders), ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
+  if (s.mode === 'fourier')
+    return { ...method, ...airySeriesDefines(q.airySeriesMaxOrders), ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
   return method;
 }
 
@@ -35,7 +32,11 @@ export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<s
  * Points a film-colour material at the light's textures its method reads (the bin weights, the
  * spectral transform), held for it, and lets go of those it does not read.
  */
-export function updateFilmColorTextures(m: ShaderMaterial, s: FilmColorSettings & Pick<FilmSettings, 'illuminant' | 'normalization'>, q: FilmQuality): void {
+export function updateFilmColorTextures(
+  m: ShaderMaterial,
+  s: FilmColorSettings & Pick<FilmSettings, 'illuminant' | 'normalization'>,
+  q: FilmQuality,
+): void {
   const u = m.uniforms;
   const binned = s.mode === 'exact' || s.mode === 'fourier';
   if (binned) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins, m);

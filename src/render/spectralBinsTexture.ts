@@ -5,7 +5,11 @@ import { significantBins, spectralBins } from '../physics/binnedIntegration.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type Normalization, spectralWeights } from '../physics/spectralWeights.ts';
 
 const shared = new SharedTextures((key) => {
-  const { illuminant, normalization, count } = JSON.parse(key) as { illuminant: IlluminantSpec; normalization: Normalization; count: number };
+  const { illuminant, normalization, count } = JSON.parse(key) as {
+    illuminant: IlluminantSpec;
+    normalization: Normalization;
+    count: number;
+  };
   const { weights } = spectralBins(spectralWeights(illuminant, normalization), count);
   const data = new Float32Array(4 * count);
   for (let b = 0; b < count; b++) data.set([weights[3 * b]!, weights[3 * b + 1]!, weights[3 * b + 2]!, 1], 4 * b);

@@ -62,7 +62,8 @@ export class BubbleView {
       new ShaderMaterial({
         side: BackSide,
         defines: { TFC_ENVIRONMENT: 1 },
-        vertexShader: 'varying vec3 vDirection; void main() { vDirection = position; gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0); }',
+        vertexShader:
+          'varying vec3 vDirection; void main() { vDirection = position; gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0); }',
         fragmentShader: `${shaderSource('environment.glsl')}
 varying vec3 vDirection;
 void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);

@@ -80,8 +80,10 @@ function filmColorLattice(s: FilmSettings): FilmColor {
   return (thicknessNm, cosIncidence, fromInside) => {
     const u = (thicknessNm - s.thicknessNm) / step;
     const v = clamp01(cosIncidence) * COS_STEPS;
-    const k = Math.floor(u), j = Math.min(COS_STEPS - 1, Math.floor(v));
-    const fu = u - k, fv = v - j;
+    const k = Math.floor(u),
+      j = Math.min(COS_STEPS - 1, Math.floor(v));
+    const fu = u - k,
+      fv = v - j;
     const corner = (dk: number, dj: number, w: number) => node(k + dk, j + dj, fromInside).map((c) => c * w);
     const parts = [corner(0, 0, (1 - fu) * (1 - fv)), corner(1, 0, fu * (1 - fv)), corner(0, 1, (1 - fu) * fv), corner(1, 1, fu * fv)];
     return [0, 1, 2].map((i) => parts.reduce((sum, p) => sum + p[i]!, 0)) as unknown as Rgb;

@@ -80,7 +80,11 @@ export class FilmProbe {
 
   /** The bubble's material with TFC_PROBE defined, sharing its uniforms; follows its defines. */
   private probeMaterial(shown: ShaderMaterial): ShaderMaterial {
-    this.material ??= new ShaderMaterial({ uniforms: shown.uniforms, vertexShader: shown.vertexShader, fragmentShader: shown.fragmentShader });
+    this.material ??= new ShaderMaterial({
+      uniforms: shown.uniforms,
+      vertexShader: shown.vertexShader,
+      fragmentShader: shown.fragmentShader,
+    });
     setDefines(this.material, { ...shown.defines, TFC_PROBE: 1 });
     return this.material;
   }

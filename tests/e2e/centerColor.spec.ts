@@ -21,7 +21,9 @@ async function centre(page: Page, query: string): Promise<{ rgb: number[]; displ
 }
 
 function expectClose(actual: number[], expected: number[], what: string): void {
-  expect(worstCodeDifference(actual, expected), `${what}: page ${actual} vs reference ${expected}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  expect(worstCodeDifference(actual, expected), `${what}: page ${actual} vs reference ${expected}`).toBeLessThanOrEqual(
+    MAX_CODE_DIFFERENCE,
+  );
 }
 
 for (const illuminant of ['D55', 'D65', 'D93'] as const) {
@@ -45,9 +47,13 @@ test('exact mode: the centre pixel is the reference sRGB colour', async ({ page 
 test('space=display-p3 shows the reference P3 colour, or falls back to sRGB where the browser cannot', async ({ page }) => {
   const { rgb, displayIsP3 } = await centre(page, 'thickness=450&illuminant=D65&space=display-p3');
   const expected = reference8({ thicknessNm: 450 }, 'D65', displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB);
-  console.log(`centre display-p3 (drawing buffer ${displayIsP3 ? 'display-p3' : 'srgb fallback'}) D65 450 nm: page ${rgb} reference ${expected}`);
+  console.log(
+    `centre display-p3 (drawing buffer ${displayIsP3 ? 'display-p3' : 'srgb fallback'}) D65 450 nm: page ${rgb} reference ${expected}`,
+  );
   if (!displayIsP3) {
-    const colorSpace = await page.evaluate(() => (document.querySelector('canvas')!.getContext('webgl2') as WebGL2RenderingContext).drawingBufferColorSpace);
+    const colorSpace = await page.evaluate(
+      () => (document.querySelector('canvas')!.getContext('webgl2') as WebGL2RenderingContext).drawingBufferColorSpace,
+    );
     expect(colorSpace).toBe('srgb');
   }
   expectClose(rgb, expected, `450 nm under D65 in ${displayIsP3 ? 'Display P3' : 'sRGB (fallback)'}`);

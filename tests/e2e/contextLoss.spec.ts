@@ -17,7 +17,6 @@ const gpuObjects = (page: Page) =>
     return { geometries: info.memory.geometries, textures: info.memory.textures, programs: info.programs?.length ?? 0 };
   });
 
-
 for (const mode of ['table', 'exact'] as const) {
   test(`${mode} mode: after a lost and restored context the bubble redraws itself, table rebuilt, nothing leaked`, async ({ page }) => {
     const problems = watchProblems(page);

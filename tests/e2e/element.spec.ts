@@ -57,7 +57,12 @@ async function centre(page: Page, i: number): Promise<number[]> {
   await expect(el).toHaveAttribute('data-frames', /\d+/);
   return el.evaluate((e) => {
     const c = e.querySelector('canvas')!;
-    return [...c.getContext('2d')!.getImageData(c.width >> 1, c.height >> 1, 1, 1).data.slice(0, 3)];
+    return [
+      ...c
+        .getContext('2d')!
+        .getImageData(c.width >> 1, c.height >> 1, 1, 1)
+        .data.slice(0, 3),
+    ];
   });
 }
 
@@ -68,20 +73,33 @@ test('the built element renders the reference centre colour; two elements share 
   const one = await centre(page, 0);
   const single = await glCounts(page);
 
-  await plainPage(page, `<thin-film-bubble ${FILM} illuminant="D55"></thin-film-bubble><thin-film-bubble ${FILM} illuminant="D93"></thin-film-bubble>`);
+  await plainPage(
+    page,
+    `<thin-film-bubble ${FILM} illuminant="D55"></thin-film-bubble><thin-film-bubble ${FILM} illuminant="D93"></thin-film-bubble>`,
+  );
   const [d55, d93] = [await centre(page, 0), await centre(page, 1)];
   const pair = await glCounts(page);
-  console.log(`element centre: D55 ${d55} (alone ${one}), D93 ${d93}; shader compiles: one element ${single.compiles}, two ${pair.compiles}`);
+  console.log(
+    `element centre: D55 ${d55} (alone ${one}), D93 ${d93}; shader compiles: one element ${single.compiles}, two ${pair.compiles}`,
+  );
 
-  for (const [rgb, illuminant] of [[one, 'D55'], [d55, 'D55'], [d93, 'D93']] as const) {
-    expect(worstCodeDifference(rgb, reference8({ thicknessNm: 450 }, illuminant)), `${illuminant}: ${rgb}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  for (const [rgb, illuminant] of [
+    [one, 'D55'],
+    [d55, 'D55'],
+    [d93, 'D93'],
+  ] as const) {
+    expect(worstCodeDifference(rgb, reference8({ thicknessNm: 450 }, illuminant)), `${illuminant}: ${rgb}`).toBeLessThanOrEqual(
+      MAX_CODE_DIFFERENCE,
+    );
   }
   expect(pair.liveContexts).toBe(1);
   expect(pair.compiles).toBe(single.compiles);
   expect(problems).toEqual([]);
 });
 
-test('attributes: a bad one is named with its range and its default kept; a change redraws; removal frees the context', async ({ page }) => {
+test('attributes: a bad one is named with its range and its default kept; a change redraws; removal frees the context', async ({
+  page,
+}) => {
   const problems = watchProblems(page);
   await countGl(page);
   await plainPage(page, `<thin-film-bubble ${FILM} nFilm="<b>9</b>" illuminant="D99"></thin-film-bubble>`);
@@ -124,7 +142,12 @@ test('without WebGL2 the element shows a message and a CPU image of the bubble w
   await expect(el.locator('figcaption')).toContainText('no WebGL2');
   const rgb = await el.evaluate((e) => {
     const c = e.querySelector('canvas')!;
-    return [...c.getContext('2d')!.getImageData(c.width >> 1, c.height >> 1, 1, 1).data.slice(0, 3)];
+    return [
+      ...c
+        .getContext('2d')!
+        .getImageData(c.width >> 1, c.height >> 1, 1, 1)
+        .data.slice(0, 3),
+    ];
   });
   expect(worstCodeDifference(rgb, reference8({ thicknessNm: 450 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
   expect(problems).toEqual([]);

@@ -3,7 +3,6 @@ import { centrePixel } from './drawingBuffer.ts';
 import { watchProblems } from './pageWatch.ts';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 
-
 test('the demo page loads with its title and a WebGL2 context', async ({ page }) => {
   await page.goto('/');
   await expect(page).toHaveTitle(/thin-film-color/);
@@ -17,7 +16,9 @@ test('a bad URL parameter shows a message naming it and its range, uses the defa
   await expect(page.locator('#messages')).toContainText('nFilm');
   await expect(page.locator('#messages')).toContainText('[1, 4]');
   expect(await page.locator('#messages img').count()).toBe(0);
-  expect(await page.evaluate(() => (window as unknown as { bubbleView: { current: { nFilm: number } } }).bubbleView.current.nFilm)).toBe(1.33);
+  expect(await page.evaluate(() => (window as unknown as { bubbleView: { current: { nFilm: number } } }).bubbleView.current.nFilm)).toBe(
+    1.33,
+  );
   expect(problems).toEqual([]);
 });
 
@@ -32,7 +33,10 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   await thickness.fill('300');
   await thickness.press('Enter');
   await expect(page).toHaveURL(/thickness=300/);
-  const current = () => page.evaluate(() => (window as unknown as { bubbleView: { current: { field: string; env: string; thicknessNm: number } } }).bubbleView.current);
+  const current = () =>
+    page.evaluate(
+      () => (window as unknown as { bubbleView: { current: { field: string; env: string; thicknessNm: number } } }).bubbleView.current,
+    );
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
   expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 

@@ -15,14 +15,27 @@ test('several bad URL parameters: a message for each naming its range, defaults 
   const messages = page.locator('#messages p');
   await expect(messages).toHaveCount(7);
   for (const [name, range] of <[string, string][]>[
-    ['thickness', '[0, 20000] nm'], ['nFilm', '[1, 4]'], ['illuminant', '[4000, 25000] K'], ['exposure', '[0, 100]'],
-    ['mode', 'exact, table'], ['time', '[0, 1000000] s'], ['speed', '[0, 10]'],
+    ['thickness', '[0, 20000] nm'],
+    ['nFilm', '[1, 4]'],
+    ['illuminant', '[4000, 25000] K'],
+    ['exposure', '[0, 100]'],
+    ['mode', 'exact, table'],
+    ['time', '[0, 1000000] s'],
+    ['speed', '[0, 10]'],
   ]) {
     await expect(messages.filter({ hasText: `${name}=` })).toContainText(range);
   }
   await expect(messages.filter({ hasText: 'speed=' })).toContainText('(5000 characters)');
   const current = await page.evaluate(() => (window as unknown as { bubbleView: { current: object } }).bubbleView.current);
-  expect(current).toMatchObject({ thicknessNm: 550, nFilm: 1.33, illuminant: 'D65', exposure: 1, mode: 'table', timeSeconds: 0, swirlSpeed: 0.4 });
+  expect(current).toMatchObject({
+    thicknessNm: 550,
+    nFilm: 1.33,
+    illuminant: 'D65',
+    exposure: 1,
+    mode: 'table',
+    timeSeconds: 0,
+    swirlSpeed: 0.4,
+  });
   expect(problems).toEqual([]);
 });
 
@@ -44,6 +57,7 @@ test('without WebGL2: a message where the canvas was and a CPU image of the bubb
   const expected = reference8({ thicknessNm: 450 });
   console.log(`fallback centre ${centre} reference ${expected}`);
   expect(centre[3]).toBe(255);
-  for (let i = 0; i < 3; i++) expect(Math.abs(centre[i]! - expected[i]!), `${centre} vs ${expected}`).toBeLessThanOrEqual(FALLBACK_MAX_CODE_DIFFERENCE);
+  for (let i = 0; i < 3; i++)
+    expect(Math.abs(centre[i]! - expected[i]!), `${centre} vs ${expected}`).toBeLessThanOrEqual(FALLBACK_MAX_CODE_DIFFERENCE);
   expect(problems).toEqual([]);
 });

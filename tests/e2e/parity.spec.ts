@@ -20,7 +20,6 @@ import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS } from '../tolerances.ts';
  * they are compared by ΔE00 under the case's illuminant white.
  */
 
-
 const ILLUMINANTS: readonly IlluminantSpec[] = ['D55', 'D65', 'D93', 'E', 'D65-table', { daylightCct: 4000 }, { daylightCct: 12000 }];
 
 interface Case {
@@ -39,7 +38,11 @@ function fixedDomain(): Group[] {
   const groups: Group[] = [];
   for (const illuminant of ILLUMINANTS) {
     for (const polarization of POLARIZATIONS) {
-      const cases: Case[] = [{ thicknessNm: 0, angleDeg: 0 }, { thicknessNm: 2000, angleDeg: 85 }, { thicknessNm: 2000, angleDeg: 0 }];
+      const cases: Case[] = [
+        { thicknessNm: 0, angleDeg: 0 },
+        { thicknessNm: 2000, angleDeg: 85 },
+        { thicknessNm: 2000, angleDeg: 0 },
+      ];
       while (cases.length < 40) cases.push({ thicknessNm: 2000 * next(), angleDeg: 85 * next() });
       const normalization = groups.length % 5 === 4 ? 'paper' : 'white';
       groups.push({ nOutside: 1, nFilm: 1.2 + 0.4 * next(), nInside: 1, illuminant, polarization, normalization, cases });
@@ -99,7 +102,12 @@ function compare(groups: readonly Group[], rendered: number[][][]): { figures: F
   return { figures: { ...deltaStats(deltas), worst }, deltas, nonFinite };
 }
 
-async function render(page: Page, groups: readonly Group[], mode: ParityMode, quality: FilmQuality = DEFAULT_FILM_QUALITY): Promise<number[][][]> {
+async function render(
+  page: Page,
+  groups: readonly Group[],
+  mode: ParityMode,
+  quality: FilmQuality = DEFAULT_FILM_QUALITY,
+): Promise<number[][][]> {
   await page.goto('/tests/e2e/harness/parity.html');
   await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
   return page.evaluate(([g, m, q]) => window.renderFilmXyz!(g, m, q), [groups.map(toParity), mode, quality] as const);
@@ -136,7 +144,9 @@ for (const mode of MODES) {
  * GPUs without float render targets get a half-float table (FilmTable picks it). Half floats keep
  * 11 significant bits, ~5e-4 relative: the table's colours must still meet the fixed-grid bound.
  */
-test(`the half-float table matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°, and stays finite on the stress cases`, async ({ page }) => {
+test(`the half-float table matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°, and stays finite on the stress cases`, async ({
+  page,
+}) => {
   const half = { ...DEFAULT_FILM_QUALITY, tablePrecision: 'half' } as const;
   const fixed = fixedDomain();
   const fixedResult = compare(fixed, await render(page, fixed, 'table', half));

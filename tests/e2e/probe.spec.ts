@@ -33,9 +33,12 @@ const READOUT_ROUNDING_DELTA_E00 = 0.05;
 /** The shader's film colour against the reference at the same film: parity.spec.ts's bound. */
 const MAX_RENDERED_DELTA_E00 = 0.5;
 
-const readout = (page: import('@playwright/test').Page, field: string) => page.locator(`.tfb-readout [data-field="${field}"]`).textContent();
+const readout = (page: import('@playwright/test').Page, field: string) =>
+  page.locator(`.tfb-readout [data-field="${field}"]`).textContent();
 
-test('a click probes the film there: thickness, angle, colour and ΔE00 agree with src/physics; the URL keeps the probe', async ({ page }) => {
+test('a click probes the film there: thickness, angle, colour and ΔE00 agree with src/physics; the URL keeps the probe', async ({
+  page,
+}) => {
   await page.goto('/?field=uniform&thickness=450&env=none&sides=front&animate=0');
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
   // Without a click the probe sits at the centre: normal incidence.

@@ -17,11 +17,18 @@ import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS, WHITE_BOUND_SLACK } from '..
  * then where float32 stops being good enough in `exact` mode, against the float64 reference.
  */
 
-
 /** Indices 1–4 in every order: film above, below, equal to its media; TIR at either face; frustrated TIR. */
 const STACKS = [
-  [1, 1.33, 1], [1, 4, 1], [1, 1, 1], [4, 4, 4], [1, 1.33, 4], [4, 2.5, 1],
-  [4, 1, 1], [1.5, 1.33, 1], [1.33, 1.5, 1], [2, 1.2, 3],
+  [1, 1.33, 1],
+  [1, 4, 1],
+  [1, 1, 1],
+  [4, 4, 4],
+  [1, 1.33, 4],
+  [4, 2.5, 1],
+  [4, 1, 1],
+  [1.5, 1.33, 1],
+  [1.33, 1.5, 1],
+  [2, 1.2, 3],
 ] as const;
 const THICKNESSES_NM = [0, 0.5, 10, 100, 550, 2000, 7000, 12000, 17000, 20000];
 /** cos θ_i from grazing (90°) to normal incidence, both ends included. */
@@ -35,7 +42,11 @@ function domainGroups(mode: ParityMode): ParityGroup[] {
   const inputs = THICKNESSES_NM.flatMap((t) => COSINES.map((c) => [t, c] as const));
   return STACKS.flatMap(([nOutside, nFilm, nInside], i) =>
     (mode !== 'table' ? POLARIZATIONS : [POLARIZATIONS[i % POLARIZATIONS.length]!]).map((polarization) => ({
-      nOutside, nFilm, nInside, polarization, inputs,
+      nOutside,
+      nFilm,
+      nInside,
+      polarization,
+      inputs,
       illuminant: i % 2 ? 'D65' : { daylightCct: 25000 }, // the bluest light has the largest X, Z
       normalization: 'white',
     })),
@@ -78,7 +89,10 @@ const LIMITS = [MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS] as const;
 test('exact mode: where float32 stops being good enough, along thickness and along angle', async ({ page }) => {
   const soap = { nOutside: 1, nFilm: 1.33, nInside: 1, illuminant: 'D65', polarization: 'unpolarized', normalization: 'white' } as const;
   const sweeps: { label: string; cases: [number, number][] }[] = [
-    ...[0, 45, 80, 89].map((a) => ({ label: `thickness 0–20 µm at ${a}°`, cases: Array.from({ length: 401 }, (_, i): [number, number] => [50 * i, a]) })),
+    ...[0, 45, 80, 89].map((a) => ({
+      label: `thickness 0–20 µm at ${a}°`,
+      cases: Array.from({ length: 401 }, (_, i): [number, number] => [50 * i, a]),
+    })),
     ...[300, 2000, 10000, 20000].map((t) => ({
       label: `angle 0–89.99° at ${t} nm`,
       cases: [...Array.from({ length: 179 }, (_, i) => i / 2), 89.5, 89.7, 89.9, 89.95, 89.99].map((a): [number, number] => [t, a]),
@@ -89,13 +103,20 @@ test('exact mode: where float32 stops being good enough, along thickness and alo
   const white = whiteXyz('D65');
   const figures = sweeps.map((s, si) => {
     const vs64 = s.cases.map(([t, a], ci) => deltaE00(rendered[si]![ci]! as unknown as Xyz, binned64(groups[si]!, t, a), white));
-    const vsRef = s.cases.map(([t, a], ci) => deltaE00(rendered[si]![ci]! as unknown as Xyz, filmXyz({ ...soap, thicknessNm: t, angleDeg: a }, soap), white));
+    const vsRef = s.cases.map(([t, a], ci) =>
+      deltaE00(rendered[si]![ci]! as unknown as Xyz, filmXyz({ ...soap, thicknessNm: t, angleDeg: a }, soap), white),
+    );
     const first = (d: number[], limit: number) => s.cases[d.findIndex((v) => v > limit)] ?? null;
     return {
       sweep: s.label,
       maxFloat32Only: Math.max(...vs64),
       maxVsReference: Math.max(...vsRef),
-      ...Object.fromEntries(LIMITS.flatMap((l) => [[`float32 > ${l}`, first(vs64, l)], [`vs reference > ${l}`, first(vsRef, l)]])),
+      ...Object.fromEntries(
+        LIMITS.flatMap((l) => [
+          [`float32 > ${l}`, first(vs64, l)],
+          [`vs reference > ${l}`, first(vsRef, l)],
+        ]),
+      ),
     };
   });
   for (const f of figures) console.log(`float32 ${JSON.stringify(f)}`);
@@ -131,11 +152,12 @@ test('the whole bubble pipeline at extreme settings draws no black (NaN) pixel i
         // The unit bubble seen from distance 4 under a 35° vertical field: radius tan(asin ¼)/tan 17.5° of the half-height.
         const radius = (Math.tan(Math.asin(0.25)) / Math.tan((17.5 * Math.PI) / 180)) * (h / 2) * fraction;
         let count = 0;
-        for (let y = 0; y < h; y++) for (let x = 0; x < w; x++) {
-          if (Math.hypot(x + 0.5 - w / 2, y + 0.5 - h / 2) > radius) continue;
-          const i = 4 * (y * w + x);
-          if (pixels[i] === 0 && pixels[i + 1] === 0 && pixels[i + 2] === 0) count++;
-        }
+        for (let y = 0; y < h; y++)
+          for (let x = 0; x < w; x++) {
+            if (Math.hypot(x + 0.5 - w / 2, y + 0.5 - h / 2) > radius) continue;
+            const i = 4 * (y * w + x);
+            if (pixels[i] === 0 && pixels[i + 1] === 0 && pixels[i + 2] === 0) count++;
+          }
         return count;
       }, DISC_FRACTION);
       expect(black, `${mode}: ${query}`).toBe(0);

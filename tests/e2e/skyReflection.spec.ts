@@ -20,8 +20,10 @@ test('a uniform film against the sky reflects the sky in the mirror direction an
     const view = (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView;
     view.render();
     const gl = view.renderer.getContext();
-    const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
-    const x = w >> 1, y = Math.round(h * 0.68);
+    const w = gl.drawingBufferWidth,
+      h = gl.drawingBufferHeight;
+    const x = w >> 1,
+      y = Math.round(h * 0.68);
     const pixel = new Uint8Array(4);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     gl.readPixels(x, y, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
@@ -29,7 +31,8 @@ test('a uniform film against the sky reflects the sky in the mirror direction an
   });
   // The camera ray through that pixel's centre (GL rows count from the bottom).
   const tanHalf = Math.tan((FOV_DEG * Math.PI) / 360);
-  const ndcX = (2 * (read.x + 0.5)) / read.w - 1, ndcY = (2 * (read.y + 0.5)) / read.h - 1;
+  const ndcX = (2 * (read.x + 0.5)) / read.w - 1,
+    ndcY = (2 * (read.y + 0.5)) / read.h - 1;
   const raw = [ndcX * tanHalf * (read.w / read.h), ndcY * tanHalf, -1];
   const len = Math.hypot(...raw);
   const d = raw.map((c) => c / len) as [number, number, number];
@@ -38,10 +41,17 @@ test('a uniform film against the sky reflects the sky in the mirror direction an
   const p = [t * d[0], t * d[1], CAMERA_DISTANCE + t * d[2]] as [number, number, number];
   const cos = -(p[0] * d[0] + p[1] * d[1] + p[2] * d[2]);
   const mirror = p.map((n, i) => d[i]! + 2 * cos * n) as [number, number, number];
-  const R = applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz({ ...SOAP_FILM_IN_AIR, thicknessNm, angleDeg: (Math.acos(cos) * 180) / Math.PI }, { illuminant: 'D65' }));
+  const R = applyMatrix3(
+    XYZ_TO_LINEAR_SRGB,
+    filmXyz({ ...SOAP_FILM_IN_AIR, thicknessNm, angleDeg: (Math.acos(cos) * 180) / Math.PI }, { illuminant: 'D65' }),
+  );
   const reflected = environmentRadiance(mirror, 'sky');
   const behind = environmentRadiance(d, 'sky');
-  const expected = [0, 1, 2].map((i) => encode8(Math.min(1, Math.max(0, R[i]! * reflected[i]! + Math.min(1, Math.max(0, 1 - R[i]!)) * behind[i]!))));
-  console.log(`sky pixel (${read.x}, ${read.y}) θ_i ${((Math.acos(cos) * 180) / Math.PI).toFixed(1)}°: page ${read.rgb} expected ${expected}`);
+  const expected = [0, 1, 2].map((i) =>
+    encode8(Math.min(1, Math.max(0, R[i]! * reflected[i]! + Math.min(1, Math.max(0, 1 - R[i]!)) * behind[i]!))),
+  );
+  console.log(
+    `sky pixel (${read.x}, ${read.y}) θ_i ${((Math.acos(cos) * 180) / Math.PI).toFixed(1)}°: page ${read.rgb} expected ${expected}`,
+  );
   expect(worstCodeDifference(read.rgb, expected)).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 });

@@ -113,7 +113,12 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
   for (let i = 0; i < CYCLES; i++) {
     await page.evaluate(
       ({ size, illuminant }) =>
-        document.querySelector('#slot')!.insertAdjacentHTML('beforeend', `<thin-film-bubble id="cycled" ${size} plots field="drainage" illuminant="${illuminant}"></thin-film-bubble>`),
+        document
+          .querySelector('#slot')!
+          .insertAdjacentHTML(
+            'beforeend',
+            `<thin-film-bubble id="cycled" ${size} plots field="drainage" illuminant="${illuminant}"></thin-film-bubble>`,
+          ),
       { size: SIZE, illuminant: 5000 + 100 * i },
     );
     await expect(page.locator('#cycled')).toHaveAttribute('data-frames', /\d+/);
@@ -122,7 +127,9 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
 
   const end = await resources();
   const endHeap = await heapUsedMb(page);
-  console.log(`soak: GPU objects ${JSON.stringify(start)} → ${JSON.stringify(end)}; heap ${startHeap.toFixed(1)} → ${endHeap.toFixed(1)} MB`);
+  console.log(
+    `soak: GPU objects ${JSON.stringify(start)} → ${JSON.stringify(end)}; heap ${startHeap.toFixed(1)} → ${endHeap.toFixed(1)} MB`,
+  );
   expect(end).toEqual(start);
   expect(endHeap - startHeap).toBeLessThan(HEAP_GROWTH_BOUND_MB);
   expect(problems).toEqual([]);

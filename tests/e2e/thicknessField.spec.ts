@@ -8,7 +8,12 @@ import type { FieldSettings } from './harness/thicknessFieldProbe.ts';
 /** Points spread over the unit sphere (seeded), the black-film cap and the poles included. */
 function spherePoints(count: number): [number, number, number][] {
   const random = mulberry32(7);
-  const points: [number, number, number][] = [[0, 1, 0], [0, -1, 0], [1, 0, 0], [0, 0.9, Math.sqrt(1 - 0.81)]];
+  const points: [number, number, number][] = [
+    [0, 1, 0],
+    [0, -1, 0],
+    [1, 0, 0],
+    [0, 0.9, Math.sqrt(1 - 0.81)],
+  ];
   while (points.length < count) {
     const y = 2 * random() - 1;
     const a = 2 * Math.PI * random();

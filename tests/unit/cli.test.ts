@@ -108,9 +108,7 @@ describe('color CLI, cases file', () => {
   it('answers every case, in input order, with defaults filled in and stated', { timeout: SPAWN_TIMEOUT_MS }, () => {
     const cases = out();
     expect(cases.map((c) => c.id)).toEqual(['bare-glass', 1, 42, 's-head-on', 'p-head-on', 'paper-normalization']);
-    const [bare, empty, paper, s, p, paperNorm] = cases as [
-      CaseOutput, CaseOutput, CaseOutput, CaseOutput, CaseOutput, CaseOutput,
-    ];
+    const [bare, empty, paper, s, p, paperNorm] = cases as [CaseOutput, CaseOutput, CaseOutput, CaseOutput, CaseOutput, CaseOutput];
     // Bare glass under equal energy: R = 0.04 everywhere and X = Y = Z (CIE 1931's equal-energy white).
     expect(bare.illuminant).toBe('E');
     for (const value of bare.reflectance) expect(Math.abs(value - bareInterfaceR(1, 1.5))).toBeLessThan(FLOAT_TOLERANCE);
@@ -144,9 +142,7 @@ describe('color CLI, tables', () => {
       const rgb = ['srgb8R', 'srgb8G', 'srgb8B'].map((n) => Number(cells[col(n)]));
       expect(cells[col('hex')]).toBe(`#${rgb.map((v) => v.toString(16).padStart(2, '0')).join('')}`);
     }
-    expect(lines.slice(1).map((l) => Number(l.split(',')[col('thicknessNm')]))).toEqual(
-      Array.from({ length: 151 }, (_, i) => i * 10),
-    );
+    expect(lines.slice(1).map((l) => Number(l.split(',')[col('thicknessNm')]))).toEqual(Array.from({ length: 151 }, (_, i) => i * 10));
   });
 
   it('a JSON thickness table equals the cases output for the same films', { timeout: SPAWN_TIMEOUT_MS }, () => {
@@ -351,15 +347,22 @@ describe('color CLI, the table of bad values', () => {
     ...Object.entries(NUMERIC_FLAGS).flatMap(([flag, [min, max]]) =>
       [...NOT_NUMBERS, ...outsideRange(min, max)].map((v): Row =>
         // A wavelength list's errors name the element ("1,5" is the list [1, 5]; 1 is refused).
-        flag === '--wavelengths' ? [[flag, v], `${flag}[0]`, v.split(',')[0]!, `[${min}, ${max}]`] : [[flag, v], flag, v, `[${min}, ${max}]`],
+        flag === '--wavelengths'
+          ? [[flag, v], `${flag}[0]`, v.split(',')[0]!, `[${min}, ${max}]`]
+          : [[flag, v], flag, v, `[${min}, ${max}]`],
       ),
     ),
     [['--wavelengths', '500,1e999'], '--wavelengths[1]', '1e999', '[300, 830]'],
     [['--wavelengths', '500,900'], '--wavelengths[1]', '900', '[300, 830]'],
-    ...Object.entries(NAMED_FLAGS).flatMap(([flag, allowed]) => notNames(allowed).map((v): Row => [[flag, v], flag, v, allowed.join(', ')])),
-    ...[...NOT_NUMBERS, ...outsideRange(4000, 25000), ...notNames(['D65', 'E'])].map(
-      (v): Row => [['--illuminant', v], '--illuminant', v, 'D55, D65, D93, E, D65-table or a daylight CCT in [4000, 25000] K'],
+    ...Object.entries(NAMED_FLAGS).flatMap(([flag, allowed]) =>
+      notNames(allowed).map((v): Row => [[flag, v], flag, v, allowed.join(', ')]),
     ),
+    ...[...NOT_NUMBERS, ...outsideRange(4000, 25000), ...notNames(['D65', 'E'])].map((v): Row => [
+      ['--illuminant', v],
+      '--illuminant',
+      v,
+      'D55, D65, D93, E, D65-table or a daylight CCT in [4000, 25000] K',
+    ]),
     ...notNames(['json', 'csv']).map((v): Row => [['--angles', '0:10:5', '--format', v], '--format', v, 'json, csv']),
     ...(['--from', '--to'] as const).flatMap((flag) =>
       [...NOT_NUMBERS, ...outsideRange(0, 20000)].map((v): Row => {
@@ -386,7 +389,15 @@ describe('color CLI, the table of bad values', () => {
 
   /** JSON values that are not a number in range (1e999 parses to Infinity). */
   const badJsonNumbers = (min: number, max: number): string[] => [
-    '"abc"', '""', '"500"', 'null', 'true', '[]', '{}', `"${ABSURDLY_LONG}"`, ...outsideRange(min, max),
+    '"abc"',
+    '""',
+    '"500"',
+    'null',
+    'true',
+    '[]',
+    '{}',
+    `"${ABSURDLY_LONG}"`,
+    ...outsideRange(min, max),
   ];
   const FIELDS: Record<string, [number, number]> = {
     thicknessNm: [0, 20000],
@@ -434,7 +445,14 @@ describe('color CLI, the table of bad values', () => {
 
 describe('strict parsing helpers', () => {
   it('parseStrictNumber reads decimal numbers only', () => {
-    for (const [text, value] of [['500', 500], ['1e3', 1000], ['-0.5', -0.5], ['.5', 0.5], ['+7', 7], ['5.', 5]] as const) {
+    for (const [text, value] of [
+      ['500', 500],
+      ['1e3', 1000],
+      ['-0.5', -0.5],
+      ['.5', 0.5],
+      ['+7', 7],
+      ['5.', 5],
+    ] as const) {
       expect(parseStrictNumber('x', text, 'a number')).toBe(value);
     }
     for (const text of ['', ' 5', '5 ', '12abc', '0x10', '0b1', 'Infinity', '-Infinity', 'NaN', '1e999', '1,5', '--5']) {

@@ -75,7 +75,8 @@ describe('color chart, PNG', () => {
     angles.forEach((angle, j) => {
       const rows = table(...range, '--angle', String(angle));
       rows.forEach((row, i) => {
-        for (let dy = 0; dy < cellHeight; dy++) expect(pixel(png, i, j * cellHeight + dy), `${row.thicknessNm} nm, ${angle}°`).toEqual([...row.srgb8, 255]);
+        for (let dy = 0; dy < cellHeight; dy++)
+          expect(pixel(png, i, j * cellHeight + dy), `${row.thicknessNm} nm, ${angle}°`).toEqual([...row.srgb8, 255]);
       });
     });
   });

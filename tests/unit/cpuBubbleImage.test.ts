@@ -10,7 +10,11 @@ import { cpuBubbleImage } from '../../src/scene/cpuBubbleImage.ts';
 const MAX_CODE_DIFFERENCE = 1;
 const SIZE = 240;
 const film = (over: Partial<FilmSettings>): FilmSettings => ({
-  ...DEFAULT_SETTINGS, field: 'uniform', env: 'none', sides: 'front', ...over,
+  ...DEFAULT_SETTINGS,
+  field: 'uniform',
+  env: 'none',
+  sides: 'front',
+  ...over,
 });
 const pixel = (image: Uint8ClampedArray, col: number, row: number) => [...image.slice(4 * (row * SIZE + col), 4 * (row * SIZE + col) + 4)];
 
@@ -22,7 +26,8 @@ describe('the CPU still image of the bubble', () => {
       const expected = mapToGamut(applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz), xyz[1]).map(encode8);
       const centre = pixel(image, SIZE / 2, SIZE / 2);
       expect(centre[3]).toBe(255);
-      for (let i = 0; i < 3; i++) expect(Math.abs(centre[i]! - expected[i]!), `${thicknessNm} nm: ${centre} vs ${expected}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+      for (let i = 0; i < 3; i++)
+        expect(Math.abs(centre[i]! - expected[i]!), `${thicknessNm} nm: ${centre} vs ${expected}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
     }
   });
 
@@ -31,11 +36,29 @@ describe('the CPU still image of the bubble', () => {
     const radiusPx = (Math.tan(Math.asin(1 / 4)) / Math.tan((17.5 * Math.PI) / 180)) * (SIZE / 2);
     const image = cpuBubbleImage(film({ thicknessNm: 450, exposure: 100 }), SIZE, SIZE);
     const c = SIZE / 2;
-    const inside = Math.floor(radiusPx - 2), outside = Math.ceil(radiusPx + 2);
-    for (const [col, row] of [[c + inside, c], [c - inside, c], [c, c + inside], [c, c - inside]] as const) {
-      expect(pixel(image, col, row).slice(0, 3).some((v) => v > 0), `inside at ${col},${row}`).toBe(true);
+    const inside = Math.floor(radiusPx - 2),
+      outside = Math.ceil(radiusPx + 2);
+    for (const [col, row] of [
+      [c + inside, c],
+      [c - inside, c],
+      [c, c + inside],
+      [c, c - inside],
+    ] as const) {
+      expect(
+        pixel(image, col, row)
+          .slice(0, 3)
+          .some((v) => v > 0),
+        `inside at ${col},${row}`,
+      ).toBe(true);
     }
-    for (const [col, row] of [[c + outside, c], [c - outside, c], [c, c + outside], [c, c - outside], [0, 0], [SIZE - 1, SIZE - 1]] as const) {
+    for (const [col, row] of [
+      [c + outside, c],
+      [c - outside, c],
+      [c, c + outside],
+      [c, c - outside],
+      [0, 0],
+      [SIZE - 1, SIZE - 1],
+    ] as const) {
       expect(pixel(image, col, row), `outside at ${col},${row}`).toEqual([0, 0, 0, 255]);
     }
   });

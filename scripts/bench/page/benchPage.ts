@@ -18,7 +18,7 @@ function checkerTexture(): DataTexture {
   const size = 256;
   const data = new Uint8Array(4 * size * size);
   for (let i = 0; i < size * size; i++) {
-    const v = ((i % size >> 4) + ((i / size) >> 4)) % 2 ? 220 : 90;
+    const v = (((i % size) >> 4) + ((i / size) >> 4)) % 2 ? 220 : 90;
     data.set([v, (v * 3) >> 2, 255 - v, 255], 4 * i);
   }
   const t = new DataTexture(data, size, size, RGBAFormat);

@@ -2,7 +2,18 @@
  * Renders shaders/thicknessField.glsl's thicknessAt at given points of the unit sphere into a
  * float target and reads it back, one pixel per point (the parity harness's thickness twin check).
  */
-import { DataTexture, FloatType, Mesh, NearestFilter, OrthographicCamera, PlaneGeometry, RGBAFormat, ShaderMaterial, WebGLRenderTarget, type WebGLRenderer } from 'three';
+import {
+  DataTexture,
+  FloatType,
+  Mesh,
+  NearestFilter,
+  OrthographicCamera,
+  PlaneGeometry,
+  RGBAFormat,
+  ShaderMaterial,
+  WebGLRenderTarget,
+  type WebGLRenderer,
+} from 'three';
 import { FIELDS, type FilmSettings } from '../../../src/render/filmSettings.ts';
 import { shaderSource } from '../../../src/render/shaderSource.ts';
 
@@ -15,7 +26,11 @@ void main() {
   gl_FragColor = vec4(thicknessAt(p), 0.0, 0.0, 1.0);
 }`;
 
-export function renderThickness(renderer: WebGLRenderer, points: readonly (readonly [number, number, number])[], s: FieldSettings): number[] {
+export function renderThickness(
+  renderer: WebGLRenderer,
+  points: readonly (readonly [number, number, number])[],
+  s: FieldSettings,
+): number[] {
   const count = points.length;
   const data = new Float32Array(4 * count);
   points.forEach((p, i) => data.set([...p, 0], 4 * i));

@@ -57,14 +57,18 @@ describe('URL parameters', () => {
     ...Object.entries(NUMERIC).flatMap(([name, [min, max]]) =>
       [...NOT_NUMBERS, ...outsideRange(min, max)].map((v): [string, string, string] => [name, v, `[${min}, ${max}]`]),
     ),
-    ...Object.entries(NAMED).flatMap(([name, allowed]) => notNames(allowed).map((v): [string, string, string] => [name, v, allowed.join(', ')])),
+    ...Object.entries(NAMED).flatMap(([name, allowed]) =>
+      notNames(allowed).map((v): [string, string, string] => [name, v, allowed.join(', ')]),
+    ),
     ...[...NOT_NUMBERS.filter((v) => v !== ''), ...outsideRange(4000, 25000), ...notNames(['D65', 'E'])].map(
       (v): [string, string, string] => ['illuminant', v, '[4000, 25000] K'],
     ),
     ...['', 'yes', 'true', '2', '-1', ABSURDLY_LONG].map((v): [string, string, string] => ['animate', v, '0 or 1']),
-    ...[...NOT_NUMBERS, '0.5', '0.5,0.5,0.5', '1.5,0.5', '-0.1,0.5', 'NaN,0.5', 'Infinity,0', '0.5,'].map(
-      (v): [string, string, string] => ['probe', v, '[0, 1]'],
-    ),
+    ...[...NOT_NUMBERS, '0.5', '0.5,0.5,0.5', '1.5,0.5', '-0.1,0.5', 'NaN,0.5', 'Infinity,0', '0.5,'].map((v): [string, string, string] => [
+      'probe',
+      v,
+      '[0, 1]',
+    ]),
   ];
 
   it('the table of bad values covers every parameter', () => {
@@ -87,8 +91,11 @@ describe('URL parameters', () => {
     expect(errors.map((e) => e.split('=')[0])).toEqual(['thickness', 'nFilm', 'exposure']);
   });
 
-  it('skips unknown names, Object.prototype\'s included', () => {
-    expect(parseSettings('?lesson=3&constructor=1&toString=x&__proto__=y&hasOwnProperty=1')).toEqual({ settings: DEFAULT_SETTINGS, errors: [] });
+  it("skips unknown names, Object.prototype's included", () => {
+    expect(parseSettings('?lesson=3&constructor=1&toString=x&__proto__=y&hasOwnProperty=1')).toEqual({
+      settings: DEFAULT_SETTINGS,
+      errors: [],
+    });
   });
 
   it('builds on a base: a refused value leaves the base value', () => {

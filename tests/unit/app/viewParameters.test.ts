@@ -21,7 +21,11 @@ function readmeDefaults(): Map<string, string> {
 
 describe('the parameter schema', () => {
   it('names each parameter once in the URL, as an attribute and in the colour tool', () => {
-    for (const names of [VIEW_PARAMETERS.map((r) => r.url), VIEW_PARAMETERS.map((r) => r.attribute), VIEW_PARAMETERS.flatMap((r) => r.cli ?? [])]) {
+    for (const names of [
+      VIEW_PARAMETERS.map((r) => r.url),
+      VIEW_PARAMETERS.map((r) => r.attribute),
+      VIEW_PARAMETERS.flatMap((r) => r.cli ?? []),
+    ]) {
       expect(new Set(names).size).toBe(names.length);
     }
     // HTML lower-cases attribute names, so an observed attribute must be written in lower case.

@@ -9,7 +9,6 @@ import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, spectralWeights } from '../../../src/phys
 import { spectralTransform } from '../../../src/physics/spectralTransform.ts';
 import { IDENTITY_TOL, SERIES_DE00 } from '../../tolerances.ts';
 
-
 const weights = spectralWeights('D65');
 const transform = spectralTransform(weights);
 const bins = spectralBins(weights, 90);

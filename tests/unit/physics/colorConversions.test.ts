@@ -25,7 +25,10 @@ describe('colour conversions, eqs (19)–(20) and the display step', () => {
 
   it('derives the published Display P3 matrix (XYZ → P3 row 1: 2.4934969, −0.9313836, −0.4027108)', () => {
     // Published in e.g. the CSS Color 4 specification's sample code.
-    const expected = [2.493496911941425, -0.9313836179191239, -0.40271078445071684, -0.8294889695615747, 1.7626640603183463, 0.023624685841943577, 0.03584583024378447, -0.07617238926804182, 0.9568845240076872];
+    const expected = [
+      2.493496911941425, -0.9313836179191239, -0.40271078445071684, -0.8294889695615747, 1.7626640603183463, 0.023624685841943577,
+      0.03584583024378447, -0.07617238926804182, 0.9568845240076872,
+    ];
     XYZ_TO_LINEAR_DISPLAY_P3.forEach((v, i) => expect(v).toBeCloseTo(expected[i]!, 6));
   });
 

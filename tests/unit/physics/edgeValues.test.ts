@@ -3,7 +3,13 @@
  * under test, and bad input refused before anything is computed.
  */
 import { describe, expect, it } from 'vitest';
-import { FILM_STACK_DOMAIN, type FilmStack, POLARIZATIONS, filmReflectance, filmTransmittance } from '../../../src/physics/filmReflectance.ts';
+import {
+  FILM_STACK_DOMAIN,
+  type FilmStack,
+  POLARIZATIONS,
+  filmReflectance,
+  filmTransmittance,
+} from '../../../src/physics/filmReflectance.ts';
 import { ParameterError } from '../../../src/physics/validate.ts';
 import { ALGEBRAIC_TOL } from '../../tolerances.ts';
 
@@ -12,9 +18,11 @@ const INDICES = [1, 1.33, 1.5, 2.5, 4] as const;
 const LAMBDA_NM = 537;
 
 function* stacks(thicknessNm: number, angleDeg: number): Generator<FilmStack> {
-  for (const nOutside of INDICES) for (const nFilm of INDICES) for (const nInside of INDICES) {
-    yield { nOutside, nFilm, nInside, thicknessNm, angleDeg };
-  }
+  for (const nOutside of INDICES)
+    for (const nFilm of INDICES)
+      for (const nInside of INDICES) {
+        yield { nOutside, nFilm, nInside, thicknessNm, angleDeg };
+      }
 }
 
 /**

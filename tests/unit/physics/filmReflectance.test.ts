@@ -13,7 +13,6 @@ import { fresnelCoefficients } from '../../../src/physics/fresnel.ts';
 import { cosDeg, refractedCos } from '../../../src/physics/snell.ts';
 import { ALGEBRAIC_TOL, CONTINUITY_TOL, GOLDEN_TOL, QUADRATURE_TOL } from '../../tolerances.ts';
 
-
 const stack = (over: Partial<FilmStack>): FilmStack => ({ nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 0, ...over });
 
 /** Single-interface reflectances straight from the textbook forms (Hecht), not from fresnel.ts. */
@@ -37,8 +36,13 @@ describe('film reflectance, eqs (1)–(14)', () => {
 
   it('matches the normal-incidence closed form of a lossless film', () => {
     // R = (r1² + r2² + 2 r1 r2 cos φ) / (1 + r1² r2² + 2 r1 r2 cos φ), r1 = (na−nb)/(na+nb), r2 = (nb−nc)/(nb+nc).
-    for (const [na, nb, nc, d, l] of [[1, 1.33, 1, 377, 612], [1.2, 2.4, 1.6, 1234, 433], [1, 1.05, 3.9, 20000, 701]] as const) {
-      const r1 = (na - nb) / (na + nb), r2 = (nb - nc) / (nb + nc);
+    for (const [na, nb, nc, d, l] of [
+      [1, 1.33, 1, 377, 612],
+      [1.2, 2.4, 1.6, 1234, 433],
+      [1, 1.05, 3.9, 20000, 701],
+    ] as const) {
+      const r1 = (na - nb) / (na + nb),
+        r2 = (nb - nc) / (nb + nc);
       const cos = Math.cos((4 * Math.PI * nb * d) / l);
       const expected = (r1 * r1 + r2 * r2 + 2 * r1 * r2 * cos) / (1 + r1 * r1 * r2 * r2 + 2 * r1 * r2 * cos);
       expect(filmReflectance(l, { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: d, angleDeg: 0 })).toBeCloseTo(expected, 12);
@@ -46,7 +50,11 @@ describe('film reflectance, eqs (1)–(14)', () => {
   });
 
   it('has its quarter-wave minimum ((na nc − nb²)/(na nc + nb²))²', () => {
-    for (const [na, nb, nc] of [[1, 1.33, 1], [1, 1.38, 1.52], [1.33, 2.2, 1]] as const) {
+    for (const [na, nb, nc] of [
+      [1, 1.33, 1],
+      [1, 1.38, 1.52],
+      [1.33, 2.2, 1],
+    ] as const) {
       const l = 550;
       const expected = ((na * nc - nb * nb) / (na * nc + nb * nb)) ** 2;
       const got = filmReflectance(l, { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: l / (4 * nb), angleDeg: 0 });
@@ -89,7 +97,12 @@ describe('film reflectance, eqs (1)–(14)', () => {
   });
 
   it('conserves energy: R + T = 1 for s, p and unpolarised light, TIR and frustrated TIR included', () => {
-    for (const [na, nb, nc, angle] of [[1, 1.33, 1, 40], [1.6, 1.2, 1.5, 60], [1.6, 1.4, 1.1, 70], [2, 3, 1, 89]] as const) {
+    for (const [na, nb, nc, angle] of [
+      [1, 1.33, 1, 40],
+      [1.6, 1.2, 1.5, 60],
+      [1.6, 1.4, 1.1, 70],
+      [2, 3, 1, 89],
+    ] as const) {
       for (const pol of ['s', 'p', 'unpolarized'] as const) {
         const s = { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: 150, angleDeg: angle };
         expect(Math.abs(filmReflectance(450, s, pol) + filmTransmittance(450, s, pol) - 1)).toBeLessThan(ALGEBRAIC_TOL);
@@ -104,7 +117,8 @@ describe('film reflectance, eqs (1)–(14)', () => {
   });
 
   it('with every index equal, reflects nothing at any angle, grazing included', () => {
-    for (const angle of [0, 45, 90]) expect(filmReflectance(600, { nOutside: 1.5, nFilm: 1.5, nInside: 1.5, thicknessNm: 300, angleDeg: angle })).toBe(0);
+    for (const angle of [0, 45, 90])
+      expect(filmReflectance(600, { nOutside: 1.5, nFilm: 1.5, nInside: 1.5, thicknessNm: 300, angleDeg: angle })).toBe(0);
   });
 });
 
@@ -115,7 +129,10 @@ describe('Snell, Fresnel and the phase, eqs (1)–(12)', () => {
     const cr = refractedCos(1.9, 1.2, cos);
     const ab = fresnelCoefficients(1.2, ci, 1.9, cr);
     const ba = fresnelCoefficients(1.9, cr, 1.2, ci);
-    for (const [r1, r2, t1, t2] of [[ab.rs, ba.rs, ab.ts, ba.ts], [ab.rp, ba.rp, ab.tp, ba.tp]] as const) {
+    for (const [r1, r2, t1, t2] of [
+      [ab.rs, ba.rs, ab.ts, ba.ts],
+      [ab.rp, ba.rp, ab.tp, ba.tp],
+    ] as const) {
       expect(r1.re + r2.re).toBeCloseTo(0, 14);
       expect(t1.re * t2.re - r1.re * r2.re).toBeCloseTo(1, 14);
     }
@@ -129,7 +146,11 @@ describe('Snell, Fresnel and the phase, eqs (1)–(12)', () => {
   });
 
   it("uses Δ = 2 n_b d cos θ_r, equal to the paper's eq (12) with θ_ro = θ_ri", () => {
-    for (const [na, nb, d, angle] of [[1, 1.33, 500, 30], [1.2, 2.5, 1234, 75], [1, 1.05, 80, 5]] as const) {
+    for (const [na, nb, d, angle] of [
+      [1, 1.33, 500, 30],
+      [1.2, 2.5, 1234, 75],
+      [1, 1.05, 80, 5],
+    ] as const) {
       const ti = (angle * Math.PI) / 180;
       const tr = Math.asin((na * Math.sin(ti)) / nb);
       const eq12 = nb * d * (2 / Math.cos(tr)) - na * d * (2 * Math.tan(tr)) * Math.sin(ti);
@@ -160,7 +181,13 @@ describe('the closed-form mean of R over a phase window', () => {
     for (const [s, pol] of cases) {
       const optics = filmOptics(s, pol);
       optics.channels.forEach((c, i) => {
-        for (const [phi0, w] of [[9.3, 0.01], [17.1, 0.5], [100.2, 2], [40, 3.14159], [60, 10]] as const) {
+        for (const [phi0, w] of [
+          [9.3, 0.01],
+          [17.1, 0.5],
+          [100.2, 2],
+          [40, 3.14159],
+          [60, 10],
+        ] as const) {
           expect(Math.abs(meanChannelReflectance(c, phi0, w) - numericMean(optics, i, phi0, w))).toBeLessThan(QUADRATURE_TOL);
         }
       });
@@ -203,8 +230,17 @@ describe('the closed-form mean of R over a phase window', () => {
     ];
     for (const [s, pol] of cases) {
       const channel = filmOptics(s, pol).channels[0]!;
-      for (const [phi0, w] of [[9.3, 0.01], [17.1, 0.5], [100.2, 2], [40, 3.14159], [60, 10]] as const) {
-        expect(Math.abs(meanChannelReflectance(channel, phi0, w) - airyMean(s, pol, phi0, w)), `${pol} ${s.angleDeg}° ${phi0}±${w}`).toBeLessThan(QUADRATURE_TOL);
+      for (const [phi0, w] of [
+        [9.3, 0.01],
+        [17.1, 0.5],
+        [100.2, 2],
+        [40, 3.14159],
+        [60, 10],
+      ] as const) {
+        expect(
+          Math.abs(meanChannelReflectance(channel, phi0, w) - airyMean(s, pol, phi0, w)),
+          `${pol} ${s.angleDeg}° ${phi0}±${w}`,
+        ).toBeLessThan(QUADRATURE_TOL);
       }
     }
   });

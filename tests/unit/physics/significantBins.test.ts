@@ -6,7 +6,6 @@ import { whiteXyz } from '../../../src/physics/spectralIntegration.ts';
 import { spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { MAX_SKIP_DE00, TAIL_TOLERANCE } from '../../tolerances.ts';
 
-
 describe('significantBins: the spectral tails a shader may skip', () => {
   for (const illuminant of ['D55', 'D65', 'D93', 'E', { daylightCct: 4000 }, { daylightCct: 25000 }] as const) {
     it(`moves no film colour by more than ΔE00 ${MAX_SKIP_DE00} under ${JSON.stringify(illuminant)}, black films included`, () => {

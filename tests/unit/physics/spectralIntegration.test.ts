@@ -7,7 +7,6 @@ import { filmXyz, integrateXyz, whiteXyz } from '../../../src/physics/spectralIn
 import { spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { CHROMATICITY_TOL, CONVERGENCE_DE00 } from '../../tolerances.ts';
 
-
 describe('XYZ integration, eqs (15)–(18)', () => {
   it('gives a perfect white reflector Y = 1 under the white normalisation', () => {
     for (const il of ['D55', 'D65', 'D93', 'E', 'D65-table', { daylightCct: 12000 }] as const) {
@@ -29,8 +28,12 @@ describe('XYZ integration, eqs (15)–(18)', () => {
     expect(Math.abs(y - 0.34743)).toBeLessThan(CHROMATICITY_TOL);
   });
 
-  it("puts D93 and daylight at any CCT on the CIE daylight locus (CIE 015 eqs 4.7–4.9), from the integrated spectrum", () => {
-    for (const [il, cct] of [['D93', 9300 * C2_CORRECTION], [{ daylightCct: 4000 }, 4000], [{ daylightCct: 25000 }, 25000]] as const) {
+  it('puts D93 and daylight at any CCT on the CIE daylight locus (CIE 015 eqs 4.7–4.9), from the integrated spectrum', () => {
+    for (const [il, cct] of [
+      ['D93', 9300 * C2_CORRECTION],
+      [{ daylightCct: 4000 }, 4000],
+      [{ daylightCct: 25000 }, 25000],
+    ] as const) {
       const [x, y] = xyzToXy(whiteXyz(il));
       const locus = daylightChromaticity(cct);
       expect(Math.abs(x - locus.x)).toBeLessThan(CHROMATICITY_TOL);
@@ -38,9 +41,12 @@ describe('XYZ integration, eqs (15)–(18)', () => {
     }
   });
 
-  it('puts daylight at D50 and D75\'s CCTs at CIE 015:2018 Table 3\'s chromaticities (an independent table)', () => {
+  it("puts daylight at D50 and D75's CCTs at CIE 015:2018 Table 3's chromaticities (an independent table)", () => {
     // Nominal 5000 and 7500 K on the current temperature scale (the CCT convention of illuminants.ts).
-    for (const [nominalK, x0, y0] of [[5000, 0.34567, 0.3585], [7500, 0.29902, 0.31485]] as const) {
+    for (const [nominalK, x0, y0] of [
+      [5000, 0.34567, 0.3585],
+      [7500, 0.29902, 0.31485],
+    ] as const) {
       const [x, y] = xyzToXy(whiteXyz({ daylightCct: nominalK * C2_CORRECTION }));
       expect(Math.abs(x - x0), `D${nominalK / 100} x`).toBeLessThan(CHROMATICITY_TOL);
       expect(Math.abs(y - y0), `D${nominalK / 100} y`).toBeLessThan(CHROMATICITY_TOL);
@@ -87,5 +93,4 @@ describe('XYZ integration, eqs (15)–(18)', () => {
     }
     expect(worst).toBeLessThan(CONVERGENCE_DE00);
   });
-
 });

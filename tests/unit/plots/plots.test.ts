@@ -8,10 +8,13 @@ import { interferenceScale } from '../../../src/plots/interferenceScale.ts';
 import { probeColor } from '../../../src/plots/probeColor.ts';
 import { PRINTED_MATRIX_XY_TOL } from '../../tolerances.ts';
 
-
 describe('chromaticity diagram', () => {
   it('the sRGB triangle has the primaries of IEC 61966-2-1 (0.64, 0.33), (0.30, 0.60), (0.15, 0.06)', () => {
-    const published = [[0.64, 0.33], [0.3, 0.6], [0.15, 0.06]];
+    const published = [
+      [0.64, 0.33],
+      [0.3, 0.6],
+      [0.15, 0.06],
+    ];
     gamutTriangle(XYZ_TO_LINEAR_SRGB).forEach(([x, y], i) => {
       expect(Math.abs(x - published[i]![0]!)).toBeLessThan(PRINTED_MATRIX_XY_TOL);
       expect(Math.abs(y - published[i]![1]!)).toBeLessThan(PRINTED_MATRIX_XY_TOL);
@@ -19,7 +22,11 @@ describe('chromaticity diagram', () => {
   });
 
   it('the Wide Gamut triangle has Adobe Wide Gamut RGB primaries (0.7347, 0.2653), (0.1152, 0.8264), (0.1566, 0.0177)', () => {
-    const published = [[0.7347, 0.2653], [0.1152, 0.8264], [0.1566, 0.0177]];
+    const published = [
+      [0.7347, 0.2653],
+      [0.1152, 0.8264],
+      [0.1566, 0.0177],
+    ];
     gamutTriangle(XYZ_TO_LINEAR_WIDE_GAMUT).forEach(([x, y], i) => {
       expect(Math.abs(x - published[i]![0]!)).toBeLessThan(PRINTED_MATRIX_XY_TOL);
       expect(Math.abs(y - published[i]![1]!)).toBeLessThan(PRINTED_MATRIX_XY_TOL);

@@ -9,7 +9,14 @@ describe('the bins a shader visits do not depend on the light', () => {
   const d = spectralBinDefines(count, tolerance);
 
   it('cover the significant bins of every offered illuminant (named, and daylight every 100 K), both normalisations', () => {
-    const illuminants = ['D55', 'D65', 'D93', 'E', 'D65-table', ...Array.from({ length: 211 }, (_, i) => ({ daylightCct: 4000 + 100 * i }))] as const;
+    const illuminants = [
+      'D55',
+      'D65',
+      'D93',
+      'E',
+      'D65-table',
+      ...Array.from({ length: 211 }, (_, i) => ({ daylightCct: 4000 + 100 * i })),
+    ] as const;
     for (const illuminant of illuminants) {
       for (const normalization of NORMALIZATIONS) {
         const kept = significantBins(spectralBins(spectralWeights(illuminant, normalization), count), tolerance);
