@@ -1,8 +1,8 @@
 // The film's XYZ from the Airy sum as a Fourier series in the phase, eqs (11)-(18):
 //   X_j = C0 W_j + 2 Re( B sum_{m>=1} q^(m-1) F_j(m x) ),  x = 2 n_b d cos θ_r (eq 12),
 // with C0, B, q from one channel's Fresnel terms and F_j the light's spectral transform, a table
-// (uSpectralTransform) of H_j(x) = F_j(x) e^{-i2πσ0 x} every SPECTRAL_TRANSFORM_STEP_NM of x:
-// rows 0 .. SPECTRAL_TRANSFORM_ROWS-1 hold Re H (xyz), the next SPECTRAL_TRANSFORM_ROWS rows Im H.
+// (uSpectralTransform) of H_j(x) = F_j(x) e^{-i2πσ0 x} every TFC_SPECTRAL_TRANSFORM_STEP_NM of x:
+// rows 0 .. TFC_SPECTRAL_TRANSFORM_ROWS-1 hold Re H (xyz), the next TFC_SPECTRAL_TRANSFORM_ROWS rows Im H.
 // Domain: a real optical path (not an evanescent film). Mirrors src/physics/airySeries.ts; the
 // derivation is in docs/physics.md.
 // airySeriesConvergesAt and airySeriesSum take the terms, computed once by the caller (per
@@ -39,21 +39,21 @@ AirySeriesTerms airySeriesTerms(AiryTerms c) {
 
 // H at entry i, real and imaginary parts.
 void transformEntry(int i, out vec3 re, out vec3 im) {
-  ivec2 p = ivec2(i % SPECTRAL_TRANSFORM_WIDTH, i / SPECTRAL_TRANSFORM_WIDTH);
+  ivec2 p = ivec2(i % TFC_SPECTRAL_TRANSFORM_WIDTH, i / TFC_SPECTRAL_TRANSFORM_WIDTH);
   re = texelFetch(uSpectralTransform, p, 0).xyz;
-  im = texelFetch(uSpectralTransform, p + ivec2(0, SPECTRAL_TRANSFORM_ROWS), 0).xyz;
+  im = texelFetch(uSpectralTransform, p + ivec2(0, TFC_SPECTRAL_TRANSFORM_ROWS), 0).xyz;
 }
 
 // The carrier e^{i2πσ0 x}, its phase reduced to turns before the 2π so float32 keeps its digits.
 vec2 transformCarrier(float pathNm) {
-  return cExpI(vec2(6.283185307179586 * fract(float(SPECTRAL_TRANSFORM_CARRIER_PER_NM) * pathNm), 0.0));
+  return cExpI(vec2(6.283185307179586 * fract(float(TFC_SPECTRAL_TRANSFORM_CARRIER_PER_NM) * pathNm), 0.0));
 }
 
 // F(x) = H(x) carrier, H linear between entries; false past the table (F taken as 0).
 bool transformAt(float pathNm, vec2 carrier, out vec3 re, out vec3 im) {
-  float pos = pathNm / float(SPECTRAL_TRANSFORM_STEP_NM);
+  float pos = pathNm / float(TFC_SPECTRAL_TRANSFORM_STEP_NM);
   float first = floor(pos);
-  if (first >= float(SPECTRAL_TRANSFORM_COUNT - 1)) return false;
+  if (first >= float(TFC_SPECTRAL_TRANSFORM_COUNT - 1)) return false;
   int i = int(first);
   vec3 re0, im0, re1, im1;
   transformEntry(i, re0, im0);
@@ -75,7 +75,7 @@ float airySeriesTailScale(AirySeriesTerms t) {
 // do not for high-finesse thin films near grazing incidence (|q| -> 1): callers integrate those by bins.
 bool airySeriesConvergesAt(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
   float orders = float(TFC_AIRY_SERIES_MAX_ORDERS);
-  if (x * orders >= float(SPECTRAL_TRANSFORM_STEP_NM) * float(SPECTRAL_TRANSFORM_COUNT - 1)) return true;
+  if (x * orders >= float(TFC_SPECTRAL_TRANSFORM_STEP_NM) * float(TFC_SPECTRAL_TRANSFORM_COUNT - 1)) return true;
   for (int c = 0; c < TFC_FILM_CHANNELS; c++) {
     float scale = airySeriesTailScale(t[c]);
     float rho = length(t[c].q);

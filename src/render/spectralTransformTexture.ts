@@ -55,11 +55,11 @@ export const releaseSpectralTransformTexture = (holder: object): void => shared.
 
 /** The defines shaders/airySeries.glsl reads; `maxOrders` below the default truncates the series (the peers' m ≤ 2, 3). */
 export const airySeriesDefines = (maxOrders = AIRY_SERIES_MAX_ORDERS): Record<string, number> => ({
-  SPECTRAL_TRANSFORM_WIDTH: WIDTH,
-  SPECTRAL_TRANSFORM_ROWS: ROWS,
-  SPECTRAL_TRANSFORM_COUNT,
-  SPECTRAL_TRANSFORM_STEP_NM,
-  SPECTRAL_TRANSFORM_CARRIER_PER_NM,
+  TFC_SPECTRAL_TRANSFORM_WIDTH: WIDTH,
+  TFC_SPECTRAL_TRANSFORM_ROWS: ROWS,
+  TFC_SPECTRAL_TRANSFORM_COUNT: SPECTRAL_TRANSFORM_COUNT,
+  TFC_SPECTRAL_TRANSFORM_STEP_NM: SPECTRAL_TRANSFORM_STEP_NM,
+  TFC_SPECTRAL_TRANSFORM_CARRIER_PER_NM: SPECTRAL_TRANSFORM_CARRIER_PER_NM,
   TFC_AIRY_SERIES_MAX_ORDERS: maxOrders,
   TFC_AIRY_SERIES_TOLERANCE: AIRY_SERIES_TOLERANCE,
   // A peer's truncation is the series cut short, with no fallback to bins where it needs more terms.
