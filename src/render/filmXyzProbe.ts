@@ -5,22 +5,12 @@
  * largest thickness (as the bubble's table covers its field's). Used by the parity harness and
  * the benchmark's error columns.
  */
-import {
-  DataTexture,
-  FloatType,
-  Mesh,
-  NearestFilter,
-  OrthographicCamera,
-  PlaneGeometry,
-  RGBAFormat,
-  ShaderMaterial,
-  WebGLRenderTarget,
-  type WebGLRenderer,
-} from 'three';
+import { ShaderMaterial, type WebGLRenderer } from 'three';
 import { filmColorDefines, updateFilmColorTextures } from './bubbleMaterial.ts';
 import { type FilmQuality } from './filmQuality.ts';
 import { DEFAULT_SETTINGS } from './filmParameters.ts';
 import { FilmTable } from './filmTable.ts';
+import { floatRowTexture, renderFloatRow } from './floatRow.ts';
 import { shaderSource } from './shaderSource.ts';
 import type { ParityGroup, ParityMode } from './parityCase.ts';
 
@@ -32,8 +22,6 @@ void main() {
 }`;
 
 export class FilmXyzProbe {
-  private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
-  private readonly quad = new Mesh(new PlaneGeometry(2, 2));
   private readonly materials = new Map<string, ShaderMaterial>();
   private readonly tables = new Map<string, FilmTable>();
 
@@ -78,12 +66,7 @@ export class FilmXyzProbe {
   }
 
   private renderGroup(g: ParityGroup, mode: ParityMode, quality: FilmQuality): number[][] {
-    const count = g.inputs.length;
-    const inputs = new Float32Array(4 * count);
-    g.inputs.forEach(([thicknessNm, cosIncidence], i) => inputs.set([thicknessNm, cosIncidence, 0, 0], 4 * i));
-    const inputTexture = new DataTexture(inputs, count, 1, RGBAFormat, FloatType);
-    inputTexture.minFilter = inputTexture.magFilter = NearestFilter;
-    inputTexture.needsUpdate = true;
+    const inputTexture = floatRowTexture(g.inputs.map(([thicknessNm, cosIncidence]) => [thicknessNm, cosIncidence, 0, 0]));
     const m = this.material(mode, g, quality);
     const u = m.uniforms;
     u.uInputs!.value = inputTexture;
@@ -97,14 +80,7 @@ export class FilmXyzProbe {
       table.update(this.renderer, { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: maxThicknessNm, mode });
       table.bind(u);
     }
-    const target = new WebGLRenderTarget(count, 1, { type: FloatType, format: RGBAFormat, depthBuffer: false });
-    this.quad.material = m;
-    this.renderer.setRenderTarget(target);
-    this.renderer.render(this.quad, this.camera);
-    const out = new Float32Array(4 * count);
-    this.renderer.readRenderTargetPixels(target, 0, 0, count, 1, out);
-    this.renderer.setRenderTarget(null);
-    target.dispose();
+    const out = renderFloatRow(this.renderer, m, g.inputs.length);
     inputTexture.dispose();
     return g.inputs.map((_, i) => [out[4 * i]!, out[4 * i + 1]!, out[4 * i + 2]!]);
   }

@@ -2,19 +2,9 @@
  * Renders shaders/thicknessField.glsl's thicknessAt at given points of the unit sphere into a
  * float target and reads it back, one pixel per point (the parity harness's thickness twin check).
  */
-import {
-  DataTexture,
-  FloatType,
-  Mesh,
-  NearestFilter,
-  OrthographicCamera,
-  PlaneGeometry,
-  RGBAFormat,
-  ShaderMaterial,
-  WebGLRenderTarget,
-  type WebGLRenderer,
-} from 'three';
+import { ShaderMaterial, type WebGLRenderer } from 'three';
 import { FIELDS, type FilmSettings } from '../../../src/render/filmSettings.ts';
+import { floatRowTexture, renderFloatRow } from '../../../src/render/floatRow.ts';
 import { shaderSource } from '../../../src/render/shaderSource.ts';
 
 export type FieldSettings = Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm' | 'swirlSpeed' | 'timeSeconds'>;
@@ -31,12 +21,7 @@ export function renderThickness(
   points: readonly (readonly [number, number, number])[],
   s: FieldSettings,
 ): number[] {
-  const count = points.length;
-  const data = new Float32Array(4 * count);
-  points.forEach((p, i) => data.set([...p, 0], 4 * i));
-  const texture = new DataTexture(data, count, 1, RGBAFormat, FloatType);
-  texture.minFilter = texture.magFilter = NearestFilter;
-  texture.needsUpdate = true;
+  const texture = floatRowTexture(points.map((p) => [...p, 0]));
   const material = new ShaderMaterial({
     defines: { TFC_THICKNESS_FIELD: FIELDS.indexOf(s.field) },
     uniforms: {
@@ -49,14 +34,9 @@ export function renderThickness(
     vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
     fragmentShader: FRAGMENT,
   });
-  const quad = new Mesh(new PlaneGeometry(2, 2), material);
-  const target = new WebGLRenderTarget(count, 1, { type: FloatType, format: RGBAFormat, depthBuffer: false });
-  renderer.setRenderTarget(target);
-  renderer.render(quad, new OrthographicCamera(-1, 1, 1, -1, 0, 1));
-  const out = new Float32Array(4 * count);
-  renderer.readRenderTargetPixels(target, 0, 0, count, 1, out);
-  renderer.setRenderTarget(null);
-  for (const disposable of [target, texture, material, quad.geometry]) disposable.dispose();
+  const out = renderFloatRow(renderer, material, points.length);
+  texture.dispose();
+  material.dispose();
   return points.map((_, i) => out[4 * i]!);
 }
 

@@ -161,6 +161,14 @@ describe('Snell, Fresnel and the phase, eqs (1)–(12)', () => {
 });
 
 describe('the closed-form mean of R over a phase window', () => {
+  /** [φ0, half-width] pairs: narrow to wider than a whole fringe. */
+  const PHASE_WINDOWS = [
+    [9.3, 0.01],
+    [17.1, 0.5],
+    [100.2, 2],
+    [40, 3.14159],
+    [60, 10],
+  ] as const;
   const numericMean = (optics: ReturnType<typeof filmOptics>, i: number, phi0: number, w: number) => {
     const c = optics.channels[i]!;
     const lambda = (phi: number) => (2 * Math.PI * optics.opticalPathNm.re) / phi;
@@ -181,13 +189,7 @@ describe('the closed-form mean of R over a phase window', () => {
     for (const [s, pol] of cases) {
       const optics = filmOptics(s, pol);
       optics.channels.forEach((c, i) => {
-        for (const [phi0, w] of [
-          [9.3, 0.01],
-          [17.1, 0.5],
-          [100.2, 2],
-          [40, 3.14159],
-          [60, 10],
-        ] as const) {
+        for (const [phi0, w] of PHASE_WINDOWS) {
           expect(Math.abs(meanChannelReflectance(c, phi0, w) - numericMean(optics, i, phi0, w))).toBeLessThan(QUADRATURE_TOL);
         }
       });
@@ -230,13 +232,7 @@ describe('the closed-form mean of R over a phase window', () => {
     ];
     for (const [s, pol] of cases) {
       const channel = filmOptics(s, pol).channels[0]!;
-      for (const [phi0, w] of [
-        [9.3, 0.01],
-        [17.1, 0.5],
-        [100.2, 2],
-        [40, 3.14159],
-        [60, 10],
-      ] as const) {
+      for (const [phi0, w] of PHASE_WINDOWS) {
         expect(
           Math.abs(meanChannelReflectance(channel, phi0, w) - airyMean(s, pol, phi0, w)),
           `${pol} ${s.angleDeg}° ${phi0}±${w}`,

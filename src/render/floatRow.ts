@@ -1,0 +1,41 @@
+import {
+  DataTexture,
+  FloatType,
+  Mesh,
+  NearestFilter,
+  OrthographicCamera,
+  PlaneGeometry,
+  RGBAFormat,
+  type ShaderMaterial,
+  WebGLRenderTarget,
+  type WebGLRenderer,
+} from 'three';
+
+/** One row of RGBA float texels, read by texelFetch (no filtering): a shader's per-case inputs. */
+export function floatRowTexture(rgba: readonly (readonly number[])[]): DataTexture {
+  const data = new Float32Array(4 * rgba.length);
+  rgba.forEach((texel, i) => data.set(texel, 4 * i));
+  const texture = new DataTexture(data, rgba.length, 1, RGBAFormat, FloatType);
+  texture.minFilter = texture.magFilter = NearestFilter;
+  texture.needsUpdate = true;
+  return texture;
+}
+
+const camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
+
+/**
+ * Draws `material` over a row of `count` float pixels and reads them back (RGBA per pixel, no
+ * colour conversion): how the parity checks see a shader's own numbers.
+ */
+export function renderFloatRow(renderer: WebGLRenderer, material: ShaderMaterial, count: number): Float32Array {
+  const quad = new Mesh(new PlaneGeometry(2, 2), material);
+  const target = new WebGLRenderTarget(count, 1, { type: FloatType, format: RGBAFormat, depthBuffer: false });
+  renderer.setRenderTarget(target);
+  renderer.render(quad, camera);
+  const out = new Float32Array(4 * count);
+  renderer.readRenderTargetPixels(target, 0, 0, count, 1, out);
+  renderer.setRenderTarget(null);
+  target.dispose();
+  quad.geometry.dispose();
+  return out;
+}
