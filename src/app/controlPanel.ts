@@ -55,7 +55,7 @@ function addControl(
       const pair = {
         name: typeof spec === 'object' ? DAYLIGHT_CCT : spec,
         // A named daylight starts the slider at its own CCT; E and the D65 table at D65's.
-        cct: Math.round(daylightCctOf(typeof spec === 'object' || daylightCctOf(spec) !== null ? spec : 'D65')!),
+        cct: Math.round(daylightCctOf(spec) ?? daylightCctOf('D65')!),
       };
       illuminants.set(row.key, pair);
       folder.add(pair, 'name', [...NAMED_ILLUMINANTS, DAYLIGHT_CCT]).name(row.label);
