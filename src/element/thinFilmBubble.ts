@@ -8,10 +8,10 @@ import { BubbleView } from '../scene/bubbleView.ts';
 import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
 
 /**
- * The element's layout. It is a size container: narrower than the plots column (270 px) beside a
- * stage of about twice the panel's width, the plots become a drawer over the stage's bottom left
- * that starts closed; a stage narrower than twice the panel (245 px) and its margin starts with
- * the panel closed, so neither covers the bubble's centre (src/app/startsClosed.ts reads the
+ * The element's layout. It is a size container: narrower than 800 px (the plots column, 270 px,
+ * beside a stage of 530 px) the plots become a drawer over the stage's bottom left that starts
+ * closed; a stage narrower than 900 px or shorter than 600 px (the demo's breakpoints, index.html)
+ * starts with the panel closed; so neither covers the bubble's centre (src/app/startsClosed.ts reads the
  * `--tfb-*-start` properties). A horizontal drag on the stage moves the probe, a vertical one
  * scrolls the page.
  */
@@ -19,19 +19,19 @@ const STYLE = `
 thin-film-bubble { display: block; position: relative; width: 100%; height: 360px; background: #111; color: #eee; overflow: hidden;
   container: tfb / inline-size; }
 thin-film-bubble .tfb-layout { position: relative; display: flex; width: 100%; height: 100%; }
-thin-film-bubble .tfb-stage { position: relative; flex: 1 1 auto; min-width: 0; container: tfb-stage / inline-size; touch-action: pan-y pinch-zoom; }
+thin-film-bubble .tfb-stage { position: relative; flex: 1 1 auto; min-width: 0; container: tfb-stage / size; touch-action: pan-y pinch-zoom; }
 thin-film-bubble .tfb-stage > canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; }
 thin-film-bubble .tfb-controls { position: absolute; top: 0; right: 0; max-width: 100%; max-height: 100%; overflow: auto; }
 thin-film-bubble .tfb-controls > .lil-gui { max-width: 100%; }
 thin-film-bubble .tfb-side { flex: 0 0 270px; box-sizing: border-box; overflow: auto; padding: 4px 6px; background: #18181c; }
 thin-film-bubble .tfb-side:not([open]) { flex-basis: auto; }
 thin-film-bubble .tfb-side > summary { cursor: pointer; color: #bbb; padding: 2px 0; font: 12px system-ui, sans-serif; }
-@container tfb (max-width: 599px) {
+@container tfb (max-width: 799px) {
   thin-film-bubble .tfb-side { --tfb-plots-start: closed; position: absolute; left: 0; bottom: 0; width: min(270px, 100%); max-height: 100%;
     background: rgba(24, 24, 28, 0.9); border-top-right-radius: 6px; }
   thin-film-bubble .tfb-layout:has(> .tfb-side) .tfb-messages { bottom: 28px; }
 }
-@container tfb-stage (max-width: 519px) {
+@container tfb-stage (max-width: 899px) or (max-height: 599px) {
   thin-film-bubble .tfb-controls { --tfb-panel-start: closed; }
 }
 thin-film-bubble .cpu-fallback { margin: 0; height: 100%; display: flex; flex-direction: column; align-items: center; font: 12px system-ui, sans-serif; }
