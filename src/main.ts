@@ -1,6 +1,7 @@
 import { BubbleApp } from './app/bubbleApp.ts';
 import { hasWebGL2, showCpuFallback } from './app/cpuFallback.ts';
 import { parseSettings, settingsToQuery } from './app/settingsQuery.ts';
+import { startsClosed } from './app/startsClosed.ts';
 import type { ViewSettings } from './app/viewParameters.ts';
 import { BubbleView, createBubbleRenderer } from './scene/bubbleView.ts';
 
@@ -29,6 +30,8 @@ function followInUrl(s: ViewSettings) {
 
 /** The live bubble with its panel and plots. */
 function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement): void {
+  const drawer = plots.closest('details');
+  if (drawer) drawer.open = !startsClosed(drawer, 'plots'); // a small view starts with the drawer closed (index.html's CSS)
   const view = new BubbleView(createBubbleRenderer(canvas), settings);
   document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
   if (settings.space !== 'srgb' && !view.displayIsP3) say('This browser has no Display P3 canvas: showing sRGB.');

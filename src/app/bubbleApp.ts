@@ -3,6 +3,7 @@ import type { WebGLRenderer } from 'three';
 import { PlotPanel } from '../plots/plotPanel.ts';
 import type { BubbleView } from '../scene/bubbleView.ts';
 import { createControlPanel } from './controlPanel.ts';
+import { startsClosed } from './startsClosed.ts';
 import type { AppSettings, ViewSettings } from './viewParameters.ts';
 
 /** While the swirl animates, the plots follow the probed film this often. */
@@ -10,15 +11,21 @@ const PLOT_INTERVAL_MS = 250;
 
 export interface BubbleAppParts {
   readonly view: BubbleView;
-  /** The element the bubble is shown in: its CSS box sizes the view, a click on it moves the probe. */
+  /**
+   * The element the bubble is shown in: its CSS box sizes the view; a press on it (mouse, pen or
+   * touch; not on the panel) moves the probe there, and the probe follows while the press drags.
+   */
   readonly surface: HTMLElement;
   /** Called after each frame is drawn (e.g. to copy a shared renderer's canvas to the page). */
   readonly present?: () => void;
-  /** Where the lil-gui panel goes, if any ('page': lil-gui's own place, the page's top right). */
+  /**
+   * Where the lil-gui panel goes, if any ('page': lil-gui's own place, the page's top right). It
+   * starts closed where the page's CSS says so (startsClosed, read from this element or `surface`).
+   */
   readonly controls?: HTMLElement | 'page';
-  /** Where the plots go, if any. */
+  /** Where the plots go, if any; they are redrawn when this element's box changes (e.g. a drawer opens). */
   readonly plots?: HTMLElement;
-  /** Called when the panel or a click changes the settings. */
+  /** Called when the panel or a press on the bubble changes the settings. */
   readonly onChange?: (s: ViewSettings) => void;
   /** Called after every frame; `complete` is false for a frame drawn from a coarse table (another follows). */
   readonly onFrame?: (complete: boolean) => void;
@@ -58,10 +65,19 @@ export class BubbleApp {
       parts.surface.after(this.marker);
     }
     this.buildControls();
-    const onClick = (e: MouseEvent) => {
+    const probeAt = (e: PointerEvent) => {
       const box = parts.surface.getBoundingClientRect();
       const probe = [(e.clientX - box.left) / box.width, (e.clientY - box.top) / box.height] as const;
       if (probe.every((v) => v >= 0 && v <= 1)) this.change({ ...this.settings, probe });
+    };
+    const controls = parts.controls instanceof HTMLElement ? parts.controls : null;
+    const onPress = (e: PointerEvent) => {
+      if (!e.isPrimary || e.button !== 0 || (e.target instanceof Node && controls?.contains(e.target))) return;
+      parts.surface.setPointerCapture(e.pointerId);
+      probeAt(e);
+    };
+    const onDrag = (e: PointerEvent) => {
+      if (parts.surface.hasPointerCapture(e.pointerId)) probeAt(e);
     };
     const onVisibility = () => this.wake();
     const onRestored = () => {
@@ -71,16 +87,24 @@ export class BubbleApp {
     const glCanvas = parts.view.renderer.domElement;
     glCanvas.addEventListener('webglcontextrestored', onRestored);
     const resize = new ResizeObserver(() => this.fit());
+    const plotsResize = new ResizeObserver(() => {
+      this.plotsDue = true;
+      this.requestFrame();
+    });
     const onScreen = new IntersectionObserver((entries) => this.setOnScreen(entries.some((e) => e.isIntersecting)));
-    parts.surface.addEventListener('click', onClick);
+    parts.surface.addEventListener('pointerdown', onPress);
+    parts.surface.addEventListener('pointermove', onDrag);
     document.addEventListener('visibilitychange', onVisibility);
     resize.observe(parts.surface);
     onScreen.observe(parts.surface);
+    if (parts.plots) plotsResize.observe(parts.plots);
     this.disconnect = () => {
-      parts.surface.removeEventListener('click', onClick);
+      parts.surface.removeEventListener('pointerdown', onPress);
+      parts.surface.removeEventListener('pointermove', onDrag);
       document.removeEventListener('visibilitychange', onVisibility);
       glCanvas.removeEventListener('webglcontextrestored', onRestored);
       resize.disconnect();
+      plotsResize.disconnect();
       onScreen.disconnect();
     };
     this.fit();
@@ -153,10 +177,13 @@ export class BubbleApp {
     this.parts.onChange?.(this.settings);
   }
 
+  /** Builds the panel anew: closed if the one it replaces was, else as the page's CSS says for its size. */
   private buildControls(): void {
+    const { controls, surface } = this.parts;
+    const closed = this.gui ? this.gui._closed : controls !== undefined && startsClosed(controls === 'page' ? surface : controls, 'panel');
     this.gui?.destroy();
-    const { controls } = this.parts;
     this.gui = controls ? createControlPanel(this.settings, (s) => this.change(s), controls === 'page' ? undefined : controls) : null;
+    if (closed) this.gui?.close();
   }
 
   private fit(): void {

@@ -2,17 +2,38 @@ import { addPlotStyles } from '../plots/plotStyles.ts';
 import { BubbleApp } from '../app/bubbleApp.ts';
 import { hasWebGL2, showCpuFallback } from '../app/cpuFallback.ts';
 import { parseSettings, settingsToQuery } from '../app/settingsQuery.ts';
+import { startsClosed } from '../app/startsClosed.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../app/viewParameters.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
 import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
 
+/**
+ * The element's layout. It is a size container: narrower than 800 px (the plots column, 270 px,
+ * beside a stage of 530 px) the plots become a drawer over the stage's bottom left that starts
+ * closed; a stage narrower than 900 px or shorter than 600 px (the demo's breakpoints, index.html)
+ * starts with the panel closed; so neither covers the bubble's centre (src/app/startsClosed.ts reads the
+ * `--tfb-*-start` properties). A horizontal drag on the stage moves the probe, a vertical one
+ * scrolls the page.
+ */
 const STYLE = `
-thin-film-bubble { display: block; position: relative; width: 100%; height: 360px; background: #111; color: #eee; overflow: hidden; }
-thin-film-bubble .tfb-layout { display: flex; width: 100%; height: 100%; }
-thin-film-bubble .tfb-stage { position: relative; flex: 1 1 auto; min-width: 0; }
+thin-film-bubble { display: block; position: relative; width: 100%; height: 360px; background: #111; color: #eee; overflow: hidden;
+  container: tfb / inline-size; }
+thin-film-bubble .tfb-layout { position: relative; display: flex; width: 100%; height: 100%; }
+thin-film-bubble .tfb-stage { position: relative; flex: 1 1 auto; min-width: 0; container: tfb-stage / size; touch-action: pan-y pinch-zoom; }
 thin-film-bubble .tfb-stage > canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; }
-thin-film-bubble .tfb-controls { position: absolute; top: 0; right: 0; max-height: 100%; overflow: auto; }
-thin-film-bubble .tfb-side { flex: 0 0 270px; overflow: auto; padding: 4px 6px; background: #18181c; }
+thin-film-bubble .tfb-controls { position: absolute; top: 0; right: 0; max-width: 100%; max-height: 100%; overflow: auto; }
+thin-film-bubble .tfb-controls > .lil-gui { max-width: 100%; }
+thin-film-bubble .tfb-side { flex: 0 0 270px; box-sizing: border-box; overflow: auto; padding: 4px 6px; background: #18181c; }
+thin-film-bubble .tfb-side:not([open]) { flex-basis: auto; }
+thin-film-bubble .tfb-side > summary { cursor: pointer; color: #bbb; padding: 2px 0; font: 12px system-ui, sans-serif; }
+@container tfb (max-width: 799px) {
+  thin-film-bubble .tfb-side { --tfb-plots-start: closed; position: absolute; left: 0; bottom: 0; width: min(270px, 100%); max-height: 100%;
+    background: rgba(24, 24, 28, 0.9); border-top-right-radius: 6px; }
+  thin-film-bubble .tfb-layout:has(> .tfb-side) .tfb-messages { bottom: 28px; }
+}
+@container tfb-stage (max-width: 899px) or (max-height: 599px) {
+  thin-film-bubble .tfb-controls { --tfb-panel-start: closed; }
+}
 thin-film-bubble .cpu-fallback { margin: 0; height: 100%; display: flex; flex-direction: column; align-items: center; font: 12px system-ui, sans-serif; }
 thin-film-bubble .cpu-fallback canvas { flex: 1 1 auto; min-height: 0; max-width: 100%; aspect-ratio: 1; }
 thin-film-bubble .tfb-messages { position: absolute; left: 4px; bottom: 4px; right: 4px; font: 12px system-ui, sans-serif; }
@@ -31,7 +52,7 @@ function addElementStyles(doc: Document): void {
  * `plots` (show the plots). It sizes to its CSS box, draws nothing while off screen or in a
  * hidden page, and frees its GPU resources when removed. A bad attribute is named, with its
  * range, in a message inside the element, and its default (or last good) value is kept.
- * Events: `change` (detail: { settings, query }) when its panel or a click changes the view.
+ * Events: `change` (detail: { settings, query }) when its panel or a press on the bubble changes the view.
  */
 export class ThinFilmBubble extends HTMLElement {
   static readonly observedAttributes = [...VIEW_PARAMETERS.map((row) => row.attribute), 'controls', 'plots'];
@@ -71,9 +92,13 @@ export class ThinFilmBubble extends HTMLElement {
     layout.append(stage);
     const controls = this.hasAttribute('controls') ? el('div', 'tfb-controls') : undefined;
     if (controls) stage.append(controls);
-    const plots = this.hasAttribute('plots') ? el('div', 'tfb-side') : undefined;
-    if (plots) layout.append(plots);
+    const plots = this.hasAttribute('plots') ? (el('details', 'tfb-side') as HTMLDetailsElement) : undefined;
+    if (plots) {
+      plots.append(Object.assign(el('summary', ''), { textContent: 'the film at the probe' }));
+      layout.append(plots);
+    }
     this.replaceChildren(layout);
+    if (plots) plots.open = !startsClosed(plots, 'plots'); // a narrow element starts with the drawer closed (STYLE)
 
     const settings = this.readAttributes(DEFAULT_VIEW_SETTINGS);
     if (!hasWebGL2()) {

@@ -1,5 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { centrePixel } from './drawingBuffer.ts';
+import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 
@@ -25,6 +26,7 @@ for (const mode of ['table', 'exact'] as const) {
     await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
     const expected = reference8({ thicknessNm: 450 });
     expect(worstCodeDifference(await centrePixel(page, false), expected)).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+    await openPanel(page);
     const before = await gpuObjects(page);
 
     await page.evaluate(async () => {

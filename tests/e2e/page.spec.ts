@@ -1,5 +1,6 @@
 import { test, expect } from '@playwright/test';
 import { centrePixel } from './drawingBuffer.ts';
+import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 
@@ -25,6 +26,7 @@ test('a bad URL parameter shows a message naming it and its range, uses the defa
 test('the panel changes the view and the URL, and the URL restores the state', async ({ page }) => {
   await page.goto('/?animate=0&env=none&sides=front');
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
+  await openPanel(page);
   const field = page.getByRole('combobox', { name: 'thickness field' });
   await field.selectOption('uniform');
   await expect(page).toHaveURL(/field=uniform/);
@@ -43,6 +45,7 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   await page.goto(page.url());
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
+  await openPanel(page);
   await expect(page.getByRole('combobox', { name: 'thickness field' })).toHaveValue('uniform');
   expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 });
