@@ -30,8 +30,13 @@ async function openDemo(page: Page, size: { width: number; height: number }): Pr
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
 }
 
-for (const [size, plots] of [[PHONE, 'below'], [SMALL, 'drawer']] as const) {
-  test(`demo at ${size.width}×${size.height}: the panel starts closed, the plots ${plots === 'below' ? 'are below the bubble' : 'start in a closed drawer'}, the canvas is at the bubble's centre`, async ({ page }) => {
+for (const [size, plots] of [
+  [PHONE, 'below'],
+  [SMALL, 'drawer'],
+] as const) {
+  test(`demo at ${size.width}×${size.height}: the panel starts closed, the plots ${plots === 'below' ? 'are below the bubble' : 'start in a closed drawer'}, the canvas is at the bubble's centre`, async ({
+    page,
+  }) => {
     await openDemo(page, size);
     const canvas = page.locator('#bubble');
     expect(await atCentre(canvas)).toEqual({ isCanvas: true, found: 'canvas.' });
@@ -78,7 +83,9 @@ async function openElement(page: Page, size: { width: number; height: number }):
 }
 
 for (const size of [PHONE, SMALL]) {
-  test(`element with controls and plots at ${size.width}×${size.height}: panel and plots drawer start closed, the canvas at the bubble's centre`, async ({ page }) => {
+  test(`element with controls and plots at ${size.width}×${size.height}: panel and plots drawer start closed, the canvas at the bubble's centre`, async ({
+    page,
+  }) => {
     const el = await openElement(page, size);
     expect(await atCentre(el.locator('.tfb-stage > canvas'))).toEqual({ isCanvas: true, found: 'canvas.' });
     await expect(el.locator('.lil-gui.lil-root > .lil-title')).toHaveAttribute('aria-expanded', 'false');
