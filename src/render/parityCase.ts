@@ -1,4 +1,3 @@
-import type { FilmQuality } from './filmQuality.ts';
 import type { FilmSettings } from './filmSettings.ts';
 
 /**
@@ -14,10 +13,3 @@ export interface ParityGroup extends Pick<
 }
 
 export type ParityMode = FilmSettings['mode'];
-
-declare global {
-  interface Window {
-    /** XYZ per case of every group, in the groups' order, as the shader computes it. */
-    renderFilmXyz?: (groups: readonly ParityGroup[], mode: ParityMode, quality?: FilmQuality) => number[][][];
-  }
-}
