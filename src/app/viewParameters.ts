@@ -1,7 +1,7 @@
 import { isInDomain, type NumberDomain, parseDecimal } from '../physics/validate.ts';
 import { FILM_PARAMETERS } from '../render/filmParameters.ts';
 import type { FilmSettings } from '../render/filmSettings.ts';
-import { type ParameterRow, defaultsOf, flagRow } from '../render/parameterRow.ts';
+import { type ParameterRow, customRow, defaultsOf, flagRow } from '../render/parameterRow.ts';
 
 /** What the page adds to the rendered view: the frame loop and where the plots probe. */
 export interface AppSettings {
@@ -17,15 +17,8 @@ export type ViewSettings = FilmSettings & AppSettings;
 const FRACTION: NumberDomain = { min: 0, max: 1, unit: '' };
 
 /** The probe: `x,y`, each a fraction of the view. */
-const probeRow: ParameterRow<ViewSettings> = {
-  key: 'probe',
-  url: 'probe',
-  attribute: 'probe',
-  cli: null,
-  label: 'probe (x, y)',
+const probeRow = customRow<ViewSettings, 'probe'>({ key: 'probe', url: 'probe', label: 'probe (x, y)' }, [0.5, 0.5], {
   expected: 'x,y with both in [0, 1] (fractions of the view from the top left)',
-  defaultValue: [0.5, 0.5],
-  defaultText: '0.5,0.5',
   read: (raw) => {
     const parts = raw.split(',').map(parseDecimal);
     const [x, y] = parts;
@@ -33,7 +26,7 @@ const probeRow: ParameterRow<ViewSettings> = {
   },
   write: (s) => s.probe.map((v) => +v.toFixed(4)).join(','),
   control: null,
-};
+});
 
 /** The schema of every user-facing parameter: the film's, then the page's own. */
 export const VIEW_PARAMETERS: readonly ParameterRow<ViewSettings>[] = [

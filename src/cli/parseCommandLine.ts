@@ -1,7 +1,7 @@
 import { parseArgs } from 'node:util';
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
-import { DAYLIGHT_CCT_DOMAIN_K, ILLUMINANT_EXPECTED, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
-import { ParameterError, expectedNumber, isInDomain } from '../physics/validate.ts';
+import { ILLUMINANT_EXPECTED, parseIlluminant } from '../physics/illuminants.ts';
+import { ParameterError, expectedNumber } from '../physics/validate.ts';
 import {
   CASE_FLAGS,
   type CaseField,
@@ -177,9 +177,6 @@ function flagValue(field: Exclude<CaseField, 'id'>, flag: string, text: string):
     const expected = `comma-separated numbers, each ${expectedNumber(WAVELENGTH_DOMAIN_NM)}`;
     return text.split(',').map((part, i) => parseStrictNumber(`${flag}[${i}]`, part, expected));
   }
-  if (field === 'illuminant' && !(NAMED_ILLUMINANTS as readonly string[]).includes(text)) {
-    const cct = parseStrictNumber(flag, text, ILLUMINANT_EXPECTED);
-    return isInDomain(cct, DAYLIGHT_CCT_DOMAIN_K) ? { daylightCct: cct } : rejectValue(flag, text, ILLUMINANT_EXPECTED);
-  }
+  if (field === 'illuminant') return parseIlluminant(text) ?? rejectValue(flag, text, ILLUMINANT_EXPECTED);
   return text;
 }

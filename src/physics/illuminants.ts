@@ -6,7 +6,7 @@ import {
   CIE_DAYLIGHT_START_NM,
   CIE_DAYLIGHT_STEP_NM,
 } from './data/cieDaylightComponents.ts';
-import { type NumberDomain, ParameterError, assertInRange } from './validate.ts';
+import { type NumberDomain, ParameterError, assertInRange, isInDomain, parseDecimal } from './validate.ts';
 
 /**
  * Incident spectra I_in(λ) for eq (15).
@@ -28,6 +28,16 @@ export const DAYLIGHT_CCT_MAX_K = 25000;
 export const DAYLIGHT_CCT_DOMAIN_K: NumberDomain = { min: DAYLIGHT_CCT_MIN_K, max: DAYLIGHT_CCT_MAX_K, unit: 'K' };
 /** What an illuminant may be, as every message (URL, element, CLI, this module) states it. */
 export const ILLUMINANT_EXPECTED = `one of ${NAMED_ILLUMINANTS.join(', ')} or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`;
+/** An illuminant as text (URL, attribute, command line): a name, or a CCT in kelvin; null when neither. */
+export function parseIlluminant(text: string): IlluminantSpec | null {
+  if ((NAMED_ILLUMINANTS as readonly string[]).includes(text)) return text as NamedIlluminant;
+  const cct = parseDecimal(text);
+  return isInDomain(cct, DAYLIGHT_CCT_DOMAIN_K) ? { daylightCct: cct } : null;
+}
+
+/** An illuminant as text: its name, or its CCT in kelvin (what `parseIlluminant` reads back). */
+export const illuminantText = (i: IlluminantSpec): string => (typeof i === 'object' ? String(i.daylightCct) : i);
+
 /** The c2 correction between the nominal and the current temperature scale. */
 export const C2_CORRECTION = 1.4388 / 1.438;
 const NOMINAL_CCT: Record<'D55' | 'D65' | 'D93', number> = { D55: 5500, D65: 6500, D93: 9300 };

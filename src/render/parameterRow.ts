@@ -1,4 +1,4 @@
-import { ILLUMINANT_EXPECTED, DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
+import { ILLUMINANT_EXPECTED, type IlluminantSpec, illuminantText, parseIlluminant } from '../physics/illuminants.ts';
 import { type NumberDomain, expectedNumber, isInDomain, parseDecimal } from '../physics/validate.ts';
 
 /** Where a parameter sits in the control panel, and how it is shown there. */
@@ -62,6 +62,15 @@ const named = <S, K extends keyof S & string>(n: RowNames<S, K>, defaultValue: S
   write,
 });
 
+/** A row of a kind of its own (what it accepts, how it reads and writes), its default text derived. */
+export function customRow<S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  defaultValue: S[K],
+  kind: Pick<ParameterRow<S>, 'expected' | 'read' | 'write' | 'control'>,
+): ParameterRow<S> {
+  return { ...named(n, defaultValue, kind.write), ...kind };
+}
+
 /** A number in a closed domain; the panel's slider spans the whole domain in steps of `step`. */
 export function numberRow<S, K extends keyof S & string>(
   n: RowNames<S, K>,
@@ -116,16 +125,12 @@ export function illuminantRow<S, K extends keyof S & string>(
     ...named(n, defaultValue, (s) => illuminantText(s[n.key] as IlluminantSpec)),
     expected: ILLUMINANT_EXPECTED,
     read: (raw) => {
-      if ((NAMED_ILLUMINANTS as readonly string[]).includes(raw)) return { [n.key]: raw } as Partial<S>;
-      const cct = parseDecimal(raw);
-      return isInDomain(cct, DAYLIGHT_CCT_DOMAIN_K) ? ({ [n.key]: { daylightCct: cct } } as Partial<S>) : null;
+      const illuminant = parseIlluminant(raw);
+      return illuminant === null ? null : ({ [n.key]: illuminant } as Partial<S>);
     },
     control: folder && { folder, kind: 'illuminant' },
   };
 }
-
-/** An illuminant as the URL writes it: its name, or its CCT in kelvin. */
-export const illuminantText = (i: IlluminantSpec): string => (typeof i === 'object' ? String(i.daylightCct) : i);
 
 /** The settings that every row's default makes. */
 export const defaultsOf = <S>(rows: readonly ParameterRow<S>[]): S =>
