@@ -29,7 +29,7 @@ function followInUrl(s: ViewSettings) {
 }
 
 /** The live bubble with its panel and plots. */
-function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement): void {
+function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: HTMLElement): void {
   const drawer = plots.closest('details');
   if (drawer) drawer.open = !startsClosed(drawer, 'plots'); // a small view starts with the drawer closed (index.html's CSS)
   const view = new BubbleView(createBubbleRenderer(canvas), settings);
@@ -41,6 +41,7 @@ function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement): void {
       surface: canvas,
       controls: 'page',
       plots,
+      messages,
       onChange: followInUrl,
       onFrame: (complete) => {
         if (complete) document.body.dataset.frames = 'ready';
@@ -52,7 +53,7 @@ function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement): void {
   Object.assign(window, { bubbleView: view, bubbleApp: app });
 }
 
-if (hasWebGL2()) startLiveView(canvas, plots);
+if (hasWebGL2()) startLiveView(canvas, plots, messages);
 else {
   // Without WebGL2 the page still teaches: a still image computed on the CPU, no plots.
   plots.closest('details')?.remove();

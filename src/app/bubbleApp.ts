@@ -25,6 +25,8 @@ export interface BubbleAppParts {
   readonly controls?: HTMLElement | 'page';
   /** Where the plots go, if any; they are redrawn when this element's box changes (e.g. a drawer opens). */
   readonly plots?: HTMLElement;
+  /** Where a line on the HDR environment goes while it loads, or if it failed (role status; text only). */
+  readonly messages?: HTMLElement;
   /** Called when the panel or a press on the bubble changes the settings. */
   readonly onChange?: (s: ViewSettings) => void;
   /** Called after every frame; `complete` is false for a frame drawn from a coarse table (another follows). */
@@ -49,6 +51,9 @@ export class BubbleApp {
   /** A ring over the bubble where the probe is (only with plots). */
   private readonly marker: HTMLElement | null;
 
+  /** The line saying that the HDR environment is loading or failed (in `parts.messages`). */
+  private readonly environmentLine: HTMLElement;
+
   /** The page's own settings (the view holds the film's). */
   private app: AppSettings;
 
@@ -64,6 +69,12 @@ export class BubbleApp {
       this.marker.className = 'tfb-probe-marker';
       parts.surface.after(this.marker);
     }
+    this.environmentLine = parts.surface.ownerDocument.createElement('p');
+    this.environmentLine.className = 'environment-status';
+    parts.view.onEnvironmentChange = () => {
+      this.plotsDue = true;
+      this.requestFrame();
+    };
     this.buildControls();
     const probeAt = (e: PointerEvent) => {
       const box = parts.surface.getBoundingClientRect();
@@ -139,12 +150,16 @@ export class BubbleApp {
     this.draw(false);
   }
 
-  /** One frame; `quick`: from a coarse table if the table must be rebuilt (the plots wait for the full one). */
+  /**
+   * One frame; `quick`: from a coarse table if the table must be rebuilt (the plots wait for the
+   * full one). A frame drawn while the HDR environment is on its way is not complete either.
+   */
   private draw(quick: boolean): void {
     const view = this.parts.view;
     view.render(quick);
     this.parts.present?.();
-    const complete = !view.coarse;
+    this.showEnvironmentStatus();
+    const complete = !view.coarse && view.environmentStatus.state !== 'loading';
     if (complete) this.updatePlots(performance.now());
     this.parts.onFrame?.(complete);
   }
@@ -156,7 +171,25 @@ export class BubbleApp {
     this.gui?.destroy();
     this.panel?.element.remove();
     this.marker?.remove();
+    this.environmentLine.remove();
+    this.parts.view.onEnvironmentChange = null;
     this.parts.view.dispose();
+  }
+
+  /** Says (as text, never HTML) that the HDR environment is loading or failed, or removes the line once it shows. */
+  private showEnvironmentStatus(): void {
+    const status = this.parts.view.environmentStatus;
+    const line = this.environmentLine;
+    if (status.state === 'shown' || !this.parts.messages) {
+      line.remove();
+      return;
+    }
+    line.dataset.state = status.state;
+    line.textContent =
+      status.state === 'loading'
+        ? `Loading the environment ${status.env}…`
+        : `The environment ${status.env} could not be loaded (${status.reason}): showing the sky instead.`;
+    if (line.parentElement !== this.parts.messages) this.parts.messages.append(line);
   }
 
   /** The settings shown. */

@@ -1,4 +1,5 @@
-import type { FilmSettings } from '../render/filmSettings.ts';
+import { type EnvironmentPixels, loadEnvironmentPixels } from '../render/environmentMaps.ts';
+import { type FilmSettings, isHdrEnvironment } from '../render/filmSettings.ts';
 import { cpuBubbleImage } from '../scene/cpuBubbleImage.ts';
 
 /** The still image's size in pixels (square; shown scaled to fit). */
@@ -14,6 +15,20 @@ export function hasWebGL2(): boolean {
     webgl2 = gl !== null;
   }
   return webgl2;
+}
+
+/** The settings and HDR map a still image shows: an HDR environment that fails to load gives way to the sky, and says so. */
+async function withEnvironment(settings: FilmSettings, say: (text: string) => void): Promise<[FilmSettings, EnvironmentPixels | null]> {
+  if (!isHdrEnvironment(settings.env)) return [settings, null];
+  say(`Loading the environment ${settings.env}…`);
+  try {
+    return [settings, await loadEnvironmentPixels(settings.env)];
+  } catch (error) {
+    say(
+      `The environment ${settings.env} could not be loaded (${error instanceof Error ? error.message : String(error)}): showing the sky instead.`,
+    );
+    return [{ ...settings, env: 'sky' }, null];
+  }
 }
 
 /**
@@ -32,13 +47,22 @@ export function showCpuFallback(webglCanvas: HTMLCanvasElement, settings: FilmSe
     'computed on the CPU from the same physics (no animation, sRGB).';
   const image = document.createElement('canvas');
   image.width = image.height = FALLBACK_IMAGE_PX;
+  const status = document.createElement('p');
+  status.className = 'environment-status';
   figure.append(caption, image);
   webglCanvas.replaceWith(figure);
+  const say = (text: string) => {
+    status.textContent = text;
+    if (!status.isConnected) caption.after(status);
+  };
   // The image takes about a second: let the message show first.
-  setTimeout(() => {
-    const pixels = cpuBubbleImage(settings, FALLBACK_IMAGE_PX, FALLBACK_IMAGE_PX);
-    image.getContext('2d')?.putImageData(new ImageData(pixels, FALLBACK_IMAGE_PX, FALLBACK_IMAGE_PX), 0, 0);
-    done();
-  });
+  void withEnvironment(settings, say).then(([shown, map]) =>
+    setTimeout(() => {
+      const pixels = cpuBubbleImage(shown, FALLBACK_IMAGE_PX, FALLBACK_IMAGE_PX, map);
+      image.getContext('2d')?.putImageData(new ImageData(pixels, FALLBACK_IMAGE_PX, FALLBACK_IMAGE_PX), 0, 0);
+      if (shown === settings) status.remove();
+      done();
+    }),
+  );
   return figure;
 }

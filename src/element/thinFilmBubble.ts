@@ -38,6 +38,7 @@ thin-film-bubble .cpu-fallback { margin: 0; height: 100%; display: flex; flex-di
 thin-film-bubble .cpu-fallback canvas { flex: 1 1 auto; min-height: 0; max-width: 100%; aspect-ratio: 1; }
 thin-film-bubble .tfb-messages { position: absolute; left: 4px; bottom: 4px; right: 4px; font: 12px system-ui, sans-serif; }
 thin-film-bubble .tfb-messages p { margin: 2px 0; padding: 3px 6px; background: #6b1d1d; border-radius: 3px; }
+thin-film-bubble .tfb-messages p[data-state='loading'] { background: #1d3b6b; }
 `;
 
 function addElementStyles(doc: Document): void {
@@ -115,6 +116,7 @@ export class ThinFilmBubble extends HTMLElement {
         surface: stage,
         controls,
         plots,
+        messages: this.messages ?? undefined,
         present: () => {
           const { width, height } = renderer.domElement;
           if (canvas.width !== width || canvas.height !== height) Object.assign(canvas, { width, height });

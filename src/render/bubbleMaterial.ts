@@ -1,8 +1,9 @@
-import { Matrix3, ShaderMaterial } from 'three';
+import { type DataTexture, Matrix3, ShaderMaterial } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { type Matrix3 as Rows3, XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality } from './filmQuality.ts';
 import { FIELDS, FILM_METHODS, type FilmSettings } from './filmSettings.ts';
+import { environmentDefines, environmentUniforms, updateEnvironmentUniforms } from './environmentMaterial.ts';
 import { filmTableLayoutDefines } from './filmTableLayout.ts';
 import { setDefines } from './materialDefines.ts';
 import { shaderSource } from './shaderSource.ts';
@@ -63,7 +64,7 @@ export function bubbleDefines(s: FilmSettings, q: FilmQuality): Record<string, n
     ...filmColorDefines(s, q),
     TFC_THICKNESS_FIELD: FIELDS.indexOf(s.field),
     TFC_SIDES: s.sides === 'both' ? 2 : 1,
-    TFC_ENVIRONMENT: s.env === 'sky' ? 1 : 0,
+    ...environmentDefines(s),
     TFC_HATCH_OUT_OF_GAMUT: s.space === 'wide-gamut' ? 1 : 0,
   };
 }
@@ -86,7 +87,7 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
       uThicknessRangeNm: { value: 0 },
       uSwirlSpeed: { value: 0 },
       uTimeSeconds: { value: 0 },
-      uExposure: { value: 1 },
+      ...environmentUniforms(),
       uXyzToLinearWorking: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
       uXyzToLinearDisplay: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
     },
@@ -95,12 +96,17 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
   });
 }
 
+/**
+ * Brings the material up to `s`: `table` for the table mode, `environmentMap` the texture of an
+ * HDR `s.env` (the caller shows `sky` until it has arrived).
+ */
 export function updateBubbleUniforms(
   m: ShaderMaterial,
   s: FilmSettings,
   q: FilmQuality,
   table: { bind(uniforms: ShaderMaterial['uniforms']): void } | null,
   displayIsP3: boolean,
+  environmentMap: DataTexture | null,
 ): void {
   const u = m.uniforms;
   setDefines(m, bubbleDefines(s, q));
@@ -114,6 +120,6 @@ export function updateBubbleUniforms(
   u.uThicknessRangeNm!.value = s.thicknessRangeNm;
   u.uSwirlSpeed!.value = s.swirlSpeed;
   u.uTimeSeconds!.value = s.timeSeconds;
-  u.uExposure!.value = s.exposure;
+  updateEnvironmentUniforms(m, s, environmentMap);
   (u.uXyzToLinearDisplay!.value as Matrix3).set(...(displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB));
 }

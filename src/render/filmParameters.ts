@@ -1,6 +1,6 @@
 import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
-import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES } from './filmSettings.ts';
+import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
 import { type ParameterRow, choiceRow, defaultsOf, illuminantRow, numberRow } from './parameterRow.ts';
 
 type Row = ParameterRow<FilmSettings>;
@@ -51,8 +51,16 @@ export const FILM_PARAMETERS: readonly Row[] = [
   ),
   choiceRow({ key: 'space', url: 'space', label: 'colour space' }, SPACES, 'srgb', 'light and colour'),
   numberRow({ key: 'exposure', url: 'exposure', label: 'exposure' }, { min: 0, max: 100, unit: '' }, 1, 'light and colour', 0.01),
+  choiceRow({ key: 'tonemap', url: 'tonemap', label: 'tone mapping' }, TONE_MAPPINGS, 'auto', 'light and colour'),
   choiceRow({ key: 'mode', url: 'mode', label: 'evaluation' }, MODES, 'table', 'view'),
   choiceRow({ key: 'env', url: 'env', label: 'environment' }, ENVIRONMENTS, 'sky', 'view'),
+  numberRow(
+    { key: 'envRotationDeg', url: 'envRotation', label: 'environment turn (°)' },
+    { min: 0, max: 360, unit: 'degrees' },
+    0,
+    'view',
+    1,
+  ),
   choiceRow({ key: 'sides', url: 'sides', label: 'sides' }, SIDES, 'both', 'view'),
   numberRow({ key: 'timeSeconds', url: 'time', label: 'time (s)' }, { min: 0, max: 1e6, unit: 's' }, 0, null),
 ];

@@ -13,7 +13,24 @@ export const MODES = ['exact', 'table', 'fourier'] as const;
 export const FILM_METHODS = [...MODES, 'three-iridescence'] as const;
 export const FIELDS = ['uniform', 'drainage', 'swirl'] as const;
 export const SIDES = ['both', 'front'] as const;
-export const ENVIRONMENTS = ['sky', 'none'] as const;
+/** Real HDR environments (CC0 equirectangular EXRs, 512 × 256; environmentMaps.ts loads them). */
+export const HDR_ENVIRONMENTS = ['park', 'sunset', 'studio', 'city'] as const;
+export type HdrEnvironment = (typeof HDR_ENVIRONMENTS)[number];
+/** `none` black (the film lit by the light's white: the reference views), `sky` procedural, or a real HDR one. */
+export const ENVIRONMENTS = ['sky', 'none', ...HDR_ENVIRONMENTS] as const;
+export type Environment = (typeof ENVIRONMENTS)[number];
+export const isHdrEnvironment = (env: Environment): env is HdrEnvironment => (HDR_ENVIRONMENTS as readonly string[]).includes(env);
+/**
+ * How HDR light becomes display values: `none` clips (the reference views stay exact), `agx` and
+ * `neutral` are three.js's AgX and Khronos PBR Neutral curves; `auto` is `none` for `none` and
+ * `sky`, `agx` for the HDR environments (so the sun and bright windows keep their highlights).
+ */
+export const TONE_MAPPINGS = ['auto', 'none', 'agx', 'neutral'] as const;
+export type ToneMapping = Exclude<(typeof TONE_MAPPINGS)[number], 'auto'>;
+
+/** The tone mapping a view uses (see TONE_MAPPINGS). */
+export const toneMappingOf = (s: Pick<FilmSettings, 'tonemap' | 'env'>): ToneMapping =>
+  s.tonemap !== 'auto' ? s.tonemap : isHdrEnvironment(s.env) ? 'agx' : 'none';
 
 /** Everything a rendered bubble depends on. Ranges and defaults: `filmParameters.ts`. */
 export interface FilmSettings {
@@ -30,7 +47,10 @@ export interface FilmSettings {
   readonly thicknessRangeNm: number;
   readonly swirlSpeed: number;
   readonly sides: (typeof SIDES)[number];
-  readonly env: (typeof ENVIRONMENTS)[number];
+  readonly env: Environment;
+  /** The environment's turn about the vertical axis, in degrees. */
+  readonly envRotationDeg: number;
+  readonly tonemap: (typeof TONE_MAPPINGS)[number];
   readonly exposure: number;
   readonly timeSeconds: number;
 }

@@ -1,21 +1,25 @@
 import {
-  BackSide,
+  AgXToneMapping,
   ColorManagement,
   Mesh,
+  NeutralToneMapping,
+  NoToneMapping,
   PerspectiveCamera,
   Scene,
   ShaderMaterial,
   SphereGeometry,
   SRGBColorSpace,
+  type ToneMapping as ThreeToneMapping,
   Vector2,
   WebGLRenderer,
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
 import { createBubbleMaterial, releaseFilmColorTextures, updateBubbleUniforms } from '../render/bubbleMaterial.ts';
+import { createBackgroundMaterial, updateBackgroundMaterial } from '../render/environmentMaterial.ts';
+import { environmentTexture, loadEnvironmentPixels, releaseEnvironmentTexture } from '../render/environmentMaps.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../render/filmQuality.ts';
 import { FilmTable } from '../render/filmTable.ts';
-import { type FilmSettings } from '../render/filmSettings.ts';
-import { shaderSource } from '../render/shaderSource.ts';
+import { type FilmSettings, type HdrEnvironment, type ToneMapping, isHdrEnvironment, toneMappingOf } from '../render/filmSettings.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
 
 ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
@@ -24,6 +28,13 @@ ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
 const CAMERA_DISTANCE = 4;
 const FOV_DEG = 35;
 const SIZE = new Vector2();
+const TONE_MAPPINGS: Record<ToneMapping, ThreeToneMapping> = { none: NoToneMapping, agx: AgXToneMapping, neutral: NeutralToneMapping };
+
+/** Where the view's HDR environment stands: shown, on its way (`sky` meanwhile), or failed (`sky` instead). */
+export type EnvironmentStatus =
+  | { readonly state: 'shown' }
+  | { readonly state: 'loading'; readonly env: HdrEnvironment }
+  | { readonly state: 'failed'; readonly env: HdrEnvironment; readonly reason: string };
 
 /** A WebGL2 renderer for bubbles on a canvas (the drawing buffer is kept for screenshots and reads). */
 export const createBubbleRenderer = (canvas: HTMLCanvasElement): WebGLRenderer =>
@@ -40,7 +51,11 @@ export class BubbleView {
   readonly scene = new Scene();
   readonly table: FilmTable;
   readonly bubble: Mesh<SphereGeometry, ShaderMaterial>;
-  private readonly sky: Mesh<SphereGeometry, ShaderMaterial>;
+  private readonly background: Mesh<SphereGeometry, ShaderMaterial>;
+  /** HDR environments that failed to load in this view, with why (`sky` is shown instead). */
+  private readonly failedEnvironments = new Map<HdrEnvironment, string>();
+  /** Called when an HDR environment this view asked for arrives or fails (the caller redraws). */
+  onEnvironmentChange: (() => void) | null = null;
   private readonly filmProbe = new FilmProbe();
   /** The view's size in CSS pixels and its pixel ratio. */
   private size = { width: 1, height: 1, pixelRatio: 1 };
@@ -57,21 +72,8 @@ export class BubbleView {
     this.table = new FilmTable(quality);
     this.camera.position.set(0, 0, CAMERA_DISTANCE);
     this.bubble = new Mesh(new SphereGeometry(1, 128, 64), createBubbleMaterial(settings, quality));
-    this.sky = new Mesh(
-      new SphereGeometry(50, 32, 16),
-      new ShaderMaterial({
-        side: BackSide,
-        defines: { TFC_ENVIRONMENT: 1 },
-        vertexShader:
-          'varying vec3 vDirection; void main() { vDirection = position; gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0); }',
-        fragmentShader: `${shaderSource('environment.glsl')}
-varying vec3 vDirection;
-void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
-#include <colorspace_fragment>
-}`,
-      }),
-    );
-    this.scene.add(this.sky, this.bubble);
+    this.background = new Mesh(new SphereGeometry(50, 64, 32), createBackgroundMaterial());
+    this.scene.add(this.background, this.bubble);
     // After a lost context comes back, three re-creates programs and re-uploads textures by
     // itself; the table, drawn on the GPU, is gone and must be drawn again.
     renderer.domElement.addEventListener('webglcontextrestored', this.rebuildTable);
@@ -92,8 +94,39 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     const gl = this.renderer.getContext();
     this.displayIsP3 = wantP3 && 'drawingBufferColorSpace' in gl && gl.drawingBufferColorSpace === 'display-p3';
     if (wantP3 && !this.displayIsP3) this.renderer.outputColorSpace = SRGBColorSpace;
-    this.sky.visible = s.env === 'sky';
-    updateBubbleUniforms(this.bubble.material, s, this.quality, s.mode === 'table' ? this.table : null, this.displayIsP3);
+    const map = isHdrEnvironment(s.env) ? environmentTexture(s.env, this) : null;
+    if (!map) releaseEnvironmentTexture(this);
+    if (isHdrEnvironment(s.env) && !map && !this.failedEnvironments.has(s.env)) this.load(s.env);
+    // Until an HDR map arrives (or if it failed), the procedural sky stands in.
+    const shown = isHdrEnvironment(s.env) && !map ? { ...s, env: 'sky' as const } : s;
+    this.background.visible = shown.env !== 'none';
+    updateBackgroundMaterial(this.background.material, shown, map);
+    updateBubbleUniforms(this.bubble.material, shown, this.quality, s.mode === 'table' ? this.table : null, this.displayIsP3, map);
+  }
+
+  /** Fetches an HDR environment; when it arrives (or fails) the view shows it (or says why not). */
+  private load(env: HdrEnvironment): void {
+    loadEnvironmentPixels(env).then(
+      () => this.environmentArrived(env),
+      (error: unknown) => {
+        this.failedEnvironments.set(env, error instanceof Error ? error.message : String(error));
+        this.environmentArrived(env);
+      },
+    );
+  }
+
+  private environmentArrived(env: HdrEnvironment): void {
+    if (this.disposed || this.settings.env !== env) return;
+    this.apply(this.settings);
+    this.onEnvironmentChange?.();
+  }
+
+  /** Whether the HDR environment asked for is shown, still on its way, or failed. */
+  get environmentStatus(): EnvironmentStatus {
+    const env = this.settings.env;
+    if (!isHdrEnvironment(env) || this.background.material.defines.TFC_ENVIRONMENT === 2) return { state: 'shown' };
+    const reason = this.failedEnvironments.get(env);
+    return reason === undefined ? { state: 'loading', env } : { state: 'failed', env, reason };
   }
 
   /** Rebuilds the table if a parameter it depends on changed since it was drawn (coarsely first if `quick`). */
@@ -132,6 +165,8 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
     if (drawn.x !== width || drawn.y !== height) r.setSize(width, height, false);
     if (this.contextLost) return;
     this.syncTable(quick);
+    // Per frame, as views may share the renderer: three compiles a program per tone mapping once.
+    r.toneMapping = TONE_MAPPINGS[toneMappingOf(this.settings)];
     r.render(this.scene, this.camera);
   }
 
@@ -142,14 +177,18 @@ void main() { gl_FragColor = vec4(environmentRadiance(vDirection), 1.0);
   }
 
   /** Frees this view's GPU resources (not the renderer, which may be shared). */
+  private disposed = false;
+
   dispose(): void {
+    this.disposed = true;
+    releaseEnvironmentTexture(this);
     this.renderer.domElement.removeEventListener('webglcontextrestored', this.rebuildTable);
     this.filmProbe.dispose();
     this.table.dispose();
     this.bubble.geometry.dispose();
     releaseFilmColorTextures(this.bubble.material);
     this.bubble.material.dispose();
-    this.sky.geometry.dispose();
-    this.sky.material.dispose();
+    this.background.geometry.dispose();
+    this.background.material.dispose();
   }
 }

@@ -4,7 +4,10 @@ import { binnedXyz, spectralBins } from '../physics/binnedIntegration.ts';
 import { spectralWeights } from '../physics/spectralWeights.ts';
 import { filmOptics } from '../physics/filmReflectance.ts';
 import { DEFAULT_FILM_QUALITY } from '../render/filmQuality.ts';
-import { type FilmSettings, maxFieldThicknessNm } from '../render/filmSettings.ts';
+import { type ShownEnvironment, environmentRadiance, reflectedRadiance } from '../render/environment.ts';
+import type { EnvironmentPixels } from '../render/environmentMaps.ts';
+import { type FilmSettings, isHdrEnvironment, maxFieldThicknessNm, toneMappingOf } from '../render/filmSettings.ts';
+import { toneMap } from '../render/toneMapping.ts';
 import { thicknessAt, type Vec3 } from './thicknessField.ts';
 
 /** The view of src/scene/bubbleView.ts: a camera on +z at distance 4 with a 35° vertical field of view. */
@@ -32,25 +35,6 @@ const normalize = (a: Vec3): Vec3 => {
   return [a[0] / l, a[1] / l, a[2] / l];
 };
 const clamp01 = (v: number) => Math.min(1, Math.max(0, v));
-
-/** shaders/environment.glsl: a blue sky over a pale horizon and a dark green ground, linear sRGB. */
-export function environmentRadiance(direction: Vec3, env: FilmSettings['env']): Rgb {
-  if (env === 'none') return [0, 0, 0];
-  const y = normalize(direction)[1];
-  const smoothstep = (e0: number, e1: number, x: number) => {
-    const t = clamp01((x - e0) / (e1 - e0));
-    return t * t * (3 - 2 * t);
-  };
-  const mix = (a: Rgb, b: Rgb, t: number): Rgb => [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t];
-  return y >= 0
-    ? mix([0.6, 0.7, 0.8], [0.1, 0.25, 0.6], smoothstep(0, 0.8, y))
-    : mix([0.2, 0.22, 0.16], [0.05, 0.08, 0.04], smoothstep(0, -0.6, y));
-}
-
-/** shaders/environment.glsl's reflectedRadiance: the illuminant's white with `env=none`, else the environment. */
-export function reflectedRadiance(direction: Vec3, env: FilmSettings['env']): Rgb {
-  return env === 'none' ? [1, 1, 1] : environmentRadiance(direction, env);
-}
 
 /** GLSL's reflect(): d mirrored in the plane of the unit normal n. */
 const reflect = (d: Vec3, n: Vec3): Vec3 => {
@@ -90,15 +74,32 @@ function filmColorLattice(s: FilmSettings): FilmColor {
   };
 }
 
+/** The environment a still image shows: an HDR `env` needs its pixels (environmentMaps.ts). */
+function shownEnvironment(s: FilmSettings, map: EnvironmentPixels | null): ShownEnvironment {
+  if (!isHdrEnvironment(s.env)) return s.env;
+  if (!map) throw new Error(`the environment ${s.env} needs its pixels`);
+  return { pixels: map, rotationDeg: s.envRotationDeg };
+}
+
 /**
  * A still image of the bubble computed on the CPU by src/physics, for pages without WebGL2:
  * the geometry and light paths of shaders/bubble.frag.glsl (near wall and far wall seen from
- * inside at the same θ_i, each reflecting the environment in its mirror direction, environment behind) at `settings.timeSeconds`, in sRGB (8-bit, clipped).
- * Row 0 is the top. Differences from the GPU: sRGB even where a wide gamut was asked for (no
- * hatching), film colours interpolated on a lattice (see COS_STEPS), one ray per pixel (no antialiasing).
+ * inside at the same θ_i, each reflecting the environment in its mirror direction, environment
+ * behind; `map`: the pixels of an HDR `env`) at `settings.timeSeconds`, times the exposure, tone
+ * mapped as the GPU does (toneMapping.ts), in sRGB (8-bit, clipped). Row 0 is the top.
+ * Differences from the GPU: sRGB even where a wide gamut was asked for (no hatching), film colours
+ * interpolated on a lattice (see COS_STEPS), one ray per pixel (no antialiasing), the map in
+ * float32 (the GPU's is half float).
  */
-export function cpuBubbleImage(settings: FilmSettings, width: number, height: number): Uint8ClampedArray<ArrayBuffer> {
+export function cpuBubbleImage(
+  settings: FilmSettings,
+  width: number,
+  height: number,
+  map: EnvironmentPixels | null = null,
+): Uint8ClampedArray<ArrayBuffer> {
   const pixels = new Uint8ClampedArray(4 * width * height);
+  const env = shownEnvironment(settings, map);
+  const mapping = toneMappingOf(settings);
   const film = filmColorLattice(settings);
   const tanHalf = Math.tan((FOV_DEG * Math.PI) / 360);
   const eye: Vec3 = [0, 0, CAMERA_DISTANCE];
@@ -109,32 +110,33 @@ export function cpuBubbleImage(settings: FilmSettings, width: number, height: nu
       const dir = normalize([ndcX * tanHalf * (width / height), ndcY * tanHalf, -1]);
       const b = dot(eye, dir);
       const disc = b * b - (CAMERA_DISTANCE * CAMERA_DISTANCE - 1);
-      let color: Rgb;
+      let radiance: Rgb;
       if (disc < 0) {
         const t = -b + Math.sqrt(b * b - (CAMERA_DISTANCE * CAMERA_DISTANCE - SKY_RADIUS * SKY_RADIUS));
-        color = environmentRadiance([eye[0] + t * dir[0], eye[1] + t * dir[1], eye[2] + t * dir[2]], settings.env);
+        radiance = environmentRadiance([eye[0] + t * dir[0], eye[1] + t * dir[1], eye[2] + t * dir[2]], env);
       } else {
-        color = bubbleRadiance(settings, film, eye, dir, -b - Math.sqrt(disc));
+        radiance = bubbleRadiance(settings, env, film, eye, dir, -b - Math.sqrt(disc));
       }
+      const color = toneMap(radiance.map((c) => settings.exposure * c) as unknown as Rgb, mapping);
       pixels.set([encode8(clamp01(color[0])), encode8(clamp01(color[1])), encode8(clamp01(color[2])), 255], 4 * (row * width + col));
     }
   }
   return pixels;
 }
 
-/** shaders/bubble.frag.glsl for the ray eye + t·dir that meets the bubble at t. */
-function bubbleRadiance(s: FilmSettings, film: FilmColor, eye: Vec3, dir: Vec3, t: number): Rgb {
+/** shaders/bubble.frag.glsl (before the exposure) for the ray eye + t·dir that meets the bubble at t. */
+function bubbleRadiance(s: FilmSettings, env: ShownEnvironment, film: FilmColor, eye: Vec3, dir: Vec3, t: number): Rgb {
   const p = normalize([eye[0] + t * dir[0], eye[1] + t * dir[1], eye[2] + t * dir[2]]);
   const cos = clamp01(Math.abs(dot(p, dir)));
   const nearR = film(thicknessAt(p, s), cos, false);
-  let behind = environmentRadiance(dir, s.env);
-  const nearLight = reflectedRadiance(reflect(dir, p), s.env);
+  let behind = environmentRadiance(dir, env);
+  const nearLight = reflectedRadiance(reflect(dir, p), env);
   if (s.sides === 'both') {
     // The chord through a unit sphere at incidence θ has length 2 cos θ (toEye = −dir).
     const far = normalize([p[0] + 2 * cos * dir[0], p[1] + 2 * cos * dir[1], p[2] + 2 * cos * dir[2]]);
     const farR = film(thicknessAt(far, s), cos, true);
-    const farLight = reflectedRadiance(reflect(dir, far), s.env);
-    behind = [0, 1, 2].map((i) => s.exposure * farR[i]! * farLight[i]! + clamp01(1 - farR[i]!) * behind[i]!) as unknown as Rgb;
+    const farLight = reflectedRadiance(reflect(dir, far), env);
+    behind = [0, 1, 2].map((i) => farR[i]! * farLight[i]! + clamp01(1 - farR[i]!) * behind[i]!) as unknown as Rgb;
   }
-  return [0, 1, 2].map((i) => s.exposure * nearR[i]! * nearLight[i]! + clamp01(1 - nearR[i]!) * behind[i]!) as unknown as Rgb;
+  return [0, 1, 2].map((i) => nearR[i]! * nearLight[i]! + clamp01(1 - nearR[i]!) * behind[i]!) as unknown as Rgb;
 }

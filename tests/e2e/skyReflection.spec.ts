@@ -2,7 +2,8 @@ import { expect, test } from '@playwright/test';
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8 } from '../../src/physics/colorConversions.ts';
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
-import { CAMERA_DISTANCE, FOV_DEG, environmentRadiance } from '../../src/scene/cpuBubbleImage.ts';
+import { environmentRadiance } from '../../src/render/environment.ts';
+import { CAMERA_DISTANCE, FOV_DEG } from '../../src/scene/cpuBubbleImage.ts';
 import { MAX_CODE_DIFFERENCE, worstCodeDifference } from './referenceColor.ts';
 
 /**

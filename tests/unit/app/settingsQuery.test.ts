@@ -8,7 +8,7 @@ describe('URL parameters', () => {
   it('reads every documented parameter', () => {
     const { settings, errors } = parseSettings(
       '?thickness=420&thicknessRange=300&speed=2&field=drainage&nFilm=1.4&nOutside=1.1&nInside=1.2&illuminant=7500' +
-        '&polarization=s&normalization=paper&space=display-p3&mode=exact&sides=front&env=none&exposure=1.5&animate=0&time=12.5',
+        '&polarization=s&normalization=paper&space=display-p3&mode=exact&sides=front&env=park&envRotation=90&tonemap=neutral&exposure=1.5&animate=0&time=12.5',
     );
     expect(errors).toEqual([]);
     expect(settings).toEqual({
@@ -26,7 +26,9 @@ describe('URL parameters', () => {
       space: 'display-p3',
       mode: 'exact',
       sides: 'front',
-      env: 'none',
+      env: 'park',
+      envRotationDeg: 90,
+      tonemap: 'neutral',
       exposure: 1.5,
       animate: false,
       timeSeconds: 12.5,
@@ -42,6 +44,7 @@ describe('URL parameters', () => {
     nOutside: [1, 4],
     nInside: [1, 4],
     exposure: [0, 100],
+    envRotation: [0, 360],
     time: [0, 1_000_000],
   };
   const NAMED: Record<string, readonly string[]> = {
@@ -51,7 +54,8 @@ describe('URL parameters', () => {
     space: ['srgb', 'display-p3', 'wide-gamut'],
     mode: ['exact', 'table'],
     sides: ['both', 'front'],
-    env: ['sky', 'none'],
+    env: ['sky', 'none', 'park', 'sunset', 'studio', 'city'],
+    tonemap: ['auto', 'none', 'agx', 'neutral'],
   };
   const rows: [string, string, string][] = [
     ...Object.entries(NUMERIC).flatMap(([name, [min, max]]) =>
