@@ -30,14 +30,18 @@ export function updateEnvironmentUniforms(m: ShaderMaterial, s: EnvironmentSetti
   u.uExposure!.value = s.exposure;
 }
 
-/** The background: a large sphere seen from inside, showing the environment × the exposure, tone mapped like the bubble. */
+/** The background: a large sphere seen from inside, showing the environment in each view ray's direction × the exposure, tone mapped like the bubble. */
 export function createBackgroundMaterial(): ShaderMaterial {
   return new ShaderMaterial({
     side: BackSide,
     defines: environmentDefines({ env: 'sky' }),
     uniforms: environmentUniforms(),
-    vertexShader:
-      'varying vec3 vDirection; void main() { vDirection = position; gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0); }',
+    // The direction from the camera, not from the sphere's centre: the environment is at infinity, as the bubble sees it.
+    vertexShader: `varying vec3 vDirection;
+void main() {
+  vDirection = (modelMatrix * vec4(position, 1.0)).xyz - cameraPosition;
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+}`,
     fragmentShader: `${shaderSource('environment.glsl')}
 uniform float uExposure;
 varying vec3 vDirection;

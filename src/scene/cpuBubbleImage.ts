@@ -13,8 +13,6 @@ import { thicknessAt, type Vec3 } from './thicknessField.ts';
 /** The view of src/scene/bubbleView.ts: a camera on +z at distance 4 with a 35° vertical field of view. */
 export const CAMERA_DISTANCE = 4;
 export const FOV_DEG = 35;
-/** The sky sphere's radius in bubbleView.ts: the background direction is where a ray meets it. */
-const SKY_RADIUS = 50;
 /**
  * Films are coloured by the shader's method (binnedXyz, the default `exact` bin count: within ΔE00
  * 0.11 of filmXyz to 2 µm, and its cost does not grow with thickness) on a memoised lattice,
@@ -112,8 +110,7 @@ export function cpuBubbleImage(
       const disc = b * b - (CAMERA_DISTANCE * CAMERA_DISTANCE - 1);
       let radiance: Rgb;
       if (disc < 0) {
-        const t = -b + Math.sqrt(b * b - (CAMERA_DISTANCE * CAMERA_DISTANCE - SKY_RADIUS * SKY_RADIUS));
-        radiance = environmentRadiance([eye[0] + t * dir[0], eye[1] + t * dir[1], eye[2] + t * dir[2]], env);
+        radiance = environmentRadiance(dir, env); // at infinity, as the bubble sees it
       } else {
         radiance = bubbleRadiance(settings, env, film, eye, dir, -b - Math.sqrt(disc));
       }
