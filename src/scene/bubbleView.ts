@@ -54,6 +54,8 @@ export class BubbleView {
   private readonly background: Mesh<SphereGeometry, ShaderMaterial>;
   /** HDR environments that failed to load in this view, with why (`sky` is shown instead). */
   private readonly failedEnvironments = new Map<HdrEnvironment, string>();
+  /** The tone mapping of the environment shown (`auto`: none for the sky standing in for an HDR map). */
+  private toneMapping: ThreeToneMapping = NoToneMapping;
   /** Called when an HDR environment this view asked for arrives or fails (the caller redraws). */
   onEnvironmentChange: (() => void) | null = null;
   private readonly filmProbe = new FilmProbe();
@@ -99,6 +101,7 @@ export class BubbleView {
     if (isHdrEnvironment(s.env) && !map && !this.failedEnvironments.has(s.env)) this.load(s.env);
     // Until an HDR map arrives (or if it failed), the procedural sky stands in.
     const shown = isHdrEnvironment(s.env) && !map ? { ...s, env: 'sky' as const } : s;
+    this.toneMapping = TONE_MAPPINGS[toneMappingOf(shown)];
     this.background.visible = shown.env !== 'none';
     updateBackgroundMaterial(this.background.material, shown, map);
     updateBubbleUniforms(this.bubble.material, shown, this.quality, s.mode === 'table' ? this.table : null, this.displayIsP3, map);
@@ -166,7 +169,7 @@ export class BubbleView {
     if (this.contextLost) return;
     this.syncTable(quick);
     // Per frame, as views may share the renderer: three compiles a program per tone mapping once.
-    r.toneMapping = TONE_MAPPINGS[toneMappingOf(this.settings)];
+    r.toneMapping = this.toneMapping;
     r.render(this.scene, this.camera);
   }
 

@@ -1,0 +1,100 @@
+import { expect, test, type Page, type Route } from '@playwright/test';
+import { HDR_ENVIRONMENTS } from '../../src/render/filmSettings.ts';
+import { watchProblems } from './pageWatch.ts';
+
+/**
+ * The HDR environments as a page meets them: each arrives (its own module, fetched when first
+ * shown) with no console error and draws a bubble that is not uniform; while one is on its way
+ * the page says so and counts no frame as ready; one that fails to load says so and shows the sky;
+ * a lost and restored GPU context draws the same bubble again.
+ */
+
+type Window_ = Window & { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView };
+const DRAINED = 'field=drainage&thickness=600&thicknessRange=1100&animate=0';
+
+/** The drawing buffer's pixels, drawn afresh, with the spread of luminance over the bubble's middle third. */
+const frame = (page: Page) =>
+  page.evaluate(() => {
+    const view = (window as unknown as Window_).bubbleView;
+    view.render();
+    const gl = view.renderer.getContext();
+    const w = gl.drawingBufferWidth,
+      h = gl.drawingBufferHeight;
+    const pixels = new Uint8Array(4 * w * h);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    const levels: number[] = [];
+    for (let y = Math.round(h / 3); y < (2 * h) / 3; y += 2)
+      for (let x = Math.round(w / 2 - h / 6); x < w / 2 + h / 6; x += 2) {
+        const i = 4 * (y * w + x);
+        levels.push(0.2126 * pixels[i]! + 0.7152 * pixels[i + 1]! + 0.0722 * pixels[i + 2]!);
+      }
+    const mean = levels.reduce((a, b) => a + b, 0) / levels.length;
+    const spread = Math.sqrt(levels.reduce((a, b) => a + (b - mean) ** 2, 0) / levels.length);
+    return { pixels: Array.from(pixels), spread };
+  });
+
+/** An environment's module, as the dev server or the build names it. */
+const environmentModule = (env: string) => (url: URL) => url.pathname.includes(env) && url.pathname.includes('exr');
+
+test('every HDR environment loads without a console error and draws a bubble that is not uniform', async ({ page }) => {
+  const problems = watchProblems(page);
+  for (const env of HDR_ENVIRONMENTS) {
+    await page.goto(`/?env=${env}&${DRAINED}`);
+    await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+    await expect(page.locator('.environment-status')).toHaveCount(0);
+    const { spread } = await frame(page);
+    console.log(`${env}: luminance spread ${spread.toFixed(1)} levels over the bubble's middle`);
+    // A uniform (or black, or empty) bubble has no spread; the reflected scenes give tens of levels.
+    expect(spread, env).toBeGreaterThan(5);
+  }
+  expect(problems).toEqual([]);
+});
+
+test('a loading environment is announced and counts no frame as ready; a failed one says so and shows the sky', async ({ page }) => {
+  const held: Route[] = [];
+  await page.route(environmentModule('sunset'), (route) => void held.push(route));
+  await page.goto(`/?env=sunset&${DRAINED}`);
+  const line = page.locator('.environment-status');
+  await expect(line).toHaveText(/Loading the environment sunset/);
+  await expect.poll(() => held.length).toBe(1);
+  expect(await page.locator('body').getAttribute('data-frames')).toBeNull();
+  await held[0]!.abort();
+  await expect(line).toHaveText(/sunset could not be loaded .*showing the sky/);
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+  const fallback = await frame(page);
+
+  await page.goto(`/?env=sky&${DRAINED}`);
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+  expect(fallback.pixels).toEqual((await frame(page)).pixels);
+});
+
+test('after a lost and restored context an HDR environment draws the same bubble, nothing leaked', async ({ page }) => {
+  const problems = watchProblems(page);
+  await page.goto(`/?env=park&${DRAINED}`);
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+  const before = await frame(page);
+  const gpuObjects = () =>
+    page.evaluate(() => {
+      const { info } = (window as unknown as Window_).bubbleView.renderer;
+      return { textures: info.memory.textures, programs: info.programs?.length ?? 0 };
+    });
+  const objects = await gpuObjects();
+  await page.evaluate(async () => {
+    const canvas = (window as unknown as Window_).bubbleView.renderer.domElement;
+    const extension = canvas.getContext('webgl2')!.getExtension('WEBGL_lose_context')!;
+    const lost = new Promise((resolve) => canvas.addEventListener('webglcontextlost', resolve, { once: true }));
+    // A lost context gives no extensions: keep this one to restore it with.
+    Object.assign(window, { loseContextExtension: extension });
+    extension.loseContext();
+    await lost;
+    document.body.dataset.frames = 'lost';
+  });
+  await page.evaluate(() => (window as unknown as { loseContextExtension: WEBGL_lose_context }).loseContextExtension.restoreContext());
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+  const after = await frame(page);
+  expect(after.spread).toBeGreaterThan(5);
+  expect(after.pixels).toEqual(before.pixels);
+  expect(await gpuObjects()).toEqual(objects);
+  expect(problems).toEqual([]);
+});
