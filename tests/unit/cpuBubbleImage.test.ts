@@ -3,7 +3,9 @@ import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } from '../../src
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
 import { DEFAULT_SETTINGS } from '../../src/render/filmParameters.ts';
+import type { EnvironmentPixels } from '../../src/render/environmentMaps.ts';
 import type { FilmSettings } from '../../src/render/filmSettings.ts';
+import { toneMap } from '../../src/render/toneMapping.ts';
 import { cpuBubbleImage } from '../../src/scene/cpuBubbleImage.ts';
 
 /** The image uses the shader's binned integral (ΔE00 ≤ 0.11 from the reference): one 8-bit code. */
@@ -60,6 +62,36 @@ describe('the CPU still image of the bubble', () => {
       [SIZE - 1, SIZE - 1],
     ] as const) {
       expect(pixel(image, col, row), `outside at ${col},${row}`).toEqual([0, 0, 0, 255]);
+    }
+  });
+
+  it('in a uniform environment the bubble vanishes: each wall passes on what it does not reflect (T = 1 − R)', () => {
+    const L = [0.9, 0.5, 0.3];
+    const uniform: EnvironmentPixels = { width: 4, height: 2, rgba: Float32Array.from({ length: 32 }, (_, k) => [...L, 1][k & 3]!) };
+    for (const over of [
+      { thicknessNm: 3000, sides: 'both', tonemap: 'none' },
+      { thicknessNm: 1200, field: 'drainage', thicknessRangeNm: 1500, sides: 'both', tonemap: 'agx', exposure: 2 },
+    ] as const) {
+      const s = film({ ...over, env: 'park', envRotationDeg: 40 });
+      const expected = [
+        ...toneMap(L.map((v) => s.exposure * v) as unknown as readonly [number, number, number], s.tonemap as 'none' | 'agx').map((v) =>
+          encode8(Math.min(1, v)),
+        ),
+        255,
+      ];
+      const image = cpuBubbleImage(s, SIZE, SIZE, uniform);
+      for (const [col, row] of [
+        [SIZE / 2, SIZE / 2],
+        [SIZE / 2 + 40, SIZE / 2 - 60],
+        [SIZE / 2 - 85, SIZE / 2],
+        [5, 5],
+      ] as const) {
+        const got = pixel(image, col, row);
+        for (let i = 0; i < 3; i++)
+          expect(Math.abs(got[i]! - expected[i]!), `${JSON.stringify(over)} at ${col},${row}: ${got} vs ${expected}`).toBeLessThanOrEqual(
+            MAX_CODE_DIFFERENCE,
+          );
+      }
     }
   });
 });
