@@ -61,3 +61,26 @@ test('without WebGL2: a message where the canvas was and a CPU image of the bubb
     expect(Math.abs(centre[i]! - expected[i]!), `${centre} vs ${expected}`).toBeLessThanOrEqual(FALLBACK_MAX_CODE_DIFFERENCE);
   expect(problems).toEqual([]);
 });
+
+test('without WebGL2, an HDR environment is fetched and the CPU image reflects it (not the sky, not uniform)', async ({ page }) => {
+  const problems = watchProblems(page);
+  await withoutWebGL(page);
+  const corners = async () => {
+    await expect(page.locator('body')).toHaveAttribute('data-frames', 'fallback', { timeout: 60_000 });
+    return page.evaluate(() => {
+      const image = document.querySelector<HTMLCanvasElement>('.cpu-fallback canvas')!;
+      const data = image.getContext('2d')!.getImageData(0, 0, image.width, image.height).data;
+      const at = (x: number, y: number) => [...data.slice(4 * (y * image.width + x), 4 * (y * image.width + x) + 3)];
+      return [at(5, 5), at(image.width - 5, 5), at(5, image.height - 5), at(image.width - 5, image.height - 5)];
+    });
+  };
+  await page.goto('/?env=park&envRotation=90&animate=0');
+  const park = await corners();
+  await expect(page.locator('.environment-status')).toHaveCount(0);
+  await page.goto('/?env=sky&animate=0');
+  const sky = await corners();
+  console.log(`fallback corners: park ${JSON.stringify(park)}, sky ${JSON.stringify(sky)}`);
+  expect(park).not.toEqual(sky);
+  expect(new Set(park.map(String)).size).toBeGreaterThan(1);
+  expect(problems).toEqual([]);
+});
