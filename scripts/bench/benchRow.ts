@@ -42,6 +42,6 @@ export const CHANGES: readonly { readonly name: string; readonly values: readonl
 
 declare global {
   interface Window {
-    benchRow?: (spec: BenchRowSpec) => BenchRowResult;
+    benchRow?: (spec: BenchRowSpec) => Promise<BenchRowResult>;
   }
 }

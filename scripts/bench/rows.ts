@@ -6,7 +6,7 @@
  */
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/render/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../src/render/filmParameters.ts';
-import type { FilmSettings } from '../../src/render/filmSettings.ts';
+import { type FilmSettings, HDR_ENVIRONMENTS } from '../../src/render/filmSettings.ts';
 import type { FilmTableLayout } from '../../src/render/filmTableLayout.ts';
 
 export interface BenchRow {
@@ -78,4 +78,8 @@ export const ROWS: readonly BenchRow[] = [
   sceneStep('default table, uniform field (swirl off)', { field: 'uniform' }),
   sceneStep('default table, drainage field (swirl off)', { field: 'drainage' }),
   sceneStep('default table, front wall only', { sides: 'front' }),
+  // What the environment costs: none reflects the light's white and draws no background; the
+  // default sky; each HDR map (three lookups a fragment, AgX).
+  sceneStep('default table, env=none (no environment to reflect or show)', { env: 'none' }),
+  ...HDR_ENVIRONMENTS.map((env) => sceneStep(`default table, env=${env} (HDR map reflected on both walls, AgX)`, { env })),
 ];

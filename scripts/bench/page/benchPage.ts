@@ -6,6 +6,8 @@
 import { DataTexture, Mesh, MeshBasicMaterial, RGBAFormat, SRGBColorSpace, WebGLRenderer } from 'three';
 import { BubbleView, createBubbleRenderer } from '../../../src/scene/bubbleView.ts';
 import { FilmXyzProbe } from '../../../src/render/filmXyzProbe.ts';
+import { loadEnvironmentPixels } from '../../../src/render/environmentMaps.ts';
+import { isHdrEnvironment } from '../../../src/render/filmSettings.ts';
 import { type BenchRowSpec, CHANGES } from '../benchRow.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
@@ -27,7 +29,9 @@ function checkerTexture(): DataTexture {
   return t;
 }
 
-window.benchRow = (spec: BenchRowSpec) => {
+window.benchRow = async (spec: BenchRowSpec) => {
+  // An HDR environment is fetched first, so the view shows it from its first frame.
+  if (isHdrEnvironment(spec.settings.env)) await loadEnvironmentPixels(spec.settings.env);
   const view = new BubbleView(createBubbleRenderer(canvas), spec.settings, spec.quality);
   if (spec.kind === 'textured') {
     view.bubble.visible = false;
