@@ -22,9 +22,9 @@ const PREVIEW_PORT = 5193;
 const started = performance.now();
 const log = (what: string) => console.error(`[bench ${((performance.now() - started) / 1000).toFixed(0)} s] ${what}`);
 
-/** `npm run bench -- <text>` runs only the rows whose name contains the text (the floor always runs). */
-const only = process.argv[2];
-const selected = ROWS.filter((r, i) => i === 0 || !only || r.name.includes(only));
+/** `npm run bench -- <text>[|<text>…]` runs only the rows whose name contains one of the texts (the floor always runs). */
+const only = process.argv[2]?.split('|');
+const selected = ROWS.filter((r, i) => i === 0 || !only || only.some((text) => r.name.includes(text)));
 const reference = referenceSpeed();
 console.log(`${referenceSpeedMarkdown(reference)}\n`);
 log('reference speed done; computing the reference colours of the error grids');
@@ -64,8 +64,9 @@ console.log(rowsMarkdown(rows, { sizes: SIZES, frames: FRAMES, frameBudgetMs: FR
 console.log(`
 | built demo (vite build, served by vite preview) | value |
 |---|---|
-| demo JavaScript, gzipped (all of dist's JS but the element) | ${kb(bundle.demoGzipBytes)} |
+| demo JavaScript, gzipped (all of dist's JS but the element and the environments) | ${kb(bundle.demoGzipBytes)} |
 | element \`${ELEMENT_BUNDLE}\`, gzipped | ${bundle.elementGzipBytes === null ? 'not built yet' : kb(bundle.elementGzipBytes)} |
+| each HDR environment's module, gzipped (fetched only when shown) | ${kb(Math.min(...bundle.environmentGzipBytes))} – ${kb(Math.max(...bundle.environmentGzipBytes))} |
 | first frame (navigation start → first frame read back, 1280×720) | ${demo.firstFrameMs.toFixed(0)} ms |
 | frames drawn / tables built in 1 s: still (\`animate=0\`) | ${demo.still.frames} / ${demo.still.tableBuilds} |
 | … swirl animating | ${demo.animating.frames} / ${demo.animating.tableBuilds} |

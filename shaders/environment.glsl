@@ -1,17 +1,17 @@
 // What the walls reflect and the background shows (twin of src/render/environment.ts), in linear
 // sRGB: TFC_ENVIRONMENT 0 none (black) | 1 a procedural sky (blue zenith, pale horizon, dark green
 // ground) | 2 an equirectangular HDR map (uEnvironmentMap: u wraps round the horizon, v = 1 straight
-// up) turned by uEnvironmentRotation radians about +y.
+// up) turned about +y by the angle whose (cos, sin) is uEnvironmentTurn.
 #ifndef THIN_FILM_ENVIRONMENT
 #define THIN_FILM_ENVIRONMENT
 
 #if TFC_ENVIRONMENT == 2
 uniform sampler2D uEnvironmentMap;
-uniform float uEnvironmentRotation;
+uniform vec2 uEnvironmentTurn;
 
 // three.js's equirectUv of the direction turned back by the map's rotation.
 vec2 equirectUv(vec3 d) {
-  float c = cos(uEnvironmentRotation), s = sin(uEnvironmentRotation);
+  float c = uEnvironmentTurn.x, s = uEnvironmentTurn.y;
   vec3 turned = vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
   return vec2(atan(turned.z, turned.x) * 0.15915494309189535 + 0.5, asin(clamp(turned.y, -1.0, 1.0)) * 0.3183098861837907 + 0.5);
 }

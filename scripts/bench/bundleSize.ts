@@ -10,9 +10,15 @@ export const ELEMENT_BUNDLE = 'dist/thin-film-bubble.js';
 export interface BundleSizes {
   /** every JS file in dist: path → bytes and gzipped bytes */
   readonly files: Record<string, { readonly bytes: number; readonly gzipBytes: number }>;
+  /** what a page loads up front: every JS file but the element and the HDR environments' modules */
   readonly demoGzipBytes: number;
   readonly elementGzipBytes: number | null;
+  /** each HDR environment's module (fetched only when shown), gzipped */
+  readonly environmentGzipBytes: readonly number[];
 }
+
+/** An HDR environment's module, as the build names it (environmentMaps.ts imports `…/hdri/<name>.exr.js`). */
+const isEnvironmentModule = (path: string) => /\.exr-[^/]*\.js$/.test(path);
 
 const jsFiles = (dir: string): string[] =>
   readdirSync(dir, { withFileTypes: true }).flatMap((e) =>
@@ -29,7 +35,8 @@ export async function buildAndMeasure(): Promise<BundleSizes> {
   }
   const element = files[ELEMENT_BUNDLE]?.gzipBytes ?? null;
   const demo = Object.entries(files)
-    .filter(([path]) => path !== ELEMENT_BUNDLE)
+    .filter(([path]) => path !== ELEMENT_BUNDLE && !isEnvironmentModule(path))
     .reduce((sum, [, f]) => sum + f.gzipBytes, 0);
-  return { files, demoGzipBytes: demo, elementGzipBytes: element };
+  const environments = Object.entries(files).filter(([path]) => isEnvironmentModule(path));
+  return { files, demoGzipBytes: demo, elementGzipBytes: element, environmentGzipBytes: environments.map(([, f]) => f.gzipBytes) };
 }

@@ -56,6 +56,14 @@ const sceneStep = (name: string, more: Partial<FilmSettings>): BenchRow => ({
 
 export const ROWS: readonly BenchRow[] = [
   { name: 'plain textured sphere (the floor)', kind: 'textured', settings: view('table'), quality: q, measuresError: false },
+  // The floor without the sky behind it: the background's own cost, to tell it from the walls' reflections.
+  {
+    name: 'plain textured sphere, env=none (no background)',
+    kind: 'textured',
+    settings: view('table', { env: 'none' }),
+    quality: q,
+    measuresError: false,
+  },
   {
     name: 'three.js iridescence (evalIridescence, soap film)',
     kind: 'bubble',

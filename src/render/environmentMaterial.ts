@@ -1,4 +1,4 @@
-import { BackSide, type DataTexture, ShaderMaterial } from 'three';
+import { BackSide, type DataTexture, ShaderMaterial, Vector2 } from 'three';
 import { type FilmSettings, isHdrEnvironment } from './filmSettings.ts';
 import { setDefines } from './materialDefines.ts';
 import { shaderSource } from './shaderSource.ts';
@@ -17,7 +17,8 @@ export const environmentDefines = (s: Pick<FilmSettings, 'env'>): Record<string,
 /** The uniforms shaders/environment.glsl reads, plus the exposure. */
 export const environmentUniforms = () => ({
   uEnvironmentMap: { value: null as DataTexture | null },
-  uEnvironmentRotation: { value: 0 },
+  /** The map's turn about +y as (cos, sin), computed here once rather than per fragment. */
+  uEnvironmentTurn: { value: new Vector2(1, 0) },
   uExposure: { value: 1 },
 });
 
@@ -26,7 +27,8 @@ export function updateEnvironmentUniforms(m: ShaderMaterial, s: EnvironmentSetti
   if (isHdrEnvironment(s.env) !== (map !== null)) throw new Error(`environment ${s.env} shown with${map ? '' : 'out'} a map`);
   const u = m.uniforms;
   u.uEnvironmentMap!.value = map;
-  u.uEnvironmentRotation!.value = (s.envRotationDeg * Math.PI) / 180;
+  const turn = (s.envRotationDeg * Math.PI) / 180;
+  (u.uEnvironmentTurn!.value as Vector2).set(Math.cos(turn), Math.sin(turn));
   u.uExposure!.value = s.exposure;
 }
 
