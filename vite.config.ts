@@ -36,6 +36,9 @@ export default defineConfig(({ mode }) =>
     : {
         plugins: [elementInDevelopment()],
         server: { port: 5173, strictPort: true },
+        // The HDR environments' modules (plain ES modules of one string each) are served as they
+        // are: pre-bundling them would only risk a reload when a page first imports one.
+        optimizeDeps: { exclude: ['@pmndrs/assets'] },
         preview: { port: 4173, strictPort: true },
         // three.js's renderer is most of the ~660 kB (~180 kB gzipped); it is imported piecemeal and tree-shaken.
         build: { chunkSizeWarningLimit: 800 },
