@@ -1,7 +1,7 @@
 import { GAMUT_MAPPINGS } from '../physics/colorConversions.ts';
 import { CASE_FIELDS, CASE_FLAGS, MAX_WAVELENGTHS } from './colorCase.ts';
 import { CELL_HEIGHT_2D_PX, MAX_CHART_COLUMNS, MAX_CHART_PIXELS, STRIP_HEIGHT_PX } from './chartLayout.ts';
-import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseCasesJson.ts';
+import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
 import { MAX_TABLE_ROWS } from './tableValues.ts';
 
 /** Where a flag's description starts. */
