@@ -7,12 +7,14 @@ import { MAX_TABLE_ROWS } from './tableValues.ts';
 /** Where a flag's description starts. */
 const DESCRIPTION_COLUMN = 24;
 
-/** One line per case flag: `--flag`, its label, what it accepts and its default. */
-const caseFlagLines = (): string =>
-  CASE_FLAGS.map(
-    ({ flag, label, expected, defaultText }) =>
-      `  --${flag}`.padEnd(DESCRIPTION_COLUMN) + `${label}: ${expected}${defaultText ? ` (${defaultText})` : ''}`,
-  ).join('\n');
+/** One line per flag: `--flag`, its label, what it accepts and its default (case flags here, view options in renderUsage.ts). */
+export const optionLines = (options: readonly { flag: string; label: string; expected: string; defaultText: string }[]): string =>
+  options
+    .map(
+      ({ flag, label, expected, defaultText }) =>
+        `  --${flag}`.padEnd(DESCRIPTION_COLUMN) + `${label}: ${expected}${defaultText ? ` (${defaultText})` : ''}`,
+    )
+    .join('\n');
 
 /** `--help`: how to call the command. */
 export const USAGE = `Colour of a thin film (a soap bubble) from the spectral interference integral.
@@ -20,7 +22,7 @@ export const USAGE = `Colour of a thin film (a soap bubble) from the spectral in
 Usage: npm run --silent color -- [flags]
 
 One case (defaults: a 500 nm soap film in air, seen head-on, under D65):
-${caseFlagLines()}
+${optionLines(CASE_FLAGS)}
   --gamut G             ${GAMUT_MAPPINGS.join(' | ')}: how out-of-gamut colours become 8-bit codes (clip)
 
 Many cases:
