@@ -8,7 +8,6 @@ import { type RenderView, parseRenderCases, parseRenderCommandLine } from '../sr
 import { RENDER_USAGE } from '../src/cli/renderUsage.ts';
 import { ParameterError } from '../src/physics/validate.ts';
 import { findChromium } from './chromium.ts';
-import { renderViews } from './render/renderViews.ts';
 
 /** Stops with one line on stderr. */
 function stop(exitCode: 1 | 2 | 3, message: string): never {
@@ -41,6 +40,8 @@ if (views === 'help') {
 const chromiumSearch = findChromium();
 if ('missing' in chromiumSearch) stop(3, chromiumSearch.missing);
 try {
+  // Vite and the browser session are loaded only when there is something to render.
+  const { renderViews } = await import('./render/renderViews.ts');
   await renderViews(views, chromiumSearch.found, (view, { png, width, height, ms }) => {
     const writeError = writeFileAtomically(view.out, png);
     if (writeError) throw new ParameterError('--out', writeError);

@@ -112,7 +112,9 @@ export function parseRenderCases(text: string, fileName: string, defaults: RawVi
       if (unknown !== undefined) {
         throw new ParameterError(unknown, `${describeValue(unknown)}: unknown field; expected one of ${VIEW_FIELDS.join(', ')}`);
       }
-      const view = readView(new Map([...defaults, ...fields]), (name) => (fields.has(name) ? name : `--${name}`), true);
+      // A field is named as the case writes it, or as the command line does where the value came from there.
+      const field = (name: string) => (!fields.has(name) && defaults.has(name) ? `--${name}` : name);
+      const view = readView(new Map([...defaults, ...fields]), field, true);
       const earlier = outs.get(view.out);
       if (earlier !== undefined) rejectValue('out', view.out, `a file no other view writes (case at index ${earlier} does)`);
       outs.set(view.out, index);
