@@ -1,6 +1,6 @@
 import { VIEW_PARAMETERS } from '../app/viewParameters.ts';
 import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
-import { PICTURE_OPTIONS, expectedOf } from './renderOptions.ts';
+import { PICTURE_OPTIONS, VIEW_FIELDS, expectedOf } from './renderOptions.ts';
 import { optionLines } from './usage.ts';
 
 /** The view's options, one per schema row: the URL parameter's name, label, range and default. */
@@ -13,6 +13,9 @@ const pictureLines = optionLines(
     defaultText: String(o.fallback),
   })),
 );
+
+/** The fields of a view that are the picture's, not the schema's. */
+const PICTURE_FIELDS = VIEW_FIELDS.filter((name) => !VIEW_PARAMETERS.some((row) => row.url === name)).join(', ');
 
 /** `--help`: how to call the render command. */
 export const RENDER_USAGE = `A picture of the demo (the bubble as index.html shows it) as a PNG, rendered in headless Chromium.
@@ -29,7 +32,7 @@ ${pictureLines}
 
 Many views, one browser:
   --cases FILE.json     a JSON array (at most ${MAX_CASES}) of objects { "out", ... } with some of the
-                        fields out, width, height, scale, plots and the view options' names (values as
+                        fields ${PICTURE_FIELDS} and the view options' names (values as
                         in the URL, as JSON numbers or text; plots true or false). The other options
                         given apply to every view. Nested at most ${MAX_CASES_NESTING_DEPTH} levels deep.
 
