@@ -23,10 +23,11 @@ const PLOTS_BOX = '#plots-box';
 const PLOTS = `${PLOTS_BOX}, .tfb-probe-marker`;
 
 /**
- * How long one view may take to draw its first frame: ~3 s here on SwiftShader, so this leaves
- * room for a machine many times slower; a view that takes longer fails the command (exit 1).
+ * How long any one step of a view (opening the page, its first frame, the capture) may take:
+ * ~3 s in all here on SwiftShader, so this leaves room for a machine many times slower; a view
+ * that takes longer fails the command (exit 1).
  */
-const FRAME_TIMEOUT_MS = 300_000;
+const STEP_TIMEOUT_MS = 300_000;
 
 /** A rendered view: its PNG, the PNG's size in pixels, and how long it took (page opened → PNG captured). */
 export interface RenderedView {
@@ -45,6 +46,7 @@ export async function renderViews(
   launch: ChromiumLaunchOptions,
   take: (view: RenderView, rendered: RenderedView) => void,
 ): Promise<void> {
+  if (views.length === 0) return;
   const server = await createServer({
     root: ROOT,
     logLevel: 'silent',
@@ -69,6 +71,8 @@ export async function renderViews(
 async function renderView(browser: Browser, base: string, view: RenderView): Promise<RenderedView> {
   const started = performance.now();
   const context = await browser.newContext({ viewport: { width: view.widthPx, height: view.heightPx }, deviceScaleFactor: view.scale });
+  context.setDefaultTimeout(STEP_TIMEOUT_MS);
+  context.setDefaultNavigationTimeout(STEP_TIMEOUT_MS);
   try {
     const page = await context.newPage();
     const failed = new Promise<never>((_, reject) => page.on('pageerror', (e) => reject(new Error(`the demo page failed: ${e.message}`))));
@@ -84,7 +88,7 @@ async function renderView(browser: Browser, base: string, view: RenderView): Pro
 /** Opens the demo at the view and waits for its frame; the panel hidden, and the plots unless asked for (their drawer opened). */
 async function showView(page: Page, base: string, view: RenderView): Promise<void> {
   await page.goto(`${base}/${view.query ? `?${view.query}` : ''}`);
-  await page.waitForSelector(FRAME_DRAWN, { state: 'attached', timeout: FRAME_TIMEOUT_MS });
+  await page.waitForSelector(FRAME_DRAWN, { state: 'attached' });
   await page.addStyleTag({ content: `${view.plots ? PANEL : `${PANEL}, ${PLOTS}`} { display: none !important; }` });
   if (!view.plots) return;
   // A small window starts with the plots' drawer closed: open it, and wait for the frame that draws them into it.
@@ -95,5 +99,5 @@ async function showView(page: Page, base: string, view: RenderView): Promise<voi
     drawer.open = true;
     return true;
   }, PLOTS_BOX);
-  if (opened) await page.waitForSelector(FRAME_DRAWN, { state: 'attached', timeout: FRAME_TIMEOUT_MS });
+  if (opened) await page.waitForSelector(FRAME_DRAWN, { state: 'attached' });
 }
