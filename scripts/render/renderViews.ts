@@ -8,19 +8,10 @@ import { type Browser, type Page, chromium } from '@playwright/test';
 import { createServer } from 'vite';
 import type { RenderView } from '../../src/cli/renderOptions.ts';
 import type { ChromiumLaunchOptions } from '../chromium.ts';
+import { FRAME_DRAWN, PANEL, PLOTS, PLOTS_BOX } from './demoPage.ts';
 
 /** The repository, whose index.html is the demo. */
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
-
-/**
- * The ready marks the demo sets on <body data-frames> (src/main.ts): its first complete frame
- * (plots included) is drawn, or — without WebGL2 — the CPU's still image is.
- */
-const FRAME_DRAWN = 'body[data-frames="ready"], body[data-frames="fallback"]';
-/** The demo's parts that are not the picture (index.html, src/app/bubbleApp.ts): the lil-gui panel; the plots and their probe ring. */
-const PANEL = '.lil-gui';
-const PLOTS_BOX = '#plots-box';
-const PLOTS = `${PLOTS_BOX}, .tfb-probe-marker`;
 
 /**
  * How long any one step of a view (opening the page, its first frame, the capture) may take:
