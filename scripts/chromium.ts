@@ -1,33 +1,42 @@
 import { existsSync } from 'node:fs';
 import { chromium } from '@playwright/test';
 
-/**
- * The Chromium that the browser tests and the benchmark launch, found by itself: CHROME_PATH if
- * set, else Debian's /usr/bin/chromium, else the browser Playwright downloads with
- * `npx playwright install chromium` (undefined: Playwright's own). With none of them, the run
- * stops with one line saying how to get one.
- */
-export function chromiumExecutable(): string | undefined {
-  const fromEnv = process.env.CHROME_PATH;
-  if (fromEnv) {
-    if (!existsSync(fromEnv)) fail(`CHROME_PATH=${fromEnv} does not exist.`);
-    return fromEnv;
-  }
-  if (existsSync('/usr/bin/chromium')) return '/usr/bin/chromium';
-  if (existsSync(chromium.executablePath())) return undefined;
-  return fail('no Chromium found.');
+/** Playwright's launch options for a Chromium (executablePath left out: Playwright's own). */
+export interface ChromiumLaunchOptions {
+  executablePath?: string;
+  args: string[];
 }
+
+/** The Chromium found, as launch options, or one line saying why none was found and how to get one. */
+export type ChromiumSearch = { readonly found: ChromiumLaunchOptions } | { readonly missing: string };
 
 /** WebGL2 headless on SwiftShader (docs/browser.md#launch-flags); the first also enables the timer query. */
 export const CHROMIUM_ARGS = ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist', '--disable-quic'];
 
-/** Playwright launch options for that Chromium. */
-export function chromiumLaunchOptions(): { executablePath?: string; args: string[] } {
-  const executablePath = chromiumExecutable();
-  return { ...(executablePath ? { executablePath } : {}), args: CHROMIUM_ARGS };
+const found = (executablePath: string | undefined): ChromiumSearch => ({
+  found: { ...(executablePath ? { executablePath } : {}), args: CHROMIUM_ARGS },
+});
+const missing = (why: string): ChromiumSearch => ({
+  missing: `${why} Install one (Debian: apt-get install -y chromium; elsewhere: npx playwright install chromium) or set CHROME_PATH.`,
+});
+
+/**
+ * The Chromium that the browser tests, the benchmark and the render command launch: CHROME_PATH
+ * if set, else Debian's /usr/bin/chromium, else the browser Playwright downloads with
+ * `npx playwright install chromium`.
+ */
+export function findChromium(): ChromiumSearch {
+  const fromEnv = process.env.CHROME_PATH;
+  if (fromEnv) return existsSync(fromEnv) ? found(fromEnv) : missing(`CHROME_PATH=${fromEnv} does not exist.`);
+  if (existsSync('/usr/bin/chromium')) return found('/usr/bin/chromium');
+  if (existsSync(chromium.executablePath())) return found(undefined);
+  return missing('no Chromium found.');
 }
 
-function fail(why: string): never {
-  console.error(`${why} Install one (Debian: apt-get install -y chromium; elsewhere: npx playwright install chromium) or set CHROME_PATH.`);
-  process.exit(1);
+/** Launch options for the tests and the benchmark: with no Chromium, the run stops (exit 1) with the line saying how to get one. */
+export function chromiumLaunchOptions(): ChromiumLaunchOptions {
+  const search = findChromium();
+  if ('found' in search) return search.found;
+  console.error(search.missing);
+  return process.exit(1);
 }

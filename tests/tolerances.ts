@@ -71,3 +71,6 @@ export const THICKNESS_TWIN_RELATIVE = 2e-4;
 
 /** dR/dd is at most ~4π n_b/λ ≈ 0.05 per nm, so R moves < 1e-4 between d = 0 and d = 1e-3 nm. */
 export const CONTINUITY_TOL = 1e-4;
+
+/** A saved plot is its canvas drawn over an opaque background: the browser composites in 8 bits (premultiplied), the test in float then rounds, so one code either way. */
+export const SAVED_PLOT_CODES = 1;

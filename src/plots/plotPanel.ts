@@ -2,11 +2,14 @@ import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorCo
 import { type FilmSettings, maxFieldThicknessNm } from '../render/filmSettings.ts';
 import type { ProbeReading } from '../scene/probe.ts';
 import { drawChromaticityPlot } from './chromaticityPlot.ts';
-import { filmSpectrum } from './filmSpectrum.ts';
+import { type ProbedView, downloadName } from './downloadName.ts';
+import { type FilmSpectrum, filmSpectrum } from './filmSpectrum.ts';
 import { type ScaleColor, interferenceScale } from './interferenceScale.ts';
 import { probeColor } from './probeColor.ts';
-import { addPlotStyles } from './plotStyles.ts';
+import { PLOT_BACKGROUND, addPlotStyles } from './plotStyles.ts';
+import { opaquePngUrl, saveUrl, textUrl } from './saveDownload.ts';
 import { drawScaleStrip } from './scaleStrip.ts';
+import { spectrumCsv } from './spectrumCsv.ts';
 import { SPECTRUM_LEGEND, drawSpectrumPlot } from './spectrumPlot.ts';
 
 /** The colour scale runs from 0 to the field's thickest film, and at least this far. */
@@ -26,7 +29,8 @@ const LABELS: Record<(typeof FIELDS)[number], string> = {
 /**
  * The live plots under a bubble, all computed by the float64 reference (src/physics): the
  * probed point's numbers, its spectra, the xy diagram with the thickness path, and the
- * interference colour strip. Text goes in with textContent only.
+ * interference colour strip. Each plot can be saved (PNG; the spectrum also as CSV), named
+ * after the probed view. Text goes in with textContent only.
  */
 export class PlotPanel {
   readonly element: HTMLElement;
@@ -37,6 +41,9 @@ export class PlotPanel {
   private readonly strip: HTMLCanvasElement;
   private scaleKey = '';
   private scale: ScaleColor[] = [];
+  /** What the plots show now (null: the probe is off the bubble), for the downloads. */
+  private shown: { readonly view: ProbedView; readonly spectrum: FilmSpectrum } | null = null;
+  private readonly saveButtons: HTMLButtonElement[];
 
   constructor(doc: Document = document) {
     addPlotStyles(doc);
@@ -57,7 +64,25 @@ export class PlotPanel {
     const legend = el('div', 'tfb-legend');
     for (const [text, color] of SPECTRUM_LEGEND)
       legend.append(Object.assign(el('span', ''), { textContent: text, style: `color: ${color}` }));
-    this.element.append(readout, this.spectrum, legend, this.chromaticity, this.strip);
+    const saves = el('div', 'tfb-downloads');
+    saves.append(Object.assign(el('span', ''), { textContent: 'save' }));
+    const png = (canvas: HTMLCanvasElement) => () => opaquePngUrl(canvas, PLOT_BACKGROUND);
+    const downloads: [string, string, string, (spectrum: FilmSpectrum) => string][] = [
+      ['spectrum', 'png', 'spectrum PNG', png(this.spectrum)],
+      ['spectrum', 'csv', 'spectrum CSV', (spectrum) => textUrl(spectrumCsv(spectrum), 'text/csv')],
+      ['xy', 'png', 'xy PNG', png(this.chromaticity)],
+      ['scale', 'png', 'scale PNG', png(this.strip)],
+    ];
+    this.saveButtons = downloads.map(([what, extension, text, url]) => {
+      const button = Object.assign(el('button', ''), { type: 'button', textContent: text, disabled: true }) as HTMLButtonElement;
+      button.dataset.download = `${what}.${extension}`;
+      button.addEventListener('click', () => {
+        if (this.shown) saveUrl(doc, url(this.shown.spectrum), downloadName(this.shown.view, what, extension));
+      });
+      return button;
+    });
+    saves.append(...this.saveButtons);
+    this.element.append(readout, this.spectrum, legend, this.chromaticity, this.strip, saves);
   }
 
   /**
@@ -67,6 +92,8 @@ export class PlotPanel {
   update(s: FilmSettings, probe: readonly [number, number], reading: ProbeReading | null, displayIsP3: boolean): void {
     const show = (f: (typeof FIELDS)[number], text: string) => (this.values.get(f)!.textContent = text);
     this.element.dataset.probe = `${probe.join(',')} ${reading ? 'bubble' : 'miss'}`;
+    this.shown = null;
+    this.saveButtons.forEach((b) => (b.disabled = !reading));
     if (!reading) {
       for (const f of FIELDS) show(f, '—');
       show('thickness', 'off the bubble');
@@ -85,7 +112,9 @@ export class PlotPanel {
     show('deltaE00', c.deltaE00.toFixed(3));
     this.swatch.style.background = c.hex;
 
-    drawSpectrumPlot(this.spectrum, filmSpectrum({ ...stack, thicknessNm: reading.thicknessNm }, s.illuminant, s.polarization));
+    const spectrum = filmSpectrum({ ...stack, thicknessNm: reading.thicknessNm }, s.illuminant, s.polarization);
+    drawSpectrumPlot(this.spectrum, spectrum);
+    this.shown = { view: { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg, illuminant: s.illuminant }, spectrum };
     const maxNm = Math.max(MIN_SCALE_NM, maxFieldThicknessNm(s));
     const key = JSON.stringify([stack, maxNm, s.illuminant, s.polarization, s.normalization, displayIsP3]);
     if (key !== this.scaleKey) {

@@ -12,7 +12,13 @@ const CSS = `
 .tfb-spectrum { width: 100%; height: 110px; }
 .tfb-chromaticity { width: 100%; aspect-ratio: 1 / 1; max-height: 240px; }
 .tfb-strip { width: 100%; height: 34px; }
+.tfb-downloads { display: flex; flex-wrap: wrap; align-items: center; gap: 4px; color: #999; }
+.tfb-downloads button { font: inherit; padding: 1px 6px; color: #ddd; background: #2a2a30; border: 1px solid #555; border-radius: 3px; cursor: pointer; }
+.tfb-downloads button:disabled { color: #666; cursor: default; }
 `;
+
+/** The background a plot is saved on (its canvas is transparent where nothing is drawn): the plots box's colour, opaque. */
+export const PLOT_BACKGROUND = '#141418';
 
 export function addPlotStyles(doc: Document): void {
   if (doc.getElementById('tfb-plot-styles')) return;

@@ -1,4 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
+import { PANEL, PLOTS } from '../../scripts/render/demoPage.ts';
 
 /**
  * The look, guarded by screenshots made deterministic first: animate=0 freezes the
@@ -52,7 +53,7 @@ for (const [name, url] of Object.entries(VIEWS)) {
     expect(distinctColors).toBeGreaterThan(30);
     expect(meanLevel).toBeGreaterThan(20);
     // The control panel and the plots are UI, not the look under test: hidden.
-    await page.addStyleTag({ content: '.lil-gui, #plots-box, .tfb-probe-marker { display: none !important; }' });
+    await page.addStyleTag({ content: `${PANEL}, ${PLOTS} { display: none !important; }` });
     await expect(page).toHaveScreenshot(`${name}.png`, { threshold: PIXEL_THRESHOLD, maxDiffPixelRatio: MAX_DIFF_PIXEL_RATIO });
   });
 }

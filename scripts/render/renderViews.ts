@@ -1,0 +1,94 @@
+/**
+ * The render command's browser session: the demo served by Vite's dev server on a free loopback
+ * port, one headless Chromium, and per view a window of the view's size in which the demo page is
+ * opened at the view's URL, waited on until its frame is drawn, and captured as a PNG.
+ */
+import { fileURLToPath } from 'node:url';
+import { type Browser, type Page, chromium } from '@playwright/test';
+import { createServer } from 'vite';
+import type { RenderView } from '../../src/cli/renderOptions.ts';
+import type { ChromiumLaunchOptions } from '../chromium.ts';
+import { FRAME_DRAWN, PANEL, PLOTS, PLOTS_BOX } from './demoPage.ts';
+
+/** The repository, whose index.html is the demo. */
+const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+
+/**
+ * How long any one step of a view (opening the page, its first frame, the capture) may take:
+ * ~3 s in all here on SwiftShader, so this leaves room for a machine many times slower; a view
+ * that takes longer fails the command (exit 1).
+ */
+const STEP_TIMEOUT_MS = 300_000;
+
+/** A rendered view: its PNG, the PNG's size in pixels, and how long it took (page opened → PNG captured). */
+export interface RenderedView {
+  readonly png: Buffer;
+  readonly width: number;
+  readonly height: number;
+  readonly ms: number;
+}
+
+/**
+ * Renders `views` in order in one browser launch, handing each PNG to `take` as soon as it is
+ * captured (before the next view is opened). Everything is closed on return and on error.
+ */
+export async function renderViews(
+  views: readonly RenderView[],
+  launch: ChromiumLaunchOptions,
+  take: (view: RenderView, rendered: RenderedView) => void,
+): Promise<void> {
+  if (views.length === 0) return;
+  const server = await createServer({
+    root: ROOT,
+    logLevel: 'silent',
+    server: { host: '127.0.0.1', port: 0, strictPort: true, hmr: false, watch: null },
+  });
+  try {
+    await server.listen();
+    const address = server.httpServer?.address();
+    if (!address || typeof address === 'string') throw new Error('the demo server has no port');
+    const base = `http://127.0.0.1:${address.port}`;
+    const browser = await chromium.launch(launch);
+    try {
+      for (const view of views) take(view, await renderView(browser, base, view));
+    } finally {
+      await browser.close();
+    }
+  } finally {
+    await server.close();
+  }
+}
+
+async function renderView(browser: Browser, base: string, view: RenderView): Promise<RenderedView> {
+  const started = performance.now();
+  const context = await browser.newContext({ viewport: { width: view.widthPx, height: view.heightPx }, deviceScaleFactor: view.scale });
+  context.setDefaultTimeout(STEP_TIMEOUT_MS);
+  context.setDefaultNavigationTimeout(STEP_TIMEOUT_MS);
+  try {
+    const page = await context.newPage();
+    const failed = new Promise<never>((_, reject) => page.on('pageerror', (e) => reject(new Error(`the demo page failed: ${e.message}`))));
+    await Promise.race([showView(page, base, view), failed]);
+    const png = await page.screenshot({ type: 'png', animations: 'disabled', caret: 'hide' });
+    // The size, from the PNG's IHDR chunk (its first, right after the 8-byte signature).
+    return { png, width: png.readUInt32BE(16), height: png.readUInt32BE(20), ms: Math.round(performance.now() - started) };
+  } finally {
+    await context.close();
+  }
+}
+
+/** Opens the demo at the view and waits for its frame; the panel hidden, and the plots unless asked for (their drawer opened). */
+async function showView(page: Page, base: string, view: RenderView): Promise<void> {
+  await page.goto(`${base}/${view.query ? `?${view.query}` : ''}`);
+  await page.waitForSelector(FRAME_DRAWN, { state: 'attached' });
+  await page.addStyleTag({ content: `${view.plots ? PANEL : `${PANEL}, ${PLOTS}`} { display: none !important; }` });
+  if (!view.plots) return;
+  // A small window starts with the plots' drawer closed: open it, and wait for the frame that draws them into it.
+  const opened = await page.evaluate((selector) => {
+    const drawer = document.querySelector<HTMLDetailsElement>(selector);
+    if (!drawer || drawer.open) return false;
+    delete document.body.dataset.frames;
+    drawer.open = true;
+    return true;
+  }, PLOTS_BOX);
+  if (opened) await page.waitForSelector(FRAME_DRAWN, { state: 'attached' });
+}

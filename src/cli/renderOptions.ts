@@ -1,0 +1,158 @@
+import { parseArgs } from 'node:util';
+import { parameterNamed, readParameter, settingsToQuery } from '../app/settingsQuery.ts';
+import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../app/viewParameters.ts';
+import { ParameterError, isInDomain, parseDecimal } from '../physics/validate.ts';
+import { describeValue, rejectValue } from './inputErrors.ts';
+import { parseJsonArray } from './parseJsonArray.ts';
+
+/** One picture to render: the demo at `query`, in a `widthPx` × `heightPx` CSS-pixel window. */
+export interface RenderView {
+  /** The PNG file to write. */
+  readonly out: string;
+  readonly widthPx: number;
+  readonly heightPx: number;
+  /** Device pixels per CSS pixel: the PNG is `scale` times the window. */
+  readonly scale: number;
+  /** Whether the plots at the probe are drawn beside the bubble. */
+  readonly plots: boolean;
+  /** The demo page's URL query for the view (the schema's parameters; defaults left out). */
+  readonly query: string;
+}
+
+/** The picture's own options, beside the view's parameters (the schema's, `--name value`). */
+export const PICTURE_OPTIONS = {
+  width: { min: 16, max: 4096, unit: 'CSS px', fallback: 640, whole: true },
+  height: { min: 16, max: 4096, unit: 'CSS px', fallback: 480, whole: true },
+  // The demo draws at most 2 device pixels per CSS pixel (its devicePixelRatio cap).
+  scale: { min: 1, max: 2, unit: '', fallback: 1, whole: false },
+} as const;
+type PictureNumber = keyof typeof PICTURE_OPTIONS;
+const PICTURE_NUMBERS = Object.keys(PICTURE_OPTIONS) as PictureNumber[];
+
+/** What a view (a command line or one entry of a cases file) may set: the picture's options and the schema's parameters. */
+export const VIEW_FIELDS: readonly string[] = ['out', ...PICTURE_NUMBERS, 'plots', ...VIEW_PARAMETERS.map((row) => row.url)];
+const COMMAND_ONLY = ['cases', 'help'];
+const clash = [...VIEW_FIELDS, ...COMMAND_ONLY].find((name, i, all) => all.indexOf(name) !== i);
+if (clash) throw new Error(`render: the option --${clash} is both a view parameter and one of the picture's options`);
+
+const expectedPictureNumber = (name: PictureNumber): string => {
+  const o = PICTURE_OPTIONS[name];
+  return `${o.whole ? 'a whole number' : 'a number'} in [${o.min}, ${o.max}]${o.unit ? ` ${o.unit}` : ''}`;
+};
+
+/** What each field of a view accepts, as its refusal says. */
+export function expectedOf(name: string): string {
+  if (name === 'out') return 'the path of the PNG file to write';
+  if (name === 'plots') return 'true or false (on the command line: --plots, no value)';
+  if (name in PICTURE_OPTIONS) return expectedPictureNumber(name as PictureNumber);
+  return parameterNamed(name)!.expected;
+}
+
+export type RenderCommand =
+  | { readonly kind: 'help' }
+  | { readonly kind: 'views'; readonly views: readonly RenderView[] }
+  /** `--cases FILE`: the file's views, each over `defaults` (the command line's other options). */
+  | { readonly kind: 'casesFile'; readonly path: string; readonly defaults: RawView };
+
+/** A view's fields as given: text from the command line, JSON values from a cases file. */
+type RawView = ReadonlyMap<string, unknown>;
+
+/**
+ * What the render command's arguments ask for, every value checked: a ParameterError naming the
+ * first bad option and what it accepts. The view's options are the schema's rows, read as the URL reads them.
+ */
+export function parseRenderCommandLine(argv: readonly string[]): RenderCommand {
+  const options = Object.fromEntries<{ type: 'string' | 'boolean' }>(
+    [...VIEW_FIELDS, ...COMMAND_ONLY].map((name) => [name, { type: name === 'plots' || name === 'help' ? 'boolean' : 'string' }]),
+  );
+  const { tokens } = parseArgs({ args: [...argv], options, strict: false, allowPositionals: true, tokens: true });
+  const given = new Map<string, unknown>();
+  for (const token of tokens) {
+    if (token.kind !== 'option') {
+      rejectValue('argument', token.kind === 'positional' ? token.value : '--', 'only options, each --name value (see --help)');
+    }
+    const flag = `--${token.name}`;
+    if (!(token.name in options)) {
+      const all = Object.keys(options).map((name) => `--${name}`);
+      throw new ParameterError(token.rawName, `${describeValue(token.rawName)}: unknown option; expected one of ${all.join(', ')}`);
+    }
+    if (given.has(token.name)) throw new ParameterError(flag, `${flag}: given more than once; expected it at most once`);
+    const isSwitch = options[token.name]!.type === 'boolean';
+    if (isSwitch && token.value !== undefined) rejectValue(flag, token.value, 'no value');
+    // A value option with nothing after it reads as an empty value, which every check refuses.
+    given.set(token.name, isSwitch ? true : (token.value ?? ''));
+  }
+  if (given.has('help')) return { kind: 'help' };
+  const flagName = (name: string) => `--${name}`;
+  if (given.has('cases')) {
+    const { cases: path, ...rest } = Object.fromEntries(given) as { cases: string };
+    if (given.has('out')) throw new ParameterError('--out', '--out: not allowed with --cases (each view in the file names its own out)');
+    if (path === '') return rejectValue('--cases', path, 'the path of a JSON file');
+    const defaults = new Map(Object.entries(rest));
+    readView(defaults, flagName, false); // the options every view shares are checked before the file is read
+    return { kind: 'casesFile', path, defaults };
+  }
+  return { kind: 'views', views: [readView(given, flagName, true)] };
+}
+
+/**
+ * The views of a `--cases` file: a JSON array of objects `{ "out", ...fields }` with the fields of
+ * VIEW_FIELDS, each over `defaults`; every view is checked before any is rendered, and two may
+ * not write the same file. The first bad one throws a ParameterError naming the case's index and the field.
+ */
+export function parseRenderCases(text: string, fileName: string, defaults: RawView): RenderView[] {
+  const outs = new Map<string, number>();
+  return parseJsonArray(text, fileName, 'views').map((entry, index) => {
+    try {
+      if (typeof entry !== 'object' || entry === null || Array.isArray(entry)) {
+        return rejectValue('case', entry, `an object { "out", ... } with some of the fields ${VIEW_FIELDS.join(', ')}`);
+      }
+      const fields = new Map(Object.entries(entry));
+      const unknown = [...fields.keys()].find((name) => !VIEW_FIELDS.includes(name));
+      if (unknown !== undefined) {
+        throw new ParameterError(unknown, `${describeValue(unknown)}: unknown field; expected one of ${VIEW_FIELDS.join(', ')}`);
+      }
+      // A field is named as the case writes it, or as the command line does where the value came from there.
+      const field = (name: string) => (!fields.has(name) && defaults.has(name) ? `--${name}` : name);
+      const view = readView(new Map([...defaults, ...fields]), field, true);
+      const earlier = outs.get(view.out);
+      if (earlier !== undefined) rejectValue('out', view.out, `a file no other view writes (case at index ${earlier} does)`);
+      outs.set(view.out, index);
+      return view;
+    } catch (error) {
+      if (!(error instanceof ParameterError)) throw error;
+      throw new ParameterError(error.parameter, `case at index ${index}: ${error.message}`);
+    }
+  });
+}
+
+/** A view from its fields (`field` names one in messages), checked; `needsOut`: a missing out is refused. */
+function readView(fields: RawView, field: (name: string) => string, needsOut: true): RenderView;
+function readView(fields: RawView, field: (name: string) => string, needsOut: false): null;
+function readView(fields: RawView, field: (name: string) => string, needsOut: boolean): RenderView | null {
+  let settings: ViewSettings = DEFAULT_VIEW_SETTINGS;
+  for (const row of VIEW_PARAMETERS) {
+    if (!fields.has(row.url)) continue;
+    const value = fields.get(row.url);
+    const raw = typeof value === 'string' ? value : typeof value === 'number' ? String(value) : null;
+    const reading = raw === null ? null : readParameter(row, raw);
+    if (reading === null || !('read' in reading)) {
+      return rejectValue(field(row.url), value, reading?.expected ?? `${row.expected}, as a string or a number`);
+    }
+    settings = { ...settings, ...reading.read };
+  }
+  const [widthPx, heightPx, scale] = PICTURE_NUMBERS.map((name) => pictureNumber(name, fields.get(name), field(name)));
+  const plots = fields.get('plots') ?? false;
+  if (typeof plots !== 'boolean') rejectValue(field('plots'), plots, expectedOf('plots'));
+  const out = fields.get('out');
+  if (out === undefined && !needsOut) return null;
+  if (typeof out !== 'string' || out === '') return rejectValue(field('out'), out, expectedOf('out'));
+  return { out, widthPx: widthPx!, heightPx: heightPx!, scale: scale!, plots, query: settingsToQuery(settings) };
+}
+
+function pictureNumber(name: PictureNumber, value: unknown, field: string): number {
+  const option = PICTURE_OPTIONS[name];
+  if (value === undefined) return option.fallback;
+  const v = typeof value === 'string' ? parseDecimal(value) : value;
+  return isInDomain(v, option) && (!option.whole || Number.isInteger(v)) ? v : rejectValue(field, value, expectedPictureNumber(name));
+}

@@ -1,0 +1,42 @@
+import { VIEW_PARAMETERS } from '../app/viewParameters.ts';
+import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
+import { PICTURE_OPTIONS, VIEW_FIELDS, expectedOf } from './renderOptions.ts';
+import { optionLines } from './usage.ts';
+
+/** The view's options, one per schema row: the URL parameter's name, label, range and default. */
+const viewLines = optionLines(VIEW_PARAMETERS.map((row) => ({ flag: row.url, ...row })));
+const pictureLines = optionLines(
+  Object.entries(PICTURE_OPTIONS).map(([name, o]) => ({
+    flag: name,
+    label: name,
+    expected: expectedOf(name),
+    defaultText: String(o.fallback),
+  })),
+);
+
+/** The fields of a view that are the picture's, not the schema's. */
+const PICTURE_FIELDS = VIEW_FIELDS.filter((name) => !VIEW_PARAMETERS.some((row) => row.url === name)).join(', ');
+
+/** `--help`: how to call the render command. */
+export const RENDER_USAGE = `A picture of the demo (the bubble as index.html shows it) as a PNG, rendered in headless Chromium.
+
+Usage: npm run --silent render -- [view options] --out FILE.png [--width W --height H] [--scale S] [--plots]
+
+View options: the demo's URL parameters (same names, ranges and defaults):
+${viewLines}
+
+The picture:
+  --out FILE.png        the file to write (replaced atomically)
+${pictureLines}
+  --plots               draw the plots at the probe (the lil-gui panel is never drawn)
+
+Many views, one browser:
+  --cases FILE.json     a JSON array (at most ${MAX_CASES}) of objects { "out", ... } with some of the
+                        fields ${PICTURE_FIELDS} and the view options' names (values as
+                        in the URL, as JSON numbers or text; plots true or false). The other options
+                        given apply to every view. Nested at most ${MAX_CASES_NESTING_DEPTH} levels deep.
+
+Output: one JSON line per view, in input order: { out, width, height, ms } (the PNG's pixels; ms to render and write it).
+Bad input: exit status 2, one line on stderr naming the option, nothing written.
+No Chromium: exit status 3, one line on how to get one. A failed render: exit status 1.
+`;

@@ -1,0 +1,18 @@
+import { type IlluminantSpec, illuminantText } from '../physics/illuminants.ts';
+
+/** What a download is named after: the probed film and its light. */
+export interface ProbedView {
+  readonly thicknessNm: number;
+  readonly angleDeg: number;
+  readonly illuminant: IlluminantSpec;
+}
+
+/**
+ * A download's file name, after the view: `film-550nm-D65-30deg-spectrum.png` (thickness and
+ * angle rounded to whole nm and degrees; a daylight CCT written `6500K`). Only digits, letters,
+ * `-` and `.`: every part is a number or a schema-checked name.
+ */
+export function downloadName(view: ProbedView, what: string, extension: string): string {
+  const light = typeof view.illuminant === 'object' ? `${illuminantText(view.illuminant)}K` : illuminantText(view.illuminant);
+  return `film-${Math.round(view.thicknessNm)}nm-${light}-${Math.round(view.angleDeg)}deg-${what}.${extension}`;
+}

@@ -1,0 +1,154 @@
+/**
+ * The render command's options (src/cli/renderOptions.ts). The view's options must be the URL's
+ * parameters with the URL's refusals, so the URL parser (src/app/settingsQuery.ts) is the
+ * reference: every schema row, given the same texts, accepts and refuses exactly what the URL does.
+ */
+import { describe, expect, it } from 'vitest';
+import { parseSettings, settingsToQuery } from '../../src/app/settingsQuery.ts';
+import { VIEW_PARAMETERS } from '../../src/app/viewParameters.ts';
+import { PICTURE_OPTIONS, type RenderView, parseRenderCases, parseRenderCommandLine } from '../../src/cli/renderOptions.ts';
+import { ParameterError } from '../../src/physics/validate.ts';
+import { NOT_NUMBERS, outsideRange } from './fixtures/badValues.ts';
+
+/** Texts of every kind the schema's rows take, and some no row takes. */
+const CANDIDATES = [
+  ...NOT_NUMBERS,
+  ...outsideRange(0, 1),
+  ...['0', '1', '0.5', '2', '550', '1e3', '30000', 'D93', 'D65-table', '6500', '3999', 'uniform', 'front', 'none', 'paper', 's'],
+  ...['0.2,0.7', '2,0', '0.5', 'x'.repeat(65), '0.50000000000000000000000000000000000000000000000000000000000001'],
+];
+
+/** The command's verdict on one option: the view's URL query, or the error's message. */
+function verdict(...args: string[]): { query: string } | { error: string } {
+  try {
+    const command = parseRenderCommandLine([...args, '--out', 'x.png']);
+    if (command.kind !== 'views') throw new Error(`expected one view, got ${command.kind}`);
+    return { query: command.views[0]!.query };
+  } catch (error) {
+    if (!(error instanceof ParameterError)) throw error;
+    return { error: error.message };
+  }
+}
+
+describe('render options: the URL parameters', () => {
+  for (const row of VIEW_PARAMETERS) {
+    it(`--${row.url} takes and refuses what ?${row.url}= does`, () => {
+      for (const text of [row.defaultText, ...CANDIDATES]) {
+        const url = parseSettings(new URLSearchParams([[row.url, text]]).toString());
+        const got = verdict(`--${row.url}`, text);
+        if (url.errors.length === 0) expect(got, `--${row.url} ${text.slice(0, 40)}`).toEqual({ query: settingsToQuery(url.settings) });
+        else {
+          expect(got, `--${row.url} ${text.slice(0, 40)}`).toHaveProperty('error');
+          const { error } = got as { error: string };
+          // One line naming the option and what it accepts (the URL's own words for the range).
+          expect(error.startsWith(`--${row.url}: `)).toBe(true);
+          expect(error).toContain(row.expected);
+          expect(error).not.toMatch(/[\r\n]/);
+        }
+      }
+    });
+  }
+
+  it('leaves every default out of the query, so no options is the default view', () => {
+    expect(verdict()).toEqual({ query: '' });
+    expect(verdict(...VIEW_PARAMETERS.flatMap((row) => [`--${row.url}`, row.defaultText]))).toEqual({ query: '' });
+  });
+});
+
+describe('render options: the picture', () => {
+  it('defaults to a 640 × 480 window at scale 1 without plots', () => {
+    const command = parseRenderCommandLine(['--out', 'a.png']);
+    expect(command).toEqual({
+      kind: 'views',
+      views: [{ out: 'a.png', widthPx: 640, heightPx: 480, scale: 1, plots: false, query: '' } satisfies RenderView],
+    });
+  });
+
+  it('reads --width, --height, --scale and --plots', () => {
+    const command = parseRenderCommandLine(['--out', 'a.png', '--width', '16', '--height', '4096', '--scale', '1.5', '--plots']);
+    expect(command.kind === 'views' && command.views[0]).toMatchObject({ widthPx: 16, heightPx: 4096, scale: 1.5, plots: true });
+  });
+
+  const refusals: [string[], string][] = [
+    [['--width', '15'], '--width: "15" is not allowed; expected a whole number in [16, 4096] CSS px'],
+    [['--width', '4097'], '--width: "4097" is not allowed; expected a whole number in [16, 4096] CSS px'],
+    [['--height', '100.5'], '--height: "100.5" is not allowed; expected a whole number in [16, 4096] CSS px'],
+    [['--scale', '2.01'], '--scale: "2.01" is not allowed; expected a number in [1, 2]'],
+    [['--scale', 'NaN'], '--scale: "NaN" is not allowed; expected a number in [1, 2]'],
+    [['--plots=1'], '--plots: "1" is not allowed; expected no value'],
+    [['--bogus', '1'], '"--bogus": unknown option; expected one of --out, --width'],
+    [['--thickness', '1', '--thickness', '2'], '--thickness: given more than once; expected it at most once'],
+    [['stray'], 'argument: "stray" is not allowed; expected only options'],
+  ];
+  for (const [args, message] of refusals) {
+    it(`refuses ${args.join(' ')}`, () => {
+      expect(() => parseRenderCommandLine([...args, '--out', 'a.png'])).toThrow(message);
+    });
+  }
+
+  it('refuses a missing or empty --out', () => {
+    expect(() => parseRenderCommandLine([])).toThrow('--out: no value is not allowed; expected the path of the PNG file to write');
+    expect(() => parseRenderCommandLine(['--out', ''])).toThrow('--out: "" is not allowed; expected the path of the PNG file to write');
+  });
+
+  it('the picture options are not view parameters', () => {
+    const urls = VIEW_PARAMETERS.map((row) => row.url);
+    for (const name of ['out', 'plots', 'cases', 'help', ...Object.keys(PICTURE_OPTIONS)]) expect(urls).not.toContain(name);
+  });
+});
+
+describe('render options: --cases', () => {
+  const defaults = (...args: string[]) => {
+    const command = parseRenderCommandLine(['--cases', 'views.json', ...args]);
+    if (command.kind !== 'casesFile') throw new Error(`expected a cases file, got ${command.kind}`);
+    return command.defaults;
+  };
+  const cases = (views: unknown, ...args: string[]) => parseRenderCases(JSON.stringify(views), 'views.json', defaults(...args));
+
+  it('reads each view over the command line options, in order', () => {
+    const views = cases(
+      [
+        { out: 'a.png', thickness: 450, field: 'uniform', animate: 0 },
+        { out: 'b.png', illuminant: 'D93', width: 320, plots: true, probe: '0.25,0.5' },
+      ],
+      '--width',
+      '200',
+      '--env',
+      'none',
+    );
+    expect(views).toEqual([
+      { out: 'a.png', widthPx: 200, heightPx: 480, scale: 1, plots: false, query: 'field=uniform&thickness=450&env=none&animate=0' },
+      { out: 'b.png', widthPx: 320, heightPx: 480, scale: 1, plots: true, query: 'illuminant=D93&env=none&probe=0.25%2C0.5' },
+    ]);
+  });
+
+  const refusals: [unknown, string][] = [
+    [
+      [{ out: 'a.png' }, { out: 'b.png', thickness: 30000 }],
+      'case at index 1: thickness: 30000 is not allowed; expected a number in [0, 20000] nm',
+    ],
+    [[{ out: 'a.png', animate: true }], 'case at index 0: animate: true is not allowed; expected 0 or 1, as a string or a number'],
+    [[{ out: 'a.png', plots: 1 }], 'case at index 0: plots: 1 is not allowed; expected true or false'],
+    [[{ thickness: 400 }], 'case at index 0: out: no value is not allowed; expected the path of the PNG file to write'],
+    [
+      [{ out: 'a.png', colour: 'red' }],
+      'case at index 0: "colour": unknown field; expected one of out, width, height, scale, plots, field',
+    ],
+    [
+      [{ out: 'a.png' }, { out: 'a.png' }],
+      'case at index 1: out: "a.png" is not allowed; expected a file no other view writes (case at index 0 does)',
+    ],
+    [['a.png'], 'case at index 0: case: "a.png" is not allowed; expected an object { "out", ... }'],
+    [{ out: 'a.png' }, '--cases: {"out":"a.png"} is not allowed; expected a JSON array of views'],
+  ];
+  for (const [views, message] of refusals) {
+    it(`refuses ${JSON.stringify(views)}`, () => {
+      expect(() => cases(views)).toThrow(message);
+    });
+  }
+
+  it('refuses --out beside --cases, and checks the shared options before the file is read', () => {
+    expect(() => parseRenderCommandLine(['--cases', 'v.json', '--out', 'a.png'])).toThrow('--out: not allowed with --cases');
+    expect(() => parseRenderCommandLine(['--cases', 'v.json', '--mode', 'fast'])).toThrow('--mode: "fast" is not allowed');
+  });
+});
