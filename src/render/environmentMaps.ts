@@ -53,6 +53,9 @@ export function loadEnvironmentPixels(name: HdrEnvironment): Promise<Environment
     load = SOURCES[name]().then((module) => {
       const exr = new EXRLoader().setDataType(FloatType).parse(dataUrlBytes(module.default));
       if (!(exr.data instanceof Float32Array) || exr.format !== RGBAFormat) throw new Error(`${name}: not an RGBA float EXR`);
+      // The maps ring around the sun and lamps (negative texels, down to −1876 in park): radiance is
+      // never negative, so those are clipped to 0 (a negative sun would draw black through AgX).
+      for (let i = 0; i < exr.data.length; i++) if (exr.data[i]! < 0) exr.data[i] = 0;
       const pixels = { width: exr.width ?? 0, height: exr.height ?? 0, rgba: exr.data };
       loaded.set(name, pixels);
       return pixels;
