@@ -6,6 +6,8 @@ import type { ParityGroup } from '../../src/render/parityCase.ts';
 export interface BenchRowSpec {
   /** `bubble`: the demo's view with these settings; `textured`: the same scene with a plain textured sphere instead */
   readonly kind: 'bubble' | 'textured';
+  /** false: the walls reflect the light's white whatever the environment (the model before environment reflections), to time what they add */
+  readonly reflections: boolean;
   readonly settings: FilmSettings;
   readonly quality: FilmQuality;
   /** [width, height] of each frame-time column */

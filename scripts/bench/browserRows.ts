@@ -19,6 +19,7 @@ export async function runRow(browser: Browser, baseUrl: string, row: BenchRow, g
     await page.waitForSelector('body[data-ready="yes"]');
     return await page.evaluate((spec) => window.benchRow!(spec), {
       kind: row.kind,
+      reflections: row.reflections ?? true,
       settings: row.settings,
       quality: row.quality,
       sizes: SIZES,

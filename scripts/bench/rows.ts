@@ -12,6 +12,8 @@ import type { FilmTableLayout } from '../../src/render/filmTableLayout.ts';
 export interface BenchRow {
   readonly name: string;
   readonly kind: 'bubble' | 'textured';
+  /** false: the walls reflect the light's white (BenchRowSpec) */
+  readonly reflections?: false;
   readonly settings: FilmSettings;
   readonly quality: FilmQuality;
   /** whether the error columns apply (the film colour is ours or the peer's) */
@@ -88,6 +90,10 @@ export const ROWS: readonly BenchRow[] = [
   sceneStep('default table, front wall only', { sides: 'front' }),
   // What the environment costs: none reflects the light's white and draws no background; the
   // default sky; each HDR map (three lookups a fragment, AgX).
+  {
+    ...sceneStep("default table, walls reflecting the light's white, sky behind (before: no environment reflections)", {}),
+    reflections: false,
+  },
   sceneStep('default table, env=none (no environment to reflect or show)', { env: 'none' }),
   ...HDR_ENVIRONMENTS.map((env) => sceneStep(`default table, env=${env} (HDR map reflected on both walls, AgX)`, { env })),
 ];

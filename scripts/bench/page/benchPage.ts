@@ -33,6 +33,14 @@ window.benchRow = async (spec: BenchRowSpec) => {
   // An HDR environment is fetched first, so the view shows it from its first frame.
   if (isHdrEnvironment(spec.settings.env)) await loadEnvironmentPixels(spec.settings.env);
   const view = new BubbleView(createBubbleRenderer(canvas), spec.settings, spec.quality);
+  if (!spec.reflections) {
+    // The model before environment reflections: reflectedRadiance (shaders/environment.glsl) returns the light's white.
+    const m = view.bubble.material;
+    m.onBeforeCompile = (shader) => {
+      shader.fragmentShader = shader.fragmentShader.replace(/vec3 reflectedRadiance\(vec3 direction\) \{/, '$&\n  return vec3(1.0);');
+    };
+    m.customProgramCacheKey = () => 'walls reflect white';
+  }
   if (spec.kind === 'textured') {
     view.bubble.visible = false;
     view.scene.add(new Mesh(view.bubble.geometry, new MeshBasicMaterial({ map: checkerTexture() })));
