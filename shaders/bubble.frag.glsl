@@ -30,16 +30,14 @@ void main() {
   gl_FragColor = vec4(nearXyz, nearThicknessNm);
   return;
 #endif
-  // A film colour outside the gamut has negative components: as a reflectance they would turn a
-  // bright light (the sun) into negative light, so they weight nothing (the output clips them anyway).
-  vec3 nearR = max(applyMatrix3(uXyzToLinearWorking, nearXyz), 0.0);
+  vec3 nearR = applyMatrix3(uXyzToLinearWorking, nearXyz);
   vec3 behind = environmentRadiance(-toEye);
   vec3 nearLight = reflectedRadiance(reflect(-toEye, normal));
 #if TFC_SIDES == 2
   // The chord through a unit sphere at incidence θ has length 2 cos θ; the exit point's film is
   // met at the same θ from inside. (Object space = world space up to the sphere's scale.)
   vec3 farPoint = normalize(vSpherePoint - 2.0 * cosIncidence * toEye);
-  vec3 farR = max(applyMatrix3(uXyzToLinearWorking, filmXyz(thicknessAt(farPoint), cosIncidence, true)), 0.0);
+  vec3 farR = applyMatrix3(uXyzToLinearWorking, filmXyz(thicknessAt(farPoint), cosIncidence, true));
   // Seen from inside, the far wall's normal points inward (-farPoint); reflect() is sign-blind.
   behind = farR * reflectedRadiance(reflect(-toEye, farPoint)) + clamp(1.0 - farR, 0.0, 1.0) * behind;
 #endif

@@ -101,7 +101,14 @@ export class BubbleView {
     if (isHdrEnvironment(s.env) && !map && !this.failedEnvironments.has(s.env)) this.load(s.env);
     // Until an HDR map arrives (or if it failed), the procedural sky stands in.
     const shown = isHdrEnvironment(s.env) && !map ? { ...s, env: 'sky' as const } : s;
-    this.toneMapping = TONE_MAPPINGS[toneMappingOf(shown)];
+    const toneMapping = TONE_MAPPINGS[toneMappingOf(shown)];
+    if (toneMapping !== this.toneMapping) {
+      // three keeps a program per tone mapping a material was drawn with, until the material is
+      // disposed: dispose both (set up anew on their next draw), so switching holds one program each.
+      this.bubble.material.dispose();
+      this.background.material.dispose();
+      this.toneMapping = toneMapping;
+    }
     this.background.visible = shown.env !== 'none';
     updateBackgroundMaterial(this.background.material, shown, map);
     updateBubbleUniforms(this.bubble.material, shown, this.quality, s.mode === 'table' ? this.table : null, this.displayIsP3, map);

@@ -33,7 +33,6 @@ const normalize = (a: Vec3): Vec3 => {
   return [a[0] / l, a[1] / l, a[2] / l];
 };
 const clamp01 = (v: number) => Math.min(1, Math.max(0, v));
-const nonNegative = (c: Rgb): Rgb => [Math.max(0, c[0]), Math.max(0, c[1]), Math.max(0, c[2])];
 
 /** GLSL's reflect(): d mirrored in the plane of the unit normal n. */
 const reflect = (d: Vec3, n: Vec3): Vec3 => {
@@ -126,14 +125,13 @@ export function cpuBubbleImage(
 function bubbleRadiance(s: FilmSettings, env: ShownEnvironment, film: FilmColor, eye: Vec3, dir: Vec3, t: number): Rgb {
   const p = normalize([eye[0] + t * dir[0], eye[1] + t * dir[1], eye[2] + t * dir[2]]);
   const cos = clamp01(Math.abs(dot(p, dir)));
-  // Out-of-gamut (negative) components weight no light, as in the shader.
-  const nearR = nonNegative(film(thicknessAt(p, s), cos, false));
+  const nearR = film(thicknessAt(p, s), cos, false);
   let behind = environmentRadiance(dir, env);
   const nearLight = reflectedRadiance(reflect(dir, p), env);
   if (s.sides === 'both') {
     // The chord through a unit sphere at incidence θ has length 2 cos θ (toEye = −dir).
     const far = normalize([p[0] + 2 * cos * dir[0], p[1] + 2 * cos * dir[1], p[2] + 2 * cos * dir[2]]);
-    const farR = nonNegative(film(thicknessAt(far, s), cos, true));
+    const farR = film(thicknessAt(far, s), cos, true);
     const farLight = reflectedRadiance(reflect(dir, far), env);
     behind = [0, 1, 2].map((i) => farR[i]! * farLight[i]! + clamp01(1 - farR[i]!) * behind[i]!) as unknown as Rgb;
   }

@@ -75,11 +75,10 @@ for (const c of CASES) {
         const p = [t * d[0], t * d[1], CAMERA_DISTANCE + t * d[2]] as [number, number, number];
         const cos = -(p[0] * d[0] + p[1] * d[1] + p[2] * d[2]);
         const mirror = p.map((n, k) => d[k]! + 2 * cos * n) as [number, number, number];
-        // The film colour as a reflectance: out-of-gamut (negative) components weigh no light.
         const R = applyMatrix3(
           XYZ_TO_LINEAR_SRGB,
           filmXyz({ ...SOAP_FILM_IN_AIR, thicknessNm: THICKNESS_NM, angleDeg: (Math.acos(cos) * 180) / Math.PI }, { illuminant: 'D65' }),
-        ).map((v) => Math.max(0, v));
+        );
         const reflected = environmentRadiance(mirror, env);
         const behind = environmentRadiance(d, env);
         expected = shown([0, 1, 2].map((k) => R[k]! * reflected[k]! + Math.min(1, Math.max(0, 1 - R[k]!)) * behind[k]!) as unknown as Rgb);
