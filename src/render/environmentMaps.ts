@@ -66,9 +66,6 @@ export function loadEnvironmentPixels(name: HdrEnvironment): Promise<Environment
   return load;
 }
 
-/** The environment's pixels if they have arrived (loadEnvironmentPixels), else null. */
-export const loadedEnvironmentPixels = (name: HdrEnvironment): EnvironmentPixels | null => loaded.get(name) ?? null;
-
 /** Half floats: filterable on every WebGL2 GPU (float32 needs OES_texture_float_linear). */
 const textures = new SharedTextures((key) => {
   const pixels = loaded.get(key as HdrEnvironment);

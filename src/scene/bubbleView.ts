@@ -52,6 +52,8 @@ export class BubbleView {
   readonly table: FilmTable;
   readonly bubble: Mesh<SphereGeometry, ShaderMaterial>;
   private readonly background: Mesh<SphereGeometry, ShaderMaterial>;
+  /** HDR environments this view is fetching (one request each, however many frames ask meanwhile). */
+  private readonly loadingEnvironments = new Set<HdrEnvironment>();
   /** HDR environments that failed to load in this view, with why (`sky` is shown instead). */
   private readonly failedEnvironments = new Map<HdrEnvironment, string>();
   /** The tone mapping of the environment shown (`auto`: none for the sky standing in for an HDR map). */
@@ -98,7 +100,7 @@ export class BubbleView {
     if (wantP3 && !this.displayIsP3) this.renderer.outputColorSpace = SRGBColorSpace;
     const map = isHdrEnvironment(s.env) ? environmentTexture(s.env, this) : null;
     if (!map) releaseEnvironmentTexture(this);
-    if (isHdrEnvironment(s.env) && !map && !this.failedEnvironments.has(s.env)) this.load(s.env);
+    if (isHdrEnvironment(s.env) && !map && !this.failedEnvironments.has(s.env) && !this.loadingEnvironments.has(s.env)) this.load(s.env);
     // Until an HDR map arrives (or if it failed), the procedural sky stands in.
     const shown = isHdrEnvironment(s.env) && !map ? { ...s, env: 'sky' as const } : s;
     const toneMapping = TONE_MAPPINGS[toneMappingOf(shown)];
@@ -116,6 +118,7 @@ export class BubbleView {
 
   /** Fetches an HDR environment; when it arrives (or fails) the view shows it (or says why not). */
   private load(env: HdrEnvironment): void {
+    this.loadingEnvironments.add(env);
     loadEnvironmentPixels(env).then(
       () => this.environmentArrived(env),
       (error: unknown) => {
@@ -126,6 +129,7 @@ export class BubbleView {
   }
 
   private environmentArrived(env: HdrEnvironment): void {
+    this.loadingEnvironments.delete(env);
     if (this.disposed || this.settings.env !== env) return;
     this.apply(this.settings);
     this.onEnvironmentChange?.();
@@ -175,7 +179,7 @@ export class BubbleView {
     if (drawn.x !== width || drawn.y !== height) r.setSize(width, height, false);
     if (this.contextLost) return;
     this.syncTable(quick);
-    // Per frame, as views may share the renderer: three compiles a program per tone mapping once.
+    // Per frame, as views may share the renderer (each view's materials are compiled for its own).
     r.toneMapping = this.toneMapping;
     r.render(this.scene, this.camera);
   }
@@ -186,9 +190,9 @@ export class BubbleView {
     return this.filmProbe.read(this.renderer, this.camera, this.bubble, this.size, fx, fy);
   }
 
-  /** Frees this view's GPU resources (not the renderer, which may be shared). */
   private disposed = false;
 
+  /** Frees this view's GPU resources (not the renderer, which may be shared). */
   dispose(): void {
     this.disposed = true;
     releaseEnvironmentTexture(this);
