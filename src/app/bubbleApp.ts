@@ -3,6 +3,7 @@ import type { WebGLRenderer } from 'three';
 import { PlotPanel } from '../plots/plotPanel.ts';
 import type { BubbleView } from '../scene/bubbleView.ts';
 import { createControlPanel } from './controlPanel.ts';
+import { environmentStatusText } from './environmentStatusText.ts';
 import { startsClosed } from './startsClosed.ts';
 import type { AppSettings, ViewSettings } from './viewParameters.ts';
 
@@ -185,10 +186,7 @@ export class BubbleApp {
       return;
     }
     line.dataset.state = status.state;
-    line.textContent =
-      status.state === 'loading'
-        ? `Loading the environment ${status.env}…`
-        : `The environment ${status.env} could not be loaded (${status.reason}): showing the sky instead.`;
+    line.textContent = environmentStatusText(status);
     if (line.parentElement !== this.parts.messages) this.parts.messages.append(line);
   }
 

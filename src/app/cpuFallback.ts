@@ -1,6 +1,7 @@
 import { type EnvironmentPixels, loadEnvironmentPixels } from '../render/environmentMaps.ts';
 import { type FilmSettings, isHdrEnvironment } from '../render/filmSettings.ts';
 import { cpuBubbleImage } from '../scene/cpuBubbleImage.ts';
+import { environmentStatusText } from './environmentStatusText.ts';
 
 /** The still image's size in pixels (square; shown scaled to fit). */
 export const FALLBACK_IMAGE_PX = 240;
@@ -19,14 +20,13 @@ export function hasWebGL2(): boolean {
 
 /** The settings and HDR map a still image shows: an HDR environment that fails to load gives way to the sky, and says so. */
 async function withEnvironment(settings: FilmSettings, say: (text: string) => void): Promise<[FilmSettings, EnvironmentPixels | null]> {
-  if (!isHdrEnvironment(settings.env)) return [settings, null];
-  say(`Loading the environment ${settings.env}…`);
+  const env = settings.env;
+  if (!isHdrEnvironment(env)) return [settings, null];
+  say(environmentStatusText({ state: 'loading', env }));
   try {
-    return [settings, await loadEnvironmentPixels(settings.env)];
+    return [settings, await loadEnvironmentPixels(env)];
   } catch (error) {
-    say(
-      `The environment ${settings.env} could not be loaded (${error instanceof Error ? error.message : String(error)}): showing the sky instead.`,
-    );
+    say(environmentStatusText({ state: 'failed', env, reason: error instanceof Error ? error.message : String(error) }));
     return [{ ...settings, env: 'sky' }, null];
   }
 }
