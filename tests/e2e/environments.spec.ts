@@ -1,6 +1,7 @@
 import { expect, test, type Page, type Route } from '@playwright/test';
 import { HDR_ENVIRONMENTS } from '../../src/render/filmSettings.ts';
 import { watchProblems } from './pageWatch.ts';
+import { gpuObjects, loseContext, restoreContext } from './webglContext.ts';
 
 /**
  * The HDR environments as a page meets them: each arrives (its own module, fetched when first
@@ -70,26 +71,12 @@ test('every HDR environment loads without a console error and draws a bubble tha
   }
 
   const before = await frame(page);
-  const gpuObjects = () =>
-    page.evaluate(() => {
-      const { info } = (window as unknown as Window_).bubbleView.renderer;
-      return { textures: info.memory.textures, programs: info.programs?.length ?? 0 };
-    });
-  const objects = await gpuObjects();
-  await page.evaluate(async () => {
-    const canvas = (window as unknown as Window_).bubbleView.renderer.domElement;
-    const extension = canvas.getContext('webgl2')!.getExtension('WEBGL_lose_context')!;
-    const lost = new Promise((resolve) => canvas.addEventListener('webglcontextlost', resolve, { once: true }));
-    // A lost context gives no extensions: keep this one to restore it with.
-    Object.assign(window, { loseContextExtension: extension });
-    extension.loseContext();
-    await lost;
-    document.body.dataset.frames = 'lost';
-  });
-  await page.evaluate(() => (window as unknown as { loseContextExtension: WEBGL_lose_context }).loseContextExtension.restoreContext());
+  const objects = await gpuObjects(page);
+  await loseContext(page);
+  await restoreContext(page);
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
   expect((await frame(page)).pixels).toEqual(before.pixels);
-  expect(await gpuObjects()).toEqual(objects);
+  expect(await gpuObjects(page)).toEqual(objects);
   expect(problems).toEqual([]);
 });
 
