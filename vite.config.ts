@@ -1,8 +1,12 @@
-import { defineConfig, type Plugin } from 'vite';
+import { defineConfig, type Plugin, type UserConfig } from 'vite';
 
 /** Where pages (the teaching page in public/, embedding pages) load the element from. */
 const ELEMENT_URL = '/thin-film-bubble.js';
 const ELEMENT_ENTRY = 'src/element/index.ts';
+/** The site's pages (public/ is copied as it is). */
+const SITE_PAGES = ['index.html'];
+/** The browser tests' own pages, built only into the tests' site (`--mode e2e`, dist-e2e/). */
+const TEST_PAGES = ['tests/e2e/harness/parity.html'];
 
 /** In development, the element's URL serves its source, so public/ pages work unbuilt. */
 const elementInDevelopment = (): Plugin => ({
@@ -15,32 +19,37 @@ const elementInDevelopment = (): Plugin => ({
   },
 });
 
+/** The demo site: its pages (and, for the browser tests, theirs) into `outDir`. */
+const site = (pages: readonly string[], outDir: string): UserConfig => ({
+  plugins: [elementInDevelopment()],
+  server: { port: 5173, strictPort: true },
+  // The HDR environments' modules (plain ES modules of one string each) are served as they
+  // are: pre-bundling them would only risk a reload when a page first imports one.
+  optimizeDeps: { exclude: ['@pmndrs/assets'] },
+  preview: { port: 4173, strictPort: true },
+  // three.js's renderer is most of the ~660 kB (~180 kB gzipped); it is imported piecemeal and tree-shaken.
+  build: { outDir, chunkSizeWarningLimit: 800, rolldownOptions: { input: [...pages] } },
+});
+
 // GLSL files are imported as text with Vite's `?raw` suffix; no plugin is needed.
 // `vite build` makes the demo site; `vite build --mode element` adds the standalone element
-// module (three.js included) to the same dist/ as thin-film-bubble.js.
-export default defineConfig(({ mode }) =>
-  mode === 'element'
-    ? {
-        publicDir: false,
-        build: {
-          emptyOutDir: false,
-          chunkSizeWarningLimit: 800,
-          // An app build with one entry, not library mode: library mode leaves ES output unminified.
-          rolldownOptions: {
-            input: ELEMENT_ENTRY,
-            preserveEntrySignatures: 'exports-only',
-            output: { entryFileNames: ELEMENT_URL.slice(1) },
-          },
-        },
-      }
-    : {
-        plugins: [elementInDevelopment()],
-        server: { port: 5173, strictPort: true },
-        // The HDR environments' modules (plain ES modules of one string each) are served as they
-        // are: pre-bundling them would only risk a reload when a page first imports one.
-        optimizeDeps: { exclude: ['@pmndrs/assets'] },
-        preview: { port: 4173, strictPort: true },
-        // three.js's renderer is most of the ~660 kB (~180 kB gzipped); it is imported piecemeal and tree-shaken.
-        build: { chunkSizeWarningLimit: 800 },
+// module (three.js included) to the same dist/ as thin-film-bubble.js (`--outDir` for another).
+// `vite build --mode e2e` makes the site with the tests' pages in dist-e2e/, which the browser
+// tests are served from (`vite preview --mode e2e`).
+export default defineConfig(({ mode }) => {
+  if (mode === 'e2e') return site([...SITE_PAGES, ...TEST_PAGES], 'dist-e2e');
+  if (mode !== 'element') return site(SITE_PAGES, 'dist');
+  return {
+    publicDir: false,
+    build: {
+      emptyOutDir: false,
+      chunkSizeWarningLimit: 800,
+      // An app build with one entry, not library mode: library mode leaves ES output unminified.
+      rolldownOptions: {
+        input: ELEMENT_ENTRY,
+        preserveEntrySignatures: 'exports-only',
+        output: { entryFileNames: ELEMENT_URL.slice(1) },
       },
-);
+    },
+  };
+});
