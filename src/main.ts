@@ -1,6 +1,7 @@
 import { BubbleApp } from './app/bubbleApp.ts';
 import { hasWebGL2, showCpuFallback } from './app/cpuFallback.ts';
 import { parseSettings, settingsToQuery } from './app/settingsQuery.ts';
+import { FRAME_MARKS } from './app/frameMarks.ts';
 import { startsClosed } from './app/startsClosed.ts';
 import type { ViewSettings } from './app/viewParameters.ts';
 import { BubbleView, createBubbleRenderer } from './scene/bubbleView.ts';
@@ -44,12 +45,14 @@ function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: 
       messages,
       onChange: followInUrl,
       onFrame: (complete) => {
-        if (complete) document.body.dataset.frames = 'ready';
+        if (!performance.getEntriesByName(FRAME_MARKS.first).length) performance.mark(FRAME_MARKS.first);
+        if (!complete || document.body.dataset.frames === 'ready') return;
+        if (!performance.getEntriesByName(FRAME_MARKS.firstComplete).length) performance.mark(FRAME_MARKS.firstComplete);
+        document.body.dataset.frames = 'ready';
       },
     },
     settings,
   );
-  app.renderNow();
   Object.assign(window, { bubbleView: view, bubbleApp: app });
 }
 

@@ -44,6 +44,12 @@ export class BubbleApp {
   private readonly panel: PlotPanel | null;
   private onScreen = true;
   private pending = 0;
+  /** The task that brings the plots up to date after a complete frame, while it is due. */
+  private plotTimer = 0;
+  /** Whether the last frame drawn was complete (the plots may follow it). */
+  private completeShown = false;
+  /** The surface's size the view was last fitted to. */
+  private fitted = '';
   private looping = false;
   private clockOrigin = 0;
   private plotsDue = true;
@@ -99,9 +105,10 @@ export class BubbleApp {
     const glCanvas = parts.view.renderer.domElement;
     glCanvas.addEventListener('webglcontextrestored', onRestored);
     const resize = new ResizeObserver(() => this.fit());
+    // The plots' box changed (a drawer opened): the plots follow the frame shown, or the next one.
     const plotsResize = new ResizeObserver(() => {
       this.plotsDue = true;
-      this.requestFrame();
+      if (this.completeShown) this.schedulePlots();
     });
     const onScreen = new IntersectionObserver((entries) => this.setOnScreen(entries.some((e) => e.isIntersecting)));
     parts.surface.addEventListener('pointerdown', onPress);
@@ -135,6 +142,7 @@ export class BubbleApp {
     const { animate, probe, ...film } = s;
     this.app = { animate, probe };
     this.parts.view.apply(film);
+    this.completeShown = false;
     this.plotsDue = true;
     if (rebuildControls) this.buildControls();
     this.requestFrame();
@@ -142,31 +150,41 @@ export class BubbleApp {
 
   /** Whether the bubble is on screen (an IntersectionObserver's verdict). */
   private setOnScreen(visible: boolean): void {
+    if (visible === this.onScreen) return;
     this.onScreen = visible;
     this.wake();
   }
 
-  /** Draws a complete frame now (tests and screenshots), whatever the scheduling. */
-  renderNow(): void {
-    this.draw(false);
-  }
-
   /**
-   * One frame; `quick`: from a coarse table if the table must be rebuilt (the plots wait for the
-   * full one). A frame drawn while the HDR environment is on its way is not complete either.
+   * One frame, from a coarse table while the table is being rebuilt (FilmTable: the frames after
+   * a change complete it). A frame drawn while the HDR environment is on its way is not complete
+   * either. The plots follow a complete frame in a task of their own, so the frame is shown first.
    */
-  private draw(quick: boolean): void {
+  private draw(): void {
     const view = this.parts.view;
-    view.render(quick);
+    view.render(true);
     this.parts.present?.();
     this.showEnvironmentStatus();
     const complete = !view.coarse && view.environmentStatus.state !== 'loading';
-    if (complete) this.updatePlots(performance.now());
+    this.completeShown = complete;
+    if (complete) this.schedulePlots();
     this.parts.onFrame?.(complete);
+  }
+
+  /** Brings the plots up to date in a task of their own, after the complete frame shown. */
+  private schedulePlots(): void {
+    if (this.plotTimer) return;
+    const drawn = this.parts.view.current;
+    this.plotTimer = window.setTimeout(() => {
+      this.plotTimer = 0;
+      // Settings changed since (an input event came first): their own complete frame will do it.
+      if (this.completeShown && this.parts.view.current === drawn) this.updatePlots(performance.now());
+    });
   }
 
   dispose(): void {
     cancelAnimationFrame(this.pending);
+    clearTimeout(this.plotTimer);
     this.looping = false;
     this.disconnect();
     this.gui?.destroy();
@@ -217,10 +235,15 @@ export class BubbleApp {
     if (closed) this.gui?.close();
   }
 
+  /** Sizes the view to the surface; a frame follows only if the size changed. */
   private fit(): void {
     const { clientWidth, clientHeight } = this.parts.surface;
     if (clientWidth === 0 || clientHeight === 0) return; // hidden (display: none): nothing to draw
-    this.parts.view.resize(clientWidth, clientHeight, Math.min(2, globalThis.devicePixelRatio || 1));
+    const pixelRatio = Math.min(2, globalThis.devicePixelRatio || 1);
+    const size = `${clientWidth}×${clientHeight}@${pixelRatio}`;
+    if (size === this.fitted) return;
+    this.fitted = size;
+    this.parts.view.resize(clientWidth, clientHeight, pixelRatio);
     this.plotsDue = true;
     this.requestFrame();
   }
@@ -248,7 +271,7 @@ export class BubbleApp {
     } else {
       this.looping = false;
     }
-    this.draw(true);
+    this.draw();
     if (this.looping || this.parts.view.coarse) this.requestFrame();
   }
 

@@ -38,22 +38,37 @@ export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['
 
 /** A coarse table has this many times fewer texels along each side than the full one. */
 const COARSE_DIVISOR = 4;
+/**
+ * A full table built behind a coarse one is drawn in this many bands of thickness, one per
+ * frame, so no frame waits for the whole table (on SwiftShader a full table costs about two
+ * frames of the default view, a band about a quarter of one).
+ */
+const FULL_BANDS = 8;
+
+interface Grid {
+  readonly width: number;
+  readonly rows: number;
+}
 
 /**
  * The `table` method: a GPU pass running shaders/filmTable.glsl fills a float texture with the
  * film's XYZ over (thickness 0..max, cos θ_i 0..1), for light from outside and from inside, laid
  * out as `quality.table` says. It is rebuilt only when `tableKey` changes.
  *
- * A `quick` update (the app's frames after a change) fills only a coarse grid, 1/16 of the
- * texels, in the texture's lower left corner, so the next frame shows the change at once; the
- * next update, quick or not, fills the full grid. Without `quick` (the first table, tests,
- * screenshots) the full grid is built at once.
+ * A `quick` update (the app's frames) that finds the settings changed fills a coarse grid, 1/16
+ * of the texels, in a small texture of its own, so the next frame shows the change at once; the
+ * quick updates after it fill the full grid band by band (FULL_BANDS, one per frame) while the
+ * coarse one is shown, and the full one is shown once complete. Without `quick` (tests,
+ * screenshots, the benchmark's timed builds) the full grid is built at once.
  */
 export class FilmTable {
   private readonly target: WebGLRenderTarget;
-  /** What the texture holds: the settings' tableKey ('' for nothing) and whether on the coarse grid. */
+  private readonly coarseTarget: WebGLRenderTarget;
+  /** What is shown: the settings' tableKey ('' for nothing) and whether from the coarse texture. */
   private shown = { key: '', coarse: false };
-  private grid = { width: 1, rows: 1 };
+  /** The full grid being built behind a coarse one: its settings and the bands done. */
+  private building: { readonly s: FilmSettings; bands: number } | null = null;
+  private shownGrid: Grid = { width: 1, rows: 1 };
   private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
   private readonly quad = new Mesh(new PlaneGeometry(2, 2));
   /** The table pass: one program for every polarisation (a uniform), so changing it compiles nothing. */
@@ -76,66 +91,104 @@ export class FilmTable {
   /** The series' terms per row, from the reference (src/render/airySeriesRows.ts). */
   private readonly rows: DataTexture;
   maxThicknessNm = 1;
-  /** Milliseconds the last full build took (synced with a 1-pixel read), and how many there were: for the benchmark. */
+  /** Milliseconds the last full build at once took (synced with a 1-pixel read), and how many full tables there were: for the benchmark. */
   lastBuildMs = 0;
   builds = 0;
 
   constructor(private readonly quality: FilmQuality) {
     this.rows = airySeriesRowsTexture(quality.table);
-    this.target = new WebGLRenderTarget(1, 2 * quality.table.rows, {
-      format: RGBAFormat,
-      minFilter: LinearFilter,
-      magFilter: LinearFilter,
-      depthBuffer: false,
-    });
+    const options = { format: RGBAFormat, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false } as const;
+    this.target = new WebGLRenderTarget(1, 2 * quality.table.rows, options);
+    this.coarseTarget = new WebGLRenderTarget(1, 2, options);
   }
 
-  /** Whether the texture holds a coarse table: another update will make it full. */
+  /** Whether the table shown is the coarse one: more updates will make it full. */
   get coarse(): boolean {
     return this.shown.coarse;
   }
 
   /** Points a material that looks the table up (shaders/filmColor.glsl, table mode) at it. */
   bind(uniforms: ShaderMaterial['uniforms']): void {
-    uniforms.uFilmTable!.value = this.target.texture;
+    uniforms.uFilmTable!.value = (this.shown.coarse ? this.coarseTarget : this.target).texture;
     uniforms.uTableMaxThicknessNm!.value = this.maxThicknessNm;
-    uniforms.uFilmTableWidth!.value = this.grid.width;
-    uniforms.uFilmTableRows!.value = this.grid.rows;
+    uniforms.uFilmTableWidth!.value = this.shownGrid.width;
+    uniforms.uFilmTableRows!.value = this.shownGrid.rows;
   }
 
-  /** Brings the table up to date with the settings (coarsely at first if `quick`); returns whether it drew. */
+  /**
+   * Brings the table up to date with the settings: at once, or if `quick` by one step (a coarse
+   * table for new settings, else the next band of the full one); returns whether what `bind` binds changed.
+   */
   update(renderer: WebGLRenderer, s: FilmSettings, quick = false): boolean {
     const key = tableKey(s);
-    if (key === this.shown.key && !this.shown.coarse) return false;
-    const coarse = quick && this.shown.key !== '' && key !== this.shown.key;
-    const started = performance.now();
-    const layout = this.quality.table;
-    this.maxThicknessNm = maxFieldThicknessNm(s);
-    const full = { width: filmTableWidth(layout, this.maxThicknessNm), rows: layout.rows };
-    this.grid = coarse ? { width: Math.max(2, Math.ceil(full.width / COARSE_DIVISOR)), rows: Math.ceil(full.rows / COARSE_DIVISOR) } : full;
-    this.draw(renderer, s, full);
-    this.shown = { key, coarse };
-    if (!coarse) {
-      this.lastBuildMs = performance.now() - started;
-      this.builds++;
+    if (key !== this.shown.key) this.building = null;
+    if (!quick) {
+      if (key === this.shown.key && !this.shown.coarse) return false;
+      this.building = null;
+      this.buildFull(renderer, s);
+      this.show(key, false);
+      return true;
     }
+    if (key !== this.shown.key) {
+      const full = this.fullGrid(s);
+      const grid = { width: Math.max(2, Math.ceil(full.width / COARSE_DIVISOR)), rows: Math.ceil(full.rows / COARSE_DIVISOR) };
+      this.building = { s, bands: 0 };
+      this.draw(renderer, s, this.coarseTarget, grid, null);
+      this.show(key, true, grid);
+      return true;
+    }
+    if (!this.shown.coarse || !this.building) return false;
+    const b = this.building;
+    const grid = this.fullGrid(b.s);
+    const from = Math.floor((b.bands * grid.width) / FULL_BANDS);
+    b.bands++;
+    const to = Math.floor((b.bands * grid.width) / FULL_BANDS);
+    const last = b.bands === FULL_BANDS;
+    if (last) this.building = null; // the last band lets go of the light's textures
+    this.draw(renderer, b.s, this.target, grid, [from, to]);
+    if (!last) return false;
+    this.show(key, false);
     return true;
   }
 
-  /** Runs the pass over the grid (the lower left corner of the texture, sized for `full`, if coarse). */
-  private draw(renderer: WebGLRenderer, s: FilmSettings, full: { width: number; rows: number }): void {
+  /** The full grid for the settings (its width follows the thickness range). */
+  private fullGrid(s: FilmSettings): Grid {
+    const layout = this.quality.table;
+    return { width: filmTableWidth(layout, maxFieldThicknessNm(s)), rows: layout.rows };
+  }
+
+  private buildFull(renderer: WebGLRenderer, s: FilmSettings): void {
+    const started = performance.now();
+    this.draw(renderer, s, this.target, this.fullGrid(s), null);
+    this.lastBuildMs = performance.now() - started;
+  }
+
+  private show(key: string, coarse: boolean, grid?: Grid): void {
+    this.shown = { key, coarse };
+    if (!coarse) this.builds++;
+    this.shownGrid = grid ?? { width: this.target.width, rows: this.quality.table.rows };
+  }
+
+  /**
+   * Runs the pass over `grid` in `target` (sized to it), over the columns [from, to) if given
+   * (the rest of the texture is kept), and waits for it (a 1-pixel read).
+   */
+  private draw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: [number, number] | null): void {
     const type = tableTexelType(renderer, this.quality.tablePrecision);
-    if (this.target.texture.type !== type) {
-      this.target.dispose(); // reallocated at the new type on the next render
-      this.target.texture.type = type;
+    if (target.texture.type !== type) {
+      target.dispose(); // reallocated at the new type on the next render
+      target.texture.type = type;
     }
-    if (this.target.width !== full.width) this.target.setSize(full.width, 2 * full.rows);
-    this.target.viewport.set(0, 0, this.grid.width, 2 * this.grid.rows);
+    if (target.width !== grid.width || target.height !== 2 * grid.rows) target.setSize(grid.width, 2 * grid.rows);
+    const [from, to] = columns ?? [0, grid.width];
+    target.scissor.set(from, 0, to - from, 2 * grid.rows);
+    target.scissorTest = true;
+    this.maxThicknessNm = maxFieldThicknessNm(s);
     const material = this.material();
     const u = material.uniforms;
     u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
-    airySeriesRows(s, { ...this.quality.table, rows: this.grid.rows }, this.rows.image.data as Float32Array);
+    airySeriesRows(s, { ...this.quality.table, rows: grid.rows }, this.rows.image.data as Float32Array);
     this.rows.needsUpdate = true;
     u.uAirySeriesRows!.value = this.rows;
     u.uPolarization!.value = POLARIZATIONS.indexOf(s.polarization);
@@ -143,15 +196,17 @@ export class FilmTable {
     u.uNFilm!.value = s.nFilm;
     u.uNInside!.value = s.nInside;
     u.uTableMaxThicknessNm!.value = this.maxThicknessNm;
-    u.uFilmTableWidth!.value = this.grid.width;
-    u.uFilmTableRows!.value = this.grid.rows;
+    u.uFilmTableWidth!.value = grid.width;
+    u.uFilmTableRows!.value = grid.rows;
     this.quad.material = material;
     const previous = renderer.getRenderTarget();
-    renderer.setRenderTarget(this.target);
+    renderer.setRenderTarget(target);
     renderer.render(this.quad, this.camera);
-    renderer.readRenderTargetPixels(this.target, 0, 0, 1, 1, type === FloatType ? new Float32Array(4) : new Uint16Array(4));
+    renderer.readRenderTargetPixels(target, from, 0, 1, 1, type === FloatType ? new Float32Array(4) : new Uint16Array(4));
     renderer.setRenderTarget(previous);
-    // The pass reads the light's textures only while it draws: let go of them until the next build.
+    // The pass reads the light's textures only while it draws: let go of them until the next
+    // build, unless a full table is being built band by band.
+    if (this.building) return;
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);
   }
@@ -159,6 +214,7 @@ export class FilmTable {
   /** Forces a rebuild on the next update (after a lost context). */
   invalidate(): void {
     this.shown = { key: '', coarse: false };
+    this.building = null;
   }
 
   private material(): ShaderMaterial {
@@ -173,6 +229,7 @@ export class FilmTable {
 
   dispose(): void {
     this.target.dispose();
+    this.coarseTarget.dispose();
     this.quad.geometry.dispose();
     this.pass.dispose();
     this.rows.dispose();
