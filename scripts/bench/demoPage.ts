@@ -3,20 +3,23 @@
  * tables it builds when nothing moves, while the swirl animates, and while hidden.
  */
 import type { Browser, Page } from '@playwright/test';
+import { FRAME_MARKS } from '../../src/app/frameMarks.ts';
 
 export interface DemoPageFigures {
-  /** navigation start to the first frame drawn and read back (an upper bound: includes Playwright's polling) */
+  /** navigation start to the first frame shown (the first animation frame after the page's first-frame mark) */
   readonly firstFrameMs: number;
+  /** … to the first frame shown in full (not from a coarse table) */
+  readonly firstCompleteFrameMs: number;
   /** frames drawn / tables built in one second */
   readonly still: FrameCounts;
   readonly animating: FrameCounts;
   readonly canvasHidden: FrameCounts;
   readonly pageHidden: FrameCounts;
-  /** per change of PANEL_CHANGES: panel input → the next frame drawn and read back, median ms */
-  readonly panelChangeMs: readonly number[];
-  /** … → the first frame that shows the change in full (not from a coarse table), median ms */
+  /** per change of PANEL_CHANGES: the longest gap between frames shown after the input, in median frame intervals (median of 6, and the worst) */
+  readonly panelLongestGap: readonly { readonly median: number; readonly max: number }[];
+  /** … input to the first frame shown in full, plots included, median ms */
   readonly panelChangeFullMs: readonly number[];
-  /** the default view's median frame time while the swirl animates, for the ratio */
+  /** the median interval between frames shown while the swirl animates */
   readonly frameMs: number;
 }
 
@@ -30,38 +33,21 @@ export const PANEL_CHANGES = [
 
 /**
  * Each change through the lil-gui panel (a number box's input event, or a list's change event),
- * three times there and back, timed from the event to the end of the next frame the app draws
- * (the table if due, coarse first, the bubble), synced by a 1-pixel read; and to the end of the
- * first frame drawn in full, plots included.
+ * three times there and back, as a user sees it: the animation frames shown (requestAnimationFrame
+ * timestamps) from 1 s before the input to 1 s after the frame that shows it in full; the longest
+ * gap between two of them after the input, against the median gap before it; and the time from
+ * the input to the first frame shown in full with the plots drawn.
  */
-async function panelChanges(page: Page): Promise<{ panelChangeMs: number[]; panelChangeFullMs: number[]; frameMs: number }> {
+async function panelChanges(
+  page: Page,
+): Promise<{ panelLongestGap: { median: number; max: number }[]; panelChangeFullMs: number[]; frameMs: number }> {
   return page.evaluate(async (changes) => {
-    type View = { render(quick?: boolean): void; coarse: boolean };
-    const view = (window as unknown as { bubbleView: View }).bubbleView;
-    const gl = document.querySelector<HTMLCanvasElement>('#bubble')!.getContext('webgl2')!;
+    const view = (window as unknown as { bubbleView: { coarse: boolean } }).bubbleView;
     const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
-    const afterFrame = () => new Promise((resolve) => setTimeout(resolve, 0)); // the plots follow a complete frame in the same task
-    /** [ms to the next frame, ms to the first complete frame] after `act`. */
-    const nextFrames = (act: () => void) =>
-      new Promise<[number, number]>((resolve) => {
-        // eslint-disable-next-line @typescript-eslint/unbound-method -- wrapped below and called with .call(this)
-        const render = view.render;
-        const started = performance.now();
-        let first = 0;
-        view.render = (quick?: boolean) => {
-          render.call(view, quick);
-          gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
-          first ||= performance.now() - started;
-          if (view.coarse) return;
-          view.render = render;
-          void afterFrame().then(() => resolve([first, performance.now() - started]));
-        };
-        act();
-      });
-    const nextFrame = async (act: () => void) => (await nextFrames(act))[0];
+    const wait = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
     const controller = (name: string) =>
       [...document.querySelectorAll<HTMLElement>('.lil-controller')].find((c) => c.querySelector('.lil-name')!.textContent === name)!;
-    const set = (name: string, value: string) => () => {
+    const set = (name: string, value: string) => {
       const c = controller(name);
       const select = c.querySelector('select');
       if (select) {
@@ -73,20 +59,41 @@ async function panelChanges(page: Page): Promise<{ panelChangeMs: number[]; pane
         input.dispatchEvent(new Event('input', { bubbles: true }));
       }
     };
-    const frames: number[] = [];
-    for (let i = 0; i < 9; i++) frames.push(await nextFrame(() => {}));
-    const panelChangeMs: number[] = [];
+    /** [longest gap after the input / median gap before, ms to the first frame in full, the median gap]. */
+    const measure = async (name: string, value: string): Promise<[number, number, number]> => {
+      const stamps: number[] = [];
+      let running = true;
+      let inputAt = Infinity;
+      let fullAt = Infinity;
+      const tick = (t: number) => {
+        stamps.push(t);
+        if (t > inputAt && !view.coarse && fullAt === Infinity) fullAt = t;
+        if (running) requestAnimationFrame(tick);
+      };
+      requestAnimationFrame(tick);
+      await wait(1000);
+      inputAt = performance.now();
+      set(name, value);
+      while (fullAt === Infinity) await wait(50);
+      await wait(1000);
+      running = false;
+      const before = stamps.filter((t) => t < inputAt);
+      const gapsBefore = before.slice(1).map((t, i) => t - before[i]!);
+      const after = stamps.slice(before.length - 1);
+      const gapsAfter = after.slice(1).map((t, i) => t - after[i]!);
+      return [Math.max(...gapsAfter) / median(gapsBefore), fullAt - inputAt, median(gapsBefore)];
+    };
+    const panelLongestGap: { median: number; max: number }[] = [];
     const panelChangeFullMs: number[] = [];
+    const frames: number[] = [];
     for (const [name, value, back] of changes) {
-      const times: [number, number][] = [];
-      for (let i = 0; i < 3; i++) {
-        times.push(await nextFrames(set(name, value)));
-        times.push(await nextFrames(set(name, back)));
-      }
-      panelChangeMs.push(median(times.map((t) => t[0])));
-      panelChangeFullMs.push(median(times.map((t) => t[1])));
+      const runs: [number, number, number][] = [];
+      for (let i = 0; i < 3; i++) runs.push(await measure(name, value), await measure(name, back));
+      panelLongestGap.push({ median: median(runs.map((r) => r[0])), max: Math.max(...runs.map((r) => r[0])) });
+      panelChangeFullMs.push(median(runs.map((r) => r[1])));
+      frames.push(...runs.map((r) => r[2]));
     }
-    return { panelChangeMs, panelChangeFullMs, frameMs: median(frames) };
+    return { panelLongestGap, panelChangeFullMs, frameMs: median(frames) };
   }, PANEL_CHANGES);
 }
 export interface FrameCounts {
@@ -98,12 +105,12 @@ const WINDOW_MS = 1000;
 
 async function countOneSecond(page: Page): Promise<FrameCounts> {
   return page.evaluate(async (ms) => {
-    const view = (window as unknown as { bubbleView: { render(): void; table: { builds: number } } }).bubbleView;
+    const view = (window as unknown as { bubbleView: { render(quick?: boolean): void; table: { builds: number } } }).bubbleView;
     let frames = 0;
     const render = view.render.bind(view);
-    view.render = () => {
+    view.render = (quick?: boolean) => {
       frames++;
-      render();
+      render(quick);
     };
     const builds = view.table.builds;
     await new Promise((r) => setTimeout(r, ms));
@@ -112,27 +119,35 @@ async function countOneSecond(page: Page): Promise<FrameCounts> {
   }, WINDOW_MS);
 }
 
-async function open(browser: Browser, url: string): Promise<{ page: Page; firstFrameMs: number }> {
+async function open(browser: Browser, url: string): Promise<{ page: Page; firstFrameMs: number; firstCompleteFrameMs: number }> {
   const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
   // tsx names the functions it compiles with a helper (__name) that pages evaluated from here lack.
-  await page.addInitScript({ content: 'window.__name = (f) => f;' });
+  // From before any script runs, the timestamp of every animation frame shown.
+  await page.addInitScript({
+    content:
+      'window.__name = (f) => f; window.shownFrames = []; (function tick(t) { window.shownFrames.push(t); requestAnimationFrame(tick); })(0);',
+  });
   await page.goto(url);
   await page.waitForSelector('body[data-frames="ready"]');
-  const firstFrameMs = await page.evaluate(() => {
-    const gl = document.querySelector<HTMLCanvasElement>('#bubble')!.getContext('webgl2')!;
-    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
-    return performance.now();
-  });
-  return { page, firstFrameMs };
+  await page.waitForTimeout(200); // a frame shown after the first complete one
+  const [firstFrameMs, firstCompleteFrameMs] = await page.evaluate((marks) => {
+    const shown = (window as unknown as { shownFrames: number[] }).shownFrames;
+    const shownAfter = (mark: string) => {
+      const at = performance.getEntriesByName(mark)[0]!.startTime;
+      return shown.find((t) => t > at)!;
+    };
+    return [shownAfter(marks.first), shownAfter(marks.firstComplete)];
+  }, FRAME_MARKS);
+  return { page, firstFrameMs, firstCompleteFrameMs };
 }
 
 export async function demoPageFigures(browser: Browser, baseUrl: string): Promise<DemoPageFigures> {
   const still = await open(browser, `${baseUrl}/?animate=0`);
   const stillCounts = await countOneSecond(still.page);
   await still.page.close();
-  const { page, firstFrameMs } = await open(browser, `${baseUrl}/`);
+  const { page, firstFrameMs, firstCompleteFrameMs } = await open(browser, `${baseUrl}/`);
   const animating = await countOneSecond(page);
-  const { panelChangeMs, panelChangeFullMs, frameMs } = await panelChanges(page);
+  const { panelLongestGap, panelChangeFullMs, frameMs } = await panelChanges(page);
   await page.evaluate(() => (document.querySelector<HTMLCanvasElement>('#bubble')!.style.display = 'none'));
   const canvasHidden = await countOneSecond(page);
   await page.evaluate(() => {
@@ -142,5 +157,15 @@ export async function demoPageFigures(browser: Browser, baseUrl: string): Promis
   });
   const pageHidden = await countOneSecond(page);
   await page.close();
-  return { firstFrameMs, still: stillCounts, animating, canvasHidden, pageHidden, panelChangeMs, panelChangeFullMs, frameMs };
+  return {
+    firstFrameMs,
+    firstCompleteFrameMs,
+    still: stillCounts,
+    animating,
+    canvasHidden,
+    pageHidden,
+    panelLongestGap,
+    panelChangeFullMs,
+    frameMs,
+  };
 }

@@ -1,5 +1,6 @@
 import { expect, test, type Page, type Route } from '@playwright/test';
 import { HDR_ENVIRONMENTS } from '../../src/render/filmSettings.ts';
+import { showSettings } from './appSettings.ts';
 import { watchProblems } from './pageWatch.ts';
 import { gpuObjects, loseContext, restoreContext } from './webglContext.ts';
 
@@ -51,16 +52,10 @@ test('every HDR environment loads without a console error and draws a bubble tha
   const problems = watchProblems(page);
   // park turned 120°: the sun sits behind the bubble's top right, seen through it.
   await page.goto(`/?env=park&envRotation=120&${DRAINED}`);
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
   for (const env of HDR_ENVIRONMENTS) {
-    if (env !== 'park') {
-      // The next environment in the same page, as the panel sets it (its module fetched now).
-      await page.evaluate((next) => {
-        const app = (window as unknown as { bubbleApp: import('../../src/app/bubbleApp.ts').BubbleApp }).bubbleApp;
-        document.body.dataset.frames = 'changed';
-        app.set({ ...app.current, env: next, envRotationDeg: 0 });
-      }, env);
-    }
-    await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+    // The next environment in the same page, as the panel sets it (its module fetched now).
+    if (env !== 'park') await showSettings(page, { env, envRotationDeg: 0 });
     await expect(page.locator('.environment-status')).toHaveCount(0);
     const { spread, black } = await frame(page);
     console.log(`${env}: luminance spread ${spread.toFixed(1)} levels over the bubble's middle, ${black} black pixels near the park's sun`);
@@ -94,12 +89,7 @@ test('a loading environment is announced and counts no frame as ready; a failed 
   const fallback = await frame(page);
 
   // The same view asking for the sky itself.
-  await page.evaluate(() => {
-    const app = (window as unknown as { bubbleApp: import('../../src/app/bubbleApp.ts').BubbleApp }).bubbleApp;
-    document.body.dataset.frames = 'changed';
-    app.set({ ...app.current, env: 'sky' });
-  });
-  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+  await showSettings(page, { env: 'sky' });
   await expect(line).toHaveCount(0);
   expect(fallback.pixels).toEqual((await frame(page)).pixels);
 });
