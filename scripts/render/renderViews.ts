@@ -8,7 +8,7 @@ import { type Browser, type Page, chromium } from '@playwright/test';
 import { createServer } from 'vite';
 import type { RenderView } from '../../src/cli/renderOptions.ts';
 import type { ChromiumLaunchOptions } from '../chromium.ts';
-import { FRAME_DRAWN, PANEL, PLOTS, PLOTS_BOX } from './demoPage.ts';
+import { FRAME_DRAWN, PANEL, PLOT_PANEL, PLOTS, PLOTS_BOX, PLOTS_DRAWN } from './demoPage.ts';
 
 /** The repository, whose index.html is the demo. */
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
@@ -82,13 +82,15 @@ async function showView(page: Page, base: string, view: RenderView): Promise<voi
   await page.waitForSelector(FRAME_DRAWN, { state: 'attached' });
   await page.addStyleTag({ content: `${view.plots ? PANEL : `${PANEL}, ${PLOTS}`} { display: none !important; }` });
   if (!view.plots) return;
-  // A small window starts with the plots' drawer closed: open it, and wait for the frame that draws them into it.
-  const opened = await page.evaluate((selector) => {
-    const drawer = document.querySelector<HTMLDetailsElement>(selector);
-    if (!drawer || drawer.open) return false;
-    delete document.body.dataset.frames;
-    drawer.open = true;
-    return true;
-  }, PLOTS_BOX);
-  if (opened) await page.waitForSelector(FRAME_DRAWN, { state: 'attached' });
+  // A small window starts with the plots' drawer closed: open it, and wait for the plots drawn into it.
+  await page.evaluate(
+    ([box, plots]) => {
+      const drawer = document.querySelector<HTMLDetailsElement>(box);
+      if (!drawer || drawer.open) return;
+      document.querySelector(plots)?.removeAttribute('data-probe');
+      drawer.open = true;
+    },
+    [PLOTS_BOX, PLOT_PANEL] as const,
+  );
+  await page.waitForSelector(PLOTS_DRAWN, { state: 'attached' });
 }

@@ -141,16 +141,25 @@ for (const mode of MODES) {
 }
 
 /**
+ * One polarisation per illuminant or stack, in turn (the groups come illuminant by illuminant, each
+ * in every polarisation): every light, stack and polarisation is still met, with a quarter of the tables.
+ */
+const diagonal = (groups: readonly Group[]): Group[] =>
+  groups.filter((_, i) => i % POLARIZATIONS.length === Math.floor(i / POLARIZATIONS.length) % POLARIZATIONS.length);
+
+/**
  * GPUs without float render targets get a half-float table (FilmTable picks it). Half floats keep
  * 11 significant bits, ~5e-4 relative: the table's colours must still meet the fixed-grid bound.
+ * The storage precision is the same for every light and polarisation, which the float table's
+ * tests cover in full: here each light, stack and polarisation once (diagonal).
  */
 test(`the half-float table matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°, and stays finite on the stress cases`, async ({
   page,
 }) => {
   const half = { ...DEFAULT_FILM_QUALITY, tablePrecision: 'half' } as const;
-  const fixed = fixedDomain();
+  const fixed = diagonal(fixedDomain());
   const fixedResult = compare(fixed, await render(page, fixed, 'table', half));
-  const stress = stressDomain();
+  const stress = diagonal(stressDomain());
   const stressResult = compare(stress, await render(page, stress, 'table', half));
   results['table-half/fixed'] = fixedResult.figures;
   results['table-half/stress'] = stressResult.figures;

@@ -105,12 +105,14 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
   // While the session runs, the panel's bubble holds one program per part it draws (bubble, table
   // pass, sky, probe), whatever it was switched through: never more than its own count at the start plus
   // SWITCH_ALLOWANCE (parts its first settings did not draw), and as many geometries and textures
-  // (textures: one more, the HDR environment's map while one is shown).
+  // (textures: one more, the HDR environment's map while one is shown, and two more, the light's
+  // spectral bins and transform, which the table holds while it builds its full grid band by band).
   const SWITCH_ALLOWANCE = 2;
   const MAP_TEXTURE = 1;
+  const TABLE_BUILD_TEXTURES = 2;
   console.log(`soak: during the session ${JSON.stringify(done.withSoaked)} at its start, at most ${JSON.stringify(done.most)}`);
   expect(done.most.programs).toBeLessThanOrEqual(done.withSoaked.programs + SWITCH_ALLOWANCE);
-  expect(done.most.textures).toBeLessThanOrEqual(done.withSoaked.textures + SWITCH_ALLOWANCE + MAP_TEXTURE);
+  expect(done.most.textures).toBeLessThanOrEqual(done.withSoaked.textures + SWITCH_ALLOWANCE + MAP_TEXTURE + TABLE_BUILD_TEXTURES);
   expect(done.most.geometries).toBe(done.withSoaked.geometries);
 
   for (let i = 0; i < CYCLES; i++) {
