@@ -48,6 +48,9 @@ export class BubbleApp {
   private plotTimer = 0;
   /** Whether the last frame drawn was complete (the plots may follow it). */
   private completeShown = false;
+  /** Whether the view's programs are compiled (no frame before), and whether the app is disposed. */
+  private prepared = false;
+  private disposed = false;
   /** The surface's size the view was last fitted to. */
   private fitted = '';
   private looping = false;
@@ -127,6 +130,12 @@ export class BubbleApp {
       onScreen.disconnect();
     };
     this.fit();
+    // The first frame waits for the programs, compiled while the page goes on (BubbleView.prepare).
+    void parts.view.prepare().then(() => {
+      if (this.disposed) return;
+      this.prepared = true;
+      this.requestFrame();
+    });
   }
 
   get current(): ViewSettings {
@@ -183,6 +192,7 @@ export class BubbleApp {
   }
 
   dispose(): void {
+    this.disposed = true;
     cancelAnimationFrame(this.pending);
     clearTimeout(this.plotTimer);
     this.looping = false;
@@ -254,7 +264,7 @@ export class BubbleApp {
   }
 
   private requestFrame(): void {
-    if (this.pending || !this.showing) return;
+    if (this.pending || !this.showing || !this.prepared) return;
     this.pending = requestAnimationFrame((now) => this.frame(now));
   }
 

@@ -211,6 +211,22 @@ export class FilmTable {
     releaseSpectralTransformTexture(this);
   }
 
+  /**
+   * Compiles the table pass for `target`'s kind of target without blocking where the GPU compiles in
+   * parallel (KHR_parallel_shader_compile), and meanwhile makes the light's textures for `s` on
+   * this thread (the series' transform is an FFT): before a first frame, the two overlap.
+   */
+  async prepare(renderer: WebGLRenderer, s: FilmSettings): Promise<void> {
+    this.quad.material = this.material();
+    const previous = renderer.getRenderTarget();
+    renderer.setRenderTarget(this.coarseTarget); // three picks a program by its target (no tone mapping into a texture)
+    const compiled = renderer.compileAsync(this.quad, this.camera);
+    renderer.setRenderTarget(previous);
+    spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
+    spectralTransformTexture(s.illuminant, s.normalization, this);
+    await compiled;
+  }
+
   /** Forces a rebuild on the next update (after a lost context). */
   invalidate(): void {
     this.shown = { key: '', coarse: false };

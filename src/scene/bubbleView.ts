@@ -135,6 +135,21 @@ export class BubbleView {
     this.onEnvironmentChange?.();
   }
 
+  /**
+   * Compiles the view's programs (bubble, background, the table pass) without blocking where the GPU
+   * compiles in parallel (KHR_parallel_shader_compile), the light's textures made meanwhile;
+   * resolves when the first frame can be drawn without waiting on a compile.
+   */
+  async prepare(): Promise<void> {
+    // Without the extension (SwiftShader) compiling is blocking however it is asked for: the first frame does it.
+    if (!this.renderer.getContext().getExtension('KHR_parallel_shader_compile')) return;
+    this.renderer.toneMapping = this.toneMapping;
+    await Promise.all([
+      this.renderer.compileAsync(this.scene, this.camera),
+      this.settings.mode === 'table' ? this.table.prepare(this.renderer, this.settings) : null,
+    ]);
+  }
+
   /** Whether the HDR environment asked for is shown, still on its way, or failed. */
   get environmentStatus(): EnvironmentStatus {
     const env = this.settings.env;

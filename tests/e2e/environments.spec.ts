@@ -2,7 +2,7 @@ import { expect, test, type Page, type Route } from '@playwright/test';
 import { HDR_ENVIRONMENTS } from '../../src/render/filmSettings.ts';
 import { showSettings } from './appSettings.ts';
 import { watchProblems } from './pageWatch.ts';
-import { gpuObjects, loseContext, restoreContext } from './webglContext.ts';
+import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';
 
 /**
  * The HDR environments as a page meets them: each arrives (its own module, fetched when first
@@ -66,12 +66,12 @@ test('every HDR environment loads without a console error and draws a bubble tha
   }
 
   const before = await frame(page);
-  const objects = await gpuObjects(page);
+  const objects = await settledGpuObjects(page);
   await loseContext(page);
   await restoreContext(page);
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
   expect((await frame(page)).pixels).toEqual(before.pixels);
-  expect(await gpuObjects(page)).toEqual(objects);
+  await expect.poll(() => gpuObjects(page)).toEqual(objects); // the plots' program follows the frame
   expect(problems).toEqual([]);
 });
 

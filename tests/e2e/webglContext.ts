@@ -3,6 +3,15 @@ import type { Page } from '@playwright/test';
 /** The demo page's globals these helpers read. */
 type Window_ = Window & { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView };
 
+/**
+ * three's count of the demo view's live GPU objects, once the plots have been drawn (their probe
+ * has its own program, made in the task after the first complete frame).
+ */
+export const settledGpuObjects = async (page: Page) => {
+  await page.waitForSelector('.tfb-plots[data-probe]', { state: 'attached' });
+  return gpuObjects(page);
+};
+
 /** three's count of the demo view's live GPU objects. */
 export const gpuObjects = (page: Page) =>
   page.evaluate(() => {
