@@ -113,6 +113,8 @@ async function render(
   return page.evaluate(([g, m, q]) => window.renderFilmXyz!(g, m, q), [groups.map(toParity), mode, quality] as const);
 }
 
+// The figures file gathers every test's figures: this file's tests run in one worker, in order.
+test.describe.configure({ mode: 'default' });
 const results: Record<string, Figures> = {};
 
 test.afterAll(() => {
