@@ -14,7 +14,8 @@ export default defineConfig({
   // (a file whose tests share state runs in one worker: parity.spec.ts).
   fullyParallel: true,
   workers: process.env.E2E_WORKERS ? Number(process.env.E2E_WORKERS) : 2,
-  reporter: [['list']],
+  // E2E_REPORT=file.json adds a JSON report (per-test times), which `npm run suite-times -- file.json` reads.
+  reporter: process.env.E2E_REPORT ? [['list'], ['json', { outputFile: process.env.E2E_REPORT }]] : [['list']],
   use: {
     baseURL: BUILT_URL,
     viewport: { width: 640, height: 480 },

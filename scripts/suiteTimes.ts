@@ -2,9 +2,9 @@
  * `npm run suite-times [-- report.json]`: where the browser suite's time goes. First its fixed
  * costs, each measured once here: the tests' site build, the static server's start, a Chromium
  * launch, a page load to its first frame and to its first frame in full per film method (whose
- * difference from `table` is mostly that method's shader compile). Then the slowest 15 tests and
- * the time per spec file, from a Playwright JSON report: the one given, or one made by running
- * the browser suite here. Prints Markdown.
+ * difference from `table` is mostly that method's shader compile and frame). Then the slowest 15
+ * tests and the time per spec file, from a Playwright JSON report: the one given (e.g. from
+ * `E2E_REPORT=report.json npm test`), or one made by running the browser suite here. Prints Markdown.
  */
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
@@ -58,10 +58,7 @@ try {
 const reportPath = process.argv[2];
 if (!reportPath) {
   console.error('running the browser suite for its report (several minutes)');
-  execFileSync('npx', ['playwright', 'test', '--reporter=json'], {
-    stdio: ['ignore', 'ignore', 'inherit'],
-    env: { ...process.env, PLAYWRIGHT_JSON_OUTPUT_NAME: REPORT },
-  });
+  execFileSync('npx', ['playwright', 'test'], { stdio: ['ignore', 'ignore', 'inherit'], env: { ...process.env, E2E_REPORT: REPORT } });
 }
 
 interface Suite {
