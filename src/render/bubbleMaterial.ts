@@ -30,11 +30,12 @@ export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<s
 }
 
 /**
- * Points a film-colour material at the light's textures its method reads (the bin weights, the
- * spectral transform), held for it, and lets go of those it does not read.
+ * Points a film-colour material (or any holder of its uniforms: the spectral iridescence) at the
+ * light's textures its method reads (the bin weights, the spectral transform), held for it, and
+ * lets go of those it does not read.
  */
 export function updateFilmColorTextures(
-  m: ShaderMaterial,
+  m: Pick<ShaderMaterial, 'uniforms'>,
   s: FilmColorSettings & Pick<FilmSettings, 'illuminant' | 'normalization'>,
   q: FilmQuality,
 ): void {
@@ -53,7 +54,7 @@ export function updateFilmColorTextures(
 }
 
 /** Frees what a film-colour material holds (call before disposing it). */
-export function releaseFilmColorTextures(m: ShaderMaterial): void {
+export function releaseFilmColorTextures(m: object): void {
   releaseSpectralBinsTexture(m);
   releaseSpectralTransformTexture(m);
 }
