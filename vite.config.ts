@@ -15,32 +15,54 @@ const elementInDevelopment = (): Plugin => ({
   },
 });
 
+/**
+ * The library's entries (package.json `exports`): the float64 physics, the spectral material for
+ * three.js scenes, and the element; three.js stays outside (a peer dependency).
+ */
+const LIBRARY_ENTRIES = { physics: 'src/lib/physics.ts', material: 'src/lib/material.ts', element: ELEMENT_ENTRY };
+
 // GLSL files are imported as text with Vite's `?raw` suffix; no plugin is needed.
 // `vite build` makes the demo site; `vite build --mode element` adds the standalone element
-// module (three.js included) to the same dist/ as thin-film-bubble.js.
+// module (three.js included) to the same dist/ as thin-film-bubble.js; `vite build --mode lib`
+// writes the library's ES modules to dist-lib/ (their types: `tsc -p tsconfig.lib.json`).
 export default defineConfig(({ mode }) =>
-  mode === 'element'
+  mode === 'lib'
     ? {
         publicDir: false,
         build: {
-          emptyOutDir: false,
+          outDir: 'dist-lib',
+          emptyOutDir: false, // the types are written beside them
           chunkSizeWarningLimit: 800,
-          // An app build with one entry, not library mode: library mode leaves ES output unminified.
-          rolldownOptions: {
-            input: ELEMENT_ENTRY,
-            preserveEntrySignatures: 'exports-only',
-            output: { entryFileNames: ELEMENT_URL.slice(1) },
-          },
+          lib: { entry: LIBRARY_ENTRIES, formats: ['es'] },
+          rolldownOptions: { external: [/^three($|\/)/] },
         },
       }
-    : {
-        plugins: [elementInDevelopment()],
-        server: { port: 5173, strictPort: true },
-        // The HDR environments' modules (plain ES modules of one string each) are served as they
-        // are: pre-bundling them would only risk a reload when a page first imports one.
-        optimizeDeps: { exclude: ['@pmndrs/assets'] },
-        preview: { port: 4173, strictPort: true },
-        // three.js's renderer is most of the ~660 kB (~180 kB gzipped); it is imported piecemeal and tree-shaken.
-        build: { chunkSizeWarningLimit: 800 },
-      },
+    : mode === 'element'
+      ? {
+          publicDir: false,
+          build: {
+            emptyOutDir: false,
+            chunkSizeWarningLimit: 800,
+            // An app build with one entry, not library mode: library mode leaves ES output unminified.
+            rolldownOptions: {
+              input: ELEMENT_ENTRY,
+              preserveEntrySignatures: 'exports-only',
+              output: { entryFileNames: ELEMENT_URL.slice(1) },
+            },
+          },
+        }
+      : {
+          plugins: [elementInDevelopment()],
+          server: { port: 5173, strictPort: true },
+          // The HDR environments' modules (plain ES modules of one string each) are served as they
+          // are: pre-bundling them would only risk a reload when a page first imports one.
+          optimizeDeps: { exclude: ['@pmndrs/assets'] },
+          preview: { port: 4173, strictPort: true },
+          // three.js's renderer is most of the ~660 kB (~180 kB gzipped); it is imported piecemeal and tree-shaken.
+          build: {
+            chunkSizeWarningLimit: 800,
+            // The example page of the material for any three.js scene, beside the demo.
+            rolldownOptions: { input: { main: 'index.html', materials: 'materials.html' } },
+          },
+        },
 );
