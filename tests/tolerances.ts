@@ -81,3 +81,9 @@ export const SAVED_PLOT_CODES = 1;
  * 8-bit rounding of equal floats, so at most one code.
  */
 export const PHYSICAL_MATERIAL_CODES = 1;
+
+/**
+ * Our pixel ΔE00 (eq 19's printed matrix inverted, Lab relative to the display's white) against
+ * culori's (IEC's sRGB matrix, Lab adapted to D50): the two colour paths differ by a few 0.01.
+ */
+export const CULORI_DE00 = 0.05;
