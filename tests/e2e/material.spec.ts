@@ -20,6 +20,8 @@ const referenceOf = (c: FilmCase) =>
   reference8({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm: c.nFilm, nInside: c.ior });
 
 test('the spectral iridescence on three.js meshes: reference colour, glTF, the physical material kept, programs', async ({ page }) => {
+  // ~50 s here (SwiftShader compiles each mode's program, the soak's among them): room for a slower machine.
+  test.setTimeout(300_000);
   const problems = watchProblems(page);
   await page.goto('/tests/e2e/harness/material.html');
   await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
@@ -58,5 +60,10 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
   expect(counts.disposed).toEqual(counts.before);
   expect(counts.most - counts.before.programs).toBeLessThanOrEqual(4);
   expect(counts.after).toEqual(counts.before);
+
+  // The example page draws both materials under its HDR environment and reports their ΔE00 at the probe.
+  await page.goto('/materials.html');
+  await expect(page.locator('body')).toHaveAttribute('data-frames', /\d+/);
+  await expect(page.locator('#readout')).toHaveText(/three\.js\s+#[0-9a-f]{6}, spectral\s+#[0-9a-f]{6}; ΔE00 \d+\.\d/);
   expect(problems).toEqual([]);
 });
