@@ -51,7 +51,7 @@ try {
     rows.push({ name: row.name, settings: row.settings, quality: row.quality, ...result, xyz: undefined, errors });
   }
   if (runMaterials) {
-    materials = await materialFigures(browser, `http://127.0.0.1:${DEV_PORT}`);
+    materials = await materialFigures(browser, `http://127.0.0.1:${DEV_PORT}`, grids, referenceColors);
     log(`${MATERIALS_ROW}: ${JSON.stringify(materials)}`);
   }
 } finally {
@@ -89,7 +89,13 @@ if (materials) {
 | ${MATERIALS_ROW} | value |
 |---|---|
 | example scene (materials.html, ${m.width}×${m.height}), median of ${m.frames} frames: three.js iridescence / spectral (\`table\`) | ${m.frameMs['three.js'].toFixed(1)} / ${m.frameMs.spectral.toFixed(1)} ms (${(m.frameMs.spectral / m.frameMs['three.js']).toFixed(2)}×) |
-| minimal three.js app with an iridescent MeshPhysicalMaterial, gzipped: as it is / made spectral | ${kb(m.threeAppGzipBytes)} / ${kb(m.spectralAppGzipBytes)} (+${kb(m.spectralAppGzipBytes - m.threeAppGzipBytes)}) |`);
+| minimal three.js app with an iridescent MeshPhysicalMaterial, gzipped: as it is / made spectral | ${kb(m.threeAppGzipBytes)} / ${kb(m.spectralAppGzipBytes)} (+${kb(m.spectralAppGzipBytes - m.threeAppGzipBytes)}) |
+${Object.entries(m.gridErrors)
+  .map(
+    ([mode, [fixed, stress]]) =>
+      `| the whole material's pixels, \`${mode}\`: ΔE00 fixed grid / stress grid (max / p99 / mean) | ${[fixed!, stress!].map((e) => `${e.max.toFixed(3)} / ${e.p99.toFixed(3)} / ${e.mean.toFixed(3)}`).join(' — ')} |`,
+  )
+  .join('\n')}`);
 }
 writeFileSync(
   'bench-results.json',

@@ -9,6 +9,12 @@ import { gzipSync } from 'node:zlib';
 import type { Browser } from '@playwright/test';
 import { build } from 'vite';
 import type { View } from '../../src/materials/exampleScene.ts';
+import type { Xyz } from '../../src/physics/spectralWeights.ts';
+import type { ParityGroup } from '../../src/render/parityCase.ts';
+import { type GridError, gridError } from './errorGrids.ts';
+
+/** The modes whose error the material's grids measure. */
+const GRID_MODES = ['table', 'fourier'] as const;
 
 export interface MaterialFigures {
   readonly width: number;
@@ -19,6 +25,33 @@ export interface MaterialFigures {
   /** gzipped JS of a minimal three.js app with MeshPhysicalMaterial's iridescence, and of the same app made spectral */
   readonly threeAppGzipBytes: number;
   readonly spectralAppGzipBytes: number;
+  /** per mode, the ΔE00 of the material's pixels over each error grid */
+  readonly gridErrors: Record<(typeof GRID_MODES)[number], GridError[]>;
+}
+
+/** The error grids drawn by the whole material (scripts/bench/page/materialGrid.ts), against the reference. */
+async function gridErrors(
+  browser: Browser,
+  baseUrl: string,
+  grids: readonly ParityGroup[],
+  reference: readonly (readonly Xyz[])[],
+): Promise<MaterialFigures['gridErrors']> {
+  const page = await browser.newPage();
+  try {
+    await page.goto(`${baseUrl}/scripts/bench/page/materialGrid.html`);
+    await page.waitForSelector('body[data-ready="yes"]');
+    const errors = {} as Record<(typeof GRID_MODES)[number], GridError[]>;
+    for (const mode of GRID_MODES) {
+      errors[mode] = [];
+      for (const [i, g] of grids.entries()) {
+        const xyz = await page.evaluate(([g, mode]) => window.materialGridXyz!(g, mode), [g, mode] as const);
+        errors[mode].push(gridError(g, reference[i]!, xyz));
+      }
+    }
+    return errors;
+  } finally {
+    await page.close();
+  }
 }
 
 const FRAMES = 30;
@@ -81,8 +114,14 @@ async function appGzipBytes(spectral: boolean): Promise<number> {
   return bytes;
 }
 
-export async function materialFigures(browser: Browser, baseUrl: string): Promise<MaterialFigures> {
+export async function materialFigures(
+  browser: Browser,
+  baseUrl: string,
+  grids: readonly ParityGroup[],
+  reference: readonly (readonly Xyz[])[],
+): Promise<MaterialFigures> {
   return {
+    gridErrors: await gridErrors(browser, baseUrl, grids, reference),
     width: SIZE[0],
     height: SIZE[1],
     frameMs: await frameTimes(browser, baseUrl),

@@ -70,26 +70,34 @@ export function bubbleDefines(s: FilmSettings, q: FilmQuality): Record<string, n
   };
 }
 
+/**
+ * The uniforms shaders/filmColor.glsl reads in any mode (the light's textures, the table and its
+ * grid, the three indices), and the XYZ → working space matrix (eq 19) its users apply.
+ */
+export const filmColorUniforms = (): ShaderMaterial['uniforms'] => ({
+  uSpectralBins: { value: null },
+  uSpectralTransform: { value: null },
+  uFilmTable: { value: null },
+  uTableMaxThicknessNm: { value: 1 },
+  uFilmTableWidth: { value: 1 },
+  uFilmTableRows: { value: 1 },
+  uNOutside: { value: 1 },
+  uNFilm: { value: 1.33 },
+  uNInside: { value: 1 },
+  uXyzToLinearWorking: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
+});
+
 /** The bubble's ShaderMaterial (shaders/bubble.*.glsl). `updateBubbleUniforms` keeps it current. */
 export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMaterial {
   return new ShaderMaterial({
     defines: bubbleDefines(s, q),
     uniforms: {
-      uSpectralBins: { value: null },
-      uSpectralTransform: { value: null },
-      uFilmTable: { value: null },
-      uTableMaxThicknessNm: { value: 1 },
-      uFilmTableWidth: { value: 1 },
-      uFilmTableRows: { value: 1 },
-      uNOutside: { value: 1 },
-      uNFilm: { value: 1.33 },
-      uNInside: { value: 1 },
+      ...filmColorUniforms(),
       uThicknessNm: { value: 500 },
       uThicknessRangeNm: { value: 0 },
       uSwirlSpeed: { value: 0 },
       uTimeSeconds: { value: 0 },
       ...environmentUniforms(),
-      uXyzToLinearWorking: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
       uXyzToLinearDisplay: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
     },
     vertexShader: shaderSource('bubble.vert.glsl'),

@@ -1,5 +1,4 @@
 import {
-  Matrix3,
   MeshPhysicalMaterial,
   type MeshPhysicalMaterialParameters,
   type Object3D,
@@ -7,12 +6,11 @@ import {
   type WebGLProgramParametersWithUniforms,
   type WebGLRenderer,
 } from 'three';
-import { XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { FILM_STACK_DOMAIN, POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_DOMAIN_K, ILLUMINANT_EXPECTED, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
 import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
 import { ParameterError, assertInRange, isInDomain } from '../physics/validate.ts';
-import { filmColorDefines, releaseFilmColorTextures, updateFilmColorTextures } from './bubbleMaterial.ts';
+import { filmColorDefines, filmColorUniforms, releaseFilmColorTextures, updateFilmColorTextures } from './bubbleMaterial.ts';
 import { DEFAULT_SETTINGS } from './filmParameters.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from './filmQuality.ts';
 import { type FilmSettings, MODES } from './filmSettings.ts';
@@ -92,7 +90,7 @@ function filmSettingsOf(m: MeshPhysicalMaterial, o: Options): FilmSettings {
 /** What a material upgraded by `spectralIridescence` holds: its options, its uniforms, its table. */
 interface SpectralFilm {
   options: Options;
-  readonly uniforms: Record<string, { value: unknown }>;
+  readonly uniforms: ReturnType<typeof filmColorUniforms>;
   table: FilmTable | null;
 }
 
@@ -149,18 +147,7 @@ export function spectralIridescence<M extends MeshPhysicalMaterial>(material: M,
   }
   const film: SpectralFilm = {
     options: checked,
-    uniforms: {
-      uSpectralBins: { value: null },
-      uSpectralTransform: { value: null },
-      uFilmTable: { value: null },
-      uTableMaxThicknessNm: { value: 1 },
-      uFilmTableWidth: { value: 1 },
-      uFilmTableRows: { value: 1 },
-      uNOutside: { value: 1 },
-      uNFilm: { value: 1.33 },
-      uNInside: { value: 1.5 },
-      uXyzToLinearWorking: { value: new Matrix3().set(...XYZ_TO_LINEAR_SRGB) },
-    },
+    uniforms: filmColorUniforms(),
     table: null,
   };
   films.set(material, film);
