@@ -93,7 +93,7 @@ if (materials) {
 ${Object.entries(m.gridErrors)
   .map(
     ([mode, [fixed, stress]]) =>
-      `| the whole material's pixels, \`${mode}\`: ΔE00 fixed grid / stress grid (max / p99 / mean) | ${[fixed!, stress!].map((e) => `${e.max.toFixed(3)} / ${e.p99.toFixed(3)} / ${e.mean.toFixed(3)}`).join(' — ')} |`,
+      `| the whole material's pixels, \`${mode}\`: ΔE00 fixed grid / stress grid (max / p99 / mean), films > 0 nm [all, 0 nm included] | ${[fixed!, stress!].map((e) => `${e.films.max.toFixed(3)} / ${e.films.p99.toFixed(3)} / ${e.films.mean.toFixed(3)} [${e.all.max.toFixed(1)} / ${e.all.p99.toFixed(2)} / ${e.all.mean.toFixed(3)}]`).join(' — ')} |`,
   )
   .join('\n')}`);
 }

@@ -60,6 +60,22 @@ export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): 
 /** The call in three's lights_fragment_begin chunk that gives the film over the dielectric base. */
 const DIELECTRIC_FILM = 'evalIridescence( 1.0, material.iridescenceIOR, dotNVi, material.iridescenceThickness, material.specularColor )';
 const SPECTRAL_FILM = 'spectralIridescence( material.iridescenceThickness, dotNVi )';
+/**
+ * three's F0 for the film's image-based light: Schlick's curve inverted at n·v. Ours inverts the
+ * DFG table the light is then integrated with (docs/material.md#the-films-f0-for-image-based-light),
+ * so a mirror-smooth surface reflects the film's own value at n·v at every angle.
+ */
+const DIELECTRIC_F0 = 'material.iridescenceF0Dielectric = Schlick_to_F0( iridescenceFresnelDielectric, 1.0, dotNVi );';
+const SPECTRAL_F0 =
+  'material.iridescenceF0Dielectric = spectralIridescenceF0( iridescenceFresnelDielectric, texture2D( dfgLUT, vec2( material.roughness, dotNVi ) ).rg, material.specularF90 );';
+
+/** three's lights_fragment_begin with the two replacements, or an error naming what a three.js release no longer has. */
+function lightsFragmentBegin(): string {
+  const begin = ShaderChunk.lights_fragment_begin;
+  for (const line of [DIELECTRIC_FILM, DIELECTRIC_F0])
+    if (!begin.includes(line)) throw new Error(`spectralIridescence: three.js's lights_fragment_begin no longer holds ${line}`);
+  return begin.replace(DIELECTRIC_FILM, SPECTRAL_FILM).replace(DIELECTRIC_F0, SPECTRAL_F0);
+}
 
 /** Film tables shared by the materials whose film, light and thickness range are the same. */
 const tables = new SharedTextures((key) => new FilmTable((JSON.parse(key) as { quality: FilmQuality }).quality));
@@ -152,9 +168,6 @@ export function spectralIridescence<M extends MeshPhysicalMaterial>(material: M,
   };
   films.set(material, film);
   material.onBeforeCompile = (shader: WebGLProgramParametersWithUniforms) => {
-    const begin = ShaderChunk.lights_fragment_begin;
-    if (!begin.includes(DIELECTRIC_FILM))
-      throw new Error(`spectralIridescence: three.js's lights_fragment_begin no longer calls ${DIELECTRIC_FILM}`);
     shader.defines = { ...shader.defines, ...definesOf(film.options) };
     Object.assign(shader.uniforms, film.uniforms);
     shader.fragmentShader = shader.fragmentShader
@@ -162,7 +175,7 @@ export function spectralIridescence<M extends MeshPhysicalMaterial>(material: M,
         '#include <iridescence_fragment>',
         `#include <iridescence_fragment>\n#ifdef USE_IRIDESCENCE\n${shaderSource('spectralIridescence.glsl')}\n#endif`,
       )
-      .replace('#include <lights_fragment_begin>', begin.replace(DIELECTRIC_FILM, SPECTRAL_FILM));
+      .replace('#include <lights_fragment_begin>', lightsFragmentBegin());
   };
   // One program per distinct film configuration (three would otherwise key it by onBeforeCompile's text alone).
   material.customProgramCacheKey = () => `spectral-iridescence ${JSON.stringify(definesOf(film.options))}`;
