@@ -10,11 +10,11 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, describe, expect, it } from 'vitest';
-import { XYZ_TO_LINEAR_SRGB, applyMatrix3 } from '../../../src/physics/colorConversions.ts';
-import { SOAP_FILM_IN_AIR, filmReflectance } from '../../../src/physics/filmReflectance.ts';
-import { filmXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
+import { XYZ_TO_LINEAR_SRGB, applyMatrix3 } from '../../src/physics/colorConversions.ts';
+import { SOAP_FILM_IN_AIR, filmReflectance } from '../../src/physics/filmReflectance.ts';
+import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 
-const ROOT = fileURLToPath(new URL('../../..', import.meta.url));
+const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const HERE = fileURLToPath(new URL('.', import.meta.url));
 /** Build (vite, tsc for the types), pack, install and type-check take ~30 s here; allow for a loaded machine. */
 const PACK_TIMEOUT_MS = 240_000;
