@@ -3,10 +3,16 @@ import { defineConfig, type Plugin, type UserConfig } from 'vite';
 /** Where pages (the teaching page in public/, embedding pages) load the element from. */
 const ELEMENT_URL = '/thin-film-bubble.js';
 const ELEMENT_ENTRY = 'src/element/index.ts';
-/** The site's pages (public/ is copied as it is). */
-const SITE_PAGES = ['index.html'];
+/** The site's pages (public/ is copied as it is): the demo, and the example page of the material for any three.js scene. */
+const SITE_PAGES = ['index.html', 'materials.html'];
 /** The browser tests' own pages, built only into the tests' site (`--mode e2e`, dist-e2e/). */
-const TEST_PAGES = ['tests/e2e/harness/parity.html'];
+const TEST_PAGES = ['tests/e2e/harness/parity.html', 'tests/e2e/harness/material.html'];
+
+/**
+ * The library's entries (package.json `exports`): the float64 physics, the spectral material for
+ * three.js scenes, and the element; three.js stays outside (a peer dependency).
+ */
+const LIBRARY_ENTRIES = { physics: 'src/lib/physics.ts', material: 'src/lib/material.ts', element: ELEMENT_ENTRY };
 
 /** In development, the element's URL serves its source, so public/ pages work unbuilt. */
 const elementInDevelopment = (): Plugin => ({
@@ -33,11 +39,23 @@ const site = (pages: readonly string[], outDir: string): UserConfig => ({
 
 // GLSL files are imported as text with Vite's `?raw` suffix; no plugin is needed.
 // `vite build` makes the demo site; `vite build --mode element` adds the standalone element
-// module (three.js included) to the same dist/ as thin-film-bubble.js (`--outDir` for another).
-// `vite build --mode e2e` makes the site with the tests' pages in dist-e2e/, which the browser
-// tests are served from (`vite preview --mode e2e`).
-export default defineConfig(({ mode }) => {
+// module (three.js included) to the same dist/ as thin-film-bubble.js (`--outDir` for another);
+// `vite build --mode lib` writes the library's ES modules to dist-lib/ (their types:
+// `tsc -p tsconfig.lib.json`). `vite build --mode e2e` makes the site with the tests' pages in
+// dist-e2e/, which the browser tests are served from (`vite preview --mode e2e`).
+export default defineConfig(({ mode }): UserConfig => {
   if (mode === 'e2e') return site([...SITE_PAGES, ...TEST_PAGES], 'dist-e2e');
+  if (mode === 'lib')
+    return {
+      publicDir: false,
+      build: {
+        outDir: 'dist-lib',
+        emptyOutDir: false, // the types are written beside them
+        chunkSizeWarningLimit: 800,
+        lib: { entry: LIBRARY_ENTRIES, formats: ['es'] },
+        rolldownOptions: { external: [/^three($|\/)/] },
+      },
+    };
   if (mode !== 'element') return site(SITE_PAGES, 'dist');
   return {
     publicDir: false,

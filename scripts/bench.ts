@@ -12,6 +12,7 @@ import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './bench/errorG
 import { FRAME_BUDGET_MS, FRAMES, SIZES, runRow, warmUp } from './bench/browserRows.ts';
 import { buildAndMeasure, ELEMENT_BUNDLE } from './bench/bundleSize.ts';
 import { PANEL_CHANGES, demoPageFigures } from './bench/demoPage.ts';
+import { materialFigures } from './bench/materialFigures.ts';
 import { referenceSpeed, referenceSpeedMarkdown } from './bench/referenceSpeed.ts';
 import { ROWS } from './bench/rows.ts';
 import { rowsMarkdown } from './bench/rowsMarkdown.ts';
@@ -25,6 +26,9 @@ const log = (what: string) => console.error(`[bench ${((performance.now() - star
 /** `npm run bench -- <text>[|<text>…]` runs only the rows whose name contains one of the texts (the floor always runs). */
 const only = process.argv[2]?.split('|');
 const selected = ROWS.filter((r, i) => i === 0 || !only || only.some((text) => r.name.includes(text)));
+/** The spectral material's figures (the example page, the app bundle) run with every row, or with `materials`. */
+const MATERIALS_ROW = 'materials page: spectral film against three.js iridescence';
+const runMaterials = !only || only.some((text) => MATERIALS_ROW.includes(text));
 const reference = referenceSpeed();
 console.log(`${referenceSpeedMarkdown(reference)}\n`);
 log('reference speed done; computing the reference colours of the error grids');
@@ -36,6 +40,7 @@ await server.listen();
 const browser = await chromium.launch(chromiumLaunchOptions());
 await warmUp(browser, `http://127.0.0.1:${DEV_PORT}`);
 const rows = [];
+let materials = null;
 try {
   for (const row of selected) {
     const result = await runRow(browser, `http://127.0.0.1:${DEV_PORT}`, row, grids);
@@ -44,6 +49,10 @@ try {
       `${row.name}: ${JSON.stringify({ frames: result.frames, table: result.tableBuildMs, errors: errors?.map((e) => [e.max.toFixed(2), e.worst]) })}`,
     );
     rows.push({ name: row.name, settings: row.settings, quality: row.quality, ...result, xyz: undefined, errors });
+  }
+  if (runMaterials) {
+    materials = await materialFigures(browser, `http://127.0.0.1:${DEV_PORT}`, grids, referenceColors);
+    log(`${MATERIALS_ROW}: ${JSON.stringify(materials)}`);
   }
 } finally {
   await server.close();
@@ -74,8 +83,22 @@ console.log(`
 | … page hidden | ${demo.pageHidden.frames} / ${demo.pageHidden.tableBuilds} |
 | frame interval while the swirl animates (1280×720, median) | ${demo.frameMs.toFixed(0)} ms |
 ${PANEL_CHANGES.map(([name], i) => `| panel: ${name} → longest gap between frames shown, median of 6 / worst (× the frame interval); → shown in full, plots included | ${demo.panelLongestGap[i]!.median.toFixed(1)}× / ${demo.panelLongestGap[i]!.max.toFixed(1)}×; ${demo.panelChangeFullMs[i]!.toFixed(0)} ms |`).join('\n')}`);
+if (materials) {
+  const m = materials;
+  console.log(`
+| ${MATERIALS_ROW} | value |
+|---|---|
+| example scene (materials.html, ${m.width}×${m.height}), median of ${m.frames} frames: three.js iridescence / spectral (\`table\`) | ${m.frameMs['three.js'].toFixed(1)} / ${m.frameMs.spectral.toFixed(1)} ms (${(m.frameMs.spectral / m.frameMs['three.js']).toFixed(2)}×) |
+| minimal three.js app with an iridescent MeshPhysicalMaterial, gzipped: as it is / made spectral | ${kb(m.threeAppGzipBytes)} / ${kb(m.spectralAppGzipBytes)} (+${kb(m.spectralAppGzipBytes - m.threeAppGzipBytes)}) |
+${Object.entries(m.gridErrors)
+  .map(
+    ([mode, [fixed, stress]]) =>
+      `| the whole material's pixels, \`${mode}\`: ΔE00 fixed grid / stress grid (max / p99 / mean), films > 0 nm [all, 0 nm included] | ${[fixed!, stress!].map((e) => `${e.films.max.toFixed(3)} / ${e.films.p99.toFixed(3)} / ${e.films.mean.toFixed(3)} [${e.all.max.toFixed(1)} / ${e.all.p99.toFixed(2)} / ${e.all.mean.toFixed(3)}]`).join(' — ')} |`,
+  )
+  .join('\n')}`);
+}
 writeFileSync(
   'bench-results.json',
-  JSON.stringify({ reference, rows, bundle, demo, seconds: (performance.now() - started) / 1000 }, null, 2),
+  JSON.stringify({ reference, rows, bundle, demo, materials, seconds: (performance.now() - started) / 1000 }, null, 2),
 );
 log('done; bench-results.json written');

@@ -74,3 +74,16 @@ export const CONTINUITY_TOL = 1e-4;
 
 /** A saved plot is its canvas drawn over an opaque background: the browser composites in 8 bits (premultiplied), the test in float then rounds, so one code either way. */
 export const SAVED_PLOT_CODES = 1;
+
+/**
+ * The spectral iridescence with iridescence 0 (or a 0 nm film) against three's
+ * MeshPhysicalMaterial: the same shader but for the film's code, which such a film never runs;
+ * 8-bit rounding of equal floats, so at most one code.
+ */
+export const PHYSICAL_MATERIAL_CODES = 1;
+
+/**
+ * Our pixel ΔE00 (eq 19's printed matrix inverted, Lab relative to the display's white) against
+ * culori's (IEC's sRGB matrix, Lab adapted to D50): the two colour paths differ by a few 0.01.
+ */
+export const CULORI_DE00 = 0.05;

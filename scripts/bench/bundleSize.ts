@@ -10,7 +10,7 @@ export const ELEMENT_BUNDLE = 'dist/thin-film-bubble.js';
 export interface BundleSizes {
   /** every JS file in dist: path → bytes and gzipped bytes */
   readonly files: Record<string, { readonly bytes: number; readonly gzipBytes: number }>;
-  /** what a page loads up front: every JS file but the element and the HDR environments' modules */
+  /** what a page loads up front: every JS file but the element, the HDR environments' modules and the material's example page */
   readonly demoGzipBytes: number;
   readonly elementGzipBytes: number | null;
   /** each HDR environment's module (fetched only when shown), gzipped */
@@ -19,6 +19,8 @@ export interface BundleSizes {
 
 /** An HDR environment's module, as the build names it (environmentMaps.ts imports `…/hdri/<name>.exr.js`). */
 const isEnvironmentModule = (path: string) => /\.exr-[^/]*\.js$/.test(path);
+/** The material's example page's own module (materials.html), which the demo does not load. */
+const isExamplePage = (path: string) => /\/materials-[^/]*\.js$/.test(path);
 
 const jsFiles = (dir: string): string[] =>
   readdirSync(dir, { withFileTypes: true }).flatMap((e) =>
@@ -35,7 +37,7 @@ export async function buildAndMeasure(): Promise<BundleSizes> {
   }
   const element = files[ELEMENT_BUNDLE]?.gzipBytes ?? null;
   const demo = Object.entries(files)
-    .filter(([path]) => path !== ELEMENT_BUNDLE && !isEnvironmentModule(path))
+    .filter(([path]) => path !== ELEMENT_BUNDLE && !isEnvironmentModule(path) && !isExamplePage(path))
     .reduce((sum, [, f]) => sum + f.gzipBytes, 0);
   const environments = Object.entries(files).filter(([path]) => isEnvironmentModule(path));
   return { files, demoGzipBytes: demo, elementGzipBytes: element, environmentGzipBytes: environments.map(([, f]) => f.gzipBytes) };

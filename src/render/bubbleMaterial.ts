@@ -30,11 +30,12 @@ export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<s
 }
 
 /**
- * Points a film-colour material at the light's textures its method reads (the bin weights, the
- * spectral transform), held for it, and lets go of those it does not read.
+ * Points a film-colour material (or any holder of its uniforms: the spectral iridescence) at the
+ * light's textures its method reads (the bin weights, the spectral transform), held for it, and
+ * lets go of those it does not read.
  */
 export function updateFilmColorTextures(
-  m: ShaderMaterial,
+  m: Pick<ShaderMaterial, 'uniforms'>,
   s: FilmColorSettings & Pick<FilmSettings, 'illuminant' | 'normalization'>,
   q: FilmQuality,
 ): void {
@@ -53,7 +54,7 @@ export function updateFilmColorTextures(
 }
 
 /** Frees what a film-colour material holds (call before disposing it). */
-export function releaseFilmColorTextures(m: ShaderMaterial): void {
+export function releaseFilmColorTextures(m: object): void {
   releaseSpectralBinsTexture(m);
   releaseSpectralTransformTexture(m);
 }
@@ -69,26 +70,34 @@ export function bubbleDefines(s: FilmSettings, q: FilmQuality): Record<string, n
   };
 }
 
+/**
+ * The uniforms shaders/filmColor.glsl reads in any mode (the light's textures, the table and its
+ * grid, the three indices), and the XYZ → working space matrix (eq 19) its users apply.
+ */
+export const filmColorUniforms = (): ShaderMaterial['uniforms'] => ({
+  uSpectralBins: { value: null },
+  uSpectralTransform: { value: null },
+  uFilmTable: { value: null },
+  uTableMaxThicknessNm: { value: 1 },
+  uFilmTableWidth: { value: 1 },
+  uFilmTableRows: { value: 1 },
+  uNOutside: { value: 1 },
+  uNFilm: { value: 1.33 },
+  uNInside: { value: 1 },
+  uXyzToLinearWorking: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
+});
+
 /** The bubble's ShaderMaterial (shaders/bubble.*.glsl). `updateBubbleUniforms` keeps it current. */
 export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMaterial {
   return new ShaderMaterial({
     defines: bubbleDefines(s, q),
     uniforms: {
-      uSpectralBins: { value: null },
-      uSpectralTransform: { value: null },
-      uFilmTable: { value: null },
-      uTableMaxThicknessNm: { value: 1 },
-      uFilmTableWidth: { value: 1 },
-      uFilmTableRows: { value: 1 },
-      uNOutside: { value: 1 },
-      uNFilm: { value: 1.33 },
-      uNInside: { value: 1 },
+      ...filmColorUniforms(),
       uThicknessNm: { value: 500 },
       uThicknessRangeNm: { value: 0 },
       uSwirlSpeed: { value: 0 },
       uTimeSeconds: { value: 0 },
       ...environmentUniforms(),
-      uXyzToLinearWorking: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
       uXyzToLinearDisplay: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
     },
     vertexShader: shaderSource('bubble.vert.glsl'),

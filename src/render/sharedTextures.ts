@@ -1,11 +1,10 @@
-import type { Texture } from 'three';
-
 /**
- * Textures shared by their holders (materials, table passes): holders asking for the same key
- * share one texture (several bubbles on a page upload it once), and a texture no holder uses any
- * more is disposed, so a long session of light changes keeps only the textures in use.
+ * Textures (or other GPU resources: the spectral iridescence's film tables) shared by their
+ * holders (materials, table passes): holders asking for the same key share one texture (several
+ * bubbles on a page upload it once), and a texture no holder uses any more is disposed, so a long
+ * session of light changes keeps only the textures in use.
  */
-export class SharedTextures<T extends Texture> {
+export class SharedTextures<T extends { dispose(): void }> {
   private readonly entries = new Map<string, { readonly texture: T; readonly holders: Set<object> }>();
   /** The key each holder uses, so asking for another lets go of the old texture. */
   private readonly heldKey = new WeakMap<object, string>();

@@ -1,0 +1,93 @@
+/**
+ * The error grids through the whole spectral material (not only its film term): for each angle,
+ * a plane tilted by θ about the screen's x axis, seen by an orthographic camera, one pixel per
+ * film; a float thickness map gives each pixel its thickness (green channel, nearest texel); the
+ * base is black, mirror-smooth, non-metal, lit by an environment of constant radiance 1, so the
+ * linear pixel is the film's reflectance as three's lighting passes it on (DFG, multiple
+ * scattering) and as the material clips it. Read from a float target; XYZ by eq (19) inverted.
+ */
+import {
+  DataTexture,
+  EquirectangularReflectionMapping,
+  FloatType,
+  Mesh,
+  MeshPhysicalMaterial,
+  NearestFilter,
+  OrthographicCamera,
+  PlaneGeometry,
+  RGBAFormat,
+  Scene,
+  WebGLRenderTarget,
+  WebGLRenderer,
+} from 'three';
+import { XYZ_TO_LINEAR_SRGB, applyMatrix3, invert3 } from '../../../src/physics/colorConversions.ts';
+import type { ParityGroup, ParityMode } from '../../../src/render/parityCase.ts';
+import { spectralIridescence } from '../../../src/render/spectralIridescence.ts';
+
+const renderer = new WebGLRenderer({ canvas: document.querySelector<HTMLCanvasElement>('#gl')! });
+const LINEAR_SRGB_TO_XYZ = invert3(XYZ_TO_LINEAR_SRGB);
+
+function floatTexture(width: number, texel: (i: number) => readonly number[]): DataTexture {
+  const data = new Float32Array(4 * width);
+  for (let i = 0; i < width; i++) data.set(texel(i), 4 * i);
+  const t = new DataTexture(data, width, 1, RGBAFormat, FloatType);
+  t.minFilter = t.magFilter = NearestFilter;
+  t.needsUpdate = true;
+  return t;
+}
+
+/** XYZ per input of the group (a soap film in air: the base's ior is the group's nInside). */
+function materialGridXyz(g: ParityGroup, mode: Exclude<ParityMode, 'three-iridescence'>): number[][] {
+  const white = floatTexture(16, () => [1, 1, 1, 1]);
+  white.mapping = EquirectangularReflectionMapping;
+  const maxNm = Math.max(...g.inputs.map(([t]) => t), 1);
+  const byCos = new Map<number, number[]>();
+  g.inputs.forEach(([, c], i) => byCos.set(c, [...(byCos.get(c) ?? []), i]));
+  const out: number[][] = new Array<number[]>(g.inputs.length);
+  for (const [cos, cases] of byCos) {
+    const w = cases.length;
+    const map = floatTexture(w, (i) => [0, g.inputs[cases[i]!]![0] / maxNm, 0, 1]);
+    const material = spectralIridescence(
+      new MeshPhysicalMaterial({
+        color: 0x000000,
+        roughness: 0,
+        metalness: 0,
+        ior: g.nInside,
+        iridescence: 1,
+        iridescenceIOR: g.nFilm,
+        iridescenceThicknessMinimum: 0,
+        iridescenceThicknessMaximum: maxNm,
+        iridescenceThicknessMap: map,
+      }),
+      { mode, illuminant: g.illuminant, polarization: g.polarization, normalization: g.normalization },
+    );
+    const plane = new Mesh(new PlaneGeometry(2, 4), material);
+    plane.rotation.x = Math.acos(Math.min(1, cos));
+    const scene = new Scene();
+    scene.environment = white;
+    scene.add(plane);
+    const camera = new OrthographicCamera(-1, 1, 1e-3, -1e-3, -10, 10);
+    const target = new WebGLRenderTarget(w, 1, { type: FloatType, depthBuffer: true });
+    renderer.setRenderTarget(target);
+    renderer.render(scene, camera);
+    const rgba = new Float32Array(4 * w);
+    renderer.readRenderTargetPixels(target, 0, 0, w, 1, rgba);
+    renderer.setRenderTarget(null);
+    cases.forEach((c, i) => (out[c] = [...applyMatrix3(LINEAR_SRGB_TO_XYZ, [rgba[4 * i]!, rgba[4 * i + 1]!, rgba[4 * i + 2]!])]));
+    target.dispose();
+    plane.geometry.dispose();
+    material.dispose();
+    map.dispose();
+  }
+  white.dispose();
+  return out;
+}
+
+window.materialGridXyz = materialGridXyz;
+document.body.dataset.ready = 'yes';
+
+declare global {
+  interface Window {
+    materialGridXyz?: typeof materialGridXyz;
+  }
+}

@@ -1,0 +1,269 @@
+/**
+ * The spectral iridescence's harness (tests/e2e/material.spec.ts): scenes of three.js meshes
+ * drawn with MeshPhysicalMaterial, with and without `spectralIridescence`, read back as 8-bit
+ * pixels of the canvas.
+ */
+import {
+  BoxGeometry,
+  type BufferGeometry,
+  Color,
+  DataTexture,
+  DirectionalLight,
+  EquirectangularReflectionMapping,
+  FloatType,
+  Mesh,
+  MeshPhysicalMaterial,
+  NoToneMapping,
+  OrthographicCamera,
+  PCFShadowMap,
+  PerspectiveCamera,
+  PlaneGeometry,
+  PointLight,
+  RepeatWrapping,
+  RGBAFormat,
+  Scene,
+  TorusKnotGeometry,
+  AgXToneMapping,
+  WebGLRenderer,
+  type Material,
+  type Object3D,
+} from 'three';
+import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { type SpectralIridescenceOptions, spectralIridescence, useSpectralIridescence } from '../../../src/render/spectralIridescence.ts';
+
+const canvas = document.querySelector<HTMLCanvasElement>('#gl');
+if (!canvas) throw new Error('material.html must hold #gl');
+const renderer = new WebGLRenderer({ canvas });
+renderer.toneMapping = NoToneMapping;
+const SIZE = canvas.width;
+
+/** An equirectangular float environment of `size` texels, each `texel(u, v)` (linear RGB). */
+function environment(texel: (u: number, v: number) => readonly [number, number, number], w = 32, h = 16): DataTexture {
+  const data = new Float32Array(4 * w * h);
+  for (let y = 0; y < h; y++) for (let x = 0; x < w; x++) data.set([...texel(x / w, y / h), 1], 4 * (y * w + x));
+  const t = new DataTexture(data, w, h, RGBAFormat, FloatType);
+  t.mapping = EquirectangularReflectionMapping;
+  t.needsUpdate = true;
+  return t;
+}
+
+/** Constant radiance 1 (the light's white from every direction): the demo's env=none lighting of the film. */
+const white = environment(() => [1, 1, 1]);
+
+/** The canvas's pixels (RGBA, bottom row first) right after drawing `scene`. */
+function draw(scene: Scene, camera: OrthographicCamera | PerspectiveCamera): Uint8Array {
+  renderer.render(scene, camera);
+  const gl = renderer.getContext();
+  const out = new Uint8Array(4 * SIZE * SIZE);
+  gl.readPixels(0, 0, SIZE, SIZE, gl.RGBA, gl.UNSIGNED_BYTE, out);
+  return out;
+}
+
+const centre = (pixels: Uint8Array): number[] => {
+  const i = 4 * ((SIZE / 2) * SIZE + SIZE / 2);
+  return [pixels[i]!, pixels[i + 1]!, pixels[i + 2]!];
+};
+
+/** A film on a box's face: black, mirror-smooth, non-metal, so only the film reflects. */
+export interface FilmCase {
+  readonly thicknessNm: number;
+  readonly angleDeg: number;
+  readonly nFilm: number;
+  readonly ior: number;
+}
+
+const filmMaterial = (c: FilmCase) =>
+  new MeshPhysicalMaterial({
+    color: 0x000000,
+    roughness: 0,
+    metalness: 0,
+    ior: c.ior,
+    iridescence: 1,
+    iridescenceIOR: c.nFilm,
+    iridescenceThicknessMinimum: 0,
+    iridescenceThicknessMaximum: c.thicknessNm,
+  });
+
+/**
+ * A 4-unit box turned by angleDeg about the vertical, its front face through the origin, seen
+ * by an orthographic camera along −z: the centre pixel sees that face at θ_i = angleDeg.
+ */
+function filmScene(c: FilmCase, material: Material): { scene: Scene; camera: OrthographicCamera; box: Mesh } {
+  const scene = new Scene();
+  scene.environment = white;
+  const box = new Mesh(new BoxGeometry(4, 4, 4), material);
+  const a = (c.angleDeg * Math.PI) / 180;
+  box.rotation.y = a;
+  box.position.set(-2 * Math.sin(a), 0, -2 * Math.cos(a));
+  scene.add(box);
+  const camera = new OrthographicCamera(-1, 1, 1, -1, 0.1, 20);
+  camera.position.set(0, 0, 10);
+  return { scene, camera, box };
+}
+
+const disposeAll = (root: Object3D) =>
+  root.traverse((o) => {
+    if (o instanceof Mesh) {
+      const mesh = o as Mesh<BufferGeometry, Material | Material[]>;
+      mesh.geometry.dispose();
+      for (const m of [mesh.material].flat()) m.dispose();
+    }
+  });
+
+/** The centre pixel of a film case through the spectral material. */
+function filmPixel(c: FilmCase, options: SpectralIridescenceOptions): number[] {
+  const { scene, camera } = filmScene(c, spectralIridescence(filmMaterial(c), options));
+  const pixel = centre(draw(scene, camera));
+  disposeAll(scene);
+  return pixel;
+}
+
+/** The centre pixel of the film case written to glTF (GLTFExporter), loaded back (GLTFLoader) and upgraded with one call. */
+async function gltfPixel(c: FilmCase): Promise<{ pixel: number[]; upgraded: number; extension: boolean }> {
+  const { scene: source, box } = filmScene(c, filmMaterial(c));
+  const glb = (await new GLTFExporter().parseAsync(box, { binary: true })) as ArrayBuffer;
+  const json = new TextDecoder().decode(new Uint8Array(glb, 20, new DataView(glb).getUint32(12, true)));
+  const gltf = await new GLTFLoader().parseAsync(glb, '');
+  disposeAll(source);
+  const upgraded = useSpectralIridescence(gltf.scene);
+  const { scene, camera } = filmScene(c, new MeshPhysicalMaterial());
+  scene.clear();
+  scene.add(gltf.scene);
+  const pixel = centre(draw(scene, camera));
+  disposeAll(scene);
+  return { pixel, upgraded: upgraded.length, extension: json.includes('"KHR_materials_iridescence"') };
+}
+
+/** A small random normal map (seeded), so the comparison covers perturbed normals. */
+function normalMap(): DataTexture {
+  let seed = 7;
+  const next = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
+  const data = new Uint8Array(4 * 16 * 16);
+  for (let i = 0; i < 16 * 16; i++)
+    data.set([128 + Math.round(60 * (next() - 0.5)), 128 + Math.round(60 * (next() - 0.5)), 255, 255], 4 * i);
+  const t = new DataTexture(data, 16, 16);
+  t.wrapS = t.wrapT = RepeatWrapping;
+  t.needsUpdate = true;
+  return t;
+}
+
+/**
+ * A lit scene (a torus knot with base colour, metalness, roughness, a normal map and clearcoat,
+ * casting a shadow on a ground plane; a directional and a point light; a coloured environment;
+ * AgX) drawn with `make()`'s material; the pixels.
+ */
+function litScene(make: () => MeshPhysicalMaterial): Uint8Array {
+  const scene = new Scene();
+  scene.environment = environment((u, v) => [0.2 + u, 0.5, 1.2 - v]);
+  scene.background = new Color(0x202020);
+  const knot = new Mesh(new TorusKnotGeometry(0.6, 0.2, 96, 12), make());
+  knot.castShadow = true;
+  const ground = new Mesh(new PlaneGeometry(4, 4), new MeshPhysicalMaterial({ color: 0x808080, roughness: 0.8 }));
+  ground.rotation.x = -Math.PI / 2;
+  ground.position.y = -1;
+  ground.receiveShadow = true;
+  const sun = new DirectionalLight(0xffffff, 2);
+  sun.position.set(1, 3, 2);
+  sun.castShadow = true;
+  const lamp = new PointLight(0xffaa66, 4);
+  lamp.position.set(-1.5, 0.5, 1.5);
+  scene.add(knot, ground, sun, lamp);
+  const camera = new PerspectiveCamera(45, 1, 0.1, 20);
+  camera.position.set(0, 0.6, 3.2);
+  camera.lookAt(0, -0.2, 0);
+  renderer.shadowMap.enabled = true;
+  renderer.shadowMap.type = PCFShadowMap;
+  renderer.toneMapping = AgXToneMapping;
+  const pixels = draw(scene, camera);
+  renderer.toneMapping = NoToneMapping;
+  renderer.shadowMap.enabled = false;
+  disposeAll(scene);
+  return pixels;
+}
+
+/** The largest 8-bit difference between the physical material and the same upgraded, for the iridescence given. */
+function againstPhysical(iridescence: number, thicknessMaximumNm: number): number {
+  const map = normalMap();
+  const make = () =>
+    new MeshPhysicalMaterial({
+      color: 0xc08040,
+      metalness: 0.3,
+      roughness: 0.35,
+      normalMap: map,
+      clearcoat: 0.5,
+      iridescence,
+      iridescenceThicknessMinimum: 0,
+      iridescenceThicknessMaximum: thicknessMaximumNm,
+    });
+  const plain = litScene(make);
+  const spectral = litScene(() => spectralIridescence(make()));
+  map.dispose();
+  let worst = 0;
+  for (let i = 0; i < plain.length; i++) worst = Math.max(worst, Math.abs(plain[i]! - spectral[i]!));
+  return worst;
+}
+
+const memory = () => ({ programs: renderer.info.programs?.length ?? 0, textures: renderer.info.memory.textures });
+
+/**
+ * Programs and textures as materials come and go: `count` boxes of the same film and options
+ * (one program between them), then one per other mode; all disposed (back to the start).
+ */
+function programCounts(count: number, rounds: number) {
+  const c: FilmCase = { thicknessNm: 400, angleDeg: 20, nFilm: 1.33, ior: 1.5 };
+  const before = memory();
+  const scene = filmScene(c, new MeshPhysicalMaterial());
+  scene.scene.clear();
+  const add = (options: SpectralIridescenceOptions) => {
+    const box = new Mesh(new BoxGeometry(0.2, 0.2, 0.2), spectralIridescence(filmMaterial(c), options));
+    scene.scene.add(box);
+  };
+  for (let i = 0; i < count; i++) add({ mode: 'table' });
+  draw(scene.scene, scene.camera);
+  const sameFilm = memory();
+  add({ mode: 'fourier' });
+  add({ mode: 'exact' });
+  draw(scene.scene, scene.camera);
+  const threeModes = memory();
+  disposeAll(scene.scene);
+  scene.scene.clear();
+  draw(scene.scene, scene.camera);
+  const disposed = memory();
+  // The soak: materials of random modes, lights and films made, drawn and disposed.
+  const modes = ['table', 'fourier', 'exact'] as const;
+  const lights = ['D65', 'D55', { daylightCct: 7500 }] as const;
+  let most = 0;
+  for (let r = 0; r < rounds; r++) {
+    const film = { ...c, thicknessNm: 100 + 37 * r, nFilm: 1.2 + (r % 5) * 0.1 };
+    const box = new Mesh(
+      new BoxGeometry(0.2, 0.2, 0.2),
+      spectralIridescence(filmMaterial(film), { mode: modes[r % 3]!, illuminant: lights[r % 3]! }),
+    );
+    scene.scene.add(box);
+    draw(scene.scene, scene.camera);
+    most = Math.max(most, memory().programs);
+    if (r % 2 === 1) {
+      disposeAll(scene.scene);
+      scene.scene.clear();
+    }
+  }
+  disposeAll(scene.scene);
+  scene.scene.clear();
+  draw(scene.scene, scene.camera);
+  return { before, sameFilm, threeModes, disposed, most, after: memory() };
+}
+
+window.materialHarness = { filmPixel, gltfPixel, againstPhysical, programCounts };
+document.body.dataset.ready = 'yes';
+
+declare global {
+  interface Window {
+    materialHarness?: {
+      filmPixel: typeof filmPixel;
+      gltfPixel: typeof gltfPixel;
+      againstPhysical: typeof againstPhysical;
+      programCounts: typeof programCounts;
+    };
+  }
+}

@@ -1,0 +1,69 @@
+import { expect, test } from '@playwright/test';
+import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
+import { PHYSICAL_MATERIAL_CODES } from '../tolerances.ts';
+import { watchProblems } from './pageWatch.ts';
+import type { FilmCase } from './harness/material.ts';
+
+/**
+ * The spectral iridescence (src/render/spectralIridescence.ts) in three.js scenes, one harness
+ * page (tests/e2e/harness/material.ts) for every check: the film's pixel against the float64
+ * reference on a box, through a glTF round trip, the rest of the physical material untouched, and
+ * the programs and textures as materials come and go.
+ */
+
+/** A soap film on glass, and a higher-index film on a lower-index base (a minimum at normal incidence). */
+const CASES: readonly FilmCase[] = [
+  { thicknessNm: 450, angleDeg: 20, nFilm: 1.33, ior: 1.5 },
+  { thicknessNm: 280, angleDeg: 50, nFilm: 1.8, ior: 1.4 },
+];
+const referenceOf = (c: FilmCase) =>
+  reference8({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm: c.nFilm, nInside: c.ior });
+
+test('the spectral iridescence on three.js meshes: reference colour, glTF, the physical material kept, programs', async ({ page }) => {
+  // ~50 s here (SwiftShader compiles each mode's program, the soak's among them): room for a slower machine.
+  test.setTimeout(300_000);
+  const problems = watchProblems(page);
+  await page.goto('/tests/e2e/harness/material.html');
+  await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
+
+  // A uniform film on a box's face, lit by constant radiance (env=none's white), in every mode.
+  for (const c of CASES) {
+    const expected = referenceOf(c);
+    for (const mode of ['table', 'fourier', 'exact'] as const) {
+      const pixel = await page.evaluate(([c, mode]) => window.materialHarness!.filmPixel(c, { mode }), [c, mode] as const);
+      expect(worstCodeDifference(pixel, expected), `${JSON.stringify(c)} ${mode}: ${pixel} vs ${expected}`).toBeLessThanOrEqual(
+        MAX_CODE_DIFFERENCE,
+      );
+    }
+  }
+
+  // The same film written as KHR_materials_iridescence by GLTFExporter, loaded by GLTFLoader, upgraded with one call.
+  const gltf = await page.evaluate((c) => window.materialHarness!.gltfPixel(c), CASES[0]!);
+  expect(gltf.extension).toBe(true);
+  expect(gltf.upgraded).toBe(1);
+  expect(worstCodeDifference(gltf.pixel, referenceOf(CASES[0]!))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+
+  // Everything else of the physical material is three's: lights, shadows, normal map, clearcoat, environment, tone mapping.
+  for (const [iridescence, maximumNm] of [
+    [0, 400],
+    [1, 0],
+  ] as const) {
+    const worst = await page.evaluate(([i, d]) => window.materialHarness!.againstPhysical(i, d), [iridescence, maximumNm] as const);
+    expect(worst, `iridescence ${iridescence}, thickness ${maximumNm} nm`).toBeLessThanOrEqual(PHYSICAL_MATERIAL_CODES);
+  }
+
+  // One program per configuration (4 table materials: theirs and the table pass's; then one per
+  // other mode); after dispose, none left; and a soak of 12 materials of every mode and light.
+  const counts = await page.evaluate(() => window.materialHarness!.programCounts(4, 12));
+  expect(counts.sameFilm.programs - counts.before.programs).toBe(2);
+  expect(counts.threeModes.programs - counts.before.programs).toBe(4);
+  expect(counts.disposed).toEqual(counts.before);
+  expect(counts.most - counts.before.programs).toBeLessThanOrEqual(4);
+  expect(counts.after).toEqual(counts.before);
+
+  // The example page draws both materials under its HDR environment and reports their ΔE00 at the probe.
+  await page.goto('/materials.html');
+  await expect(page.locator('body')).toHaveAttribute('data-frames', /\d+/);
+  await expect(page.locator('#readout')).toHaveText(/three\.js\s+#[0-9a-f]{6}, spectral\s+#[0-9a-f]{6}; ΔE00 \d+\.\d/);
+  expect(problems).toEqual([]);
+});

@@ -1,0 +1,99 @@
+/**
+ * The library as a separate project gets it: `npm pack` (its prepack builds dist-lib/), then the
+ * tarball installed offline into a fresh folder, its imports type-checked and run. three.js, the
+ * peer dependency, is the repository's own copy linked into that folder (nothing is fetched; a
+ * project of its own would install three from the registry).
+ */
+import { execFileSync } from 'node:child_process';
+import { copyFileSync, mkdtempSync, mkdirSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { afterAll, describe, expect, it } from 'vitest';
+import { XYZ_TO_LINEAR_SRGB, applyMatrix3 } from '../../src/physics/colorConversions.ts';
+import { SOAP_FILM_IN_AIR, filmReflectance } from '../../src/physics/filmReflectance.ts';
+import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
+
+const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+const HERE = fileURLToPath(new URL('.', import.meta.url));
+/** Build (vite, tsc for the types), pack, install and type-check take ~30 s here; allow for a loaded machine. */
+const PACK_TIMEOUT_MS = 240_000;
+
+const dir = mkdtempSync(join(tmpdir(), 'tfc-consumer-'));
+afterAll(() => rmSync(dir, { recursive: true, force: true }));
+const run = (cmd: string, args: string[], cwd: string) =>
+  execFileSync(cmd, args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+
+describe('the packed library in a fresh project', () => {
+  it(
+    'installs from the tarball offline; its three entries type-check; the physics and the material run',
+    () => {
+      run('npm', ['run', 'build:lib'], ROOT); // what prepack runs, apart so that pack's --json output is alone on stdout
+      const packed = JSON.parse(run('npm', ['pack', '--json', '--ignore-scripts', '--pack-destination', dir], ROOT)) as {
+        filename: string;
+        files: { path: string }[];
+      }[];
+      const files = packed[0]!.files.map((f) => f.path);
+      expect(files).toContain('dist-lib/material.js');
+      expect(files).toContain('dist-lib/types/lib/physics.d.ts');
+      expect(files.filter((f) => !f.startsWith('dist-lib/') && f !== 'package.json' && f !== 'README.md')).toEqual([]);
+
+      const project = join(dir, 'project');
+      mkdirSync(project);
+      writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'consumer', private: true, type: 'module' }));
+      run(
+        'npm',
+        ['install', '--offline', '--no-audit', '--no-fund', '--no-save', '--legacy-peer-deps', join(dir, packed[0]!.filename)],
+        project,
+      );
+      // The peer: the repository's three.js and its types, linked after the install (npm would
+      // prune links it did not make, and fetch three itself without --legacy-peer-deps).
+      mkdirSync(join(project, 'node_modules', '@types'), { recursive: true });
+      symlinkSync(join(ROOT, 'node_modules', 'three'), join(project, 'node_modules', 'three'), 'dir');
+      symlinkSync(join(ROOT, 'node_modules', '@types', 'three'), join(project, 'node_modules', '@types', 'three'), 'dir');
+
+      copyFileSync(join(HERE, 'consumer.ts.txt'), join(project, 'consumer.ts'));
+      const tsconfig = {
+        compilerOptions: {
+          target: 'ES2022',
+          module: 'ESNext',
+          moduleResolution: 'Bundler',
+          lib: ['ES2022', 'DOM', 'DOM.Iterable'],
+          strict: true,
+          noEmit: true,
+          types: [],
+        },
+        files: ['consumer.ts'],
+      };
+      writeFileSync(join(project, 'tsconfig.json'), JSON.stringify(tsconfig));
+      run(process.execPath, [join(ROOT, 'node_modules', 'typescript', 'bin', 'tsc'), '-p', 'tsconfig.json'], project);
+
+      // Run it: TypeScript's own transpiler strips the types; Node imports the installed package.
+      const ts = readFileSync(join(project, 'consumer.ts'), 'utf8');
+      const js = run(
+        process.execPath,
+        [
+          '--input-type=module',
+          '-e',
+          `import ts from ${JSON.stringify(join(ROOT, 'node_modules', 'typescript', 'lib', 'typescript.js'))}; process.stdout.write(ts.transpileModule(${JSON.stringify(ts)}, { compilerOptions: { module: 99, target: 9 } }).outputText)`,
+        ],
+        project,
+      );
+      writeFileSync(join(project, 'consumer.mjs'), js);
+      const out = JSON.parse(run(process.execPath, ['consumer.mjs'], project)) as Record<string, unknown>;
+
+      // The packed physics computes what the source does.
+      const stack = { ...SOAP_FILM_IN_AIR, thicknessNm: 0, angleDeg: 0 };
+      expect(out.bare).toBe(filmReflectance(550, stack));
+      expect(out.white).toEqual(whiteXyz('D65'));
+      expect(out.rgb).toEqual(applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz({ ...stack, thicknessNm: 450 })));
+      // The packed material replaces three's film and brings its uniforms; bad options name the parameter.
+      expect(out.spectral).toBe(true);
+      expect(out.replaced).toBe(true);
+      expect(out.uniforms).toEqual(expect.arrayContaining(['uNFilm', 'uSpectralTransform', 'uXyzToLinearWorking']));
+      expect(out.upgraded).toBe(1);
+      expect(out.refused).toBe('mode');
+    },
+    PACK_TIMEOUT_MS,
+  );
+});
