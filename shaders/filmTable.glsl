@@ -6,6 +6,7 @@
 // or the bins where the series has no real path or needs too many terms. The series' C0, B, q
 // depend on the row only: uAirySeriesRows holds them per row (src/render/airySeriesRows.ts,
 // computed in float64), so a texel only sums the series.
+// A dispersive film (TFC_DISPERSIVE) is filled from the dispersive bins, each texel averaged over its cell.
 // Built by src/render/filmTable.ts.
 #include "binnedIntegration.glsl"
 #include "airySeries.glsl"
@@ -43,7 +44,7 @@ void main() {
   float thicknessNm = filmTableThicknessNm(u, uTableMaxThicknessNm);
   float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
   float cosIncidence = filmTableCosIncidence(float(row) / (uFilmTableRows - 1.0));
-#if TFC_TABLE_FILL == 1
+#if TFC_TABLE_FILL == 1 && !defined(TFC_DISPERSIVE)
   AirySeriesTerms terms[TFC_FILM_CHANNELS];
   float pathPerNm;
   // At thickness 0 filmOptics decides (the bare interface, or the paper mode's eq 13), as in the reference.
@@ -54,8 +55,12 @@ void main() {
 #endif
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
+#ifdef TFC_DISPERSIVE
+  gl_FragColor = vec4(dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, cellNm), 1.0);
+#else
   FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   // Phase half-width of a cell at λ: 2π · 2 n_b cos θ_r · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).
   float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : 2.0 * uNFilm * refractedCos(uNFilm, na, cosIncidence).x;
   gl_FragColor = vec4(binnedXyz(o, 3.141592653589793 * perNmPath * cellNm), 1.0);
+#endif
 }

@@ -140,3 +140,9 @@ export function dispersiveBinnedXyz(stack: DispersiveFilmStack, polarization: Po
     };
   });
 }
+
+/** XYZ by bins of any film: binnedXyz of its optics for a constant index, dispersiveBinnedXyz otherwise. */
+export const stackBinnedXyz = (stack: DispersiveFilmStack, polarization: Polarization, bins: SpectralBins): Xyz =>
+  typeof stack.nFilm === 'number'
+    ? binnedXyz(filmOptics({ ...stack, nFilm: stack.nFilm }, polarization), bins)
+    : dispersiveBinnedXyz(stack, polarization, bins);

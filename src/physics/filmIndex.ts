@@ -127,7 +127,7 @@ export function filmIndexFromJson(value: unknown): FilmIndex | null {
   if (typeof value !== 'object' || value === null || Array.isArray(value) || Object.keys(value).join() !== 'cauchy') return null;
   const terms = (value as { cauchy: unknown }).cauchy;
   if (!Array.isArray(terms) || (terms.length !== 2 && terms.length !== 3) || !terms.every((t) => typeof t === 'number')) return null;
-  return { cauchy: [terms[0] as number, terms[1] as number, (terms[2] as number | undefined) ?? 0] };
+  return { cauchy: [terms[0] as number, terms[1] as number, terms[2] ?? 0] };
 }
 
 /** The checked index of a text, or why it is refused (quoting the text). */

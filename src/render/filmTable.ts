@@ -11,7 +11,9 @@ import {
   type WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
+import { type FilmIndex } from '../physics/filmIndex.ts';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { filmIndexDefines, filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { type FilmQuality } from './filmQuality.ts';
 import { type FilmSettings, maxFieldThicknessNm } from './filmSettings.ts';
@@ -64,7 +66,7 @@ export class FilmTable {
       uAirySeriesRows: { value: null },
       uPolarization: { value: 0 },
       uNOutside: { value: 1 },
-      uNFilm: { value: 1.33 },
+      ...filmIndexUniforms(),
       uNInside: { value: 1 },
       uTableMaxThicknessNm: { value: 1 },
       uFilmTableWidth: { value: 1 },
@@ -131,16 +133,19 @@ export class FilmTable {
     }
     if (this.target.width !== full.width) this.target.setSize(full.width, 2 * full.rows);
     this.target.viewport.set(0, 0, this.grid.width, 2 * this.grid.rows);
-    const material = this.material();
+    const material = this.material(s.nFilm);
     const u = material.uniforms;
     u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
-    airySeriesRows(s, { ...this.quality.table, rows: this.grid.rows }, this.rows.image.data as Float32Array);
-    this.rows.needsUpdate = true;
+    // A dispersive film is filled from the bins, which need no rows (shaders/filmTable.glsl).
+    if (typeof s.nFilm === 'number') {
+      airySeriesRows({ ...s, nFilm: s.nFilm }, { ...this.quality.table, rows: this.grid.rows }, this.rows.image.data as Float32Array);
+      this.rows.needsUpdate = true;
+    }
     u.uAirySeriesRows!.value = this.rows;
     u.uPolarization!.value = POLARIZATIONS.indexOf(s.polarization);
     u.uNOutside!.value = s.nOutside;
-    u.uNFilm!.value = s.nFilm;
+    updateFilmIndexUniforms(u, s.nFilm);
     u.uNInside!.value = s.nInside;
     u.uTableMaxThicknessNm!.value = this.maxThicknessNm;
     u.uFilmTableWidth!.value = this.grid.width;
@@ -161,8 +166,9 @@ export class FilmTable {
     this.shown = { key: '', coarse: false };
   }
 
-  private material(): ShaderMaterial {
+  private material(index: FilmIndex): ShaderMaterial {
     setDefines(this.pass, {
+      ...filmIndexDefines(index),
       TFC_POLARIZATION_UNIFORM: 1,
       ...spectralBinDefines(this.quality.table.spectralBins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),

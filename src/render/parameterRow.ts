@@ -1,4 +1,5 @@
 import { ILLUMINANT_EXPECTED, type IlluminantSpec, illuminantText, parseIlluminant } from '../physics/illuminants.ts';
+import { FILM_INDEX_EXPECTED, type FilmIndex, filmIndexText, readFilmIndex } from '../physics/filmIndex.ts';
 import { type NumberDomain, expectedNumber, isInDomain, parseDecimal } from '../physics/validate.ts';
 
 /** Where a parameter sits in the control panel, and how it is shown there. */
@@ -7,7 +8,9 @@ export type PanelControl =
   | { readonly folder: PanelFolder; readonly kind: 'choice'; readonly choices: readonly string[] }
   | { readonly folder: PanelFolder; readonly kind: 'toggle' }
   /** A named illuminant or a daylight CCT: a list of names plus a CCT slider. */
-  | { readonly folder: PanelFolder; readonly kind: 'illuminant' };
+  | { readonly folder: PanelFolder; readonly kind: 'illuminant' }
+  /** A film index: a constant (slider), a named material, or a Cauchy film (text A,B[,C]). */
+  | { readonly folder: PanelFolder; readonly kind: 'filmIndex' };
 
 export const PANEL_FOLDERS = ['film', 'light and colour', 'view'] as const;
 export type PanelFolder = (typeof PANEL_FOLDERS)[number];
@@ -36,6 +39,8 @@ export interface ParameterRow<S> {
   readonly defaultText: string;
   /** Its reading of a URL value, or null when refused. */
   readonly read: (raw: string) => Partial<S> | null;
+  /** Why a refused value is wrong, where the row can say more than `expected` (else undefined). */
+  readonly problem?: (raw: string) => string | null;
   /** The URL value that `read` turns back into `s`'s value. */
   readonly write: (s: S) => string;
   /** How the panel shows it; null: not in the panel. */
@@ -129,6 +134,27 @@ export function illuminantRow<S, K extends keyof S & string>(
       return illuminant === null ? null : ({ [n.key]: illuminant } as Partial<S>);
     },
     control: folder && { folder, kind: 'illuminant' },
+  };
+}
+
+/** A film index (filmIndex.ts): a number, a material's name or `cauchy:A,B[,C]`, within its domain over the band. */
+export function filmIndexRow<S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  defaultValue: S[K] & FilmIndex,
+  folder: PanelFolder | null,
+): ParameterRow<S> {
+  return {
+    ...named(n, defaultValue, (s) => filmIndexText(s[n.key] as FilmIndex)),
+    expected: FILM_INDEX_EXPECTED,
+    read: (raw) => {
+      const reading = readFilmIndex(raw);
+      return 'index' in reading ? ({ [n.key]: reading.index } as Partial<S>) : null;
+    },
+    problem: (raw) => {
+      const reading = readFilmIndex(raw);
+      return 'problem' in reading ? reading.problem : null;
+    },
+    control: folder && { folder, kind: 'filmIndex' },
   };
 }
 

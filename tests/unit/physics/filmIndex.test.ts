@@ -121,7 +121,7 @@ function transferMatrixXyz(index: FilmIndex, thicknessNm: number, angleDeg: numb
     const i = Math.floor(l - LAMBDA_MIN_NM);
     const f = l - LAMBDA_MIN_NM - i;
     const r = transferMatrixReflectance(index, thicknessNm, angleDeg, l) * h;
-    [w.x, w.y, w.z].forEach((t, k) => (xyz[k] += r * (t[i]! + (t[i + 1]! - t[i]!) * f)));
+    [w.x, w.y, w.z].forEach((t, k) => (xyz[k] = xyz[k]! + r * (t[i]! + (t[i + 1]! - t[i]!) * f)));
   }
   return xyz;
 }
