@@ -6,8 +6,12 @@
 // or the bins where the series has no real path or needs too many terms. The series' C0, B, q
 // depend on the row only: uAirySeriesRows holds them per row (src/render/airySeriesRows.ts,
 // computed in float64), so a texel only sums the series.
-// A dispersive film (TFC_DISPERSIVE) is filled from the dispersive bins, each texel averaged over its cell.
+// A dispersive film (TFC_DISPERSIVE) is filled from the dispersive bins, each texel averaged over its
+// cell, their Fresnel terms per row and bin from uDispersiveRows (src/render/dispersiveRows.ts).
 // Built by src/render/filmTable.ts.
+#ifdef TFC_DISPERSIVE
+#define TFC_DISPERSIVE_ROWS 1
+#endif
 #include "binnedIntegration.glsl"
 #include "airySeries.glsl"
 #include "filmTableLayout.glsl"
@@ -56,7 +60,9 @@ void main() {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
 #ifdef TFC_DISPERSIVE
-  gl_FragColor = vec4(dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, cellNm), 1.0);
+  // At thickness 0 filmOptics decides (the bare interface): the rows hold a film's terms.
+  gl_FragColor = vec4(thicknessNm > 0.0 ? dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, cellNm, texel.y)
+                                        : binnedXyz(filmOptics(na, uNFilm, nc, 0.0, cosIncidence), 0.0), 1.0);
 #else
   FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   // Phase half-width of a cell at λ: 2π · 2 n_b cos θ_r · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).

@@ -13,6 +13,7 @@ import {
 } from 'three';
 import { type FilmIndex } from '../physics/filmIndex.ts';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { dispersiveRows, dispersiveRowsTexture } from './dispersiveRows.ts';
 import { filmIndexDefines, filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { type FilmQuality } from './filmQuality.ts';
@@ -64,6 +65,7 @@ export class FilmTable {
       uSpectralBins: { value: null },
       uSpectralTransform: { value: null },
       uAirySeriesRows: { value: null },
+      uDispersiveRows: { value: null },
       uPolarization: { value: 0 },
       uNOutside: { value: 1 },
       ...filmIndexUniforms(),
@@ -77,6 +79,8 @@ export class FilmTable {
   });
   /** The series' terms per row, from the reference (src/render/airySeriesRows.ts). */
   private readonly rows: DataTexture;
+  /** A dispersive film's Fresnel terms per row and bin (src/render/dispersiveRows.ts), made when first needed. */
+  private dispersive: DataTexture | null = null;
   maxThicknessNm = 1;
   /** Milliseconds the last full build took (synced with a 1-pixel read), and how many there were: for the benchmark. */
   lastBuildMs = 0;
@@ -137,11 +141,17 @@ export class FilmTable {
     const u = material.uniforms;
     u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
-    // A dispersive film is filled from the bins, which need no rows (shaders/filmTable.glsl).
+    // A dispersive film is filled from the bins, with their terms per row (shaders/filmTable.glsl).
+    const rowLayout = { ...this.quality.table, rows: this.grid.rows };
     if (typeof s.nFilm === 'number') {
-      airySeriesRows({ ...s, nFilm: s.nFilm }, { ...this.quality.table, rows: this.grid.rows }, this.rows.image.data as Float32Array);
+      airySeriesRows({ ...s, nFilm: s.nFilm }, rowLayout, this.rows.image.data as Float32Array);
       this.rows.needsUpdate = true;
+    } else {
+      this.dispersive ??= dispersiveRowsTexture(this.quality.table);
+      dispersiveRows(s, rowLayout, this.dispersive.image.data as Float32Array);
+      this.dispersive.needsUpdate = true;
     }
+    u.uDispersiveRows!.value = this.dispersive;
     u.uAirySeriesRows!.value = this.rows;
     u.uPolarization!.value = POLARIZATIONS.indexOf(s.polarization);
     u.uNOutside!.value = s.nOutside;
@@ -182,6 +192,7 @@ export class FilmTable {
     this.quad.geometry.dispose();
     this.pass.dispose();
     this.rows.dispose();
+    this.dispersive?.dispose();
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);
   }
