@@ -14,6 +14,8 @@ import { buildAndMeasure, ELEMENT_BUNDLE } from './bench/bundleSize.ts';
 import { PANEL_CHANGES, demoPageFigures } from './bench/demoPage.ts';
 import { referenceSpeed, referenceSpeedMarkdown } from './bench/referenceSpeed.ts';
 import { ROWS } from './bench/rows.ts';
+import type { ParityGroup } from '../src/render/parityCase.ts';
+import type { Xyz } from '../src/physics/spectralWeights.ts';
 import { rowsMarkdown } from './bench/rowsMarkdown.ts';
 
 /** Ports of the benchmark's own servers (5173, 5180, 5181 belong to the dev server and the test suites). */
@@ -28,8 +30,17 @@ const selected = ROWS.filter((r, i) => i === 0 || !only || only.some((text) => r
 const reference = referenceSpeed();
 console.log(`${referenceSpeedMarkdown(reference)}\n`);
 log('reference speed done; computing the reference colours of the error grids');
-const grids = [FIXED_GRID, STRESS_GRID];
-const referenceColors = grids.map(referenceXyz);
+/** The grids for a row's film (the soap film n 1.33, or the row's own index) and their reference colours, computed once per film. */
+const gridsByFilm = new Map<string, { grids: ParityGroup[]; reference: Xyz[][] }>();
+function gridsOf(row: (typeof ROWS)[number]) {
+  const key = JSON.stringify(row.settings.nFilm);
+  const known = gridsByFilm.get(key);
+  if (known) return known;
+  const grids = [FIXED_GRID, STRESS_GRID].map((g) => ({ ...g, nFilm: row.settings.nFilm }));
+  const made = { grids, reference: row.measuresError ? grids.map(referenceXyz) : [] };
+  gridsByFilm.set(key, made);
+  return made;
+}
 
 const server = await createServer({ logLevel: 'silent', server: { port: DEV_PORT, strictPort: true, host: '127.0.0.1' } });
 await server.listen();
@@ -38,8 +49,9 @@ await warmUp(browser, `http://127.0.0.1:${DEV_PORT}`);
 const rows = [];
 try {
   for (const row of selected) {
+    const { grids, reference } = gridsOf(row);
     const result = await runRow(browser, `http://127.0.0.1:${DEV_PORT}`, row, grids);
-    const errors = row.measuresError ? grids.map((g, i) => gridError(g, referenceColors[i]!, result.xyz[i]!)) : null;
+    const errors = row.measuresError ? grids.map((g, i) => gridError(g, reference[i]!, result.xyz[i]!)) : null;
     log(
       `${row.name}: ${JSON.stringify({ frames: result.frames, table: result.tableBuildMs, errors: errors?.map((e) => [e.max.toFixed(2), e.worst]) })}`,
     );

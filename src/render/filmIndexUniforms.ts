@@ -1,7 +1,7 @@
 import { type FilmIndex, filmIndexAt, isDispersive } from '../physics/filmIndex.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 
-/** The spacing of shaders/filmIndex.glsl's knots: linear between them, n_b is within ~3e-6 of water's (n'' ≤ 8e-7 per nm²). */
+/** The spacing of shaders/filmIndex.glsl's knots: linear between them, n_b is within 3e-6 of water's (docs/physics.md#a-dispersive-film). */
 const STEP_NM = 5;
 const KNOTS = LAMBDA_SPAN_NM / STEP_NM + 1;
 
