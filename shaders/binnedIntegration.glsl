@@ -50,9 +50,9 @@ vec3 binnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
 #include "filmIndex.glsl"
 
 // What a dispersive film's bin needs: the optics at n_b of its centre, and Re Δ per nm of
-// thickness at its centre and its two ends. Per fragment from the index (dispersiveBinnedXyz), or
+// thickness at its two ends. Per fragment from the index (dispersiveBinnedXyz), or
 // per table row from float64 terms (filmTable.glsl, which defines TFC_DISPERSIVE_ROWS).
-struct DispersiveBin { FilmOptics optics; float pathPerNmCenter; float pathPerNmLow; float pathPerNmHigh; };
+struct DispersiveBin { FilmOptics optics; float pathPerNmLow; float pathPerNmHigh; };
 
 #ifdef TFC_DISPERSIVE_ROWS
 uniform sampler2D uDispersiveRows;
@@ -69,7 +69,6 @@ DispersiveBin dispersiveBin(int y, int b, float thicknessNm, float nOutside, flo
   d.optics.channels[1] = AiryTerms(t1.zw, t2.xy, t2.zw);
 #endif
   d.optics.opticalPathNm = t3.xy * thicknessNm;
-  d.pathPerNmCenter = t3.x;
   d.pathPerNmLow = t3.z;
   d.pathPerNmHigh = t3.w;
   return d;
@@ -81,7 +80,6 @@ DispersiveBin dispersiveBin(int y, int b, float thicknessNm, float nOutside, flo
   float center = l1 + 0.5 * width;
   DispersiveBin d;
   d.optics = filmOptics(nOutside, filmIndexAt(center), nInside, thicknessNm, cosIncidence);
-  d.pathPerNmCenter = filmPathPerNm(center, nOutside, cosIncidence);
   d.pathPerNmLow = filmPathPerNm(l1, nOutside, cosIncidence);
   d.pathPerNmHigh = filmPathPerNm(l1 + width, nOutside, cosIncidence);
   return d;
@@ -90,9 +88,9 @@ DispersiveBin dispersiveBin(int y, int b, float thicknessNm, float nOutside, flo
 
 // The bins of a film whose index depends on λ (mirrors dispersiveBinnedXyz in
 // src/physics/binnedIntegration.ts): each bin's Fresnel terms at n_b of its centre, its phase window
-// from the optical path at its two ends, [2π Δ(λ2)/λ2, 2π Δ(λ1)/λ1]; cellNm widens it by a table
-// cell's thickness range. `row`: the table row of TFC_DISPERSIVE_ROWS (unused per fragment).
-vec3 dispersiveBinnedXyz(float nOutside, float nInside, float thicknessNm, float cosIncidence, float cellNm, int row) {
+// from the optical path at its two ends, [2π Δ(λ2)/λ2, 2π Δ(λ1)/λ1]. `row`: the table row of
+// TFC_DISPERSIVE_ROWS (unused per fragment).
+vec3 dispersiveBinnedXyz(float nOutside, float nInside, float thicknessNm, float cosIncidence, int row) {
   const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
   vec3 xyz = vec3(0.0);
   for (int b = TFC_SPECTRAL_BIN_FIRST; b < TFC_SPECTRAL_BIN_END; b++) {
@@ -102,9 +100,7 @@ vec3 dispersiveBinnedXyz(float nOutside, float nInside, float thicknessNm, float
     DispersiveBin d = dispersiveBin(row, b, thicknessNm, nOutside, nInside, cosIncidence);
     float low = d.pathPerNmLow * thicknessNm / l1;
     float high = d.pathPerNmHigh * thicknessNm / l2;
-    float extra = 3.141592653589793 * d.pathPerNmCenter * cellNm / center;
-    float halfWidth = length(vec2(3.141592653589793 * (low - high), extra));
-    xyz += binReflectance(d.optics, center, 3.141592653589793 * (low + high), halfWidth) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
+    xyz += binReflectance(d.optics, center, 3.141592653589793 * (low + high), 3.141592653589793 * (low - high)) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
   }
   return xyz;
 }

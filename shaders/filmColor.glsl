@@ -20,7 +20,7 @@ vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
 #ifdef TFC_DISPERSIVE
-  return dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0.0, 0);
+  return dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
 #else
   return binnedXyz(filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence), 0.0);
 #endif
@@ -48,7 +48,7 @@ vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float nc = fromInside ? uNOutside : uNInside;
 #ifdef TFC_DISPERSIVE
   // A dispersive film has no series in x alone (docs/physics.md#a-dispersive-film): the bins take it.
-  return dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0.0, 0);
+  return dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
 #else
   FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   AirySeriesTerms t[TFC_FILM_CHANNELS];

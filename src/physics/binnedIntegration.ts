@@ -121,10 +121,9 @@ export function binnedXyz(optics: FilmOptics, bins: SpectralBins, extraHalfWidth
 /**
  * XYZ by bins of a film whose index depends on λ (shaders/binnedIntegration.glsl, dispersiveBinnedXyz):
  * each bin's Fresnel terms at n_b of its centre, its phase window from the optical path at its two
- * ends, 2π Δ(λ)/λ with Δ(λ) = 2 n_b(λ) d cos θ_r(λ). `cellNm` widens the windows by a table cell's
- * thickness range, as binnedXyz's extra width does.
+ * ends, 2π Δ(λ)/λ with Δ(λ) = 2 n_b(λ) d cos θ_r(λ).
  */
-export function dispersiveBinnedXyz(stack: DispersiveFilmStack, polarization: Polarization, bins: SpectralBins, cellNm = 0): Xyz {
+export function dispersiveBinnedXyz(stack: DispersiveFilmStack, polarization: Polarization, bins: SpectralBins): Xyz {
   const cos = cosDeg(stack.angleDeg);
   const pathPerNm = (l: number) => {
     const nb = filmIndexAt(stack.nFilm, l);
@@ -136,7 +135,7 @@ export function dispersiveBinnedXyz(stack: DispersiveFilmStack, polarization: Po
       optics: filmOptics(stackAt(stack, center), polarization),
       pathLowNm: pathPerNm(l1) * stack.thicknessNm,
       pathHighNm: pathPerNm(l2) * stack.thicknessNm,
-      extraHalfWidth: (Math.PI * pathPerNm(center) * cellNm) / center,
+      extraHalfWidth: 0,
     };
   });
 }

@@ -1,7 +1,7 @@
 import { type DataTexture, Matrix3, ShaderMaterial } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { type Matrix3 as Rows3, XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
-import { type FilmQuality } from './filmQuality.ts';
+import { type FilmQuality, spectralBinsFor } from './filmQuality.ts';
 import { FIELDS, FILM_METHODS, type FilmSettings } from './filmSettings.ts';
 import { environmentDefines, environmentUniforms, updateEnvironmentUniforms } from './environmentMaterial.ts';
 import { filmIndexDefines, filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
@@ -22,7 +22,11 @@ export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nF
 export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
   const method = { TFC_FILM_MODE: FILM_METHODS.indexOf(s.mode), TFC_POLARIZATION: POLARIZATIONS.indexOf(s.polarization) };
   if (s.mode === 'exact')
-    return { ...method, ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance), ...filmIndexDefines(s.nFilm) };
+    return {
+      ...method,
+      ...spectralBinDefines(spectralBinsFor(s.nFilm, q, q.exactSpectralBins), q.spectralTailTolerance),
+      ...filmIndexDefines(s.nFilm),
+    };
   // The lookup does not depend on the polarisation (the table pass does), so changing it compiles no bubble.
   if (s.mode === 'table') return { TFC_FILM_MODE: method.TFC_FILM_MODE, ...filmTableLayoutDefines(q.table) };
   // The series, and the binned integral for evanescent films (which have no real optical path).
@@ -30,7 +34,7 @@ export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<s
     return {
       ...method,
       ...airySeriesDefines(q.airySeriesMaxOrders),
-      ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance),
+      ...spectralBinDefines(spectralBinsFor(s.nFilm, q, q.exactSpectralBins), q.spectralTailTolerance),
       ...filmIndexDefines(s.nFilm),
     };
   return method;
@@ -47,7 +51,8 @@ export function updateFilmColorTextures(
 ): void {
   const u = m.uniforms;
   const binned = s.mode === 'exact' || s.mode === 'fourier';
-  if (binned) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins, m);
+  if (binned)
+    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s.nFilm, q, q.exactSpectralBins), m);
   else {
     releaseSpectralBinsTexture(m);
     u.uSpectralBins!.value = null;

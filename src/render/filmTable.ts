@@ -16,7 +16,7 @@ import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { dispersiveRows, dispersiveRowsTexture } from './dispersiveRows.ts';
 import { filmIndexDefines, filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
-import { type FilmQuality } from './filmQuality.ts';
+import { type FilmQuality, spectralBinsFor } from './filmQuality.ts';
 import { type FilmSettings, maxFieldThicknessNm } from './filmSettings.ts';
 import { filmTableLayoutDefines, filmTableWidth } from './filmTableLayout.ts';
 import { setDefines } from './materialDefines.ts';
@@ -137,17 +137,18 @@ export class FilmTable {
     }
     if (this.target.width !== full.width) this.target.setSize(full.width, 2 * full.rows);
     this.target.viewport.set(0, 0, this.grid.width, 2 * this.grid.rows);
-    const material = this.material(s.nFilm);
+    const bins = spectralBinsFor(s.nFilm, this.quality, this.quality.table.spectralBins);
+    const material = this.material(s.nFilm, bins);
     const u = material.uniforms;
-    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
+    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, bins, this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
     // A dispersive film is filled from the bins, with their terms per row (shaders/filmTable.glsl).
-    const rowLayout = { ...this.quality.table, rows: this.grid.rows };
+    const rowLayout = { ...this.quality.table, rows: this.grid.rows, spectralBins: bins };
     if (typeof s.nFilm === 'number') {
       airySeriesRows({ ...s, nFilm: s.nFilm }, rowLayout, this.rows.image.data as Float32Array);
       this.rows.needsUpdate = true;
     } else {
-      this.dispersive ??= dispersiveRowsTexture(this.quality.table);
+      this.dispersive ??= dispersiveRowsTexture({ ...this.quality.table, spectralBins: bins });
       dispersiveRows(s, rowLayout, this.dispersive.image.data as Float32Array);
       this.dispersive.needsUpdate = true;
     }
@@ -176,11 +177,11 @@ export class FilmTable {
     this.shown = { key: '', coarse: false };
   }
 
-  private material(index: FilmIndex): ShaderMaterial {
+  private material(index: FilmIndex, bins: number): ShaderMaterial {
     setDefines(this.pass, {
       ...filmIndexDefines(index),
       TFC_POLARIZATION_UNIFORM: 1,
-      ...spectralBinDefines(this.quality.table.spectralBins, this.quality.spectralTailTolerance),
+      ...spectralBinDefines(bins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),
       ...airySeriesDefines(),
     });
