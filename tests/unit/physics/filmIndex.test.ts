@@ -13,6 +13,7 @@ import {
 } from '../../../src/physics/filmIndex.ts';
 import { filmOptics } from '../../../src/physics/filmReflectance.ts';
 import { filmXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
+import { DEFAULT_FILM_QUALITY } from '../../../src/render/filmQuality.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { DISPERSIVE_BINNED_DE00, DISPERSIVE_REFERENCE_DE00, FLOAT_TOLERANCE, WATER_INDEX_TOL } from '../../tolerances.ts';
 
@@ -171,7 +172,7 @@ describe('the reference with a dispersive film', () => {
 });
 
 describe('the binned method with a dispersive film (the shaders’ twin)', () => {
-  const bins = spectralBins(spectralWeights('D65', 'white'), 90);
+  const bins = spectralBins(spectralWeights('D65', 'white'), DEFAULT_FILM_QUALITY.dispersiveSpectralBins);
   const white = whiteXyz('D65');
 
   it('is binnedXyz when n does not vary', () => {
@@ -182,7 +183,7 @@ describe('the binned method with a dispersive film (the shaders’ twin)', () =>
 
   it(`stays within ΔE00 ${DISPERSIVE_BINNED_DE00} of the reference for water and a Cauchy film, 0–2000 nm, 0–85°`, () => {
     for (const nFilm of ['water', { cauchy: [1.45, 6000, 0] }] as const) {
-      for (let thicknessNm = 0; thicknessNm <= 2000; thicknessNm += 250) {
+      for (let thicknessNm = 0; thicknessNm <= 2000; thicknessNm += 125) {
         for (const angleDeg of [0, 45, 85]) {
           const stack = { nOutside: 1, nFilm, nInside: 1, thicknessNm, angleDeg };
           expect(deltaE00(dispersiveBinnedXyz(stack, 'unpolarized', bins), filmXyz(stack), white)).toBeLessThan(DISPERSIVE_BINNED_DE00);
