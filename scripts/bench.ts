@@ -30,16 +30,17 @@ const selected = ROWS.filter((r, i) => i === 0 || !only || only.some((text) => r
 const reference = referenceSpeed();
 console.log(`${referenceSpeedMarkdown(reference)}\n`);
 log('reference speed done; computing the reference colours of the error grids');
-/** The grids for a row's film (the soap film n 1.33, or the row's own index) and their reference colours, computed once per film. */
-const gridsByFilm = new Map<string, { grids: ParityGroup[]; reference: Xyz[][] }>();
-function gridsOf(row: (typeof ROWS)[number]) {
+/** The grids for a row's film (the soap film n 1.33, or the row's own index) and their reference colours, computed once per film when first needed. */
+const gridsByFilm = new Map<string, { grids: ParityGroup[]; reference: Xyz[][] | null }>();
+function gridsOf(row: (typeof ROWS)[number]): { grids: ParityGroup[]; reference: Xyz[][] | null } {
   const key = JSON.stringify(row.settings.nFilm);
-  const known = gridsByFilm.get(key);
-  if (known) return known;
-  const grids = [FIXED_GRID, STRESS_GRID].map((g) => ({ ...g, nFilm: row.settings.nFilm }));
-  const made = { grids, reference: row.measuresError ? grids.map(referenceXyz) : [] };
-  gridsByFilm.set(key, made);
-  return made;
+  const entry = gridsByFilm.get(key) ?? {
+    grids: [FIXED_GRID, STRESS_GRID].map((g) => ({ ...g, nFilm: row.settings.nFilm })),
+    reference: null,
+  };
+  if (row.measuresError) entry.reference ??= entry.grids.map(referenceXyz);
+  gridsByFilm.set(key, entry);
+  return entry;
 }
 
 const server = await createServer({ logLevel: 'silent', server: { port: DEV_PORT, strictPort: true, host: '127.0.0.1' } });
@@ -51,7 +52,7 @@ try {
   for (const row of selected) {
     const { grids, reference } = gridsOf(row);
     const result = await runRow(browser, `http://127.0.0.1:${DEV_PORT}`, row, grids);
-    const errors = row.measuresError ? grids.map((g, i) => gridError(g, reference[i]!, result.xyz[i]!)) : null;
+    const errors = reference ? grids.map((g, i) => gridError(g, reference[i]!, result.xyz[i]!)) : null;
     log(
       `${row.name}: ${JSON.stringify({ frames: result.frames, table: result.tableBuildMs, errors: errors?.map((e) => [e.max.toFixed(2), e.worst]) })}`,
     );
