@@ -120,43 +120,66 @@ export function flagRow<S, K extends keyof S & string>(n: RowNames<S, K>, defaul
   };
 }
 
-/** An illuminant: a name, or a number read as a daylight CCT in kelvin. */
-export function illuminantRow<S, K extends keyof S & string>(
+/** A value of a kind of its own written as text: how it reads (a value, or why not) and writes. */
+interface TextKind<V> {
+  readonly expected: string;
+  readonly parse: (raw: string) => { readonly value: V } | { readonly problem: string | null };
+  readonly text: (value: V) => string;
+  readonly kind: 'illuminant' | 'filmIndex';
+}
+
+function textRow<S, K extends keyof S & string, V>(
   n: RowNames<S, K>,
-  defaultValue: S[K] & IlluminantSpec,
+  defaultValue: S[K] & V,
   folder: PanelFolder | null,
+  k: TextKind<V>,
 ): ParameterRow<S> {
   return {
-    ...named(n, defaultValue, (s) => illuminantText(s[n.key] as IlluminantSpec)),
-    expected: ILLUMINANT_EXPECTED,
+    ...named(n, defaultValue, (s) => k.text(s[n.key] as V)),
+    expected: k.expected,
     read: (raw) => {
-      const illuminant = parseIlluminant(raw);
-      return illuminant === null ? null : ({ [n.key]: illuminant } as Partial<S>);
+      const reading = k.parse(raw);
+      return 'value' in reading ? ({ [n.key]: reading.value } as Partial<S>) : null;
     },
-    control: folder && { folder, kind: 'illuminant' },
+    problem: (raw) => {
+      const reading = k.parse(raw);
+      return 'problem' in reading ? reading.problem : null;
+    },
+    control: folder && { folder, kind: k.kind },
   };
 }
 
+/** An illuminant: a name, or a number read as a daylight CCT in kelvin. */
+export const illuminantRow = <S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  defaultValue: S[K] & IlluminantSpec,
+  folder: PanelFolder | null,
+) =>
+  textRow<S, K, IlluminantSpec>(n, defaultValue, folder, {
+    expected: ILLUMINANT_EXPECTED,
+    parse: (raw) => {
+      const value = parseIlluminant(raw);
+      return value === null ? { problem: null } : { value };
+    },
+    text: illuminantText,
+    kind: 'illuminant',
+  });
+
 /** A film index (filmIndex.ts): a number, a material's name or `cauchy:A,B[,C]`, within its domain over the band. */
-export function filmIndexRow<S, K extends keyof S & string>(
+export const filmIndexRow = <S, K extends keyof S & string>(
   n: RowNames<S, K>,
   defaultValue: S[K] & FilmIndex,
   folder: PanelFolder | null,
-): ParameterRow<S> {
-  return {
-    ...named(n, defaultValue, (s) => filmIndexText(s[n.key] as FilmIndex)),
+) =>
+  textRow<S, K, FilmIndex>(n, defaultValue, folder, {
     expected: FILM_INDEX_EXPECTED,
-    read: (raw) => {
+    parse: (raw) => {
       const reading = readFilmIndex(raw);
-      return 'index' in reading ? ({ [n.key]: reading.index } as Partial<S>) : null;
+      return 'index' in reading ? { value: reading.index } : reading;
     },
-    problem: (raw) => {
-      const reading = readFilmIndex(raw);
-      return 'problem' in reading ? reading.problem : null;
-    },
-    control: folder && { folder, kind: 'filmIndex' },
-  };
-}
+    text: filmIndexText,
+    kind: 'filmIndex',
+  });
 
 /** The settings that every row's default makes. */
 export const defaultsOf = <S>(rows: readonly ParameterRow<S>[]): S =>
