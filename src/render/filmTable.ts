@@ -78,16 +78,19 @@ export class FilmTable {
     fragmentShader: shaderSource('filmTable.glsl'),
   });
   /** The series' terms per row, from the reference (src/render/airySeriesRows.ts). */
-  private readonly rows: DataTexture;
-  /** A dispersive film's Fresnel terms per row and bin (src/render/dispersiveRows.ts), made when first needed. */
-  private dispersive: DataTexture | null = null;
+  /**
+   * The per-row terms: the series' C₀, B, q (airySeriesRows.ts), or for a dispersive film the Fresnel
+   * terms per row and bin (dispersiveRows.ts). One texture, remade when the kind changes, so a
+   * dispersive film holds no more GPU objects than a constant one.
+   */
+  private rows: { texture: DataTexture; dispersive: boolean };
   maxThicknessNm = 1;
   /** Milliseconds the last full build took (synced with a 1-pixel read), and how many there were: for the benchmark. */
   lastBuildMs = 0;
   builds = 0;
 
   constructor(private readonly quality: FilmQuality) {
-    this.rows = airySeriesRowsTexture(quality.table);
+    this.rows = { texture: airySeriesRowsTexture(quality.table), dispersive: false };
     this.target = new WebGLRenderTarget(1, 2 * quality.table.rows, {
       format: RGBAFormat,
       minFilter: LinearFilter,
@@ -144,16 +147,20 @@ export class FilmTable {
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
     // A dispersive film is filled from the bins, with their terms per row (shaders/filmTable.glsl).
     const rowLayout = { ...this.quality.table, rows: this.grid.rows, spectralBins: bins };
-    if (typeof s.nFilm === 'number') {
-      airySeriesRows({ ...s, nFilm: s.nFilm }, rowLayout, this.rows.image.data as Float32Array);
-      this.rows.needsUpdate = true;
-    } else {
-      this.dispersive ??= dispersiveRowsTexture({ ...this.quality.table, spectralBins: bins });
-      dispersiveRows(s, rowLayout, this.dispersive.image.data as Float32Array);
-      this.dispersive.needsUpdate = true;
+    const dispersive = typeof s.nFilm !== 'number';
+    if (this.rows.dispersive !== dispersive) {
+      this.rows.texture.dispose();
+      const texture = dispersive
+        ? dispersiveRowsTexture({ ...this.quality.table, spectralBins: bins })
+        : airySeriesRowsTexture(this.quality.table);
+      this.rows = { texture, dispersive };
     }
-    u.uDispersiveRows!.value = this.dispersive;
-    u.uAirySeriesRows!.value = this.rows;
+    const data = this.rows.texture.image.data as Float32Array;
+    if (typeof s.nFilm === 'number') airySeriesRows({ ...s, nFilm: s.nFilm }, rowLayout, data);
+    else dispersiveRows(s, rowLayout, data);
+    this.rows.texture.needsUpdate = true;
+    u.uDispersiveRows!.value = this.rows.texture;
+    u.uAirySeriesRows!.value = this.rows.texture;
     u.uPolarization!.value = POLARIZATIONS.indexOf(s.polarization);
     u.uNOutside!.value = s.nOutside;
     updateFilmIndexUniforms(u, s.nFilm);
@@ -192,8 +199,7 @@ export class FilmTable {
     this.target.dispose();
     this.quad.geometry.dispose();
     this.pass.dispose();
-    this.rows.dispose();
-    this.dispersive?.dispose();
+    this.rows.texture.dispose();
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);
   }
