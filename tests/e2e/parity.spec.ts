@@ -148,6 +148,7 @@ test.afterAll(() => {
 
 for (const mode of MODES) {
   test(`${mode} mode matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°`, async ({ page }) => {
+    test.slow(mode !== 'fourier', 'dispersive films by bins');
     const groups = fixedDomain();
     const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
     results[`${mode}/fixed`] = figures;
@@ -158,6 +159,8 @@ for (const mode of MODES) {
   });
 
   test(`${mode} mode stays finite and close on thick, grazing and TIR films`, async ({ page }) => {
+    // The dispersive 20 µm films' tables sum 150 bins per texel over 1024 × 256 texels: over two minutes on a busy CPU rasteriser.
+    test.slow(mode !== 'fourier', 'dispersive films by bins');
     const groups = stressDomain();
     const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
     results[`${mode}/stress`] = figures;
@@ -174,6 +177,7 @@ for (const mode of MODES) {
 test(`the half-float table matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°, and stays finite on the stress cases`, async ({
   page,
 }) => {
+  test.slow(true, 'dispersive films by bins');
   const half = { ...DEFAULT_FILM_QUALITY, tablePrecision: 'half' } as const;
   const fixed = fixedDomain();
   const fixedResult = compare(fixed, await render(page, fixed, 'table', half));
