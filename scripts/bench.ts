@@ -6,6 +6,7 @@
  */
 import { writeFileSync } from 'node:fs';
 import { chromium } from '@playwright/test';
+import type { FilmIndex } from '../src/physics/filmIndex.ts';
 import { createServer, preview } from 'vite';
 import { chromiumLaunchOptions } from './chromium.ts';
 import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './bench/errorGrids.ts';
@@ -15,6 +16,8 @@ import { PANEL_CHANGES, demoPageFigures } from './bench/demoPage.ts';
 import { materialFigures } from './bench/materialFigures.ts';
 import { referenceSpeed, referenceSpeedMarkdown } from './bench/referenceSpeed.ts';
 import { ROWS } from './bench/rows.ts';
+import type { ParityGroup } from '../src/render/parityCase.ts';
+import type { Xyz } from '../src/physics/spectralWeights.ts';
 import { rowsMarkdown } from './bench/rowsMarkdown.ts';
 
 /** Ports of the benchmark's own servers (5173, 5180, 5181 belong to the dev server and the test suites). */
@@ -32,8 +35,15 @@ const runMaterials = !only || only.some((text) => MATERIALS_ROW.includes(text));
 const reference = referenceSpeed();
 console.log(`${referenceSpeedMarkdown(reference)}\n`);
 log('reference speed done; computing the reference colours of the error grids');
-const grids = [FIXED_GRID, STRESS_GRID];
-const referenceColors = grids.map(referenceXyz);
+/** The grids for a film (the soap film n 1.33, or a row's own index) and, if asked for, their reference colours, computed once per film when first needed. */
+const gridsByFilm = new Map<string, { grids: ParityGroup[]; reference: Xyz[][] | null }>();
+function gridsOf(nFilm: FilmIndex, withReference: boolean): { grids: ParityGroup[]; reference: Xyz[][] | null } {
+  const key = JSON.stringify(nFilm);
+  const entry = gridsByFilm.get(key) ?? { grids: [FIXED_GRID, STRESS_GRID].map((g) => ({ ...g, nFilm })), reference: null };
+  if (withReference) entry.reference ??= entry.grids.map(referenceXyz);
+  gridsByFilm.set(key, entry);
+  return entry;
+}
 
 const server = await createServer({ logLevel: 'silent', server: { port: DEV_PORT, strictPort: true, host: '127.0.0.1' } });
 await server.listen();
@@ -43,15 +53,18 @@ const rows = [];
 let materials = null;
 try {
   for (const row of selected) {
+    const { grids, reference } = gridsOf(row.settings.nFilm, row.measuresError);
     const result = await runRow(browser, `http://127.0.0.1:${DEV_PORT}`, row, grids);
-    const errors = row.measuresError ? grids.map((g, i) => gridError(g, referenceColors[i]!, result.xyz[i]!)) : null;
+    const errors = reference ? grids.map((g, i) => gridError(g, reference[i]!, result.xyz[i]!)) : null;
     log(
       `${row.name}: ${JSON.stringify({ frames: result.frames, table: result.tableBuildMs, errors: errors?.map((e) => [e.max.toFixed(2), e.worst]) })}`,
     );
     rows.push({ name: row.name, settings: row.settings, quality: row.quality, ...result, xyz: undefined, errors });
   }
   if (runMaterials) {
-    materials = await materialFigures(browser, `http://127.0.0.1:${DEV_PORT}`, grids, referenceColors);
+    // The material's film is three's iridescenceIOR, one number: the soap film's grids.
+    const soap = gridsOf(FIXED_GRID.nFilm, true);
+    materials = await materialFigures(browser, `http://127.0.0.1:${DEV_PORT}`, soap.grids, soap.reference!);
     log(`${MATERIALS_ROW}: ${JSON.stringify(materials)}`);
   }
 } finally {

@@ -3,6 +3,8 @@
 //   2 fourier: the Airy series per fragment (airySeries.glsl; by bins where it has no real path or
 //     needs more than TFC_AIRY_SERIES_MAX_ORDERS terms);
 //   3 three.js's iridescence (Belcour–Barla, `evalIridescence`), the benchmark's peer.
+// TFC_DISPERSIVE: the film's index depends on λ (filmIndex.glsl); exact and fourier then take the
+// dispersive bins, the table is filled from them, and uNFilm is n_b at the sodium D line (the peer's).
 // fromInside swaps the outer and inner media (the far wall seen through the bubble).
 #ifndef THIN_FILM_COLOR
 #define THIN_FILM_COLOR
@@ -17,7 +19,11 @@ uniform float uNInside;
 vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
+#ifdef TFC_DISPERSIVE
+  return dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
+#else
   return binnedXyz(filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence), 0.0);
+#endif
 }
 #elif TFC_FILM_MODE == 1
 #include "filmTableLayout.glsl"
@@ -40,11 +46,16 @@ vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
 vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
+#ifdef TFC_DISPERSIVE
+  // A dispersive film has no series in x alone (docs/physics.md#a-dispersive-film): the bins take it.
+  return dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
+#else
   FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   AirySeriesTerms t[TFC_FILM_CHANNELS];
   airySeriesTermsOf(o, t);
   float x = o.opticalPathNm.x;
   return o.opticalPathNm.y == 0.0 && (TFC_AIRY_SERIES_TRUNCATED == 1 || airySeriesConvergesAt(t, x)) ? airySeriesSum(t, x) : binnedXyz(o, 0.0);
+#endif
 }
 #else
 #define USE_IRIDESCENCE

@@ -6,7 +6,13 @@
 // or the bins where the series has no real path or needs too many terms. The series' C0, B, q
 // depend on the row only: uAirySeriesRows holds them per row (src/render/airySeriesRows.ts,
 // computed in float64), so a texel only sums the series.
+// A dispersive film (TFC_DISPERSIVE) is filled from the dispersive bins at the texel's film (not
+// averaged over its cell: with the bilinear lookup that smoothed twice, stress grid ΔE00 0.52 against
+// 0.34), their Fresnel terms per row and bin from uDispersiveRows (src/render/dispersiveRows.ts).
 // Built by src/render/filmTable.ts.
+#ifdef TFC_DISPERSIVE
+#define TFC_DISPERSIVE_ROWS 1
+#endif
 #include "binnedIntegration.glsl"
 #include "airySeries.glsl"
 #include "filmTableLayout.glsl"
@@ -43,7 +49,7 @@ void main() {
   float thicknessNm = filmTableThicknessNm(u, uTableMaxThicknessNm);
   float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
   float cosIncidence = filmTableCosIncidence(float(row) / (uFilmTableRows - 1.0));
-#if TFC_TABLE_FILL == 1
+#if TFC_TABLE_FILL == 1 && !defined(TFC_DISPERSIVE)
   AirySeriesTerms terms[TFC_FILM_CHANNELS];
   float pathPerNm;
   // At thickness 0 filmOptics decides (the bare interface, or the paper mode's eq 13), as in the reference.
@@ -54,8 +60,14 @@ void main() {
 #endif
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
+#ifdef TFC_DISPERSIVE
+  // At thickness 0 filmOptics decides (the bare interface): the rows hold a film's terms.
+  gl_FragColor = vec4(thicknessNm > 0.0 ? dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, texel.y)
+                                        : binnedXyz(filmOptics(na, uNFilm, nc, 0.0, cosIncidence), 0.0), 1.0);
+#else
   FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   // Phase half-width of a cell at λ: 2π · 2 n_b cos θ_r · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).
   float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : 2.0 * uNFilm * refractedCos(uNFilm, na, cosIncidence).x;
   gl_FragColor = vec4(binnedXyz(o, 3.141592653589793 * perNmPath * cellNm), 1.0);
+#endif
 }

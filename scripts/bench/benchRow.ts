@@ -34,12 +34,16 @@ export interface BenchRowResult {
   readonly xyz: readonly number[][][];
 }
 
-/** The changes timed per row, as a user makes them in the panel: n film, the light, the polarisation, the range. */
-export const CHANGES: readonly { readonly name: string; readonly values: readonly Partial<FilmSettings>[] }[] = [
-  { name: 'n film', values: [{ nFilm: 1.4 }, { nFilm: 1.33 }] },
-  { name: 'light', values: [{ illuminant: 'D93' }, { illuminant: 'D65' }] },
-  { name: 'polarisation', values: [{ polarization: 's' }, { polarization: 'unpolarized' }] },
-  { name: 'range', values: [{ thicknessRangeNm: 1200 }, { thicknessRangeNm: 800 }] },
+/**
+ * The changes timed per row, as a user makes them in the panel: n film, the light, the
+ * polarisation, the range; each there and back to the row's own value (a water row's n film
+ * change is 1.4 and back to water: a change of the film material).
+ */
+export const CHANGES: readonly { readonly name: string; readonly values: (own: FilmSettings) => readonly Partial<FilmSettings>[] }[] = [
+  { name: 'n film', values: (own) => [{ nFilm: 1.4 }, { nFilm: own.nFilm }] },
+  { name: 'light', values: (own) => [{ illuminant: 'D93' }, { illuminant: own.illuminant }] },
+  { name: 'polarisation', values: (own) => [{ polarization: 's' }, { polarization: own.polarization }] },
+  { name: 'range', values: (own) => [{ thicknessRangeNm: 1200 }, { thicknessRangeNm: own.thicknessRangeNm }] },
 ];
 
 declare global {

@@ -26,6 +26,7 @@ export interface DemoPageFigures {
 /** Panel changes as a user makes them: [controller name, value, value back]. */
 export const PANEL_CHANGES = [
   ['n film', '1.4', '1.33'],
+  ['film material', 'water', 'constant'],
   ['illuminant', 'D93', 'D65'],
   ['polarization', 's', 'unpolarized'],
   ['range (nm)', '1200', '800'],

@@ -96,4 +96,11 @@ export const ROWS: readonly BenchRow[] = [
   },
   sceneStep('default table, env=none (no environment to reflect or show)', { env: 'none' }),
   ...HDR_ENVIRONMENTS.map((env) => sceneStep(`default table, env=${env} (HDR map reflected on both walls, AgX)`, { env })),
+  // A dispersive film (water at 20 °C) in each mode, against the same modes' rows with n 1.33 above.
+  { ...table({}, ', nFilm=water (150 bins, Fresnel per row and bin)'), settings: view('table', { nFilm: 'water' }) },
+  {
+    ...fourier(q.airySeriesMaxOrders, ', nFilm=water (falls back to the 150 dispersive bins)'),
+    settings: view('fourier', { nFilm: 'water' }),
+  },
+  { ...exact(90), name: 'exact, nFilm=water (150 bins, Fresnel per bin)', settings: view('exact', { nFilm: 'water' }) },
 ];

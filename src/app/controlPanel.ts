@@ -1,4 +1,6 @@
 import GUI from 'lil-gui';
+import { FILM_MATERIALS, type FilmIndex, filmIndexText, readFilmIndex } from '../physics/filmIndex.ts';
+import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS, daylightCctOf } from '../physics/illuminants.ts';
 import { PANEL_FOLDERS, type ParameterRow } from '../render/parameterRow.ts';
 import { VIEW_PARAMETERS, type ViewSettings } from './viewParameters.ts';
@@ -7,6 +9,15 @@ import { VIEW_PARAMETERS, type ViewSettings } from './viewParameters.ts';
 const DAYLIGHT_CCT = 'daylight (CCT)';
 /** The CCT slider's step. */
 const CCT_STEP_K = 10;
+/** The film index's kinds in the panel: a constant (the slider), a material, or a Cauchy film (a text A,B[,C]). */
+const CONSTANT_INDEX = 'constant';
+const CAUCHY_INDEX = 'cauchy';
+const INDEX_STEP = 0.01;
+/** The Cauchy text a constant or a material starts with: a glass-like film (n 1.49 at 400 nm, 1.46 at 700 nm). */
+const CAUCHY_START = '1.45,6000';
+
+/** A parameter whose panel controls are several: they write their own object, and `join` reads the setting off it. */
+type Joined = () => Partial<ViewSettings>;
 
 /**
  * A lil-gui panel over every parameter the schema (VIEW_PARAMETERS) gives a control, grouped in
@@ -15,41 +26,36 @@ const CCT_STEP_K = 10;
  */
 export function createControlPanel(initial: ViewSettings, onChange: (s: ViewSettings) => void, container?: HTMLElement): GUI {
   const state: Record<string, unknown> = { ...initial };
-  /** The illuminant rows' two controls (a name, a CCT) write here, and `emit` joins them. */
-  const illuminants = new Map<string, { name: string; cct: number }>();
+  const joins: Joined[] = [];
   const emit = () => {
-    const joined = [...illuminants].map(([key, { name, cct }]): [string, IlluminantSpec] => [
-      key,
-      name === DAYLIGHT_CCT ? { daylightCct: cct } : (name as IlluminantSpec),
-    ]);
-    onChange({ ...initial, ...(state as Partial<ViewSettings>), ...Object.fromEntries(joined) });
+    let next: ViewSettings = { ...initial, ...(state as Partial<ViewSettings>) };
+    for (const join of joins) next = { ...next, ...join() };
+    onChange(next);
   };
   const gui = new GUI({ title: 'thin film', ...(container ? { container } : {}) });
   for (const folderName of PANEL_FOLDERS) {
     const folder = gui.addFolder(folderName);
-    for (const row of VIEW_PARAMETERS.filter((r) => r.control?.folder === folderName)) addControl(folder, row, state, illuminants);
+    for (const row of VIEW_PARAMETERS.filter((r) => r.control?.folder === folderName)) {
+      const join = addControl(folder, row, state);
+      if (join) joins.push(join);
+    }
   }
   gui.onChange(emit);
   return gui;
 }
 
-function addControl(
-  folder: GUI,
-  row: ParameterRow<ViewSettings>,
-  state: Record<string, unknown>,
-  illuminants: Map<string, { name: string; cct: number }>,
-): void {
+function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<string, unknown>): Joined | null {
   const control = row.control!;
   switch (control.kind) {
     case 'slider':
       folder.add(state, row.key, control.min, control.max, control.step).name(row.label);
-      return;
+      return null;
     case 'choice':
       folder.add(state, row.key, [...control.choices]).name(row.label);
-      return;
+      return null;
     case 'toggle':
       folder.add(state, row.key).name(row.label);
-      return;
+      return null;
     case 'illuminant': {
       const spec = state[row.key] as IlluminantSpec;
       const pair = {
@@ -57,12 +63,41 @@ function addControl(
         // A named daylight starts the slider at its own CCT; E and the D65 table at D65's.
         cct: Math.round(daylightCctOf(spec) ?? daylightCctOf('D65')!),
       };
-      illuminants.set(row.key, pair);
       folder.add(pair, 'name', [...NAMED_ILLUMINANTS, DAYLIGHT_CCT]).name(row.label);
       folder
         .add(pair, 'cct', DAYLIGHT_CCT_DOMAIN_K.min, DAYLIGHT_CCT_DOMAIN_K.max, CCT_STEP_K)
         .name(`daylight CCT (${DAYLIGHT_CCT_DOMAIN_K.unit})`);
-      return;
+      return () => ({ [row.key]: pair.name === DAYLIGHT_CCT ? { daylightCct: pair.cct } : (pair.name as IlluminantSpec) });
     }
+    case 'filmIndex':
+      return addFilmIndexControls(folder, row, state[row.key] as FilmIndex);
   }
+}
+
+/**
+ * A film index: a list (constant, the materials, cauchy), the constant's slider, and the Cauchy
+ * film's A,B[,C] as text. A Cauchy text that is not one, or leaves the index domain, is not taken:
+ * the last good index stays (and the text field says why in its title).
+ */
+function addFilmIndexControls(folder: GUI, row: ParameterRow<ViewSettings>, initial: FilmIndex): Joined {
+  const { min, max } = FILM_STACK_DOMAIN.nFilm;
+  const controls = {
+    kind: typeof initial === 'number' ? CONSTANT_INDEX : typeof initial === 'string' ? initial : CAUCHY_INDEX,
+    n: typeof initial === 'number' ? initial : SOAP_FILM_IN_AIR.nFilm,
+    cauchy: typeof initial === 'object' ? filmIndexText(initial).slice(`${CAUCHY_INDEX}:`.length) : CAUCHY_START,
+  };
+  let good = initial;
+  folder.add(controls, 'kind', [CONSTANT_INDEX, ...FILM_MATERIALS, CAUCHY_INDEX]).name('film material');
+  folder.add(controls, 'n', min, max, INDEX_STEP).name(row.label);
+  const text = folder.add(controls, 'cauchy').name('Cauchy A,B[,C] (λ in nm)');
+  return () => {
+    if (controls.kind === CONSTANT_INDEX) good = controls.n;
+    else if (controls.kind !== CAUCHY_INDEX) good = controls.kind as FilmIndex;
+    else {
+      const reading = readFilmIndex(`${CAUCHY_INDEX}:${controls.cauchy}`);
+      if ('index' in reading) good = reading.index;
+      text.domElement.title = 'problem' in reading ? `not taken: ${reading.problem}` : '';
+    }
+    return { [row.key]: good };
+  };
 }

@@ -21,7 +21,9 @@ export function readParameter(
 ): { readonly read: Partial<ViewSettings> } | { readonly expected: string } {
   if (raw.length > MAX_VALUE_LENGTH) return { expected: `${row.expected} of at most ${MAX_VALUE_LENGTH} characters` };
   const read = row.read(raw);
-  return read ? { read } : { expected: row.expected };
+  if (read) return { read };
+  const problem = row.problem?.(raw);
+  return { expected: problem ? `${row.expected} (here ${problem})` : row.expected };
 }
 
 export interface ParsedSettings {

@@ -1,4 +1,11 @@
-import { FILM_STACK_DOMAIN, type FilmStack, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
+import {
+  type DispersiveFilmStack,
+  FILM_INDEX_EXPECTED,
+  type FilmIndex,
+  filmIndexFromJson,
+  filmIndexProblem,
+} from '../physics/filmIndex.ts';
+import { FILM_STACK_DOMAIN, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_DOMAIN_K, ILLUMINANT_EXPECTED, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { type NumberDomain, expectedNumber, isInDomain } from '../physics/validate.ts';
@@ -8,7 +15,7 @@ import { oneOf, rejectValue } from './inputErrors.ts';
 /** One film to colour: what the command line or one entry of a cases file describes. */
 export interface ColorCase {
   readonly id: string | number;
-  readonly stack: FilmStack;
+  readonly stack: DispersiveFilmStack;
   readonly illuminant: IlluminantSpec;
   readonly polarization: Polarization;
   readonly normalization: Normalization;
@@ -24,7 +31,6 @@ export const NUMBER_FIELDS = {
   thicknessNm: { ...FILM_STACK_DOMAIN.thicknessNm, fallback: 500 },
   angleDeg: { ...FILM_STACK_DOMAIN.angleDeg, fallback: 0 },
   nOutside: { ...FILM_STACK_DOMAIN.nOutside, fallback: SOAP_FILM_IN_AIR.nOutside },
-  nFilm: { ...FILM_STACK_DOMAIN.nFilm, fallback: SOAP_FILM_IN_AIR.nFilm },
   nInside: { ...FILM_STACK_DOMAIN.nInside, fallback: SOAP_FILM_IN_AIR.nInside },
 } as const satisfies Record<string, NumberDomain & { fallback: number }>;
 export type NumberField = keyof typeof NUMBER_FIELDS;
@@ -32,6 +38,7 @@ export type NumberField = keyof typeof NUMBER_FIELDS;
 export const CASE_FIELDS = [
   'id',
   ...(Object.keys(NUMBER_FIELDS) as NumberField[]),
+  'nFilm',
   'illuminant',
   'polarization',
   'normalization',
@@ -106,7 +113,7 @@ export function validateColorCase(raw: RawCase, index: number, nameOf: (field: C
     id: validateId(raw.id, index, nameOf('id')),
     stack: {
       nOutside: number('nOutside'),
-      nFilm: number('nFilm'),
+      nFilm: validateFilmIndex(raw.nFilm, nameOf('nFilm')),
       nInside: number('nInside'),
       thicknessNm: number('thicknessNm'),
       angleDeg: number('angleDeg'),
@@ -125,6 +132,15 @@ export const isValidId = (id: unknown): id is string | number =>
 function validateId(id: unknown, index: number, name: string): string | number {
   if (id === undefined) return index;
   return isValidId(id) ? id : rejectValue(name, id, `a string of at most ${MAX_ID_CHARS} characters or a number`);
+}
+
+/** A film index: a number, a material's name or { cauchy: [A, B(, C)] } (filmIndex.ts), within its domain over the band. */
+function validateFilmIndex(value: unknown, name: string): FilmIndex {
+  if (value === undefined) return SOAP_FILM_IN_AIR.nFilm;
+  const index = filmIndexFromJson(value);
+  if (index === null) return rejectValue(name, value, FILM_INDEX_EXPECTED);
+  const problem = filmIndexProblem(index);
+  return problem === null ? index : rejectValue(name, value, `${FILM_INDEX_EXPECTED} (here ${problem})`);
 }
 
 function validateIlluminant(value: unknown, name: string): IlluminantSpec {

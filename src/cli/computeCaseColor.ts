@@ -8,9 +8,9 @@ import {
   encode8,
   mapToGamut,
 } from '../physics/colorConversions.ts';
-import { filmOptics, reflectanceAt } from '../physics/filmReflectance.ts';
+import { filmIndexAt } from '../physics/filmIndex.ts';
 import type { IlluminantSpec } from '../physics/illuminants.ts';
-import { filmXyz } from '../physics/spectralIntegration.ts';
+import { dispersiveReflectance, filmXyz } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 import type { ColorCase } from './colorCase.ts';
 
@@ -31,6 +31,8 @@ export interface CaseColor {
   readonly displayP3_8: Rgb;
   /** R(λ) at each of the case's `wavelengthsNm`, eqs (1)–(14). */
   readonly reflectance: readonly number[];
+  /** n_b(λ), the film's index, at each of the case's `wavelengthsNm`. */
+  readonly nFilm: readonly number[];
 }
 
 /** 8-bit codes of a linear colour after mapping it into [0, 1] (Y is the luminance it keeps). */
@@ -43,7 +45,6 @@ const to8Bit = (linear: Rgb, luminance: number, gamut: GamutMapping): Rgb => {
 export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
   const xyz = filmXyz(c.stack, { illuminant: c.illuminant, polarization: c.polarization, normalization: c.normalization });
   const linearSrgb = applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz);
-  const optics = filmOptics(c.stack, c.polarization);
   return {
     id: c.id,
     illuminant: c.illuminant,
@@ -53,6 +54,7 @@ export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
     srgb8: to8Bit(linearSrgb, xyz[1], gamut),
     linearWideGamut: applyMatrix3(XYZ_TO_LINEAR_WIDE_GAMUT, xyz),
     displayP3_8: to8Bit(applyMatrix3(XYZ_TO_LINEAR_DISPLAY_P3, xyz), xyz[1], gamut),
-    reflectance: c.wavelengthsNm.map((lambdaNm) => reflectanceAt(optics, lambdaNm)),
+    reflectance: c.wavelengthsNm.map((lambdaNm) => dispersiveReflectance(lambdaNm, c.stack, c.polarization)),
+    nFilm: c.wavelengthsNm.map((lambdaNm) => filmIndexAt(c.stack.nFilm, lambdaNm)),
   };
 }

@@ -24,7 +24,7 @@ export const jsonLines = (rows: readonly object[]): string =>
 
 const channels = (name: string) => [`${name}R`, `${name}G`, `${name}B`];
 
-/** A table as CSV: a header line, then one line per row; R(λ) columns are named `R_<λ>nm`. */
+/** A table as CSV: a header line, then one line per row; R(λ) columns are named `R_<λ>nm`, n_b(λ) columns `nFilm_<λ>nm`. */
 export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly number[]): string {
   const header = [
     'id',
@@ -41,6 +41,7 @@ export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly numb
     ...channels('linearWideGamut'),
     ...channels('displayP3_8'),
     ...wavelengthsNm.map((l) => `R_${l}nm`),
+    ...wavelengthsNm.map((l) => `nFilm_${l}nm`),
   ];
   const line = (r: TableRow) =>
     [
@@ -56,6 +57,7 @@ export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly numb
       ...r.linearWideGamut,
       ...r.displayP3_8,
       ...r.reflectance,
+      ...r.nFilm,
     ].join(',');
   return `${[header.join(','), ...rows.map(line)].join('\n')}\n`;
 }

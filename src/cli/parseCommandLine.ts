@@ -1,5 +1,6 @@
 import { parseArgs } from 'node:util';
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
+import { FILM_INDEX_EXPECTED, readFilmIndex } from '../physics/filmIndex.ts';
 import { ILLUMINANT_EXPECTED, parseIlluminant } from '../physics/illuminants.ts';
 import { ParameterError, expectedNumber } from '../physics/validate.ts';
 import {
@@ -178,5 +179,9 @@ function flagValue(field: Exclude<CaseField, 'id'>, flag: string, text: string):
     return text.split(',').map((part, i) => parseStrictNumber(`${flag}[${i}]`, part, expected));
   }
   if (field === 'illuminant') return parseIlluminant(text) ?? rejectValue(flag, text, ILLUMINANT_EXPECTED);
+  if (field === 'nFilm') {
+    const reading = readFilmIndex(text);
+    return 'index' in reading ? reading.index : rejectValue(flag, text, `${FILM_INDEX_EXPECTED} (here ${reading.problem})`);
+  }
   return text;
 }

@@ -49,9 +49,18 @@ export const AIRY_SERIES_MAX_ORDERS = 128;
 const tailScale = (t: AirySeriesTerms): number => Math.hypot(t.b.re, t.b.im) / Math.max(1 - Math.hypot(t.q.re, t.q.im), 1e-7);
 
 /** Whether `maxOrders` terms reach AIRY_SERIES_TOLERANCE or the end of F's table. */
-export function airySeriesConverges(optics: FilmOptics, t: SpectralTransform, maxOrders = AIRY_SERIES_MAX_ORDERS): boolean {
-  if (optics.opticalPathNm.re * maxOrders >= t.stepNm * (t.count - 1)) return true;
-  return optics.channels.map(airySeriesTerms).every((s) => {
+export const airySeriesConverges = (optics: FilmOptics, t: SpectralTransform, maxOrders = AIRY_SERIES_MAX_ORDERS): boolean =>
+  seriesConverges(optics.channels.map(airySeriesTerms), optics.opticalPathNm.re, t, maxOrders);
+
+/** The same for the channels' terms at a real path x. */
+export function seriesConverges(
+  terms: readonly AirySeriesTerms[],
+  x: number,
+  t: SpectralTransform,
+  maxOrders = AIRY_SERIES_MAX_ORDERS,
+): boolean {
+  if (x * maxOrders >= t.stepNm * (t.count - 1)) return true;
+  return terms.every((s) => {
     const scale = tailScale(s);
     const rho = Math.hypot(s.q.re, s.q.im);
     return scale < AIRY_SERIES_TOLERANCE || (rho < 1 && (maxOrders - 1) * Math.log(rho) <= Math.log(AIRY_SERIES_TOLERANCE / scale));
@@ -85,9 +94,11 @@ export function transformAt(t: SpectralTransform, pathNm: number, carrier: Compl
  * optical path (optics.opticalPathNm.im === 0); `maxOrders` below the default truncates the series
  * as peers do (m ≤ 2: three.js/glTF; m ≤ 3: Blender Cycles).
  */
-export function airySeriesXyz(optics: FilmOptics, t: SpectralTransform, maxOrders = AIRY_SERIES_MAX_ORDERS): Xyz {
-  const x = optics.opticalPathNm.re;
-  const terms = optics.channels.map(airySeriesTerms);
+export const airySeriesXyz = (optics: FilmOptics, t: SpectralTransform, maxOrders = AIRY_SERIES_MAX_ORDERS): Xyz =>
+  seriesXyz(optics.channels.map(airySeriesTerms), optics.opticalPathNm.re, t, maxOrders);
+
+/** The series of the channels' terms at a real path x, averaged over the channels. */
+export function seriesXyz(terms: readonly AirySeriesTerms[], x: number, t: SpectralTransform, maxOrders = AIRY_SERIES_MAX_ORDERS): Xyz {
   const white = [t.values[0] as number, t.values[1] as number, t.values[2] as number];
   const sums = terms.map(() => [0, 0, 0, 0, 0, 0]);
   const powers = terms.map(() => ({ re: 1, im: 0 }));

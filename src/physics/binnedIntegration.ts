@@ -1,4 +1,6 @@
-import { type FilmOptics, meanChannelReflectance, reflectanceAt } from './filmReflectance.ts';
+import { type DispersiveFilmStack, filmIndexAt, stackAt } from './filmIndex.ts';
+import { type FilmOptics, type Polarization, filmOptics, meanChannelReflectance, reflectanceAt } from './filmReflectance.ts';
+import { cosDeg, refractedCos } from './snell.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type SpectralWeights, type Xyz } from './spectralWeights.ts';
 
 /**
@@ -66,26 +68,33 @@ export function significantBins(bins: SpectralBins, tolerance: number): Spectral
   return { ...bins, first, end };
 }
 
+/** What one bin needs: the optics at its centre, and the real optical path at its two ends. */
+interface BinFilm {
+  readonly optics: FilmOptics;
+  readonly pathLowNm: number;
+  readonly pathHighNm: number;
+  /** The extra phase half-width at the bin's centre (a table cell's thickness range), radians. */
+  readonly extraHalfWidth: number;
+}
+
 /**
- * XYZ by bins, as the shader computes it. `extraHalfWidthPerInvNm` widens every bin's phase
- * window by that many radians × (nm/λ), in quadrature (variances of box filters add): the table
- * pass uses it to average over a table cell's thickness range, 2π · 2 n_b cos θ_r · (δd/2) / λ.
+ * X = Σ W_bin R̄_bin: R̄ the closed-form mean over the bin's phase window [2πΔ(λ2)/λ2, 2πΔ(λ1)/λ1]
+ * widened in quadrature by the extra half-width, or R at the centre for an evanescent film.
  */
-export function binnedXyz(optics: FilmOptics, bins: SpectralBins, extraHalfWidthPerInvNm = 0): Xyz {
+function binsXyz(bins: SpectralBins, binFilm: (l1: number, l2: number) => BinFilm): Xyz {
   const width = LAMBDA_SPAN_NM / bins.count;
-  const path = optics.opticalPathNm;
   const xyz = [0, 0, 0];
   for (let b = bins.first; b < bins.end; b++) {
     const l1 = LAMBDA_MIN_NM + b * width;
     const l2 = l1 + width;
+    const { optics, pathLowNm, pathHighNm, extraHalfWidth } = binFilm(l1, l2);
     let r = 0;
-    if (path.im !== 0) {
+    if (optics.opticalPathNm.im !== 0) {
       r = reflectanceAt(optics, (l1 + l2) / 2); // evanescent film: no fringes to average
     } else {
-      const center = Math.PI * path.re * (1 / l1 + 1 / l2);
-      const binHalf = Math.PI * path.re * (1 / l1 - 1 / l2);
-      const extra = (2 * extraHalfWidthPerInvNm) / (l1 + l2);
-      const half = Math.hypot(binHalf, extra);
+      const center = Math.PI * (pathLowNm / l1 + pathHighNm / l2);
+      const binHalf = Math.PI * (pathLowNm / l1 - pathHighNm / l2);
+      const half = Math.hypot(binHalf, extraHalfWidth);
       for (const c of optics.channels) r += meanChannelReflectance(c, center, half);
       r /= optics.channels.length;
     }
@@ -93,3 +102,46 @@ export function binnedXyz(optics: FilmOptics, bins: SpectralBins, extraHalfWidth
   }
   return [xyz[0] as number, xyz[1] as number, xyz[2] as number];
 }
+
+/**
+ * XYZ by bins, as the shader computes it. `extraHalfWidthPerInvNm` widens every bin's phase
+ * window by that many radians × (nm/λ), in quadrature (variances of box filters add): the table
+ * pass uses it to average over a table cell's thickness range, 2π · 2 n_b cos θ_r · (δd/2) / λ.
+ */
+export function binnedXyz(optics: FilmOptics, bins: SpectralBins, extraHalfWidthPerInvNm = 0): Xyz {
+  const path = optics.opticalPathNm.re;
+  return binsXyz(bins, (l1, l2) => ({
+    optics,
+    pathLowNm: path,
+    pathHighNm: path,
+    extraHalfWidth: (2 * extraHalfWidthPerInvNm) / (l1 + l2),
+  }));
+}
+
+/**
+ * XYZ by bins of a film whose index depends on λ (shaders/binnedIntegration.glsl, dispersiveBinnedXyz):
+ * each bin's Fresnel terms at n_b of its centre, its phase window from the optical path at its two
+ * ends, 2π Δ(λ)/λ with Δ(λ) = 2 n_b(λ) d cos θ_r(λ).
+ */
+export function dispersiveBinnedXyz(stack: DispersiveFilmStack, polarization: Polarization, bins: SpectralBins): Xyz {
+  const cos = cosDeg(stack.angleDeg);
+  const pathPerNm = (l: number) => {
+    const nb = filmIndexAt(stack.nFilm, l);
+    return 2 * nb * refractedCos(nb, stack.nOutside, cos).re;
+  };
+  return binsXyz(bins, (l1, l2) => {
+    const center = (l1 + l2) / 2;
+    return {
+      optics: filmOptics(stackAt(stack, center), polarization),
+      pathLowNm: pathPerNm(l1) * stack.thicknessNm,
+      pathHighNm: pathPerNm(l2) * stack.thicknessNm,
+      extraHalfWidth: 0,
+    };
+  });
+}
+
+/** XYZ by bins of any film: binnedXyz of its optics for a constant index, dispersiveBinnedXyz otherwise. */
+export const stackBinnedXyz = (stack: DispersiveFilmStack, polarization: Polarization, bins: SpectralBins): Xyz =>
+  typeof stack.nFilm === 'number'
+    ? binnedXyz(filmOptics({ ...stack, nFilm: stack.nFilm }, polarization), bins)
+    : dispersiveBinnedXyz(stack, polarization, bins);

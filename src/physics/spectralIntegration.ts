@@ -1,4 +1,5 @@
-import { type FilmOptics, type FilmStack, type Polarization, filmOptics, reflectanceAt } from './filmReflectance.ts';
+import { type DispersiveFilmStack, assertFilmIndex, stackAt } from './filmIndex.ts';
+import { type FilmOptics, type Polarization, filmOptics, reflectanceAt } from './filmReflectance.ts';
 import { type IlluminantSpec } from './illuminants.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type Normalization, type SpectralWeights, type Xyz, spectralWeights } from './spectralWeights.ts';
 
@@ -47,11 +48,43 @@ export const FINESSE_SAMPLES = 4;
 export const MAX_SAMPLES_PER_FRINGE = 2000;
 
 export function adaptiveStepsPerNm(optics: FilmOptics): number {
-  const pathNm = Math.abs(optics.opticalPathNm.re);
+  return stepsPerNmFor(Math.abs(optics.opticalPathNm.re), roundTripMagnitude(optics));
+}
+
+/** The largest |r_ba r_bc| of the optics' channels: how close eq (13)'s pole is to the unit circle. */
+const roundTripMagnitude = (optics: FilmOptics): number =>
+  Math.max(...optics.channels.map((c) => Math.hypot(c.roundTrip.re, c.roundTrip.im)));
+
+/** Sub-steps per nm for fringes of a path `pathNm` (their density bound at 380 nm) and a round trip ρ. */
+function stepsPerNmFor(pathNm: number, rho: number): number {
   if (pathNm === 0) return 1;
-  const rho = Math.max(...optics.channels.map((c) => Math.hypot(c.roundTrip.re, c.roundTrip.im)));
   const perFringe = Math.min(MAX_SAMPLES_PER_FRINGE, Math.max(MIN_SAMPLES_PER_FRINGE, FINESSE_SAMPLES / Math.max(1e-9, 1 - rho)));
   return Math.max(1, Math.ceil((perFringe * pathNm) / (LAMBDA_MIN_NM * LAMBDA_MIN_NM)));
+}
+
+/** Where a dispersive film's fringe density is sampled: every 10 nm of the band. */
+const DISPERSION_PROBE_STEP_NM = 10;
+
+/**
+ * The same rule for a film whose index depends on λ. The phase φ = 2πΔ(λ)/λ then turns by
+ * 2πΔ_g/λ² per nm with the group path Δ_g = Δ − λ dΔ/dλ, so the rule takes the largest Δ_g (dΔ/dλ
+ * by central differences over DISPERSION_PROBE_STEP_NM) and the largest ρ over the band. For an
+ * index that does not vary, dΔ/dλ is exactly 0 and this is adaptiveStepsPerNm of the one optics.
+ */
+export function dispersiveStepsPerNm(opticsAt: (lambdaNm: number) => FilmOptics): number {
+  const lambdas = Array.from(
+    { length: LAMBDA_SPAN_NM / DISPERSION_PROBE_STEP_NM + 1 },
+    (_, k) => LAMBDA_MIN_NM + k * DISPERSION_PROBE_STEP_NM,
+  );
+  const optics = lambdas.map(opticsAt);
+  const path = optics.map((o) => o.opticalPathNm.re);
+  let groupPath = 0;
+  path.forEach((p, k) => {
+    const [lo, hi] = [Math.max(0, k - 1), Math.min(path.length - 1, k + 1)];
+    const slope = (path[hi]! - path[lo]!) / (lambdas[hi]! - lambdas[lo]!);
+    groupPath = Math.max(groupPath, Math.abs(p - lambdas[k]! * slope));
+  });
+  return stepsPerNmFor(groupPath, Math.max(...optics.map(roundTripMagnitude)));
 }
 
 export interface ColorOptions {
@@ -62,12 +95,26 @@ export interface ColorOptions {
   readonly stepsPerNm?: number;
 }
 
-/** XYZ of the light a film reflects, eqs (15)–(18). */
-export function filmXyz(stack: FilmStack, options: ColorOptions = {}): Xyz {
-  const optics = filmOptics(stack, options.polarization ?? 'unpolarized');
+/**
+ * XYZ of the light a film reflects, eqs (15)–(18). A dispersive film (a material or a Cauchy film)
+ * takes n_b(λ) exactly: Snell, Fresnel and the phase at every sample (docs/physics.md#a-dispersive-film).
+ */
+export function filmXyz(stack: DispersiveFilmStack, options: ColorOptions = {}): Xyz {
+  const polarization = options.polarization ?? 'unpolarized';
   const w = spectralWeights(options.illuminant ?? 'D65', options.normalization ?? 'white');
-  return integrateXyz((l) => reflectanceAt(optics, l), w, options.stepsPerNm ?? adaptiveStepsPerNm(optics));
+  const { nFilm } = stack;
+  if (typeof nFilm === 'number') {
+    const optics = filmOptics({ ...stack, nFilm }, polarization);
+    return integrateXyz((l) => reflectanceAt(optics, l), w, options.stepsPerNm ?? adaptiveStepsPerNm(optics));
+  }
+  assertFilmIndex('nFilm', nFilm);
+  const opticsAt = (l: number) => filmOptics(stackAt(stack, l), polarization);
+  return integrateXyz((l) => reflectanceAt(opticsAt(l), l), w, options.stepsPerNm ?? dispersiveStepsPerNm(opticsAt));
 }
+
+/** R at one wavelength of a film whose index may depend on λ (eqs 1–14 with n_b(λ)). */
+export const dispersiveReflectance = (lambdaNm: number, stack: DispersiveFilmStack, polarization: Polarization = 'unpolarized'): number =>
+  reflectanceAt(filmOptics(stackAt(stack, lambdaNm), polarization), lambdaNm);
 
 /** XYZ of the illuminant itself (a perfect white reflector), the white point for CIELAB. */
 export const whiteXyz = (illuminant: IlluminantSpec, normalization: Normalization = 'white'): Xyz =>

@@ -1,4 +1,5 @@
-import { type FilmStack, type Polarization, filmOptics, reflectanceAt } from '../physics/filmReflectance.ts';
+import { type DispersiveFilmStack, filmIndexAt, isDispersive, stackAt } from '../physics/filmIndex.ts';
+import { type Polarization, filmOptics, reflectanceAt } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantSpd } from '../physics/illuminants.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
 
@@ -11,12 +12,16 @@ export interface FilmSpectrum {
   readonly incident: Float64Array;
   /** I_out(λ) = R(λ)·I_in(λ), on the same scale as `incident`. */
   readonly reflected: Float64Array;
+  /** n_b(λ) of a dispersive film; null when the index is the same at every wavelength. */
+  readonly filmIndex: Float64Array | null;
 }
 
 /** Samples R, I_in and I_out every `stepNm` from 380 to 830 nm. */
-export function filmSpectrum(stack: FilmStack, illuminant: IlluminantSpec, polarization: Polarization, stepNm = 1): FilmSpectrum {
+export function filmSpectrum(stack: DispersiveFilmStack, illuminant: IlluminantSpec, polarization: Polarization, stepNm = 1): FilmSpectrum {
   const count = Math.floor((LAMBDA_MAX_NM - LAMBDA_MIN_NM) / stepNm) + 1;
-  const optics = filmOptics(stack, polarization);
+  const dispersive = isDispersive(stack.nFilm);
+  const constantOptics = dispersive ? null : filmOptics(stackAt(stack, LAMBDA_MIN_NM), polarization);
+  const filmIndex = dispersive ? new Float64Array(count) : null;
   const spd = illuminantSpd(illuminant);
   const lambdasNm = new Float64Array(count);
   const reflectance = new Float64Array(count);
@@ -24,7 +29,8 @@ export function filmSpectrum(stack: FilmStack, illuminant: IlluminantSpec, polar
   for (let i = 0; i < count; i++) {
     const l = LAMBDA_MIN_NM + i * stepNm;
     lambdasNm[i] = l;
-    reflectance[i] = reflectanceAt(optics, l);
+    reflectance[i] = reflectanceAt(constantOptics ?? filmOptics(stackAt(stack, l), polarization), l);
+    if (filmIndex) filmIndex[i] = filmIndexAt(stack.nFilm, l);
     incident[i] = spd(l);
   }
   const peak = Math.max(...incident);
@@ -33,5 +39,5 @@ export function filmSpectrum(stack: FilmStack, illuminant: IlluminantSpec, polar
     incident[i]! /= peak;
     reflected[i] = reflectance[i]! * incident[i]!;
   }
-  return { lambdasNm, reflectance, incident, reflected };
+  return { lambdasNm, reflectance, incident, reflected, filmIndex };
 }

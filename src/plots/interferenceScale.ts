@@ -1,5 +1,6 @@
 import { type Matrix3, type Rgb, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
-import { type FilmStack, type Polarization } from '../physics/filmReflectance.ts';
+import { type DispersiveFilmStack } from '../physics/filmIndex.ts';
+import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { filmXyz } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
@@ -26,7 +27,7 @@ export interface ScaleOptions {
  * the chromaticity diagram.
  */
 export function interferenceScale(
-  stack: Omit<FilmStack, 'thicknessNm'>,
+  stack: Omit<DispersiveFilmStack, 'thicknessNm'>,
   maxThicknessNm: number,
   count: number,
   o: ScaleOptions,

@@ -26,6 +26,36 @@ export function drawSpectrumPlot(canvas: HTMLCanvasElement, s: FilmSpectrum): vo
   ctx.setLineDash([]);
   drawLine(ctx, series(s.reflectance), SPECTRUM_LEGEND[0]![1]);
   drawLine(ctx, series(s.reflected), SPECTRUM_LEGEND[1]![1]);
+  if (s.filmIndex) drawIndexAxis(ctx, s.lambdasNm, s.filmIndex, px, py(0), py(top));
+}
+
+/**
+ * n_b(λ) of a dispersive film on a second scale: its range spans the plot's height, labelled at
+ * the right edge with its largest and smallest values.
+ */
+function drawIndexAxis(
+  ctx: CanvasRenderingContext2D,
+  lambdasNm: Float64Array,
+  n: Float64Array,
+  px: (v: number) => number,
+  bottom: number,
+  top: number,
+): void {
+  const [low, high] = [Math.min(...n), Math.max(...n)];
+  const span = Math.max(high - low, 1e-6);
+  const y = (v: number) => bottom + ((v - low) / span) * (top - bottom);
+  const color = SPECTRUM_LEGEND[3]![1];
+  drawLine(
+    ctx,
+    Array.from(n, (v, i) => [px(lambdasNm[i]!), y(v)] as const),
+    color,
+    1,
+  );
+  ctx.fillStyle = color;
+  ctx.textAlign = 'right';
+  const right = px(lambdasNm[lambdasNm.length - 1]!) - 2;
+  ctx.fillText(`n ${high.toFixed(4)}`, right, top + 10);
+  ctx.fillText(`n ${low.toFixed(4)}`, right, bottom - 3);
 }
 
 /** The plot's series and their colours, for a legend beside it. */
@@ -33,4 +63,5 @@ export const SPECTRUM_LEGEND: readonly (readonly [string, string])[] = [
   ['R(λ)', '#7fb2ff'],
   ['I_out = R·I_in', '#ff7f9f'],
   ['I_in (shape, peak at top)', '#c9b458'],
+  ['n_b(λ) (dispersive film; its range, right)', '#9fdf9f'],
 ];

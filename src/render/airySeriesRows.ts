@@ -13,7 +13,7 @@ const TEXELS_PER_ROW = 3;
  * inside half's (media swapped). ~1 ms for 256 rows, instead of the Fresnel terms per texel.
  */
 export function airySeriesRows(
-  s: Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'>,
+  s: Pick<FilmSettings, 'nOutside' | 'nInside' | 'polarization'> & { readonly nFilm: number },
   layout: FilmTableLayout,
   data: Float32Array,
 ): void {

@@ -1,9 +1,10 @@
 import { type DataTexture, Matrix3, ShaderMaterial } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { type Matrix3 as Rows3, XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
-import { type FilmQuality } from './filmQuality.ts';
+import { type FilmQuality, spectralBinsFor } from './filmQuality.ts';
 import { FIELDS, FILM_METHODS, type FilmSettings } from './filmSettings.ts';
 import { environmentDefines, environmentUniforms, updateEnvironmentUniforms } from './environmentMaterial.ts';
+import { filmIndexDefines, filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
 import { filmTableLayoutDefines } from './filmTableLayout.ts';
 import { setDefines } from './materialDefines.ts';
 import { shaderSource } from './shaderSource.ts';
@@ -12,7 +13,7 @@ import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } f
 
 const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
-export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization'>;
+export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm'>;
 
 /**
  * The defines shaders/filmColor.glsl needs: the method and polarisation in use, and only the
@@ -20,12 +21,22 @@ export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization'>;
  */
 export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
   const method = { TFC_FILM_MODE: FILM_METHODS.indexOf(s.mode), TFC_POLARIZATION: POLARIZATIONS.indexOf(s.polarization) };
-  if (s.mode === 'exact') return { ...method, ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
+  if (s.mode === 'exact')
+    return {
+      ...method,
+      ...spectralBinDefines(spectralBinsFor(s.nFilm, q, q.exactSpectralBins), q.spectralTailTolerance),
+      ...filmIndexDefines(s.nFilm),
+    };
   // The lookup does not depend on the polarisation (the table pass does), so changing it compiles no bubble.
   if (s.mode === 'table') return { TFC_FILM_MODE: method.TFC_FILM_MODE, ...filmTableLayoutDefines(q.table) };
   // The series, and the binned integral for evanescent films (which have no real optical path).
   if (s.mode === 'fourier')
-    return { ...method, ...airySeriesDefines(q.airySeriesMaxOrders), ...spectralBinDefines(q.exactSpectralBins, q.spectralTailTolerance) };
+    return {
+      ...method,
+      ...airySeriesDefines(q.airySeriesMaxOrders),
+      ...spectralBinDefines(spectralBinsFor(s.nFilm, q, q.exactSpectralBins), q.spectralTailTolerance),
+      ...filmIndexDefines(s.nFilm),
+    };
   return method;
 }
 
@@ -41,7 +52,8 @@ export function updateFilmColorTextures(
 ): void {
   const u = m.uniforms;
   const binned = s.mode === 'exact' || s.mode === 'fourier';
-  if (binned) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, q.exactSpectralBins, m);
+  if (binned)
+    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s.nFilm, q, q.exactSpectralBins), m);
   else {
     releaseSpectralBinsTexture(m);
     u.uSpectralBins!.value = null;
@@ -82,7 +94,7 @@ export const filmColorUniforms = (): ShaderMaterial['uniforms'] => ({
   uFilmTableWidth: { value: 1 },
   uFilmTableRows: { value: 1 },
   uNOutside: { value: 1 },
-  uNFilm: { value: 1.33 },
+  ...filmIndexUniforms(),
   uNInside: { value: 1 },
   uXyzToLinearWorking: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
 });
@@ -123,7 +135,7 @@ export function updateBubbleUniforms(
   if (table) table.bind(u);
   else u.uFilmTable!.value = null;
   u.uNOutside!.value = s.nOutside;
-  u.uNFilm!.value = s.nFilm;
+  updateFilmIndexUniforms(u, s.nFilm);
   u.uNInside!.value = s.nInside;
   u.uThicknessNm!.value = s.thicknessNm;
   u.uThicknessRangeNm!.value = s.thicknessRangeNm;

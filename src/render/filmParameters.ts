@@ -1,7 +1,7 @@
 import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
-import { type ParameterRow, choiceRow, defaultsOf, illuminantRow, numberRow } from './parameterRow.ts';
+import { type ParameterRow, choiceRow, defaultsOf, filmIndexRow, illuminantRow, numberRow } from './parameterRow.ts';
 
 type Row = ParameterRow<FilmSettings>;
 
@@ -21,7 +21,7 @@ export const FILM_PARAMETERS: readonly Row[] = [
   ),
   numberRow({ key: 'thicknessRangeNm', url: 'thicknessRange', label: 'range (nm)' }, FILM_STACK_DOMAIN.thicknessNm, 800, 'film', 1),
   numberRow({ key: 'swirlSpeed', url: 'speed', label: 'swirl speed' }, { min: 0, max: 10, unit: '' }, 0.4, 'film', 0.05),
-  numberRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film', label: 'n film' }, FILM_STACK_DOMAIN.nFilm, SOAP_FILM_IN_AIR.nFilm, 'film', 0.01),
+  filmIndexRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film', label: 'n film' }, SOAP_FILM_IN_AIR.nFilm, 'film'),
   numberRow(
     { key: 'nOutside', url: 'nOutside', cli: 'n-outside', label: 'n outside' },
     FILM_STACK_DOMAIN.nOutside,

@@ -1,3 +1,4 @@
+import { type FilmIndex } from '../physics/filmIndex.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { FILM_STACK_DOMAIN, type Polarization } from '../physics/filmReflectance.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
@@ -35,7 +36,8 @@ export const toneMappingOf = (s: Pick<FilmSettings, 'tonemap' | 'env'>): ToneMap
 /** Everything a rendered bubble depends on. Ranges and defaults: `filmParameters.ts`. */
 export interface FilmSettings {
   readonly nOutside: number;
-  readonly nFilm: number;
+  /** n_b: a number, a material or a Cauchy film (filmIndex.ts) */
+  readonly nFilm: FilmIndex;
   readonly nInside: number;
   readonly illuminant: IlluminantSpec;
   readonly polarization: Polarization;

@@ -11,9 +11,12 @@ import {
   type WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
+import { type FilmIndex } from '../physics/filmIndex.ts';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { dispersiveRows, dispersiveRowsTexture } from './dispersiveRows.ts';
+import { filmIndexDefines, filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
-import { type FilmQuality } from './filmQuality.ts';
+import { type FilmQuality, spectralBinsFor } from './filmQuality.ts';
 import { type FilmSettings, maxFieldThicknessNm } from './filmSettings.ts';
 import { filmTableLayoutDefines, filmTableWidth } from './filmTableLayout.ts';
 import { setDefines } from './materialDefines.ts';
@@ -77,9 +80,10 @@ export class FilmTable {
       uSpectralBins: { value: null },
       uSpectralTransform: { value: null },
       uAirySeriesRows: { value: null },
+      uDispersiveRows: { value: null },
       uPolarization: { value: 0 },
       uNOutside: { value: 1 },
-      uNFilm: { value: 1.33 },
+      ...filmIndexUniforms(),
       uNInside: { value: 1 },
       uTableMaxThicknessNm: { value: 1 },
       uFilmTableWidth: { value: 1 },
@@ -89,14 +93,19 @@ export class FilmTable {
     fragmentShader: shaderSource('filmTable.glsl'),
   });
   /** The series' terms per row, from the reference (src/render/airySeriesRows.ts). */
-  private readonly rows: DataTexture;
+  /**
+   * The per-row terms: the series' C₀, B, q (airySeriesRows.ts), or for a dispersive film the Fresnel
+   * terms per row and bin (dispersiveRows.ts). One texture, remade when the kind changes, so a
+   * dispersive film holds no more GPU objects than a constant one.
+   */
+  private rows: { texture: DataTexture; dispersive: boolean };
   maxThicknessNm = 1;
   /** Milliseconds the last full build at once took (synced with a 1-pixel read), and how many full tables there were: for the benchmark. */
   lastBuildMs = 0;
   builds = 0;
 
   constructor(private readonly quality: FilmQuality) {
-    this.rows = airySeriesRowsTexture(quality.table);
+    this.rows = { texture: airySeriesRowsTexture(quality.table), dispersive: false };
     const options = { format: RGBAFormat, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false } as const;
     this.target = new WebGLRenderTarget(1, 2 * quality.table.rows, options);
     this.coarseTarget = new WebGLRenderTarget(1, 2, options);
@@ -184,16 +193,30 @@ export class FilmTable {
     target.scissor.set(from, 0, to - from, 2 * grid.rows);
     target.scissorTest = true;
     this.maxThicknessNm = maxFieldThicknessNm(s);
-    const material = this.material();
+    const bins = spectralBinsFor(s.nFilm, this.quality, this.quality.table.spectralBins);
+    const material = this.material(s.nFilm, bins);
     const u = material.uniforms;
-    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
+    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, bins, this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
-    airySeriesRows(s, { ...this.quality.table, rows: grid.rows }, this.rows.image.data as Float32Array);
-    this.rows.needsUpdate = true;
-    u.uAirySeriesRows!.value = this.rows;
+    // A dispersive film is filled from the bins, with their terms per row (shaders/filmTable.glsl).
+    const rowLayout = { ...this.quality.table, rows: grid.rows, spectralBins: bins };
+    const dispersive = typeof s.nFilm !== 'number';
+    if (this.rows.dispersive !== dispersive) {
+      this.rows.texture.dispose();
+      const texture = dispersive
+        ? dispersiveRowsTexture({ ...this.quality.table, spectralBins: bins })
+        : airySeriesRowsTexture(this.quality.table);
+      this.rows = { texture, dispersive };
+    }
+    const data = this.rows.texture.image.data as Float32Array;
+    if (typeof s.nFilm === 'number') airySeriesRows({ ...s, nFilm: s.nFilm }, rowLayout, data);
+    else dispersiveRows(s, rowLayout, data);
+    this.rows.texture.needsUpdate = true;
+    u.uDispersiveRows!.value = this.rows.texture;
+    u.uAirySeriesRows!.value = this.rows.texture;
     u.uPolarization!.value = POLARIZATIONS.indexOf(s.polarization);
     u.uNOutside!.value = s.nOutside;
-    u.uNFilm!.value = s.nFilm;
+    updateFilmIndexUniforms(u, s.nFilm);
     u.uNInside!.value = s.nInside;
     u.uTableMaxThicknessNm!.value = this.maxThicknessNm;
     u.uFilmTableWidth!.value = grid.width;
@@ -217,12 +240,13 @@ export class FilmTable {
    * this thread (the series' transform is an FFT): before a first frame, the two overlap.
    */
   async prepare(renderer: WebGLRenderer, s: FilmSettings): Promise<void> {
-    this.quad.material = this.material();
+    const bins = spectralBinsFor(s.nFilm, this.quality, this.quality.table.spectralBins);
+    this.quad.material = this.material(s.nFilm, bins);
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(this.coarseTarget); // three picks a program by its target (no tone mapping into a texture)
     const compiled = renderer.compileAsync(this.quad, this.camera);
     renderer.setRenderTarget(previous);
-    spectralBinsTexture(s.illuminant, s.normalization, this.quality.table.spectralBins, this);
+    spectralBinsTexture(s.illuminant, s.normalization, bins, this);
     spectralTransformTexture(s.illuminant, s.normalization, this);
     await compiled;
   }
@@ -233,10 +257,11 @@ export class FilmTable {
     this.building = null;
   }
 
-  private material(): ShaderMaterial {
+  private material(index: FilmIndex, bins: number): ShaderMaterial {
     setDefines(this.pass, {
+      ...filmIndexDefines(index),
       TFC_POLARIZATION_UNIFORM: 1,
-      ...spectralBinDefines(this.quality.table.spectralBins, this.quality.spectralTailTolerance),
+      ...spectralBinDefines(bins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),
       ...airySeriesDefines(),
     });
@@ -248,7 +273,7 @@ export class FilmTable {
     this.coarseTarget.dispose();
     this.quad.geometry.dispose();
     this.pass.dispose();
-    this.rows.dispose();
+    this.rows.texture.dispose();
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);
   }

@@ -9,6 +9,7 @@ import { ShaderMaterial, type WebGLRenderer } from 'three';
 import { filmColorDefines, updateFilmColorTextures } from './bubbleMaterial.ts';
 import { type FilmQuality } from './filmQuality.ts';
 import { DEFAULT_SETTINGS } from './filmParameters.ts';
+import { filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
 import { FilmTable } from './filmTable.ts';
 import { floatRowTexture, renderFloatRow } from './floatRow.ts';
 import { shaderSource } from './shaderSource.ts';
@@ -44,7 +45,7 @@ export class FilmXyzProbe {
         uSpectralBins: { value: null },
         uSpectralTransform: { value: null },
         uNOutside: { value: 1 },
-        uNFilm: { value: 1.33 },
+        ...filmIndexUniforms(),
         uNInside: { value: 1 },
         uFilmTable: { value: null },
         uTableMaxThicknessNm: { value: 1 },
@@ -72,7 +73,7 @@ export class FilmXyzProbe {
     u.uInputs!.value = inputTexture;
     updateFilmColorTextures(m, { ...g, mode }, quality);
     u.uNOutside!.value = g.nOutside;
-    u.uNFilm!.value = g.nFilm;
+    updateFilmIndexUniforms(u, g.nFilm);
     u.uNInside!.value = g.nInside;
     if (mode === 'table') {
       const table = this.table(quality);

@@ -1,4 +1,5 @@
 import { ILLUMINANT_EXPECTED, type IlluminantSpec, illuminantText, parseIlluminant } from '../physics/illuminants.ts';
+import { FILM_INDEX_EXPECTED, type FilmIndex, filmIndexText, readFilmIndex } from '../physics/filmIndex.ts';
 import { type NumberDomain, expectedNumber, isInDomain, parseDecimal } from '../physics/validate.ts';
 
 /** Where a parameter sits in the control panel, and how it is shown there. */
@@ -7,7 +8,9 @@ export type PanelControl =
   | { readonly folder: PanelFolder; readonly kind: 'choice'; readonly choices: readonly string[] }
   | { readonly folder: PanelFolder; readonly kind: 'toggle' }
   /** A named illuminant or a daylight CCT: a list of names plus a CCT slider. */
-  | { readonly folder: PanelFolder; readonly kind: 'illuminant' };
+  | { readonly folder: PanelFolder; readonly kind: 'illuminant' }
+  /** A film index: a constant (slider), a named material, or a Cauchy film (text A,B[,C]). */
+  | { readonly folder: PanelFolder; readonly kind: 'filmIndex' };
 
 export const PANEL_FOLDERS = ['film', 'light and colour', 'view'] as const;
 export type PanelFolder = (typeof PANEL_FOLDERS)[number];
@@ -36,6 +39,8 @@ export interface ParameterRow<S> {
   readonly defaultText: string;
   /** Its reading of a URL value, or null when refused. */
   readonly read: (raw: string) => Partial<S> | null;
+  /** Why a refused value is wrong, where the row can say more than `expected` (else undefined). */
+  readonly problem?: (raw: string) => string | null;
   /** The URL value that `read` turns back into `s`'s value. */
   readonly write: (s: S) => string;
   /** How the panel shows it; null: not in the panel. */
@@ -115,22 +120,66 @@ export function flagRow<S, K extends keyof S & string>(n: RowNames<S, K>, defaul
   };
 }
 
+/** A value of a kind of its own written as text: how it reads (a value, or why not) and writes. */
+interface TextKind<V> {
+  readonly expected: string;
+  readonly parse: (raw: string) => { readonly value: V } | { readonly problem: string | null };
+  readonly text: (value: V) => string;
+  readonly kind: 'illuminant' | 'filmIndex';
+}
+
+function textRow<S, K extends keyof S & string, V>(
+  n: RowNames<S, K>,
+  defaultValue: S[K] & V,
+  folder: PanelFolder | null,
+  k: TextKind<V>,
+): ParameterRow<S> {
+  return {
+    ...named(n, defaultValue, (s) => k.text(s[n.key] as V)),
+    expected: k.expected,
+    read: (raw) => {
+      const reading = k.parse(raw);
+      return 'value' in reading ? ({ [n.key]: reading.value } as Partial<S>) : null;
+    },
+    problem: (raw) => {
+      const reading = k.parse(raw);
+      return 'problem' in reading ? reading.problem : null;
+    },
+    control: folder && { folder, kind: k.kind },
+  };
+}
+
 /** An illuminant: a name, or a number read as a daylight CCT in kelvin. */
-export function illuminantRow<S, K extends keyof S & string>(
+export const illuminantRow = <S, K extends keyof S & string>(
   n: RowNames<S, K>,
   defaultValue: S[K] & IlluminantSpec,
   folder: PanelFolder | null,
-): ParameterRow<S> {
-  return {
-    ...named(n, defaultValue, (s) => illuminantText(s[n.key] as IlluminantSpec)),
+) =>
+  textRow<S, K, IlluminantSpec>(n, defaultValue, folder, {
     expected: ILLUMINANT_EXPECTED,
-    read: (raw) => {
-      const illuminant = parseIlluminant(raw);
-      return illuminant === null ? null : ({ [n.key]: illuminant } as Partial<S>);
+    parse: (raw) => {
+      const value = parseIlluminant(raw);
+      return value === null ? { problem: null } : { value };
     },
-    control: folder && { folder, kind: 'illuminant' },
-  };
-}
+    text: illuminantText,
+    kind: 'illuminant',
+  });
+
+/** A film index (filmIndex.ts): a number, a material's name or `cauchy:A,B[,C]`, within its domain over the band. */
+export const filmIndexRow = <S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  defaultValue: S[K] & FilmIndex,
+  folder: PanelFolder | null,
+) =>
+  textRow<S, K, FilmIndex>(n, defaultValue, folder, {
+    expected: FILM_INDEX_EXPECTED,
+    parse: (raw) => {
+      const reading = readFilmIndex(raw);
+      return 'index' in reading ? { value: reading.index } : reading;
+    },
+    text: filmIndexText,
+    kind: 'filmIndex',
+  });
 
 /** The settings that every row's default makes. */
 export const defaultsOf = <S>(rows: readonly ParameterRow<S>[]): S =>

@@ -14,6 +14,7 @@ import { filmColorDefines, filmColorUniforms, releaseFilmColorTextures, updateFi
 import { DEFAULT_SETTINGS } from './filmParameters.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from './filmQuality.ts';
 import { type FilmSettings, MODES } from './filmSettings.ts';
+import { updateFilmIndexUniforms } from './filmIndexUniforms.ts';
 import { FilmTable, tableKey } from './filmTable.ts';
 import { shaderSource } from './shaderSource.ts';
 import { SharedTextures } from './sharedTextures.ts';
@@ -118,7 +119,7 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
   const s = filmSettingsOf(m, o);
   const u = film.uniforms;
   u.uNOutside!.value = s.nOutside;
-  u.uNFilm!.value = s.nFilm;
+  updateFilmIndexUniforms(u, s.nFilm);
   u.uNInside!.value = s.nInside;
   updateFilmColorTextures(film, s, o.quality);
   if (o.mode === 'table') {
@@ -133,7 +134,8 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
 }
 
 /** The GLSL defines of the film (filmColor.glsl's, for the mode). */
-const definesOf = (o: Options) => filmColorDefines(o, o.quality);
+// The material's film index is three's iridescenceIOR, one number: a constant film's defines.
+const definesOf = (o: Options) => filmColorDefines({ ...o, nFilm: DEFAULT_SETTINGS.nFilm }, o.quality);
 
 /**
  * Makes a MeshPhysicalMaterial's iridescence spectral: wherever three.js would evaluate its

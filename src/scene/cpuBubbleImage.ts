@@ -1,8 +1,7 @@
 import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../physics/colorConversions.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
-import { binnedXyz, spectralBins } from '../physics/binnedIntegration.ts';
+import { spectralBins, stackBinnedXyz } from '../physics/binnedIntegration.ts';
 import { spectralWeights } from '../physics/spectralWeights.ts';
-import { filmOptics } from '../physics/filmReflectance.ts';
 import { DEFAULT_FILM_QUALITY } from '../render/filmQuality.ts';
 import { type ShownEnvironment, environmentRadiance, reflectedRadiance } from '../render/environment.ts';
 import type { EnvironmentPixels } from '../render/environmentMaps.ts';
@@ -54,8 +53,10 @@ function filmColorLattice(s: FilmSettings): FilmColor {
     const thicknessNm = Math.min(FILM_STACK_DOMAIN.thicknessNm.max, Math.max(0, s.thicknessNm + k * step));
     const angleDeg = j === COS_STEPS ? 0 : j === 0 ? 90 : (Math.acos(j / COS_STEPS) * 180) / Math.PI;
     const [nOutside, nInside] = fromInside ? [s.nInside, s.nOutside] : [s.nOutside, s.nInside];
-    const optics = filmOptics({ nOutside, nFilm: s.nFilm, nInside, thicknessNm, angleDeg }, s.polarization);
-    const rgb = applyMatrix3(XYZ_TO_LINEAR_SRGB, binnedXyz(optics, bins));
+    const rgb = applyMatrix3(
+      XYZ_TO_LINEAR_SRGB,
+      stackBinnedXyz({ nOutside, nFilm: s.nFilm, nInside, thicknessNm, angleDeg }, s.polarization, bins),
+    );
     cache.set(key, rgb);
     return rgb;
   };

@@ -37,15 +37,37 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   await expect(page).toHaveURL(/thickness=300/);
   const current = () =>
     page.evaluate(
-      () => (window as unknown as { bubbleView: { current: { field: string; env: string; thicknessNm: number } } }).bubbleView.current,
+      () =>
+        (window as unknown as { bubbleView: { current: { field: string; env: string; thicknessNm: number; nFilm: unknown } } }).bubbleView
+          .current,
     );
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
   expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 
+  // The film's material: water, then a Cauchy film typed as A,B; one outside the index domain is not taken.
+  const material = page.getByRole('combobox', { name: 'film material' });
+  await material.selectOption('water');
+  await expect(page).toHaveURL(/nFilm=water/);
+  const cauchyText = page.locator('.lil-controller', { hasText: 'Cauchy A,B[,C]' }).locator('input');
+  await cauchyText.fill('1.45,6000');
+  await cauchyText.press('Enter');
+  await material.selectOption('cauchy');
+  await expect(page).toHaveURL(/nFilm=cauchy%3A1.45%2C6000/);
+  await cauchyText.fill('3.9,20000');
+  await cauchyText.press('Enter');
+  await expect(cauchyText.locator('xpath=ancestor::div[contains(@class, "lil-controller")]')).toHaveAttribute(
+    'title',
+    'not taken: n at 380 nm is 4.0385, above 4',
+  );
+  const cauchy = { cauchy: [1.45, 6000, 0] } as const;
+  expect(await current()).toMatchObject({ nFilm: cauchy });
+
   await page.goto(page.url());
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
-  expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
+  expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300, nFilm: cauchy });
   await openPanel(page);
   await expect(page.getByRole('combobox', { name: 'thickness field' })).toHaveValue('uniform');
-  expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  await expect(page.getByRole('combobox', { name: 'film material' })).toHaveValue('cauchy');
+  const expected = reference8({ thicknessNm: 300, nFilm: cauchy });
+  expect(worstCodeDifference(await centrePixel(page), expected)).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 });

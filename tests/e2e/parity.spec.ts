@@ -1,7 +1,8 @@
 import { writeFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
-import { POLARIZATIONS } from '../../src/physics/filmReflectance.ts';
+import { POLARIZATIONS, type Polarization } from '../../src/physics/filmReflectance.ts';
+import type { FilmIndex } from '../../src/physics/filmIndex.ts';
 import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
@@ -19,6 +20,12 @@ import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS } from '../tolerances.ts';
  * (src/physics/spectralIntegration.ts filmXyz, adaptive and converged) computes the same cases;
  * they are compared by ΔE00 under the case's illuminant white.
  */
+
+/** The dispersive films of the parity cases: water at 20 °C, and n = 1.45 + 6000/λ² (λ in nm). */
+const DISPERSIVE_FILMS: readonly (readonly [FilmIndex, Polarization])[] = [
+  ['water', 'unpolarized'],
+  [{ cauchy: [1.45, 6000, 0] }, 'p'],
+];
 
 const ILLUMINANTS: readonly IlluminantSpec[] = ['D55', 'D65', 'D93', 'E', 'D65-table', { daylightCct: 4000 }, { daylightCct: 12000 }];
 
@@ -48,6 +55,16 @@ function fixedDomain(): Group[] {
       groups.push({ nOutside: 1, nFilm: 1.2 + 0.4 * next(), nInside: 1, illuminant, polarization, normalization, cases });
     }
   }
+  // Dispersive films (docs/physics.md#a-dispersive-film): water unpolarised, a glass-like Cauchy film in p.
+  for (const [nFilm, polarization] of DISPERSIVE_FILMS) {
+    const cases: Case[] = [
+      { thicknessNm: 0, angleDeg: 0 },
+      { thicknessNm: 2000, angleDeg: 85 },
+      { thicknessNm: 2000, angleDeg: 0 },
+    ];
+    while (cases.length < 80) cases.push({ thicknessNm: 2000 * next(), angleDeg: 85 * next() });
+    groups.push({ nOutside: 1, nFilm, nInside: 1, illuminant: 'D65', polarization, normalization: 'white', cases });
+  }
   return groups;
 }
 
@@ -61,10 +78,15 @@ function stressDomain(): Group[] {
     { nOutside: 1.5, nFilm: 1.33, nInside: 1, maxNm: 2000, minDeg: 55 }, // TIR past 62.5° (at b), 41.8° (at c)
     { nOutside: 1.5, nFilm: 1.33, nInside: 1, maxNm: 20000, minDeg: 0 },
     { nOutside: 1.33, nFilm: 1.5, nInside: 1, maxNm: 5000, minDeg: 30 }, // TIR at the film's back face
-  ];
+    // Dispersive: water to 20 µm and near grazing, TIR with water between glass and air, a strongly dispersive high-index film.
+    { nOutside: 1, nFilm: 'water', nInside: 1, maxNm: 20000, minDeg: 0 },
+    { nOutside: 1.5, nFilm: 'water', nInside: 1, maxNm: 2000, minDeg: 55 },
+    { nOutside: 1, nFilm: { cauchy: [2.3, 30000, 0] }, nInside: 1, maxNm: 20000, minDeg: 0 },
+  ] as const;
   const groups: Group[] = [];
   stacks.forEach(({ maxNm, minDeg, ...n }, i) => {
-    for (const polarization of POLARIZATIONS) {
+    // Dispersive films in one polarisation each (their table is built from bins: seconds on a CPU rasteriser).
+    for (const polarization of typeof n.nFilm === 'number' ? POLARIZATIONS : (['unpolarized'] as const)) {
       const cases: Case[] = [
         { thicknessNm: 0, angleDeg: 90 },
         { thicknessNm: maxNm, angleDeg: 89.9 },
@@ -81,10 +103,13 @@ function stressDomain(): Group[] {
 
 interface Figures extends DeltaStats {
   readonly worst: string;
+  /** The dispersive films' share of the cases. */
+  readonly dispersive: DeltaStats | null;
 }
 
 function compare(groups: readonly Group[], rendered: number[][][]): { figures: Figures; deltas: number[]; nonFinite: string[] } {
   const deltas: number[] = [];
+  const dispersiveDeltas: number[] = [];
   const nonFinite: string[] = [];
   let worst = '';
   groups.forEach((g, gi) => {
@@ -97,9 +122,11 @@ function compare(groups: readonly Group[], rendered: number[][][]): { figures: F
       if (![...shader, d].every(Number.isFinite)) nonFinite.push(label);
       if (deltas.length === 0 || d > Math.max(...deltas)) worst = `ΔE00 ${d.toFixed(3)} at ${label}`;
       deltas.push(d);
+      if (typeof g.nFilm !== 'number') dispersiveDeltas.push(d);
     });
   });
-  return { figures: { ...deltaStats(deltas), worst }, deltas, nonFinite };
+  const dispersive = dispersiveDeltas.length > 0 ? deltaStats(dispersiveDeltas) : null;
+  return { figures: { ...deltaStats(deltas), worst, dispersive }, deltas, nonFinite };
 }
 
 async function render(
@@ -123,6 +150,7 @@ test.afterAll(() => {
 
 for (const mode of MODES) {
   test(`${mode} mode matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°`, async ({ page }) => {
+    test.slow(mode !== 'fourier', 'dispersive films by bins');
     const groups = fixedDomain();
     const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
     results[`${mode}/fixed`] = figures;
@@ -133,6 +161,8 @@ for (const mode of MODES) {
   });
 
   test(`${mode} mode stays finite and close on thick, grazing and TIR films`, async ({ page }) => {
+    // The dispersive 20 µm films' tables sum 150 bins per texel over 1024 × 256 texels: over two minutes on a busy CPU rasteriser.
+    test.slow(mode !== 'fourier', 'dispersive films by bins');
     const groups = stressDomain();
     const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
     results[`${mode}/stress`] = figures;
@@ -158,6 +188,7 @@ const diagonal = (groups: readonly Group[]): Group[] =>
 test(`the half-float table matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°, and stays finite on the stress cases`, async ({
   page,
 }) => {
+  test.slow(true, 'dispersive films by bins');
   const half = { ...DEFAULT_FILM_QUALITY, tablePrecision: 'half' } as const;
   const fixed = diagonal(fixedDomain());
   const fixedResult = compare(fixed, await render(page, fixed, 'table', half));

@@ -1,8 +1,8 @@
 import { writeFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
-import { POLARIZATIONS, filmOptics } from '../../src/physics/filmReflectance.ts';
-import { binnedXyz, spectralBins } from '../../src/physics/binnedIntegration.ts';
+import { POLARIZATIONS } from '../../src/physics/filmReflectance.ts';
+import { spectralBins, stackBinnedXyz } from '../../src/physics/binnedIntegration.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { type Xyz, spectralWeights } from '../../src/physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../../src/render/filmQuality.ts';
@@ -80,7 +80,7 @@ for (const mode of MODES) {
 /** The float64 twin of the shader's method: the same 90 bins and closed-form means. */
 function binned64(g: ParityGroup, thicknessNm: number, angleDeg: number): Xyz {
   const bins = spectralBins(spectralWeights(g.illuminant, g.normalization), DEFAULT_FILM_QUALITY.exactSpectralBins);
-  return binnedXyz(filmOptics({ ...g, thicknessNm, angleDeg }, g.polarization), bins);
+  return stackBinnedXyz({ ...g, thicknessNm, angleDeg }, g.polarization, bins);
 }
 
 /** ΔE00 steps where float32 is called no longer good enough: the parity bound, and a just-noticeable difference. */

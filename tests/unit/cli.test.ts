@@ -18,7 +18,7 @@ import { runColorCommand } from '../../src/cli/runColorCommand.ts';
 import { jsonNestingDepth } from '../../src/cli/jsonNestingDepth.ts';
 import { MAX_TABLE_ROWS, evenlySpaced } from '../../src/cli/tableValues.ts';
 import { ABSURDLY_LONG, DEEPLY_NESTED, NOT_NUMBERS, notNames, outsideRange } from './fixtures/badValues.ts';
-import { EQUAL_ENERGY_TOLERANCE, FLOAT_TOLERANCE, GOLDEN_TOL } from '../tolerances.ts';
+import { EQUAL_ENERGY_TOLERANCE, FLOAT_TOLERANCE, GOLDEN_TOL, WATER_INDEX_TOL } from '../tolerances.ts';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const FIXTURES = 'tests/unit/fixtures';
@@ -46,6 +46,7 @@ interface CaseOutput {
   linearWideGamut: number[];
   displayP3_8: number[];
   reflectance: number[];
+  nFilm: number[];
   thicknessNm?: number;
   angleDeg?: number;
   hex?: string;
@@ -62,6 +63,36 @@ function cliJson(...args: string[]): CaseOutput[] {
 const bareInterfaceR = (na: number, nc: number) => ((na - nc) / (na + nc)) ** 2;
 /** IEC 61966-2-1: the 8-bit code of a linear value in [0, 1]. */
 const srgb8Of = (v: number) => Math.round(255 * (v <= 0.0031308 ? 12.92 * v : 1.055 * v ** (1 / 2.4) - 0.055));
+
+describe('color CLI, dispersive films', () => {
+  it(
+    'reports n_b(λ) at each wavelength (water: the measured D and C lines in air × 1.00028) and R(λ) with that index',
+    { timeout: SPAWN_TIMEOUT_MS },
+    () => {
+      const [water] = cliJson('--n-film', 'water', '--thickness', '400', '--wavelengths', '589.29,656.28');
+      expect(water!.nFilm).toHaveLength(2);
+      [1.33299, 1.33114].forEach((nAir, i) => expect(Math.abs(water!.nFilm[i]! - nAir * 1.00028)).toBeLessThan(WATER_INDEX_TOL));
+      // R at one wavelength is the constant film's R with the index the film has there.
+      const [constant] = cliJson('--n-film', String(water!.nFilm[0]), '--thickness', '400', '--wavelengths', '589.29');
+      expect(Math.abs(water!.reflectance[0]! - constant!.reflectance[0]!)).toBeLessThan(FLOAT_TOLERANCE);
+      expect(constant!.nFilm).toEqual([water!.nFilm[0]]);
+    },
+  );
+
+  it(
+    'takes a Cauchy film from a flag and from a cases file alike, and refuses one outside the index domain',
+    { timeout: SPAWN_TIMEOUT_MS },
+    () => {
+      const [flag] = cliJson('--n-film', 'cauchy:1.45,6000', '--thickness', '700', '--angle', '30');
+      const [file] = cliJson('--cases', 'tests/unit/fixtures/cli-dispersive-cases.json');
+      expect(file!.xyz).toEqual(flag!.xyz);
+      const bad = cli('--n-film', 'cauchy:3.9,20000');
+      expect(bad.status).toBe(2);
+      expect(bad.stdout).toBe('');
+      expect(bad.stderr).toMatch(/^color: --n-film: "cauchy:3.9,20000" is not allowed; .* \(here n at 380 nm is 4.0385, above 4\)\n$/);
+    },
+  );
+});
 
 describe('color CLI, one case from flags', () => {
   it('reproduces the golden reflectance R(555 nm) = 0.1215919 (n 1.5 in air, 250 nm, 0°)', { timeout: SPAWN_TIMEOUT_MS }, () => {

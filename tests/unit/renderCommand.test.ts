@@ -33,7 +33,10 @@ describe('render command: exit statuses', () => {
       const runs: [string[], string][] = [
         [['--thickness', '-5', '--out', out], 'render: --thickness: "-5" is not allowed; expected a number in [0, 20000] nm\n'],
         [['--width', '99999', '--out', out], 'render: --width: "99999" is not allowed; expected a whole number in [16, 4096] CSS px\n'],
-        [['--cases', join(dir, 'views.json')], 'render: case at index 1: nFilm: 5 is not allowed; expected a number in [1, 4]\n'],
+        [
+          ['--cases', join(dir, 'views.json')],
+          'render: case at index 1: nFilm: 5 is not allowed; expected a number in [1, 4], water, or cauchy:A,B[,C] (n = A + B/λ² + C/λ⁴, λ in nm) within [1, 4] over 380–830 nm (here n is 5, above 4)\n',
+        ],
         [['--out', join(dir, 'no-such-folder', 'view.png')], 'render: --out: '],
       ];
       for (const [args, line] of runs) {

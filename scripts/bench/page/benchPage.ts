@@ -80,7 +80,7 @@ window.benchRow = async (spec: BenchRowSpec) => {
   const repeats = frames[0]!.count === 1 ? [0] : [0, 1, 2];
   const changeToFrameMs = CHANGES.map(({ values }) => {
     const times = repeats.flatMap(() =>
-      values.map((v) => {
+      values(spec.settings).map((v) => {
         const started = performance.now();
         view.apply({ ...view.current, ...v });
         view.render();

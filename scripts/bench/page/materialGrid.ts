@@ -21,8 +21,15 @@ import {
   WebGLRenderer,
 } from 'three';
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3, invert3 } from '../../../src/physics/colorConversions.ts';
+import type { FilmIndex } from '../../../src/physics/filmIndex.ts';
 import type { ParityGroup, ParityMode } from '../../../src/render/parityCase.ts';
 import { spectralIridescence } from '../../../src/render/spectralIridescence.ts';
+
+/** The material's film index is three's iridescenceIOR, one number: the grids must be of a constant film. */
+function constantIndex(index: FilmIndex): number {
+  if (typeof index !== 'number') throw new Error(`the material's grids take a constant film index, not ${JSON.stringify(index)}`);
+  return index;
+}
 
 const renderer = new WebGLRenderer({ canvas: document.querySelector<HTMLCanvasElement>('#gl')! });
 const LINEAR_SRGB_TO_XYZ = invert3(XYZ_TO_LINEAR_SRGB);
@@ -54,7 +61,7 @@ function materialGridXyz(g: ParityGroup, mode: Exclude<ParityMode, 'three-irides
         metalness: 0,
         ior: g.nInside,
         iridescence: 1,
-        iridescenceIOR: g.nFilm,
+        iridescenceIOR: constantIndex(g.nFilm),
         iridescenceThicknessMinimum: 0,
         iridescenceThicknessMaximum: maxNm,
         iridescenceThicknessMap: map,

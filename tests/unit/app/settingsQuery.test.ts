@@ -35,6 +35,23 @@ describe('URL parameters', () => {
     });
   });
 
+  it('reads a dispersive film, writes it back, and says what is wrong with one outside the index domain', () => {
+    const water = parseSettings('?nFilm=water');
+    expect(water).toEqual({ settings: { ...DEFAULT_SETTINGS, nFilm: 'water' }, errors: [] });
+    const cauchy = parseSettings('?nFilm=cauchy:1.45,6000');
+    expect(cauchy.settings.nFilm).toEqual({ cauchy: [1.45, 6000, 0] });
+    expect(settingsToQuery(cauchy.settings)).toBe('nFilm=cauchy%3A1.45%2C6000');
+    expect(parseSettings(`?${settingsToQuery({ ...DEFAULT_SETTINGS, nFilm: { cauchy: [1.6, 1e4, -3e8] } })}`).settings.nFilm).toEqual({
+      cauchy: [1.6, 1e4, -3e8],
+    });
+    const bad = parseSettings('?nFilm=cauchy:3.9,20000');
+    expect(bad.settings.nFilm).toBe(DEFAULT_SETTINGS.nFilm);
+    expect(bad.errors).toHaveLength(1);
+    expect(bad.errors[0]).toMatch(
+      /^nFilm="cauchy:3.9,20000" ignored: expected .*cauchy:A,B\[,C\].* \(here n at 380 nm is 4.0385, above 4\)$/,
+    );
+  });
+
   /** The ranges the README documents, written out here rather than read from params.ts. */
   const NUMERIC: Record<string, [number, number]> = {
     thickness: [0, 20000],

@@ -58,6 +58,17 @@ describe('spectra at the probe', () => {
     }
   });
 
+  it('a constant index has no n(λ) to plot; water has its own n at each λ and R at that index', () => {
+    expect(s.filmIndex).toBeNull();
+    const water = filmSpectrum({ ...stack, nFilm: 'water' }, 'D65', 'unpolarized');
+    for (const i of [0, 209, 450]) {
+      const n = water.filmIndex![i]!;
+      // Water at 20 °C (IAPWS 1997): 1.3456 at 380 nm, 1.3334 at 589 nm, 1.3281 at 830 nm.
+      expect(n).toBeCloseTo([1.3456, 1.3334, 1.3281][[0, 209, 450].indexOf(i)]!, 3);
+      expect(water.reflectance[i]).toBeCloseTo(filmReflectance(water.lambdasNm[i]!, { ...stack, nFilm: n }), 14);
+    }
+  });
+
   it('the illuminant E is flat: I_in = 1 everywhere, so I_out = R', () => {
     const e = filmSpectrum(stack, 'E', 'unpolarized');
     expect(e.incident.every((v) => v === 1)).toBe(true);
@@ -76,6 +87,17 @@ describe('interference colour scale', () => {
   it('runs from 0 to the maximum in equal steps, each colour the reference film colour', () => {
     expect(scale.map((c) => c.thicknessNm)).toEqual([0, 100, 200, 300, 400, 500, 600, 700, 800, 900, 1000]);
     expect(scale[4]!.xyz).toEqual(filmXyz({ ...SOAP_FILM_IN_AIR, angleDeg: 0, thicknessNm: 400 }));
+  });
+
+  it('follows a dispersive film: each colour the dispersive reference colour', () => {
+    const water = interferenceScale({ ...SOAP_FILM_IN_AIR, nFilm: 'water', angleDeg: 0 }, 1000, 3, {
+      illuminant: 'D65',
+      polarization: 'unpolarized',
+      normalization: 'white',
+      xyzToLinearRgb: XYZ_TO_LINEAR_SRGB,
+    });
+    expect(water[1]!.xyz).toEqual(filmXyz({ ...SOAP_FILM_IN_AIR, nFilm: 'water', angleDeg: 0, thicknessNm: 500 }));
+    expect(water[1]!.xyz).not.toEqual(filmXyz({ ...SOAP_FILM_IN_AIR, angleDeg: 0, thicknessNm: 500 }));
   });
 
   it('a film of no thickness between equal media reflects nothing: black', () => {
