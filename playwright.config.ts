@@ -10,8 +10,7 @@ export default defineConfig({
   // Assertions wait for their condition (a frame drawn, a table built), returning as soon as it
   // holds. Here the slowest first frame takes ~3 s; 60 s leaves room for a machine many times slower.
   expect: { timeout: 60_000 },
-  // Tests, not files, are shared out between the workers, so the slow ones do not pile up at the end
-  // (a file whose tests share state runs in one worker: parity.spec.ts).
+  // Tests, not files, are shared out between the workers, so the slow ones do not pile up at the end.
   fullyParallel: true,
   workers: process.env.E2E_WORKERS ? Number(process.env.E2E_WORKERS) : 2,
   // E2E_REPORT=file.json adds a JSON report (per-test times), which `npm run suite-times -- file.json` reads.

@@ -1,4 +1,4 @@
-import { writeFileSync } from 'node:fs';
+import { mkdirSync, writeFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { POLARIZATIONS, type Polarization } from '../../src/physics/filmReflectance.ts';
@@ -140,20 +140,19 @@ async function render(
   return page.evaluate(([g, m, q]) => window.renderFilmXyz!(g, m, q), [groups.map(toParity), mode, quality] as const);
 }
 
-// The figures file gathers every test's figures: this file's tests run in one worker, in order.
-test.describe.configure({ mode: 'default' });
-const results: Record<string, Figures> = {};
-
-test.afterAll(() => {
-  writeFileSync(new URL('./parity-figures.json', import.meta.url), `${JSON.stringify(results, null, 2)}\n`);
-});
+/** Keeps a test's figures in tests/e2e/parity-figures/ (git-ignored), one file per test, so the tests can run in any worker. */
+function keepFigures(name: string, figures: unknown): void {
+  const folder = new URL('./parity-figures/', import.meta.url);
+  mkdirSync(folder, { recursive: true });
+  writeFileSync(new URL(`${name}.json`, folder), `${JSON.stringify(figures, null, 2)}\n`);
+}
 
 for (const mode of MODES) {
   test(`${mode} mode matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°`, async ({ page }) => {
     test.slow(mode !== 'fourier', 'dispersive films by bins');
     const groups = fixedDomain();
     const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
-    results[`${mode}/fixed`] = figures;
+    keepFigures(`${mode}-fixed`, figures);
     console.log(`parity ${mode} fixed: ${JSON.stringify(figures)}`);
     expect(figures.cases).toBeGreaterThanOrEqual(1000);
     expect(nonFinite).toEqual([]);
@@ -165,7 +164,7 @@ for (const mode of MODES) {
     test.slow(mode !== 'fourier', 'dispersive films by bins');
     const groups = stressDomain();
     const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
-    results[`${mode}/stress`] = figures;
+    keepFigures(`${mode}-stress`, figures);
     console.log(`parity ${mode} stress: ${JSON.stringify(figures)}`);
     expect(nonFinite).toEqual([]);
     expect(figures.max, figures.worst).toBeLessThan(MAX_DELTA_E00_STRESS);
@@ -194,8 +193,7 @@ test(`the half-float table matches the reference within ΔE00 ${MAX_DELTA_E00_FI
   const fixedResult = compare(fixed, await render(page, fixed, 'table', half));
   const stress = diagonal(stressDomain());
   const stressResult = compare(stress, await render(page, stress, 'table', half));
-  results['table-half/fixed'] = fixedResult.figures;
-  results['table-half/stress'] = stressResult.figures;
+  keepFigures('table-half', { fixed: fixedResult.figures, stress: stressResult.figures });
   console.log(`parity half-float table: ${JSON.stringify({ fixed: fixedResult.figures, stress: stressResult.figures })}`);
   expect([...fixedResult.nonFinite, ...stressResult.nonFinite]).toEqual([]);
   expect(fixedResult.figures.max, fixedResult.figures.worst).toBeLessThanOrEqual(MAX_DELTA_E00_FIXED);
