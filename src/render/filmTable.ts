@@ -92,13 +92,14 @@ export class FilmTable {
     vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
     fragmentShader: shaderSource('filmTable.glsl'),
   });
-  /** The series' terms per row, from the reference (src/render/airySeriesRows.ts). */
   /**
    * The per-row terms: the series' C₀, B, q (airySeriesRows.ts), or for a dispersive film the Fresnel
    * terms per row and bin (dispersiveRows.ts). One texture, remade when the kind changes, so a
    * dispersive film holds no more GPU objects than a constant one.
    */
   private rows: { texture: DataTexture; dispersive: boolean };
+  /** What the row terms were last computed for (the settings' tableKey and the grid's rows): the bands of one table compute them once. */
+  private rowsFor = '';
   maxThicknessNm = 1;
   /** Milliseconds the last full build at once took (synced with a 1-pixel read), and how many full tables there were: for the benchmark. */
   lastBuildMs = 0;
@@ -130,7 +131,6 @@ export class FilmTable {
    */
   update(renderer: WebGLRenderer, s: FilmSettings, quick = false): boolean {
     const key = tableKey(s);
-    if (key !== this.shown.key) this.building = null;
     if (!quick) {
       if (key === this.shown.key && !this.shown.coarse) return false;
       this.building = null;
@@ -199,19 +199,7 @@ export class FilmTable {
     u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, bins, this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
     // A dispersive film is filled from the bins, with their terms per row (shaders/filmTable.glsl).
-    const rowLayout = { ...this.quality.table, rows: grid.rows, spectralBins: bins };
-    const dispersive = typeof s.nFilm !== 'number';
-    if (this.rows.dispersive !== dispersive) {
-      this.rows.texture.dispose();
-      const texture = dispersive
-        ? dispersiveRowsTexture({ ...this.quality.table, spectralBins: bins })
-        : airySeriesRowsTexture(this.quality.table);
-      this.rows = { texture, dispersive };
-    }
-    const data = this.rows.texture.image.data as Float32Array;
-    if (typeof s.nFilm === 'number') airySeriesRows({ ...s, nFilm: s.nFilm }, rowLayout, data);
-    else dispersiveRows(s, rowLayout, data);
-    this.rows.texture.needsUpdate = true;
+    this.updateRows(s, grid, bins);
     u.uDispersiveRows!.value = this.rows.texture;
     u.uAirySeriesRows!.value = this.rows.texture;
     u.uPolarization!.value = POLARIZATIONS.indexOf(s.polarization);
@@ -232,6 +220,26 @@ export class FilmTable {
     if (this.building) return;
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);
+  }
+
+  /** The per-row terms for `s` on `grid` (computed in float64 on the CPU), unless the texture holds them already. */
+  private updateRows(s: FilmSettings, grid: Grid, bins: number): void {
+    const rowsFor = `${tableKey(s)} ${grid.rows}`;
+    if (rowsFor === this.rowsFor) return;
+    this.rowsFor = rowsFor;
+    const rowLayout = { ...this.quality.table, rows: grid.rows, spectralBins: bins };
+    const dispersive = typeof s.nFilm !== 'number';
+    if (this.rows.dispersive !== dispersive) {
+      this.rows.texture.dispose();
+      const texture = dispersive
+        ? dispersiveRowsTexture({ ...this.quality.table, spectralBins: bins })
+        : airySeriesRowsTexture(this.quality.table);
+      this.rows = { texture, dispersive };
+    }
+    const data = this.rows.texture.image.data as Float32Array;
+    if (typeof s.nFilm === 'number') airySeriesRows({ ...s, nFilm: s.nFilm }, rowLayout, data);
+    else dispersiveRows(s, rowLayout, data);
+    this.rows.texture.needsUpdate = true;
   }
 
   /**
@@ -255,6 +263,7 @@ export class FilmTable {
   invalidate(): void {
     this.shown = { key: '', coarse: false };
     this.building = null;
+    this.rowsFor = ''; // its row terms too, with the rest of the table
   }
 
   private material(index: FilmIndex, bins: number): ShaderMaterial {

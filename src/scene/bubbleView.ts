@@ -142,7 +142,7 @@ export class BubbleView {
    */
   async prepare(): Promise<void> {
     // Without the extension (SwiftShader) compiling is blocking however it is asked for: the first frame does it.
-    if (!this.renderer.getContext().getExtension('KHR_parallel_shader_compile')) return;
+    if (!this.renderer.extensions.has('KHR_parallel_shader_compile')) return;
     this.renderer.toneMapping = this.toneMapping;
     await Promise.all([
       this.renderer.compileAsync(this.scene, this.camera),
