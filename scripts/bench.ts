@@ -16,7 +16,7 @@ import { PANEL_CHANGES, demoPageFigures } from './bench/demoPage.ts';
 import { materialFigures } from './bench/materialFigures.ts';
 import { referenceSpeed, referenceSpeedMarkdown } from './bench/referenceSpeed.ts';
 import { ROWS } from './bench/rows.ts';
-import type { ParityGroup } from '../src/render/parityCase.ts';
+import type { ParityGroup } from './harness/parityCase.ts';
 import type { Xyz } from '../src/physics/spectralWeights.ts';
 import { rowsMarkdown } from './bench/rowsMarkdown.ts';
 

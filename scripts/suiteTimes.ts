@@ -11,7 +11,7 @@ import { readFileSync } from 'node:fs';
 import { chromium } from '@playwright/test';
 import { preview } from 'vite';
 import { FRAME_MARKS } from '../src/app/frameMarks.ts';
-import { MODES } from '../src/render/filmSettings.ts';
+import { MODES } from '../src/settings/filmSettings.ts';
 import { chromiumLaunchOptions } from './chromium.ts';
 
 /** The port of this script's own server (the suites use 5180, the benchmark 5192–5193). */

@@ -1,6 +1,6 @@
-import type { FilmQuality } from '../../src/render/filmQuality.ts';
-import type { FilmSettings } from '../../src/render/filmSettings.ts';
-import type { ParityGroup } from '../../src/render/parityCase.ts';
+import type { FilmQuality } from '../../src/settings/filmQuality.ts';
+import type { FilmSettings } from '../../src/settings/filmSettings.ts';
+import type { ParityGroup } from '../harness/parityCase.ts';
 
 /** One row of the benchmark as the page runs it (scripts/bench/page/benchPage.ts). */
 export interface BenchRowSpec {

@@ -1,6 +1,6 @@
 /** Runs the benchmark rows in headless Chromium, one fresh page (and WebGL context) per row. */
 import type { Browser } from '@playwright/test';
-import type { ParityGroup } from '../../src/render/parityCase.ts';
+import type { ParityGroup } from '../harness/parityCase.ts';
 import type { BenchRowResult } from './benchRow.ts';
 import type { BenchRow } from './rows.ts';
 

@@ -7,7 +7,7 @@ import { cosDeg } from '../../src/physics/snell.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { type Xyz } from '../../src/physics/spectralWeights.ts';
 import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
-import type { ParityGroup } from '../../src/render/parityCase.ts';
+import type { ParityGroup } from '../harness/parityCase.ts';
 
 const SOAP = { nOutside: 1, nFilm: 1.33, nInside: 1, illuminant: 'D65', polarization: 'unpolarized', normalization: 'white' } as const;
 const range = (n: number, f: (i: number) => number) => Array.from({ length: n }, (_, i) => f(i));

@@ -8,9 +8,9 @@ import { join, resolve } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import type { Browser } from '@playwright/test';
 import { build } from 'vite';
-import type { View } from '../../src/materials/exampleScene.ts';
+import type { View } from '../../src/pages/materialsScene.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
-import type { ParityGroup } from '../../src/render/parityCase.ts';
+import type { ParityGroup } from '../harness/parityCase.ts';
 import { type GridError, gridError } from './errorGrids.ts';
 
 /** The modes whose error the material's grids measure. */

@@ -4,10 +4,10 @@
  * follows the scene. Every row draws the demo's default view (swirl, both walls, sky, sRGB)
  * unless its settings say otherwise.
  */
-import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/render/filmQuality.ts';
-import { DEFAULT_SETTINGS } from '../../src/render/filmParameters.ts';
-import { type FilmSettings, HDR_ENVIRONMENTS } from '../../src/render/filmSettings.ts';
-import type { FilmTableLayout } from '../../src/render/filmTableLayout.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/settings/filmQuality.ts';
+import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
+import { type FilmSettings, HDR_ENVIRONMENTS } from '../../src/settings/filmSettings.ts';
+import type { FilmTableLayout } from '../../src/settings/filmTableLayout.ts';
 
 export interface BenchRow {
   readonly name: string;

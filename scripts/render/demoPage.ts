@@ -1,5 +1,5 @@
 /**
- * What a program driving the demo page (index.html, src/main.ts) needs to know of it: its ready
+ * What a program driving the demo page (index.html, src/pages/demo.ts) needs to know of it: its ready
  * marks and the parts of it that are interface, not the picture. Used by the render command and
  * the screenshot tests.
  */

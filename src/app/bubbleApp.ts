@@ -5,7 +5,7 @@ import type { BubbleView } from '../scene/bubbleView.ts';
 import { createControlPanel } from './controlPanel.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
 import { startsClosed } from './startsClosed.ts';
-import type { AppSettings, ViewSettings } from './viewParameters.ts';
+import type { AppSettings, ViewSettings } from '../settings/viewParameters.ts';
 
 /** While the swirl animates, the plots follow the probed film this often. */
 const PLOT_INTERVAL_MS = 250;

@@ -2,8 +2,8 @@ import GUI from 'lil-gui';
 import { FILM_MATERIALS, type FilmIndex, filmIndexText, readFilmIndex } from '../physics/filmIndex.ts';
 import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS, daylightCctOf } from '../physics/illuminants.ts';
-import { PANEL_FOLDERS, type ParameterRow } from '../render/parameterRow.ts';
-import { VIEW_PARAMETERS, type ViewSettings } from './viewParameters.ts';
+import { PANEL_FOLDERS, type ParameterRow } from '../settings/parameterRow.ts';
+import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 
 /** The panel's choice for an illuminant given by its CCT. */
 const DAYLIGHT_CCT = 'daylight (CCT)';

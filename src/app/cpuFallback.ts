@@ -1,6 +1,6 @@
-import { type EnvironmentPixels, loadEnvironmentPixels } from '../render/environmentMaps.ts';
-import { type FilmSettings, isHdrEnvironment } from '../render/filmSettings.ts';
-import { cpuBubbleImage } from '../scene/cpuBubbleImage.ts';
+import { type EnvironmentPixels, loadEnvironmentPixels } from '../bubble/environmentMaps.ts';
+import { type FilmSettings, isHdrEnvironment } from '../settings/filmSettings.ts';
+import { cpuBubbleImage } from '../twins/cpuBubbleImage.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
 
 /** The still image's size in pixels (square; shown scaled to fit). */

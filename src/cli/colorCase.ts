@@ -9,7 +9,7 @@ import { FILM_STACK_DOMAIN, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR }
 import { DAYLIGHT_CCT_DOMAIN_K, ILLUMINANT_EXPECTED, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { type NumberDomain, expectedNumber, isInDomain } from '../physics/validate.ts';
-import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../render/filmParameters.ts';
+import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../settings/filmParameters.ts';
 import { oneOf, rejectValue } from './inputErrors.ts';
 
 /** One film to colour: what the command line or one entry of a cases file describes. */

@@ -1,6 +1,6 @@
 import { parseArgs } from 'node:util';
-import { parameterNamed, readParameter, settingsToQuery } from '../app/settingsQuery.ts';
-import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../app/viewParameters.ts';
+import { parameterNamed, readParameter, settingsToQuery } from '../settings/settingsQuery.ts';
+import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 import { ParameterError, isInDomain, parseDecimal } from '../physics/validate.ts';
 import { describeValue, rejectValue } from './inputErrors.ts';
 import { parseJsonArray } from './parseJsonArray.ts';

@@ -1,4 +1,4 @@
-import { VIEW_PARAMETERS } from '../app/viewParameters.ts';
+import { VIEW_PARAMETERS } from '../settings/viewParameters.ts';
 import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
 import { PICTURE_OPTIONS, VIEW_FIELDS, expectedOf } from './renderOptions.ts';
 import { optionLines } from './usage.ts';

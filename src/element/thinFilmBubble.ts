@@ -1,9 +1,9 @@
 import { addPlotStyles } from '../plots/plotStyles.ts';
 import { BubbleApp } from '../app/bubbleApp.ts';
 import { hasWebGL2, showCpuFallback } from '../app/cpuFallback.ts';
-import { parseSettings, settingsToQuery } from '../app/settingsQuery.ts';
+import { parseSettings, settingsToQuery } from '../settings/settingsQuery.ts';
 import { startsClosed } from '../app/startsClosed.ts';
-import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../app/viewParameters.ts';
+import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
 import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
 

@@ -9,5 +9,5 @@ export {
   isSpectralIridescence,
   spectralIridescence,
   useSpectralIridescence,
-} from '../render/spectralIridescence.ts';
+} from '../material/spectralIridescence.ts';
 export { ParameterError } from '../physics/validate.ts';

@@ -14,7 +14,7 @@ import { type SpectralTransform } from './spectralTransform.ts';
  *   X_j = C₀ W_j + 2 Re( B Σ_{m≥1} q^{m−1} F_j(m x) )
  * with F_j the light's spectral transform (spectralTransform.ts). Exact for a real, dispersionless
  * film with a real optical path; an evanescent film (complex Δ) has no such series.
- * Mirrors shaders/airySeries.glsl.
+ * Mirrors shaders/physics/airySeries.glsl.
  */
 export interface AirySeriesTerms {
   readonly c0: number;
@@ -134,7 +134,7 @@ export function seriesXyz(terms: readonly AirySeriesTerms[], x: number, t: Spect
 }
 
 /**
- * The `fourier` method (shaders/filmColor.glsl, mode 2): the series where it has a real optical
+ * The `fourier` method (shaders/film/filmColor.glsl, mode 2): the series where it has a real optical
  * path and converges within AIRY_SERIES_MAX_ORDERS terms, else the binned integral (evanescent
  * films; high-finesse thin films near grazing incidence).
  */

@@ -4,7 +4,7 @@ import { cosDeg, refractedCos } from './snell.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type SpectralWeights, type Xyz } from './spectralWeights.ts';
 
 /**
- * The shader's integration (mirrored by `shaders/binnedIntegration.glsl`): `count` equal
+ * The shader's integration (mirrored by `shaders/physics/binnedIntegration.glsl`): `count` equal
  * wavelength bins over 380–830 nm, each holding ∫_bin I_in x̄, ȳ, z̄ dλ / k (exact for the
  * piecewise-linear 1 nm weights), so X = Σ_bins W_bin · R̄_bin with R̄_bin the closed-form mean of
  * R over the bin's phase window (`meanChannelReflectance`). Fringes narrower than a bin average
@@ -119,7 +119,7 @@ export function binnedXyz(optics: FilmOptics, bins: SpectralBins, extraHalfWidth
 }
 
 /**
- * XYZ by bins of a film whose index depends on λ (shaders/binnedIntegration.glsl, dispersiveBinnedXyz):
+ * XYZ by bins of a film whose index depends on λ (shaders/physics/binnedIntegration.glsl, dispersiveBinnedXyz):
  * each bin's Fresnel terms at n_b of its centre, its phase window from the optical path at its two
  * ends, 2π Δ(λ)/λ with Δ(λ) = 2 n_b(λ) d cos θ_r(λ).
  */

@@ -3,7 +3,7 @@
  *
  * Cosines of refraction angles become imaginary under total internal reflection, and the film
  * phase becomes complex with them (docs/physics.md#complex-angles), so every quantity from
- * Snell's law onward is complex. Mirrored by `shaders/complex.glsl` (vec2 = re, im).
+ * Snell's law onward is complex. Mirrored by `shaders/physics/complex.glsl` (vec2 = re, im).
  */
 export interface Complex {
   readonly re: number;

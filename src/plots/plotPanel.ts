@@ -1,5 +1,5 @@
 import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
-import { type FilmSettings, maxFieldThicknessNm } from '../render/filmSettings.ts';
+import { type FilmSettings, maxFieldThicknessNm } from '../settings/filmSettings.ts';
 import type { ProbeReading } from '../scene/probe.ts';
 import { drawChromaticityPlot } from './chromaticityPlot.ts';
 import { type ProbedView, downloadName } from './downloadName.ts';

@@ -14,12 +14,12 @@ import {
   WebGLRenderer,
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
-import { createBubbleMaterial, releaseFilmColorTextures, updateBubbleUniforms } from '../render/bubbleMaterial.ts';
-import { createBackgroundMaterial, updateBackgroundMaterial } from '../render/environmentMaterial.ts';
-import { environmentTexture, loadEnvironmentPixels, releaseEnvironmentTexture } from '../render/environmentMaps.ts';
-import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../render/filmQuality.ts';
-import { FilmTable } from '../render/filmTable.ts';
-import { type FilmSettings, type HdrEnvironment, type ToneMapping, isHdrEnvironment, toneMappingOf } from '../render/filmSettings.ts';
+import { createBubbleMaterial, releaseFilmColorTextures, updateBubbleUniforms } from '../bubble/bubbleMaterial.ts';
+import { createBackgroundMaterial, updateBackgroundMaterial } from '../bubble/environmentMaterial.ts';
+import { environmentTexture, loadEnvironmentPixels, releaseEnvironmentTexture } from '../bubble/environmentMaps.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../settings/filmQuality.ts';
+import { FilmTable } from '../film/filmTable.ts';
+import { type FilmSettings, type HdrEnvironment, type ToneMapping, isHdrEnvironment, toneMappingOf } from '../settings/filmSettings.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
 
 ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });

@@ -13,7 +13,7 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import type { Xyz } from '../physics/spectralWeights.ts';
-import { setDefines } from '../render/materialDefines.ts';
+import { setDefines } from '../gpu/materialDefines.ts';
 
 /** What the bubble shows at one point of the view: the near wall's film there. */
 export interface ProbeReading {

@@ -1,5 +1,5 @@
 import { expect, type Page } from '@playwright/test';
-import type { ViewSettings } from '../../src/app/viewParameters.ts';
+import type { ViewSettings } from '../../src/settings/viewParameters.ts';
 
 /**
  * Gives the demo page new settings as its panel does (BubbleApp.set, already validated) and waits

@@ -2,11 +2,11 @@ import { expect, test } from '@playwright/test';
 import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../../src/physics/colorConversions.ts';
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
-import { type ShownEnvironment, environmentRadiance } from '../../src/render/environment.ts';
-import { loadEnvironmentPixels } from '../../src/render/environmentMaps.ts';
-import { type HdrEnvironment, type ToneMapping } from '../../src/render/filmSettings.ts';
-import { toneMap } from '../../src/render/toneMapping.ts';
-import { CAMERA_DISTANCE, FOV_DEG } from '../../src/scene/cpuBubbleImage.ts';
+import { type ShownEnvironment, environmentRadiance } from '../../src/twins/environment.ts';
+import { loadEnvironmentPixels } from '../../src/bubble/environmentMaps.ts';
+import { type HdrEnvironment, type ToneMapping } from '../../src/settings/filmSettings.ts';
+import { toneMap } from '../../src/twins/toneMapping.ts';
+import { CAMERA_DISTANCE, FOV_DEG } from '../../src/twins/cpuBubbleImage.ts';
 import { MAX_CODE_DIFFERENCE, worstCodeDifference } from './referenceColor.ts';
 
 /**

@@ -1,5 +1,5 @@
 import { expect, test, type Page, type Route } from '@playwright/test';
-import { HDR_ENVIRONMENTS } from '../../src/render/filmSettings.ts';
+import { HDR_ENVIRONMENTS } from '../../src/settings/filmSettings.ts';
 import { showSettings } from './appSettings.ts';
 import { watchProblems } from './pageWatch.ts';
 import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';

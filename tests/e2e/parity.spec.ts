@@ -7,15 +7,15 @@ import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { type Xyz } from '../../src/physics/spectralWeights.ts';
-import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/render/filmQuality.ts';
-import { MODES } from '../../src/render/filmSettings.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/settings/filmQuality.ts';
+import { MODES } from '../../src/settings/filmSettings.ts';
 import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
-import type { ParityGroup, ParityMode } from '../../src/render/parityCase.ts';
+import type { ParityGroup, ParityMode } from '../../scripts/harness/parityCase.ts';
 import { mulberry32 } from '../seededRandom.ts';
 import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS } from '../tolerances.ts';
 
 /**
- * Shader parity as numbers: the real GLSL (shaders/filmColor.glsl, every mode of MODES)
+ * Shader parity as numbers: the real GLSL (shaders/film/filmColor.glsl, every mode of MODES)
  * renders film XYZ into a float target (tests/e2e/harness/parity.ts); the float64 reference
  * (src/physics/spectralIntegration.ts filmXyz, adaptive and converged) computes the same cases;
  * they are compared by ΔE00 under the case's illuminant white.

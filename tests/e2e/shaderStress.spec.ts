@@ -5,14 +5,14 @@ import { POLARIZATIONS } from '../../src/physics/filmReflectance.ts';
 import { spectralBins, stackBinnedXyz } from '../../src/physics/binnedIntegration.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { type Xyz, spectralWeights } from '../../src/physics/spectralWeights.ts';
-import { DEFAULT_FILM_QUALITY } from '../../src/render/filmQuality.ts';
-import { MODES } from '../../src/render/filmSettings.ts';
-import type { ParityGroup, ParityMode } from '../../src/render/parityCase.ts';
+import { DEFAULT_FILM_QUALITY } from '../../src/settings/filmQuality.ts';
+import { MODES } from '../../src/settings/filmSettings.ts';
+import type { ParityGroup, ParityMode } from '../../scripts/harness/parityCase.ts';
 import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS, WHITE_BOUND_SLACK } from '../tolerances.ts';
 
 /**
  * The shader under numerical stress (docs/gpu.md#float32-limits), through the float-target harness
- * (tests/e2e/harness/parity.ts, the real shaders/filmColor.glsl): a dense grid over the whole
+ * (tests/e2e/harness/parity.ts, the real shaders/film/filmColor.glsl): a dense grid over the whole
  * domain never gives NaN, ±Infinity, a negative or an impossibly bright XYZ, in either mode;
  * then where float32 stops being good enough in `exact` mode, against the float64 reference.
  */

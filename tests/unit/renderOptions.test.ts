@@ -1,11 +1,11 @@
 /**
  * The render command's options (src/cli/renderOptions.ts). The view's options must be the URL's
- * parameters with the URL's refusals, so the URL parser (src/app/settingsQuery.ts) is the
+ * parameters with the URL's refusals, so the URL parser (src/settings/settingsQuery.ts) is the
  * reference: every schema row, given the same texts, accepts and refuses exactly what the URL does.
  */
 import { describe, expect, it } from 'vitest';
-import { parseSettings, settingsToQuery } from '../../src/app/settingsQuery.ts';
-import { VIEW_PARAMETERS } from '../../src/app/viewParameters.ts';
+import { parseSettings, settingsToQuery } from '../../src/settings/settingsQuery.ts';
+import { VIEW_PARAMETERS } from '../../src/settings/viewParameters.ts';
 import { PICTURE_OPTIONS, type RenderView, parseRenderCases, parseRenderCommandLine } from '../../src/cli/renderOptions.ts';
 import { ParameterError } from '../../src/physics/validate.ts';
 import { NOT_NUMBERS, outsideRange } from './fixtures/badValues.ts';

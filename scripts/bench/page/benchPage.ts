@@ -5,9 +5,9 @@
  */
 import { DataTexture, Mesh, MeshBasicMaterial, RGBAFormat, SRGBColorSpace, WebGLRenderer } from 'three';
 import { BubbleView, createBubbleRenderer } from '../../../src/scene/bubbleView.ts';
-import { FilmXyzProbe } from '../../../src/render/filmXyzProbe.ts';
-import { loadEnvironmentPixels } from '../../../src/render/environmentMaps.ts';
-import { isHdrEnvironment } from '../../../src/render/filmSettings.ts';
+import { FilmXyzProbe } from '../../harness/filmXyzProbe.ts';
+import { loadEnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
+import { isHdrEnvironment } from '../../../src/settings/filmSettings.ts';
 import { type BenchRowSpec, CHANGES } from '../benchRow.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
@@ -34,7 +34,7 @@ window.benchRow = async (spec: BenchRowSpec) => {
   if (isHdrEnvironment(spec.settings.env)) await loadEnvironmentPixels(spec.settings.env);
   const view = new BubbleView(createBubbleRenderer(canvas), spec.settings, spec.quality);
   if (!spec.reflections) {
-    // The model before environment reflections: reflectedRadiance (shaders/environment.glsl) returns the light's white.
+    // The model before environment reflections: reflectedRadiance (shaders/bubble/environment.glsl) returns the light's white.
     const m = view.bubble.material;
     m.onBeforeCompile = (shader) => {
       shader.fragmentShader = shader.fragmentShader.replace(/vec3 reflectedRadiance\(vec3 direction\) \{/, '$&\n  return vec3(1.0);');

@@ -22,8 +22,8 @@ import {
 } from 'three';
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3, invert3 } from '../../../src/physics/colorConversions.ts';
 import type { FilmIndex } from '../../../src/physics/filmIndex.ts';
-import type { ParityGroup, ParityMode } from '../../../src/render/parityCase.ts';
-import { spectralIridescence } from '../../../src/render/spectralIridescence.ts';
+import type { ParityGroup, ParityMode } from '../../harness/parityCase.ts';
+import { spectralIridescence } from '../../../src/material/spectralIridescence.ts';
 
 /** The material's film index is three's iridescenceIOR, one number: the grids must be of a constant film. */
 function constantIndex(index: FilmIndex): number {

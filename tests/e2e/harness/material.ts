@@ -30,7 +30,7 @@ import {
 } from 'three';
 import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
-import { type SpectralIridescenceOptions, spectralIridescence, useSpectralIridescence } from '../../../src/render/spectralIridescence.ts';
+import { type SpectralIridescenceOptions, spectralIridescence, useSpectralIridescence } from '../../../src/material/spectralIridescence.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');
 if (!canvas) throw new Error('material.html must hold #gl');

@@ -1,8 +1,8 @@
 /** The parity page: film XYZ (FilmXyzProbe) and film thickness of the given cases through the real shaders. */
 import { WebGLRenderer } from 'three';
-import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/render/filmQuality.ts';
-import type { ParityGroup, ParityMode } from '../../../src/render/parityCase.ts';
-import { FilmXyzProbe } from '../../../src/render/filmXyzProbe.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/settings/filmQuality.ts';
+import type { ParityGroup, ParityMode } from '../../../scripts/harness/parityCase.ts';
+import { FilmXyzProbe } from '../../../scripts/harness/filmXyzProbe.ts';
 import { renderThickness } from './thicknessFieldProbe.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');

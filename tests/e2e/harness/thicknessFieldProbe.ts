@@ -1,11 +1,11 @@
 /**
- * Renders shaders/thicknessField.glsl's thicknessAt at given points of the unit sphere into a
+ * Renders shaders/fields/thicknessField.glsl's thicknessAt at given points of the unit sphere into a
  * float target and reads it back, one pixel per point (the parity harness's thickness twin check).
  */
 import { ShaderMaterial, type WebGLRenderer } from 'three';
-import { FIELDS, type FilmSettings } from '../../../src/render/filmSettings.ts';
-import { floatRowTexture, renderFloatRow } from '../../../src/render/floatRow.ts';
-import { shaderSource } from '../../../src/render/shaderSource.ts';
+import { FIELDS, type FilmSettings } from '../../../src/settings/filmSettings.ts';
+import { floatRowTexture, renderFloatRow } from '../../../src/gpu/floatRow.ts';
+import { shaderSource } from '../../../src/gpu/shaderSource.ts';
 
 export type FieldSettings = Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm' | 'swirlSpeed' | 'timeSeconds'>;
 

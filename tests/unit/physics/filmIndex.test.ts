@@ -13,7 +13,7 @@ import {
 } from '../../../src/physics/filmIndex.ts';
 import { filmOptics } from '../../../src/physics/filmReflectance.ts';
 import { filmXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
-import { DEFAULT_FILM_QUALITY } from '../../../src/render/filmQuality.ts';
+import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { DISPERSIVE_BINNED_DE00, DISPERSIVE_REFERENCE_DE00, FLOAT_TOLERANCE, WATER_INDEX_TOL } from '../../tolerances.ts';
 

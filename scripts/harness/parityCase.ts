@@ -1,0 +1,15 @@
+import type { FilmSettings } from '../../src/settings/filmSettings.ts';
+
+/**
+ * What the parity harness and its spec share. A group holds the cases that differ only in
+ * per-pixel inputs (thickness, cos θ_i); everything else is a uniform or a define of the shader.
+ */
+export interface ParityGroup extends Pick<
+  FilmSettings,
+  'nOutside' | 'nFilm' | 'nInside' | 'illuminant' | 'polarization' | 'normalization'
+> {
+  /** [thicknessNm, cosIncidence] per case */
+  readonly inputs: readonly (readonly [number, number])[];
+}
+
+export type ParityMode = FilmSettings['mode'];

@@ -1,0 +1,73 @@
+// The table of film XYZ over (thickness, cos θ_i), uFilmTableWidth x 2 uFilmTableRows texels:
+// the lower half for light arriving from outside (n_a = uNOutside), the upper half from inside
+// (media swapped: the far wall of the bubble). Texel positions: filmTableLayout.glsl.
+// Filled by TFC_TABLE_FILL: 0 the binned integral, each texel averaged over its thickness cell so
+// fringes finer than a cell do not alias; 1 the Airy series (airySeries.glsl) at the texel's film,
+// or the bins where the series has no real path or needs too many terms. The series' C0, B, q
+// depend on the row only: uAirySeriesRows holds them per row (src/film/airySeriesRows.ts,
+// computed in float64), so a texel only sums the series.
+// A dispersive film (TFC_DISPERSIVE) is filled from the dispersive bins at the texel's film (not
+// averaged over its cell: with the bilinear lookup that smoothed twice, stress grid ΔE00 0.52 against
+// 0.34), their Fresnel terms per row and bin from uDispersiveRows (src/film/dispersiveRows.ts).
+// Built by src/film/filmTable.ts.
+#ifdef TFC_DISPERSIVE
+#define TFC_DISPERSIVE_ROWS 1
+#endif
+#include "binnedIntegration.glsl"
+#include "airySeries.glsl"
+#include "filmTableLayout.glsl"
+
+uniform float uNOutside;
+uniform float uNFilm;
+uniform float uNInside;
+uniform float uTableMaxThicknessNm;
+
+#if TFC_TABLE_FILL == 1
+// Row y, texels 0-2: C0, B, q of channel 0, then of channel 1, then the path per nm of thickness
+// (2 n_b cos θ_r) and 1 where it is real (0: an evanescent film, no series).
+uniform sampler2D uAirySeriesRows;
+
+bool rowSeries(int y, out AirySeriesTerms t[TFC_FILM_CHANNELS], out float pathPerNm) {
+  vec4 a = texelFetch(uAirySeriesRows, ivec2(0, y), 0);
+  vec4 b = texelFetch(uAirySeriesRows, ivec2(1, y), 0);
+  vec4 c = texelFetch(uAirySeriesRows, ivec2(2, y), 0);
+  t[0] = AirySeriesTerms(a.x, a.yz, vec2(a.w, b.x));
+#if TFC_FILM_CHANNELS == 2
+  t[1] = AirySeriesTerms(b.y, b.zw, c.xy);
+#endif
+  pathPerNm = c.z;
+  return c.w == 1.0;
+}
+#endif
+
+void main() {
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  int rows = int(uFilmTableRows);
+  bool fromInside = texel.y >= rows;
+  int row = fromInside ? texel.y - rows : texel.y;
+  float u = float(texel.x) / (uFilmTableWidth - 1.0);
+  float thicknessNm = filmTableThicknessNm(u, uTableMaxThicknessNm);
+  float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
+  float cosIncidence = filmTableCosIncidence(float(row) / (uFilmTableRows - 1.0));
+#if TFC_TABLE_FILL == 1 && !defined(TFC_DISPERSIVE)
+  AirySeriesTerms terms[TFC_FILM_CHANNELS];
+  float pathPerNm;
+  // At thickness 0 filmOptics decides (the bare interface, or the paper mode's eq 13), as in the reference.
+  if (thicknessNm > 0.0 && rowSeries(texel.y, terms, pathPerNm) && airySeriesConvergesAt(terms, pathPerNm * thicknessNm)) {
+    gl_FragColor = vec4(airySeriesSum(terms, pathPerNm * thicknessNm), 1.0);
+    return;
+  }
+#endif
+  float na = fromInside ? uNInside : uNOutside;
+  float nc = fromInside ? uNOutside : uNInside;
+#ifdef TFC_DISPERSIVE
+  // At thickness 0 filmOptics decides (the bare interface): the rows hold a film's terms.
+  gl_FragColor = vec4(thicknessNm > 0.0 ? dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, texel.y)
+                                        : binnedXyz(filmOptics(na, uNFilm, nc, 0.0, cosIncidence), 0.0), 1.0);
+#else
+  FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
+  // Phase half-width of a cell at λ: 2π · 2 n_b cos θ_r · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).
+  float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : 2.0 * uNFilm * refractedCos(uNFilm, na, cosIncidence).x;
+  gl_FragColor = vec4(binnedXyz(o, 3.141592653589793 * perNmPath * cellNm), 1.0);
+#endif
+}

@@ -1,0 +1,48 @@
+import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
+import { airySeriesTerms } from '../physics/airySeries.ts';
+import { filmOptics } from '../physics/filmReflectance.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
+import { type FilmTableLayout, filmTableCosIncidence } from '../settings/filmTableLayout.ts';
+
+const TEXELS_PER_ROW = 3;
+
+/**
+ * The Airy series' C₀, B, q of every row of the film table (they depend on cos θ_i and the
+ * indices, not on the thickness), computed in float64 by src/physics for the table pass
+ * (shaders/film/filmTable.glsl, `rowSeries`): 3 texels per row, the outside half's rows first, then the
+ * inside half's (media swapped). ~1 ms for 256 rows, instead of the Fresnel terms per texel.
+ */
+export function airySeriesRows(
+  s: Pick<FilmSettings, 'nOutside' | 'nInside' | 'polarization'> & { readonly nFilm: number },
+  layout: FilmTableLayout,
+  data: Float32Array,
+): void {
+  for (let half = 0; half < 2; half++) {
+    const [nOutside, nInside] = half === 0 ? [s.nOutside, s.nInside] : [s.nInside, s.nOutside];
+    for (let row = 0; row < layout.rows; row++) {
+      const cos = filmTableCosIncidence(layout, row);
+      const angleDeg = (Math.acos(Math.min(1, cos)) * 180) / Math.PI;
+      // Thickness 1 nm: any d > 0 has the same terms, and the path per nm is then Δ itself.
+      const optics = filmOptics({ nOutside, nFilm: s.nFilm, nInside, thicknessNm: 1, angleDeg }, s.polarization);
+      const [t0, t1 = t0] = optics.channels.map(airySeriesTerms);
+      const path = optics.opticalPathNm;
+      data.set(
+        [t0!.c0, t0!.b.re, t0!.b.im, t0!.q.re, t0!.q.im, t1!.c0, t1!.b.re, t1!.b.im, t1!.q.re, t1!.q.im, path.re, path.im === 0 ? 1 : 0],
+        4 * TEXELS_PER_ROW * (half * layout.rows + row),
+      );
+    }
+  }
+}
+
+/** A texture for airySeriesRows of a layout (filled and uploaded by FilmTable). */
+export function airySeriesRowsTexture(layout: FilmTableLayout): DataTexture {
+  const texture = new DataTexture(
+    new Float32Array(4 * TEXELS_PER_ROW * 2 * layout.rows),
+    TEXELS_PER_ROW,
+    2 * layout.rows,
+    RGBAFormat,
+    FloatType,
+  );
+  texture.minFilter = texture.magFilter = NearestFilter;
+  return texture;
+}

@@ -1,0 +1,66 @@
+import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
+import { type FilmIndex, filmIndexAt } from '../physics/filmIndex.ts';
+import { type Polarization, filmOptics } from '../physics/filmReflectance.ts';
+import { refractedCos } from '../physics/snell.ts';
+import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
+import { type FilmTableLayout, filmTableCosIncidence } from '../settings/filmTableLayout.ts';
+
+const TEXELS_PER_BIN = 4;
+
+interface DispersiveFilm {
+  readonly nOutside: number;
+  readonly nFilm: FilmIndex;
+  readonly nInside: number;
+  readonly polarization: Polarization;
+}
+
+/**
+ * What a dispersive film's table pass needs per row (cos θ_i, medium) and spectral bin, none of it
+ * depending on the thickness: the Fresnel terms of eq (13) at n_b of the bin's centre (both channels),
+ * and the optical path per nm of thickness, 2 n_b(λ) cos θ_r(λ), at the bin's centre (complex) and
+ * its two ends — computed in float64 by src/physics for shaders/film/filmTable.glsl (`dispersiveRowXyz`),
+ * instead of the Fresnel terms per texel and bin. Texels per (row, bin): [rab, multiple] and
+ * [roundTrip, rab] and [multiple, roundTrip] of channels 0 and 1, then [path at the centre (re, im),
+ * path at the low end, path at the high end]. The outside half's rows first, then the inside half's.
+ */
+export function dispersiveRows(s: DispersiveFilm, layout: FilmTableLayout, data: Float32Array): void {
+  const bins = layout.spectralBins;
+  const width = LAMBDA_SPAN_NM / bins;
+  for (let half = 0; half < 2; half++) {
+    const [nOutside, nInside] = half === 0 ? [s.nOutside, s.nInside] : [s.nInside, s.nOutside];
+    for (let row = 0; row < layout.rows; row++) {
+      const cos = filmTableCosIncidence(layout, row);
+      const angleDeg = (Math.acos(Math.min(1, cos)) * 180) / Math.PI;
+      const pathPerNm = (l: number) => {
+        const nb = filmIndexAt(s.nFilm, l);
+        return 2 * nb * refractedCos(nb, nOutside, cos).re;
+      };
+      for (let b = 0; b < bins; b++) {
+        const l1 = LAMBDA_MIN_NM + b * width;
+        const center = l1 + width / 2;
+        // Thickness 1 nm: any d > 0 has the same terms, and the path per nm is then Δ itself.
+        const optics = filmOptics({ nOutside, nFilm: filmIndexAt(s.nFilm, center), nInside, thicknessNm: 1, angleDeg }, s.polarization);
+        const [c0, c1 = c0] = optics.channels;
+        const p = optics.opticalPathNm;
+        data.set(
+          [
+            ...[c0!.rab, c0!.multiple, c0!.roundTrip, c1!.rab, c1!.multiple, c1!.roundTrip].flatMap((z) => [z.re, z.im]),
+            p.re,
+            p.im,
+            pathPerNm(l1),
+            pathPerNm(l1 + width),
+          ],
+          4 * TEXELS_PER_BIN * ((half * layout.rows + row) * bins + b),
+        );
+      }
+    }
+  }
+}
+
+/** A texture for dispersiveRows of a layout (filled and uploaded by FilmTable). */
+export function dispersiveRowsTexture(layout: FilmTableLayout): DataTexture {
+  const width = TEXELS_PER_BIN * layout.spectralBins;
+  const texture = new DataTexture(new Float32Array(4 * width * 2 * layout.rows), width, 2 * layout.rows, RGBAFormat, FloatType);
+  texture.minFilter = texture.magFilter = NearestFilter;
+  return texture;
+}

@@ -1,0 +1,289 @@
+import {
+  type DataTexture,
+  FloatType,
+  HalfFloatType,
+  LinearFilter,
+  Mesh,
+  OrthographicCamera,
+  PlaneGeometry,
+  RGBAFormat,
+  ShaderMaterial,
+  type WebGLRenderer,
+  WebGLRenderTarget,
+} from 'three';
+import { type FilmIndex } from '../physics/filmIndex.ts';
+import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { dispersiveRows, dispersiveRowsTexture } from './dispersiveRows.ts';
+import { filmIndexDefines, filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
+import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
+import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
+import { type FilmSettings, maxFieldThicknessNm } from '../settings/filmSettings.ts';
+import { filmTableLayoutDefines, filmTableWidth } from '../settings/filmTableLayout.ts';
+import { setDefines } from '../gpu/materialDefines.ts';
+import { shaderSource } from '../gpu/shaderSource.ts';
+import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
+import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
+
+/** What the table depends on; anything else (the field's animation, exposure, space) leaves it alone. */
+export function tableKey(s: FilmSettings): string {
+  return JSON.stringify([s.nOutside, s.nFilm, s.nInside, s.illuminant, s.polarization, s.normalization, maxFieldThicknessNm(s)]);
+}
+
+/**
+ * The table's texel type: float where the GPU can render to float (EXT_color_buffer_float) and
+ * filter it (OES_texture_float_linear), else half float, which WebGL2 always filters and renders
+ * to with EXT_color_buffer_half_float (or EXT_color_buffer_float).
+ */
+export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['tablePrecision']): typeof FloatType | typeof HalfFloatType {
+  const e = renderer.extensions;
+  return precision === 'auto' && e.has('EXT_color_buffer_float') && e.has('OES_texture_float_linear') ? FloatType : HalfFloatType;
+}
+
+/** A coarse table has this many times fewer texels along each side than the full one. */
+const COARSE_DIVISOR = 4;
+/**
+ * A full table built behind a coarse one is drawn in this many bands of thickness, one per
+ * frame, so no frame waits for the whole table (on SwiftShader a full table costs about two
+ * frames of the default view, a band about a quarter of one).
+ */
+const FULL_BANDS = 8;
+
+interface Grid {
+  readonly width: number;
+  readonly rows: number;
+}
+
+/**
+ * The `table` method: a GPU pass running shaders/film/filmTable.glsl fills a float texture with the
+ * film's XYZ over (thickness 0..max, cos θ_i 0..1), for light from outside and from inside, laid
+ * out as `quality.table` says. It is rebuilt only when `tableKey` changes.
+ *
+ * A `quick` update (the app's frames) that finds the settings changed fills a coarse grid, 1/16
+ * of the texels, in a small texture of its own, so the next frame shows the change at once; the
+ * quick updates after it fill the full grid band by band (FULL_BANDS, one per frame) while the
+ * coarse one is shown, and the full one is shown once complete. Without `quick` (tests,
+ * screenshots, the benchmark's timed builds) the full grid is built at once.
+ */
+export class FilmTable {
+  private readonly target: WebGLRenderTarget;
+  private readonly coarseTarget: WebGLRenderTarget;
+  /** What is shown: the settings' tableKey ('' for nothing) and whether from the coarse texture. */
+  private shown = { key: '', coarse: false };
+  /** The full grid being built behind a coarse one: its settings and the bands done. */
+  private building: { readonly s: FilmSettings; bands: number } | null = null;
+  private shownGrid: Grid = { width: 1, rows: 1 };
+  private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
+  private readonly quad = new Mesh(new PlaneGeometry(2, 2));
+  /** The table pass: one program for every polarisation (a uniform), so changing it compiles nothing. */
+  private readonly pass = new ShaderMaterial({
+    uniforms: {
+      uSpectralBins: { value: null },
+      uSpectralTransform: { value: null },
+      uAirySeriesRows: { value: null },
+      uDispersiveRows: { value: null },
+      uPolarization: { value: 0 },
+      uNOutside: { value: 1 },
+      ...filmIndexUniforms(),
+      uNInside: { value: 1 },
+      uTableMaxThicknessNm: { value: 1 },
+      uFilmTableWidth: { value: 1 },
+      uFilmTableRows: { value: 1 },
+    },
+    vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
+    fragmentShader: shaderSource('filmTable.glsl'),
+  });
+  /**
+   * The per-row terms: the series' C₀, B, q (airySeriesRows.ts), or for a dispersive film the Fresnel
+   * terms per row and bin (dispersiveRows.ts). One texture, remade when the kind changes, so a
+   * dispersive film holds no more GPU objects than a constant one.
+   */
+  private rows: { texture: DataTexture; dispersive: boolean };
+  /** What the row terms were last computed for (the settings' tableKey and the grid's rows): the bands of one table compute them once. */
+  private rowsFor = '';
+  maxThicknessNm = 1;
+  /** Milliseconds the last full build at once took (synced with a 1-pixel read), and how many full tables there were: for the benchmark. */
+  lastBuildMs = 0;
+  builds = 0;
+
+  constructor(private readonly quality: FilmQuality) {
+    this.rows = { texture: airySeriesRowsTexture(quality.table), dispersive: false };
+    const options = { format: RGBAFormat, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false } as const;
+    this.target = new WebGLRenderTarget(1, 2 * quality.table.rows, options);
+    this.coarseTarget = new WebGLRenderTarget(1, 2, options);
+  }
+
+  /** Whether the table shown is the coarse one: more updates will make it full. */
+  get coarse(): boolean {
+    return this.shown.coarse;
+  }
+
+  /** Points a material that looks the table up (shaders/film/filmColor.glsl, table mode) at it. */
+  bind(uniforms: ShaderMaterial['uniforms']): void {
+    uniforms.uFilmTable!.value = (this.shown.coarse ? this.coarseTarget : this.target).texture;
+    uniforms.uTableMaxThicknessNm!.value = this.maxThicknessNm;
+    uniforms.uFilmTableWidth!.value = this.shownGrid.width;
+    uniforms.uFilmTableRows!.value = this.shownGrid.rows;
+  }
+
+  /**
+   * Brings the table up to date with the settings: at once, or if `quick` by one step (a coarse
+   * table for new settings, else the next band of the full one); returns whether what `bind` binds changed.
+   */
+  update(renderer: WebGLRenderer, s: FilmSettings, quick = false): boolean {
+    const key = tableKey(s);
+    if (!quick) {
+      if (key === this.shown.key && !this.shown.coarse) return false;
+      this.building = null;
+      this.buildFull(renderer, s);
+      this.show(key, false);
+      return true;
+    }
+    if (key !== this.shown.key) {
+      const full = this.fullGrid(s);
+      const grid = { width: Math.max(2, Math.ceil(full.width / COARSE_DIVISOR)), rows: Math.ceil(full.rows / COARSE_DIVISOR) };
+      this.building = { s, bands: 0 };
+      this.draw(renderer, s, this.coarseTarget, grid, null);
+      this.show(key, true, grid);
+      return true;
+    }
+    if (!this.shown.coarse || !this.building) return false;
+    const b = this.building;
+    const grid = this.fullGrid(b.s);
+    const from = Math.floor((b.bands * grid.width) / FULL_BANDS);
+    b.bands++;
+    const to = Math.floor((b.bands * grid.width) / FULL_BANDS);
+    const last = b.bands === FULL_BANDS;
+    if (last) this.building = null; // the last band lets go of the light's textures
+    this.draw(renderer, b.s, this.target, grid, [from, to]);
+    if (!last) return false;
+    this.show(key, false);
+    return true;
+  }
+
+  /** The full grid for the settings (its width follows the thickness range). */
+  private fullGrid(s: FilmSettings): Grid {
+    const layout = this.quality.table;
+    return { width: filmTableWidth(layout, maxFieldThicknessNm(s)), rows: layout.rows };
+  }
+
+  private buildFull(renderer: WebGLRenderer, s: FilmSettings): void {
+    const started = performance.now();
+    this.draw(renderer, s, this.target, this.fullGrid(s), null);
+    this.lastBuildMs = performance.now() - started;
+  }
+
+  private show(key: string, coarse: boolean, grid?: Grid): void {
+    this.shown = { key, coarse };
+    if (!coarse) this.builds++;
+    this.shownGrid = grid ?? { width: this.target.width, rows: this.quality.table.rows };
+  }
+
+  /**
+   * Runs the pass over `grid` in `target` (sized to it), over the columns [from, to) if given
+   * (the rest of the texture is kept), and waits for it (a 1-pixel read).
+   */
+  private draw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: [number, number] | null): void {
+    const type = tableTexelType(renderer, this.quality.tablePrecision);
+    if (target.texture.type !== type) {
+      target.dispose(); // reallocated at the new type on the next render
+      target.texture.type = type;
+    }
+    if (target.width !== grid.width || target.height !== 2 * grid.rows) target.setSize(grid.width, 2 * grid.rows);
+    const [from, to] = columns ?? [0, grid.width];
+    target.scissor.set(from, 0, to - from, 2 * grid.rows);
+    target.scissorTest = true;
+    this.maxThicknessNm = maxFieldThicknessNm(s);
+    const bins = spectralBinsFor(s.nFilm, this.quality, this.quality.table.spectralBins);
+    const material = this.material(s.nFilm, bins);
+    const u = material.uniforms;
+    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, bins, this);
+    u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
+    // A dispersive film is filled from the bins, with their terms per row (shaders/film/filmTable.glsl).
+    this.updateRows(s, grid, bins);
+    u.uDispersiveRows!.value = this.rows.texture;
+    u.uAirySeriesRows!.value = this.rows.texture;
+    u.uPolarization!.value = POLARIZATIONS.indexOf(s.polarization);
+    u.uNOutside!.value = s.nOutside;
+    updateFilmIndexUniforms(u, s.nFilm);
+    u.uNInside!.value = s.nInside;
+    u.uTableMaxThicknessNm!.value = this.maxThicknessNm;
+    u.uFilmTableWidth!.value = grid.width;
+    u.uFilmTableRows!.value = grid.rows;
+    this.quad.material = material;
+    const previous = renderer.getRenderTarget();
+    renderer.setRenderTarget(target);
+    renderer.render(this.quad, this.camera);
+    renderer.readRenderTargetPixels(target, from, 0, 1, 1, type === FloatType ? new Float32Array(4) : new Uint16Array(4));
+    renderer.setRenderTarget(previous);
+    // The pass reads the light's textures only while it draws: let go of them until the next
+    // build, unless a full table is being built band by band.
+    if (this.building) return;
+    releaseSpectralBinsTexture(this);
+    releaseSpectralTransformTexture(this);
+  }
+
+  /** The per-row terms for `s` on `grid` (computed in float64 on the CPU), unless the texture holds them already. */
+  private updateRows(s: FilmSettings, grid: Grid, bins: number): void {
+    const rowsFor = `${tableKey(s)} ${grid.rows}`;
+    if (rowsFor === this.rowsFor) return;
+    this.rowsFor = rowsFor;
+    const rowLayout = { ...this.quality.table, rows: grid.rows, spectralBins: bins };
+    const dispersive = typeof s.nFilm !== 'number';
+    if (this.rows.dispersive !== dispersive) {
+      this.rows.texture.dispose();
+      const texture = dispersive
+        ? dispersiveRowsTexture({ ...this.quality.table, spectralBins: bins })
+        : airySeriesRowsTexture(this.quality.table);
+      this.rows = { texture, dispersive };
+    }
+    const data = this.rows.texture.image.data as Float32Array;
+    if (typeof s.nFilm === 'number') airySeriesRows({ ...s, nFilm: s.nFilm }, rowLayout, data);
+    else dispersiveRows(s, rowLayout, data);
+    this.rows.texture.needsUpdate = true;
+  }
+
+  /**
+   * Compiles the table pass for `target`'s kind of target without blocking where the GPU compiles in
+   * parallel (KHR_parallel_shader_compile), and meanwhile makes the light's textures for `s` on
+   * this thread (the series' transform is an FFT): before a first frame, the two overlap.
+   */
+  async prepare(renderer: WebGLRenderer, s: FilmSettings): Promise<void> {
+    const bins = spectralBinsFor(s.nFilm, this.quality, this.quality.table.spectralBins);
+    this.quad.material = this.material(s.nFilm, bins);
+    const previous = renderer.getRenderTarget();
+    renderer.setRenderTarget(this.coarseTarget); // three picks a program by its target (no tone mapping into a texture)
+    const compiled = renderer.compileAsync(this.quad, this.camera);
+    renderer.setRenderTarget(previous);
+    spectralBinsTexture(s.illuminant, s.normalization, bins, this);
+    spectralTransformTexture(s.illuminant, s.normalization, this);
+    await compiled;
+  }
+
+  /** Forces a rebuild on the next update (after a lost context). */
+  invalidate(): void {
+    this.shown = { key: '', coarse: false };
+    this.building = null;
+    this.rowsFor = ''; // its row terms too, with the rest of the table
+  }
+
+  private material(index: FilmIndex, bins: number): ShaderMaterial {
+    setDefines(this.pass, {
+      ...filmIndexDefines(index),
+      TFC_POLARIZATION_UNIFORM: 1,
+      ...spectralBinDefines(bins, this.quality.spectralTailTolerance),
+      ...filmTableLayoutDefines(this.quality.table),
+      ...airySeriesDefines(),
+    });
+    return this.pass;
+  }
+
+  dispose(): void {
+    this.target.dispose();
+    this.coarseTarget.dispose();
+    this.quad.geometry.dispose();
+    this.pass.dispose();
+    this.rows.texture.dispose();
+    releaseSpectralBinsTexture(this);
+    releaseSpectralTransformTexture(this);
+  }
+}

@@ -1,0 +1,17 @@
+/**
+ * The source folders by role, lowest first: a module imports from its own folder or from the
+ * folders of lower layers only (tests/unit/architecture.test.ts holds every import to it). Folders
+ * of one layer know nothing of each other. docs/architecture.md draws the same order.
+ */
+export const SOURCE_LAYERS: readonly (readonly string[])[] = [
+  ['physics'], // the float64 reference and its data: no DOM, no three.js
+  ['settings'], // the schema of every user-facing parameter, and the film's quality knobs
+  ['gpu'], // three.js plumbing: shader source, defines, shared resources, the fullscreen pass
+  ['fields', 'film'], // the film's thickness over the bubble; the film's colour on the GPU
+  ['bubble'], // the bubble's and the environment's materials
+  ['material', 'twins'], // the material for any three.js mesh; the CPU twins of the bubble's shaders
+  ['scene'], // the bubble's view: renderer, frame loop, probe
+  ['plots'], // the plots of the film at the probe
+  ['app'], // the demo's app: panel, settings in the URL, messages
+  ['element', 'pages', 'lib', 'cli'], // entries: the custom element, the pages, the library, the command line
+];

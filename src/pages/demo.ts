@@ -1,0 +1,70 @@
+import { BubbleApp } from '../app/bubbleApp.ts';
+import { hasWebGL2, showCpuFallback } from '../app/cpuFallback.ts';
+import { parseSettings, settingsToQuery } from '../settings/settingsQuery.ts';
+import { FRAME_MARKS } from '../app/frameMarks.ts';
+import { startsClosed } from '../app/startsClosed.ts';
+import type { ViewSettings } from '../settings/viewParameters.ts';
+import { BubbleView, createBubbleRenderer } from '../scene/bubbleView.ts';
+
+const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
+const messages = document.querySelector<HTMLElement>('#messages');
+const plots = document.querySelector<HTMLElement>('#plots');
+if (!canvas || !messages || !plots) throw new Error('index.html must hold #bubble, #messages and #plots');
+
+const { settings, errors } = parseSettings(location.search);
+function say(text: string) {
+  const line = document.createElement('p');
+  line.textContent = text; // never innerHTML: the text may come from the URL
+  messages!.append(line);
+}
+errors.forEach(say);
+
+// The URL follows the controls without a history entry per slider step.
+let urlTimer = 0;
+function followInUrl(s: ViewSettings) {
+  clearTimeout(urlTimer);
+  urlTimer = window.setTimeout(() => {
+    const query = settingsToQuery({ ...s, timeSeconds: s.animate ? 0 : s.timeSeconds });
+    history.replaceState(null, '', query ? `?${query}` : location.pathname);
+  }, 250);
+}
+
+/** The live bubble with its panel and plots. */
+function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: HTMLElement): void {
+  const drawer = plots.closest('details');
+  if (drawer) drawer.open = !startsClosed(drawer, 'plots'); // a small view starts with the drawer closed (index.html's CSS)
+  const view = new BubbleView(createBubbleRenderer(canvas), settings);
+  document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
+  if (settings.space !== 'srgb' && !view.displayIsP3) say('This browser has no Display P3 canvas: showing sRGB.');
+  // Whether a frame, and a frame in full, have been drawn: the User Timing marks of the first of each.
+  let drawn = false;
+  let drawnInFull = false;
+  const app = new BubbleApp(
+    {
+      view,
+      surface: canvas,
+      controls: 'page',
+      plots,
+      messages,
+      onChange: followInUrl,
+      onFrame: (complete) => {
+        if (!drawn) performance.mark(FRAME_MARKS.first);
+        drawn = true;
+        if (!complete || document.body.dataset.frames === 'ready') return;
+        if (!drawnInFull) performance.mark(FRAME_MARKS.firstComplete);
+        drawnInFull = true;
+        document.body.dataset.frames = 'ready';
+      },
+    },
+    settings,
+  );
+  Object.assign(window, { bubbleView: view, bubbleApp: app });
+}
+
+if (hasWebGL2()) startLiveView(canvas, plots, messages);
+else {
+  // Without WebGL2 the page still teaches: a still image computed on the CPU, no plots.
+  plots.closest('details')?.remove();
+  document.body.dataset.webgl2 = 'no';
+  showCpuFallback(canvas, settings, () => (document.body.dataset.frames = 'fallback'));
+}

@@ -1,0 +1,129 @@
+/**
+ * The example page (materials.html): three.js's iridescence and the spectral film side by side on
+ * meshes that are not spheres, under an HDR environment; a view toggle; the ΔE00 between the two
+ * at the probed pixel (the scene drawn once with each material, the pixel read back from each).
+ */
+import { AgXToneMapping, EquirectangularReflectionMapping, type Mesh, Vector3, WebGLRenderer } from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { environmentTexture, loadEnvironmentPixels } from '../bubble/environmentMaps.ts';
+import { VIEWS, type View, exampleScene } from './materialsScene.ts';
+import { pixelDeltaE00 } from './pixelDeltaE.ts';
+
+const element = <T extends HTMLElement>(selector: string): T => {
+  const e = document.querySelector<T>(selector);
+  if (!e) throw new Error(`materials.html must hold ${selector}`);
+  return e;
+};
+const canvas = element<HTMLCanvasElement>('#scene');
+const select = element<HTMLSelectElement>('#view');
+const readout = element<HTMLParagraphElement>('#readout');
+const mark = element<HTMLDivElement>('#probe-mark');
+
+const renderer = new WebGLRenderer({ canvas, antialias: true });
+renderer.setPixelRatio(Math.min(devicePixelRatio, 2));
+renderer.toneMapping = AgXToneMapping;
+renderer.toneMappingExposure = 1.6;
+const example = exampleScene(innerWidth / innerHeight);
+const controls = new OrbitControls(example.camera, canvas);
+let view: View = 'side by side';
+/** The probe in CSS pixels from the canvas's top left (null: the right torus knot's first vertex, once drawn). */
+let probe: { x: number; y: number } | null = null;
+let frames = 0;
+
+for (const v of VIEWS) select.append(new Option(v, v));
+
+function resize(): void {
+  renderer.setSize(innerWidth, innerHeight, false);
+  example.camera.aspect = innerWidth / innerHeight;
+  example.camera.updateProjectionMatrix();
+}
+
+/** Draws `v` (default: the chosen view) and returns the 8-bit pixel at the probe, read at once. */
+function draw(v: View = view): number[] {
+  example.show(v);
+  renderer.render(example.scene, example.camera);
+  frames++;
+  const p = probe ?? { x: 0, y: 0 };
+  const r = renderer.getPixelRatio();
+  const gl = renderer.getContext();
+  const out = new Uint8Array(4);
+  gl.readPixels(Math.round(p.x * r), gl.drawingBufferHeight - 1 - Math.round(p.y * r), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
+  return [out[0]!, out[1]!, out[2]!];
+}
+
+const hex = (p: readonly number[]) => `#${p.map((v) => v.toString(16).padStart(2, '0')).join('')}`;
+
+/** Shows the two materials' pixels at the probe and their ΔE00, then the chosen view. */
+function update(): void {
+  if (!probe) {
+    // The right knot's vertex nearest the camera: on the knot, facing the view.
+    const knot = example.scene.getObjectsByProperty('name', 'torus knot')[1] as Mesh;
+    const positions = knot.geometry.getAttribute('position');
+    const v = new Vector3();
+    let nearest = new Vector3(0, 0, -Infinity);
+    for (let i = 0; i < positions.count; i++) {
+      knot.localToWorld(v.fromBufferAttribute(positions, i));
+      if (v.z > nearest.z) nearest = v.clone();
+    }
+    const point = nearest.project(example.camera);
+    probe = { x: ((point.x + 1) / 2) * canvas.clientWidth, y: ((1 - point.y) / 2) * canvas.clientHeight };
+  }
+  const threes = draw('three.js');
+  const ours = draw('spectral');
+  draw();
+  mark.style.left = `${probe.x}px`;
+  mark.style.top = `${probe.y}px`;
+  readout.replaceChildren(
+    `At the probe: three.js `,
+    swatch(threes),
+    ` ${hex(threes)}, spectral `,
+    swatch(ours),
+    ` ${hex(ours)}; ΔE00 ${pixelDeltaE00(threes, ours).toFixed(1)}`,
+  );
+  document.body.dataset.frames = String(frames);
+}
+
+function swatch(p: readonly number[]): HTMLSpanElement {
+  const s = document.createElement('span');
+  s.className = 'swatch';
+  s.style.background = hex(p);
+  return s;
+}
+
+select.addEventListener('change', () => {
+  view = select.value as View;
+  draw();
+});
+controls.addEventListener('change', () => draw());
+canvas.addEventListener('click', (e) => {
+  const box = canvas.getBoundingClientRect();
+  probe = { x: e.clientX - box.left, y: e.clientY - box.top };
+  update();
+});
+addEventListener('resize', () => {
+  resize();
+  update();
+});
+
+resize();
+loadEnvironmentPixels('park').then(
+  () => {
+    const texture = environmentTexture('park', example)!;
+    texture.mapping = EquirectangularReflectionMapping;
+    example.scene.environment = texture;
+    example.scene.background = texture;
+    update();
+  },
+  (e: unknown) => {
+    readout.textContent = `The environment could not be loaded: ${String(e)}`;
+  },
+);
+
+/** For the benchmark: the example scene and a way to draw one view. */
+window.materialsPage = { renderer, draw: (v: View) => draw(v) };
+
+declare global {
+  interface Window {
+    materialsPage?: { renderer: WebGLRenderer; draw(view: View): number[] };
+  }
+}

@@ -1,0 +1,32 @@
+import { describe, expect, it } from 'vitest';
+import { significantBins, spectralBins } from '../../../src/physics/binnedIntegration.ts';
+import { NORMALIZATIONS, spectralWeights } from '../../../src/physics/spectralWeights.ts';
+import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
+import { spectralBinDefines } from '../../../src/film/spectralBinsTexture.ts';
+
+describe('the bins a shader visits do not depend on the light', () => {
+  const { exactSpectralBins: count, spectralTailTolerance: tolerance } = DEFAULT_FILM_QUALITY;
+  const d = spectralBinDefines(count, tolerance);
+
+  it('cover the significant bins of every offered illuminant (named, and daylight every 100 K), both normalisations', () => {
+    const illuminants = [
+      'D55',
+      'D65',
+      'D93',
+      'E',
+      'D65-table',
+      ...Array.from({ length: 211 }, (_, i) => ({ daylightCct: 4000 + 100 * i })),
+    ] as const;
+    for (const illuminant of illuminants) {
+      for (const normalization of NORMALIZATIONS) {
+        const kept = significantBins(spectralBins(spectralWeights(illuminant, normalization), count), tolerance);
+        expect(kept.first, JSON.stringify(illuminant)).toBeGreaterThanOrEqual(d.TFC_SPECTRAL_BIN_FIRST!);
+        expect(kept.end, JSON.stringify(illuminant)).toBeLessThanOrEqual(d.TFC_SPECTRAL_BIN_END!);
+      }
+    }
+  });
+
+  it('still skip the far red tail, where the colour-matching functions vanish', () => {
+    expect(d.TFC_SPECTRAL_BIN_END).toBeLessThan(count);
+  });
+});

@@ -1,0 +1,144 @@
+import { describe, expect, it } from 'vitest';
+import { parseSettings, settingsToQuery } from '../../../src/settings/settingsQuery.ts';
+import { DEFAULT_VIEW_SETTINGS as DEFAULT_SETTINGS, VIEW_PARAMETERS } from '../../../src/settings/viewParameters.ts';
+import { MAX_ECHOED_CHARS } from '../../../src/physics/validate.ts';
+import { ABSURDLY_LONG, NOT_NUMBERS, notNames, outsideRange } from '../fixtures/badValues.ts';
+
+describe('URL parameters', () => {
+  it('reads every documented parameter', () => {
+    const { settings, errors } = parseSettings(
+      '?thickness=420&thicknessRange=300&speed=2&field=drainage&nFilm=1.4&nOutside=1.1&nInside=1.2&illuminant=7500' +
+        '&polarization=s&normalization=paper&space=display-p3&mode=exact&sides=front&env=park&envRotation=90&tonemap=neutral&exposure=1.5&animate=0&time=12.5',
+    );
+    expect(errors).toEqual([]);
+    expect(settings).toEqual({
+      ...DEFAULT_SETTINGS,
+      thicknessNm: 420,
+      thicknessRangeNm: 300,
+      swirlSpeed: 2,
+      field: 'drainage',
+      nFilm: 1.4,
+      nOutside: 1.1,
+      nInside: 1.2,
+      illuminant: { daylightCct: 7500 },
+      polarization: 's',
+      normalization: 'paper',
+      space: 'display-p3',
+      mode: 'exact',
+      sides: 'front',
+      env: 'park',
+      envRotationDeg: 90,
+      tonemap: 'neutral',
+      exposure: 1.5,
+      animate: false,
+      timeSeconds: 12.5,
+    });
+  });
+
+  it('reads a dispersive film, writes it back, and says what is wrong with one outside the index domain', () => {
+    const water = parseSettings('?nFilm=water');
+    expect(water).toEqual({ settings: { ...DEFAULT_SETTINGS, nFilm: 'water' }, errors: [] });
+    const cauchy = parseSettings('?nFilm=cauchy:1.45,6000');
+    expect(cauchy.settings.nFilm).toEqual({ cauchy: [1.45, 6000, 0] });
+    expect(settingsToQuery(cauchy.settings)).toBe('nFilm=cauchy%3A1.45%2C6000');
+    expect(parseSettings(`?${settingsToQuery({ ...DEFAULT_SETTINGS, nFilm: { cauchy: [1.6, 1e4, -3e8] } })}`).settings.nFilm).toEqual({
+      cauchy: [1.6, 1e4, -3e8],
+    });
+    const bad = parseSettings('?nFilm=cauchy:3.9,20000');
+    expect(bad.settings.nFilm).toBe(DEFAULT_SETTINGS.nFilm);
+    expect(bad.errors).toHaveLength(1);
+    expect(bad.errors[0]).toMatch(
+      /^nFilm="cauchy:3.9,20000" ignored: expected .*cauchy:A,B\[,C\].* \(here n at 380 nm is 4.0385, above 4\)$/,
+    );
+  });
+
+  /** The ranges the README documents, written out here rather than read from params.ts. */
+  const NUMERIC: Record<string, [number, number]> = {
+    thickness: [0, 20000],
+    thicknessRange: [0, 20000],
+    speed: [0, 10],
+    nFilm: [1, 4],
+    nOutside: [1, 4],
+    nInside: [1, 4],
+    exposure: [0, 100],
+    envRotation: [0, 360],
+    time: [0, 1_000_000],
+  };
+  const NAMED: Record<string, readonly string[]> = {
+    field: ['uniform', 'drainage', 'swirl'],
+    polarization: ['unpolarized', 'paper', 's', 'p'],
+    normalization: ['white', 'paper'],
+    space: ['srgb', 'display-p3', 'wide-gamut'],
+    mode: ['exact', 'table'],
+    sides: ['both', 'front'],
+    env: ['sky', 'none', 'park', 'sunset', 'studio', 'city'],
+    tonemap: ['auto', 'none', 'agx', 'neutral'],
+  };
+  const rows: [string, string, string][] = [
+    ...Object.entries(NUMERIC).flatMap(([name, [min, max]]) =>
+      [...NOT_NUMBERS, ...outsideRange(min, max)].map((v): [string, string, string] => [name, v, `[${min}, ${max}]`]),
+    ),
+    ...Object.entries(NAMED).flatMap(([name, allowed]) =>
+      notNames(allowed).map((v): [string, string, string] => [name, v, allowed.join(', ')]),
+    ),
+    ...[...NOT_NUMBERS.filter((v) => v !== ''), ...outsideRange(4000, 25000), ...notNames(['D65', 'E'])].map(
+      (v): [string, string, string] => ['illuminant', v, '[4000, 25000] K'],
+    ),
+    ...['', 'yes', 'true', '2', '-1', ABSURDLY_LONG].map((v): [string, string, string] => ['animate', v, '0 or 1']),
+    ...[...NOT_NUMBERS, '0.5', '0.5,0.5,0.5', '1.5,0.5', '-0.1,0.5', 'NaN,0.5', 'Infinity,0', '0.5,'].map((v): [string, string, string] => [
+      'probe',
+      v,
+      '[0, 1]',
+    ]),
+  ];
+
+  it('the table of bad values covers every parameter', () => {
+    expect(new Set(rows.map(([name]) => name))).toEqual(new Set(VIEW_PARAMETERS.map((row) => row.url)));
+  });
+
+  it.each(rows)('refuses %s=%s, names the parameter and %s, keeps the default', (name, value, range) => {
+    const { settings, errors } = parseSettings(`?${name}=${encodeURIComponent(value)}`);
+    expect(settings).toEqual(DEFAULT_SETTINGS);
+    expect(errors).toHaveLength(1);
+    expect(errors[0]!.startsWith(`${name}=`)).toBe(true);
+    expect(errors[0]).toContain(range);
+    // A long value is cut short: the message stays one readable line.
+    expect(errors[0]!.length).toBeLessThan(MAX_ECHOED_CHARS + 200);
+  });
+
+  it('keeps the last good value of a repeated parameter, and reports each bad one', () => {
+    const { settings, errors } = parseSettings('?thickness=400&thickness=NaN&nFilm=9&nFilm=1.4&exposure=-1');
+    expect(settings).toEqual({ ...DEFAULT_SETTINGS, thicknessNm: 400, nFilm: 1.4 });
+    expect(errors.map((e) => e.split('=')[0])).toEqual(['thickness', 'nFilm', 'exposure']);
+  });
+
+  it("skips unknown names, Object.prototype's included", () => {
+    expect(parseSettings('?lesson=3&constructor=1&toString=x&__proto__=y&hasOwnProperty=1')).toEqual({
+      settings: DEFAULT_SETTINGS,
+      errors: [],
+    });
+  });
+
+  it('builds on a base: a refused value leaves the base value', () => {
+    const base = { ...DEFAULT_SETTINGS, thicknessNm: 777 };
+    expect(parseSettings('?thickness=-3', base).settings).toEqual(base);
+  });
+});
+
+describe('settingsToQuery', () => {
+  it('round-trips through parseSettings, defaults left out', () => {
+    const { settings } = parseSettings('?thickness=420&illuminant=7500&mode=exact&animate=0&time=3&nInside=1.2');
+    const query = settingsToQuery(settings);
+    expect(parseSettings(`?${query}`)).toEqual({ settings, errors: [] });
+    expect(settingsToQuery(DEFAULT_SETTINGS)).toBe('');
+  });
+});
+
+describe('the probe parameter', () => {
+  it('reads x,y fractions of the view and writes them back', () => {
+    const { settings, errors } = parseSettings('?probe=0.25,0.75');
+    expect(errors).toEqual([]);
+    expect(settings.probe).toEqual([0.25, 0.75]);
+    expect(settingsToQuery(settings)).toBe('probe=0.25%2C0.75');
+  });
+});

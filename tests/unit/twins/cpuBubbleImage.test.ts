@@ -1,0 +1,97 @@
+import { describe, expect, it } from 'vitest';
+import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } from '../../../src/physics/colorConversions.ts';
+import { SOAP_FILM_IN_AIR } from '../../../src/physics/filmReflectance.ts';
+import { filmXyz } from '../../../src/physics/spectralIntegration.ts';
+import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
+import type { EnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
+import type { FilmSettings } from '../../../src/settings/filmSettings.ts';
+import { toneMap } from '../../../src/twins/toneMapping.ts';
+import { cpuBubbleImage } from '../../../src/twins/cpuBubbleImage.ts';
+
+/** The image uses the shader's binned integral (ΔE00 ≤ 0.11 from the reference): one 8-bit code. */
+const MAX_CODE_DIFFERENCE = 1;
+const SIZE = 240;
+const film = (over: Partial<FilmSettings>): FilmSettings => ({
+  ...DEFAULT_SETTINGS,
+  field: 'uniform',
+  env: 'none',
+  sides: 'front',
+  ...over,
+});
+const pixel = (image: Uint8ClampedArray, col: number, row: number) => [...image.slice(4 * (row * SIZE + col), 4 * (row * SIZE + col) + 4)];
+
+describe('the CPU still image of the bubble', () => {
+  it('shows at its centre the reference colour of the film seen head-on', () => {
+    for (const thicknessNm of [150, 450, 1000]) {
+      const image = cpuBubbleImage(film({ thicknessNm }), SIZE, SIZE);
+      const xyz = filmXyz({ ...SOAP_FILM_IN_AIR, thicknessNm, angleDeg: 0 }, { illuminant: 'D65' });
+      const expected = mapToGamut(applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz), xyz[1]).map(encode8);
+      const centre = pixel(image, SIZE / 2, SIZE / 2);
+      expect(centre[3]).toBe(255);
+      for (let i = 0; i < 3; i++)
+        expect(Math.abs(centre[i]! - expected[i]!), `${thicknessNm} nm: ${centre} vs ${expected}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+    }
+  });
+
+  it("has the bubble's silhouette where the 35° camera at distance 4 sees it, and the background outside", () => {
+    // The unit sphere subtends asin(1/4) from the camera: tan(asin(1/4)) / tan(17.5°) of the half-height.
+    const radiusPx = (Math.tan(Math.asin(1 / 4)) / Math.tan((17.5 * Math.PI) / 180)) * (SIZE / 2);
+    const image = cpuBubbleImage(film({ thicknessNm: 450, exposure: 100 }), SIZE, SIZE);
+    const c = SIZE / 2;
+    const inside = Math.floor(radiusPx - 2),
+      outside = Math.ceil(radiusPx + 2);
+    for (const [col, row] of [
+      [c + inside, c],
+      [c - inside, c],
+      [c, c + inside],
+      [c, c - inside],
+    ] as const) {
+      expect(
+        pixel(image, col, row)
+          .slice(0, 3)
+          .some((v) => v > 0),
+        `inside at ${col},${row}`,
+      ).toBe(true);
+    }
+    for (const [col, row] of [
+      [c + outside, c],
+      [c - outside, c],
+      [c, c + outside],
+      [c, c - outside],
+      [0, 0],
+      [SIZE - 1, SIZE - 1],
+    ] as const) {
+      expect(pixel(image, col, row), `outside at ${col},${row}`).toEqual([0, 0, 0, 255]);
+    }
+  });
+
+  it('in a uniform environment the bubble vanishes: each wall passes on what it does not reflect (T = 1 − R)', () => {
+    const L = [0.9, 0.5, 0.3];
+    const uniform: EnvironmentPixels = { width: 4, height: 2, rgba: Float32Array.from({ length: 32 }, (_, k) => [...L, 1][k & 3]!) };
+    for (const over of [
+      { thicknessNm: 3000, sides: 'both', tonemap: 'none' },
+      { thicknessNm: 1200, field: 'drainage', thicknessRangeNm: 1500, sides: 'both', tonemap: 'agx', exposure: 2 },
+    ] as const) {
+      const s = film({ ...over, env: 'park', envRotationDeg: 40 });
+      const expected = [
+        ...toneMap(L.map((v) => s.exposure * v) as unknown as readonly [number, number, number], s.tonemap as 'none' | 'agx').map((v) =>
+          encode8(Math.min(1, v)),
+        ),
+        255,
+      ];
+      const image = cpuBubbleImage(s, SIZE, SIZE, uniform);
+      for (const [col, row] of [
+        [SIZE / 2, SIZE / 2],
+        [SIZE / 2 + 40, SIZE / 2 - 60],
+        [SIZE / 2 - 85, SIZE / 2],
+        [5, 5],
+      ] as const) {
+        const got = pixel(image, col, row);
+        for (let i = 0; i < 3; i++)
+          expect(Math.abs(got[i]! - expected[i]!), `${JSON.stringify(over)} at ${col},${row}: ${got} vs ${expected}`).toBeLessThanOrEqual(
+            MAX_CODE_DIFFERENCE,
+          );
+      }
+    }
+  });
+});

@@ -1,0 +1,77 @@
+import { describe, expect, it } from 'vitest';
+import { environmentRadiance, equirectUv } from '../../../src/twins/environment.ts';
+import type { EnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
+import { ALGEBRAIC_TOL } from '../../tolerances.ts';
+
+/** A small synthetic map whose texel (i, j) holds (i, j, i·j). */
+const W = 16,
+  H = 8;
+const MAP: EnvironmentPixels = {
+  width: W,
+  height: H,
+  rgba: Float32Array.from({ length: 4 * W * H }, (_, k) => {
+    const texel = k >> 2,
+      i = texel % W,
+      j = Math.floor(texel / W);
+    return [i, j, i * j, 1][k & 3]!;
+  }),
+};
+
+/** The unit direction that three's equirectangular convention maps to (u, v). */
+const direction = (u: number, v: number): [number, number, number] => {
+  const azimuth = (u - 0.5) * 2 * Math.PI,
+    elevation = (v - 0.5) * Math.PI;
+  return [Math.cos(elevation) * Math.cos(azimuth), Math.sin(elevation), Math.cos(elevation) * Math.sin(azimuth)];
+};
+const turn = ([x, y, z]: readonly number[], deg: number): [number, number, number] => {
+  const a = (deg * Math.PI) / 180;
+  // The inverse of the lookup's turn: a feature at azimuth φ moves to φ + deg.
+  return [Math.cos(a) * x! + Math.sin(a) * z!, y!, -Math.sin(a) * x! + Math.cos(a) * z!];
+};
+
+describe('the equirectangular environment', () => {
+  it('looks straight up at v = 1 and straight down at v = 0', () => {
+    expect(equirectUv([0, 1, 0], 0)[1]).toBeCloseTo(1, 12);
+    expect(equirectUv([0, -1, 0], 0)[1]).toBeCloseTo(0, 12);
+  });
+
+  it('turned by θ, shows at the turned direction what it showed unturned (and a full turn is none)', () => {
+    for (const deg of [0, 37, 90, 180, 333]) {
+      for (const d of [direction(0.1, 0.5), direction(0.7, 0.2), direction(0.45, 0.9)]) {
+        const [u0, v0] = equirectUv(d, 0);
+        const [u, v] = equirectUv(turn(d, deg), deg);
+        // u wraps round: compare on the circle.
+        expect(Math.abs(Math.sin(Math.PI * (u - u0))), `${deg}°`).toBeLessThan(ALGEBRAIC_TOL);
+        expect(v).toBeCloseTo(v0, 12);
+      }
+      const d = direction(0.3, 0.6);
+      expect(environmentRadiance(d, { pixels: MAP, rotationDeg: 360 })[2]).toBeCloseTo(
+        environmentRadiance(d, { pixels: MAP, rotationDeg: 0 })[2],
+        9,
+      );
+    }
+  });
+
+  it("returns a texel's own value at its centre, as a GPU's bilinear filter does", () => {
+    for (const [i, j] of [
+      [0, 0],
+      [3, 5],
+      [15, 7],
+      [8, 2],
+    ] as const) {
+      const rgb = environmentRadiance(direction((i + 0.5) / W, (j + 0.5) / H), { pixels: MAP, rotationDeg: 0 });
+      expect(rgb[0]).toBeCloseTo(i, 9);
+      expect(rgb[1]).toBeCloseTo(j, 9);
+      expect(rgb[2]).toBeCloseTo(i * j, 9);
+    }
+  });
+
+  it('is continuous across the seam where u wraps from 1 to 0 (halfway between the last and first columns)', () => {
+    const env = { pixels: MAP, rotationDeg: 0 };
+    const v = 3.5 / H;
+    const justBefore = environmentRadiance(direction(1 - 1e-9, v), env);
+    const justAfter = environmentRadiance(direction(1e-9, v), env);
+    expect(justBefore[0]).toBeCloseTo((W - 1) / 2, 6);
+    expect(justAfter[0]).toBeCloseTo((W - 1) / 2, 6);
+  });
+});
