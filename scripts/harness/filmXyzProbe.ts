@@ -6,10 +6,9 @@
  * the benchmark's error columns.
  */
 import { ShaderMaterial, type WebGLRenderer } from 'three';
-import { filmColorDefines, updateFilmColorTextures } from '../../src/bubble/bubbleMaterial.ts';
+import { filmColorDefines, filmColorUniforms, updateFilmColorUniforms } from '../../src/film/filmColor.ts';
 import { type FilmQuality } from '../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
-import { filmIndexUniforms, updateFilmIndexUniforms } from '../../src/film/filmIndexUniforms.ts';
 import { FilmTable } from '../../src/film/filmTable.ts';
 import { floatRowTexture, renderFloatRow } from '../../src/gpu/floatRow.ts';
 import { shaderSource } from '../../src/gpu/shaderSource.ts';
@@ -19,7 +18,7 @@ const FRAGMENT = `${shaderSource('filmColor.glsl')}
 uniform sampler2D uInputs; // r: thickness in nm, g: cos θ_i
 void main() {
   vec2 film = texelFetch(uInputs, ivec2(gl_FragCoord.xy), 0).rg;
-  gl_FragColor = vec4(filmXyz(film.x, film.y, false), 1.0);
+  gl_FragColor = vec4(tfcFilmXyz(film.x, film.y, false), 1.0);
 }`;
 
 export class FilmXyzProbe {
@@ -40,18 +39,7 @@ export class FilmXyzProbe {
     if (hit) return hit;
     const m = new ShaderMaterial({
       defines,
-      uniforms: {
-        uInputs: { value: null },
-        uSpectralBins: { value: null },
-        uSpectralTransform: { value: null },
-        uNOutside: { value: 1 },
-        ...filmIndexUniforms(),
-        uNInside: { value: 1 },
-        uFilmTable: { value: null },
-        uTableMaxThicknessNm: { value: 1 },
-        uFilmTableWidth: { value: 1 },
-        uFilmTableRows: { value: 1 },
-      },
+      uniforms: { uInputs: { value: null }, ...filmColorUniforms() },
       vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
       fragmentShader: FRAGMENT,
     });
@@ -71,16 +59,13 @@ export class FilmXyzProbe {
     const m = this.material(mode, g, quality);
     const u = m.uniforms;
     u.uInputs!.value = inputTexture;
-    updateFilmColorTextures(m, { ...g, mode }, quality);
-    u.uNOutside!.value = g.nOutside;
-    updateFilmIndexUniforms(u, g.nFilm);
-    u.uNInside!.value = g.nInside;
+    let table: FilmTable | null = null;
     if (mode === 'table') {
-      const table = this.table(quality);
+      table = this.table(quality);
       const maxThicknessNm = Math.max(...g.inputs.map(([t]) => t));
       table.update(this.renderer, { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: maxThicknessNm, mode });
-      table.bind(u);
     }
+    updateFilmColorUniforms(m, { ...g, mode }, quality, table);
     const out = renderFloatRow(this.renderer, m, g.inputs.length);
     inputTexture.dispose();
     return g.inputs.map((_, i) => [out[4 * i]!, out[4 * i + 1]!, out[4 * i + 2]!]);

@@ -5,7 +5,7 @@
 // wall's reflection crosses on its way in, and every reflection of higher order (each ≤ R² ≈ 2e-3
 // of the light for soap). uExposure scales all of it, as it scales the background; three.js's tone
 // mapping (renderer.toneMapping) then maps it to the display.
-// Defines: TFC_FILM_MODE, TFC_THICKNESS_FIELD, TFC_SIDES (1 front | 2 both), TFC_ENVIRONMENT, TFC_HATCH_OUT_OF_GAMUT;
+// Defines: TFC_FILM_MODE, TFC_THICKNESS_FIELD, TFC_SIDES (_FRONT | _BOTH), TFC_ENVIRONMENT, TFC_HATCH_OUT_OF_GAMUT;
 // TFC_PROBE (src/scene/probe.ts) outputs the near wall's film XYZ and thickness instead of a colour.
 #include "thicknessField.glsl"
 #include "filmColor.glsl"
@@ -24,27 +24,27 @@ void main() {
   vec3 toEye = normalize(cameraPosition - vWorldPosition);
   vec3 normal = normalize(vWorldNormal);
   float cosIncidence = clamp(abs(dot(normal, toEye)), 0.0, 1.0);
-  float nearThicknessNm = thicknessAt(vSpherePoint);
-  vec3 nearXyz = filmXyz(nearThicknessNm, cosIncidence, false);
+  float nearThicknessNm = tfcThicknessAt(vSpherePoint);
+  vec3 nearXyz = tfcFilmXyz(nearThicknessNm, cosIncidence, false);
 #ifdef TFC_PROBE
   gl_FragColor = vec4(nearXyz, nearThicknessNm);
   return;
 #endif
-  vec3 nearR = applyMatrix3(uXyzToLinearWorking, nearXyz);
-  vec3 behind = environmentRadiance(-toEye);
-  vec3 nearLight = reflectedRadiance(reflect(-toEye, normal));
-#if TFC_SIDES == 2
+  vec3 nearR = tfcApplyMatrix3(uXyzToLinearWorking, nearXyz);
+  vec3 behind = tfcEnvironmentRadiance(-toEye);
+  vec3 nearLight = tfcReflectedRadiance(reflect(-toEye, normal));
+#if TFC_SIDES == TFC_SIDES_BOTH
   // The chord through a unit sphere at incidence θ has length 2 cos θ; the exit point's film is
   // met at the same θ from inside. (Object space = world space up to the sphere's scale.)
   vec3 farPoint = normalize(vSpherePoint - 2.0 * cosIncidence * toEye);
-  vec3 farR = applyMatrix3(uXyzToLinearWorking, filmXyz(thicknessAt(farPoint), cosIncidence, true));
+  vec3 farR = tfcApplyMatrix3(uXyzToLinearWorking, tfcFilmXyz(tfcThicknessAt(farPoint), cosIncidence, true));
   // Seen from inside, the far wall's normal points inward (-farPoint); reflect() is sign-blind.
-  behind = farR * reflectedRadiance(reflect(-toEye, farPoint)) + clamp(1.0 - farR, 0.0, 1.0) * behind;
+  behind = farR * tfcReflectedRadiance(reflect(-toEye, farPoint)) + clamp(1.0 - farR, 0.0, 1.0) * behind;
 #endif
   vec3 color = uExposure * (nearR * nearLight + clamp(1.0 - nearR, 0.0, 1.0) * behind);
 #if TFC_HATCH_OUT_OF_GAMUT
-  vec3 display = applyMatrix3(uXyzToLinearDisplay, uExposure * nearXyz);
-  if (outsideGamut(display) && mod(gl_FragCoord.x + gl_FragCoord.y, 8.0) < 2.0) color = vec3(1.0, 0.0, 1.0);
+  vec3 display = tfcApplyMatrix3(uXyzToLinearDisplay, uExposure * nearXyz);
+  if (tfcOutsideGamut(display) && mod(gl_FragCoord.x + gl_FragCoord.y, 8.0) < 2.0) color = vec3(1.0, 0.0, 1.0);
 #endif
   gl_FragColor = vec4(color, 1.0);
   #include <tonemapping_fragment>

@@ -1,5 +1,5 @@
 // Film thickness over the bubble, deterministic in uTimeSeconds. p: a point on the unit sphere,
-// y up. TFC_THICKNESS_FIELD 0 uniform | 1 drainage | 2 swirl. Mirrors src/fields/thicknessField.ts.
+// y up. TFC_THICKNESS_FIELD _UNIFORM | _DRAINAGE | _SWIRL. Mirrors src/fields/thicknessField.ts.
 #ifndef THIN_FILM_THICKNESS_FIELD
 #define THIN_FILM_THICKNESS_FIELD
 
@@ -8,12 +8,12 @@ uniform float uThicknessRangeNm;
 uniform float uSwirlSpeed;
 uniform float uTimeSeconds;
 
-float thicknessAt(vec3 p) {
-#if TFC_THICKNESS_FIELD == 0
+float tfcThicknessAt(vec3 p) {
+#if TFC_THICKNESS_FIELD == TFC_THICKNESS_FIELD_UNIFORM
   return uThicknessNm;
 #else
   float h = p.y;
-#if TFC_THICKNESS_FIELD == 2
+#if TFC_THICKNESS_FIELD == TFC_THICKNESS_FIELD_SWIRL
   // Swirling bands: the height is advected around the vertical axis by a slow, smooth flow.
   float t = uTimeSeconds * uSwirlSpeed;
   float azimuth = atan(p.z, p.x);

@@ -1,70 +1,68 @@
-// The film's XYZ at a thickness and cos θ_i, by the method TFC_FILM_MODE selects:
-//   0 exact: the binned spectral integral per fragment;  1 table: one filtered lookup;
-//   2 fourier: the Airy series per fragment (airySeries.glsl; by bins where it has no real path or
+// The film's XYZ at a thickness and cos θ_i, by the method TFC_FILM_MODE selects (src/film/filmColor.ts):
+//   exact: the binned spectral integral per fragment;  table: one filtered lookup;
+//   fourier: the Airy series per fragment (airySeries.glsl; by bins where it has no real path or
 //     needs more than TFC_AIRY_SERIES_MAX_ORDERS terms);
-//   3 three.js's iridescence (Belcour–Barla, `evalIridescence`), the benchmark's peer.
+//   three-iridescence: three.js's iridescence (Belcour–Barla, `evalIridescence`), the benchmark's peer.
 // TFC_DISPERSIVE: the film's index depends on λ (filmIndex.glsl); exact and fourier then take the
 // dispersive bins, the table is filled from them, and uNFilm is n_b at the sodium D line (the peer's).
 // fromInside swaps the outer and inner media (the far wall seen through the bubble).
 #ifndef THIN_FILM_COLOR
 #define THIN_FILM_COLOR
 
-uniform float uNOutside;
-uniform float uNFilm;
-uniform float uNInside;
+#include "filmMedia.glsl"
 
-#if TFC_FILM_MODE == 0
+#if TFC_FILM_MODE == TFC_FILM_MODE_EXACT
 #include "binnedIntegration.glsl"
 
-vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
+vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
 #ifdef TFC_DISPERSIVE
-  return dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
+  return tfcDispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
 #else
-  return binnedXyz(filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence), 0.0);
+  return tfcBinnedXyz(tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence), 0.0);
 #endif
 }
-#elif TFC_FILM_MODE == 1
+#elif TFC_FILM_MODE == TFC_FILM_MODE_TABLE
 #include "filmTableLayout.glsl"
 uniform sampler2D uFilmTable;
 uniform float uTableMaxThicknessNm;
 
-vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
+vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   // Texel centres sit at the ends of the ranges (docs/gpu.md#texel-centres: otherwise visibly off).
-  vec2 uv = filmTableUv(thicknessNm, cosIncidence, uTableMaxThicknessNm);
+  vec2 uv = tfcFilmTableUv(thicknessNm, cosIncidence, uTableMaxThicknessNm);
   // The grid may fill only the texture's lower left corner (a coarse table, FilmTable).
   vec2 size = vec2(textureSize(uFilmTable, 0));
   float rowOffset = fromInside ? uFilmTableRows : 0.0;
   vec2 texel = vec2(uv.x * (uFilmTableWidth - 1.0), rowOffset + uv.y * (uFilmTableRows - 1.0)) + 0.5;
   return texture(uFilmTable, texel / size).xyz;
 }
-#elif TFC_FILM_MODE == 2
+#elif TFC_FILM_MODE == TFC_FILM_MODE_FOURIER
 #include "airySeries.glsl"
 #include "binnedIntegration.glsl"
 
-vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
+vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
 #ifdef TFC_DISPERSIVE
   // A dispersive film has no series in x alone (docs/physics.md#a-dispersive-film): the bins take it.
-  return dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
+  return tfcDispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
 #else
-  FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
+  FilmOptics o = tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   AirySeriesTerms t[TFC_FILM_CHANNELS];
-  airySeriesTermsOf(o, t);
+  tfcAirySeriesTermsOf(o, t);
   float x = o.opticalPathNm.x;
-  return o.opticalPathNm.y == 0.0 && (TFC_AIRY_SERIES_TRUNCATED == 1 || airySeriesConvergesAt(t, x)) ? airySeriesSum(t, x) : binnedXyz(o, 0.0);
+  return o.opticalPathNm.y == 0.0 && (TFC_AIRY_SERIES_TRUNCATED == 1 || tfcAirySeriesConvergesAt(t, x)) ? tfcAirySeriesSum(t, x) : tfcBinnedXyz(o, 0.0);
 #endif
 }
-#else
+#elif TFC_FILM_MODE == TFC_FILM_MODE_THREE_IRIDESCENCE
 #define USE_IRIDESCENCE
 #include <common>
 #include <iridescence_fragment>
 
 // Its Rec.709 reflectance back to XYZ with the chunk's own matrix; the medium behind enters as
 // baseF0 (0 for air: a soap bubble), as MeshPhysicalMaterial would pass it.
-vec3 filmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
+vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
   float na = fromInside ? uNInside : uNOutside;
   float nc = fromInside ? uNOutside : uNInside;
   vec3 baseF0 = vec3(IorToFresnel0(nc, 1.0));

@@ -17,22 +17,25 @@
 #include "airySeries.glsl"
 #include "filmTableLayout.glsl"
 
-uniform float uNOutside;
-uniform float uNFilm;
-uniform float uNInside;
+#include "filmMedia.glsl"
 uniform float uTableMaxThicknessNm;
 
-#if TFC_TABLE_FILL == 1
+#if TFC_TABLE_FILL == TFC_TABLE_FILL_SERIES
 // Row y, texels 0-2: C0, B, q of channel 0, then of channel 1, then the path per nm of thickness
 // (2 n_b cos θ_r) and 1 where it is real (0: an evanescent film, no series).
 uniform sampler2D uAirySeriesRows;
+// The texels rowSeries reads: src/film/airySeriesRows.ts must pack as many (TFC_AIRY_ROW_TEXELS).
+#define TFC_AIRY_ROW_TEXELS_READ 3
+#if TFC_AIRY_ROW_TEXELS != TFC_AIRY_ROW_TEXELS_READ
+#error "the Airy series rows' texels differ from what rowSeries reads"
+#endif
 
-bool rowSeries(int y, out AirySeriesTerms t[TFC_FILM_CHANNELS], out float pathPerNm) {
+bool tfcRowSeries(int y, out AirySeriesTerms t[TFC_FILM_CHANNELS], out float pathPerNm) {
   vec4 a = texelFetch(uAirySeriesRows, ivec2(0, y), 0);
   vec4 b = texelFetch(uAirySeriesRows, ivec2(1, y), 0);
   vec4 c = texelFetch(uAirySeriesRows, ivec2(2, y), 0);
   t[0] = AirySeriesTerms(a.x, a.yz, vec2(a.w, b.x));
-#if TFC_FILM_CHANNELS == 2
+#ifdef TFC_BOTH_CHANNELS
   t[1] = AirySeriesTerms(b.y, b.zw, c.xy);
 #endif
   pathPerNm = c.z;
@@ -46,15 +49,15 @@ void main() {
   bool fromInside = texel.y >= rows;
   int row = fromInside ? texel.y - rows : texel.y;
   float u = float(texel.x) / (uFilmTableWidth - 1.0);
-  float thicknessNm = filmTableThicknessNm(u, uTableMaxThicknessNm);
-  float cellNm = filmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
-  float cosIncidence = filmTableCosIncidence(float(row) / (uFilmTableRows - 1.0));
-#if TFC_TABLE_FILL == 1 && !defined(TFC_DISPERSIVE)
+  float thicknessNm = tfcFilmTableThicknessNm(u, uTableMaxThicknessNm);
+  float cellNm = tfcFilmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
+  float cosIncidence = tfcFilmTableCosIncidence(float(row) / (uFilmTableRows - 1.0));
+#if TFC_TABLE_FILL == TFC_TABLE_FILL_SERIES && !defined(TFC_DISPERSIVE)
   AirySeriesTerms terms[TFC_FILM_CHANNELS];
   float pathPerNm;
   // At thickness 0 filmOptics decides (the bare interface, or the paper mode's eq 13), as in the reference.
-  if (thicknessNm > 0.0 && rowSeries(texel.y, terms, pathPerNm) && airySeriesConvergesAt(terms, pathPerNm * thicknessNm)) {
-    gl_FragColor = vec4(airySeriesSum(terms, pathPerNm * thicknessNm), 1.0);
+  if (thicknessNm > 0.0 && tfcRowSeries(texel.y, terms, pathPerNm) && tfcAirySeriesConvergesAt(terms, pathPerNm * thicknessNm)) {
+    gl_FragColor = vec4(tfcAirySeriesSum(terms, pathPerNm * thicknessNm), 1.0);
     return;
   }
 #endif
@@ -62,12 +65,12 @@ void main() {
   float nc = fromInside ? uNOutside : uNInside;
 #ifdef TFC_DISPERSIVE
   // At thickness 0 filmOptics decides (the bare interface): the rows hold a film's terms.
-  gl_FragColor = vec4(thicknessNm > 0.0 ? dispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, texel.y)
-                                        : binnedXyz(filmOptics(na, uNFilm, nc, 0.0, cosIncidence), 0.0), 1.0);
+  gl_FragColor = vec4(thicknessNm > 0.0 ? tfcDispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, texel.y)
+                                        : tfcBinnedXyz(tfcFilmOptics(na, uNFilm, nc, 0.0, cosIncidence), 0.0), 1.0);
 #else
-  FilmOptics o = filmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
+  FilmOptics o = tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   // Phase half-width of a cell at λ: 2π · 2 n_b cos θ_r · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).
-  float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : 2.0 * uNFilm * refractedCos(uNFilm, na, cosIncidence).x;
-  gl_FragColor = vec4(binnedXyz(o, 3.141592653589793 * perNmPath * cellNm), 1.0);
+  float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : 2.0 * uNFilm * tfcRefractedCos(uNFilm, na, cosIncidence).x;
+  gl_FragColor = vec4(tfcBinnedXyz(o, 3.141592653589793 * perNmPath * cellNm), 1.0);
 #endif
 }

@@ -11,22 +11,22 @@
 uniform float uFilmTableWidth;
 uniform float uFilmTableRows;
 
-float filmTableThicknessNm(float u, float maxThicknessNm) {
+float tfcFilmTableThicknessNm(float u, float maxThicknessNm) {
   return maxThicknessNm * pow(u, float(TFC_FILM_TABLE_THICKNESS_POWER));
 }
 
 // d d / d u: a texel's thickness cell is this × 1 / (uFilmTableWidth - 1).
-float filmTableThicknessSlopeNm(float u, float maxThicknessNm) {
+float tfcFilmTableThicknessSlopeNm(float u, float maxThicknessNm) {
   float power = float(TFC_FILM_TABLE_THICKNESS_POWER);
   return maxThicknessNm * power * pow(max(u, 1e-6), power - 1.0); // pow(0, 0) is undefined in GLSL
 }
 
-float filmTableCosIncidence(float v) {
+float tfcFilmTableCosIncidence(float v) {
   return pow(v, float(TFC_FILM_TABLE_COS_POWER));
 }
 
 // The inverse of both maps: (u, v) for a film, clamped to the table.
-vec2 filmTableUv(float thicknessNm, float cosIncidence, float maxThicknessNm) {
+vec2 tfcFilmTableUv(float thicknessNm, float cosIncidence, float maxThicknessNm) {
   float u = pow(clamp(thicknessNm / maxThicknessNm, 0.0, 1.0), 1.0 / float(TFC_FILM_TABLE_THICKNESS_POWER));
   float v = pow(clamp(cosIncidence, 0.0, 1.0), 1.0 / float(TFC_FILM_TABLE_COS_POWER));
   return vec2(u, v);

@@ -16,8 +16,8 @@ uniform mat3 uXyzToLinearWorking;   // XYZ -> three.js's working space (linear s
 // ones too (three clips its own film at 0): the working space is float, so a saturated film stays
 // as saturated as the output space (Display P3, or sRGB's own clip at the end) allows. Clipping
 // here moved saturated films by up to ΔE00 6.9 on the benchmark's grids.
-vec3 spectralIridescence(float thicknessNm, float cosIncidence) {
-  return applyMatrix3(uXyzToLinearWorking, filmXyz(thicknessNm, cosIncidence, false));
+vec3 tfcSpectralIridescence(float thicknessNm, float cosIncidence) {
+  return tfcApplyMatrix3(uXyzToLinearWorking, tfcFilmXyz(thicknessNm, cosIncidence, false));
 }
 
 // The F0 three's image-based light takes for the film: three integrates a lobe's single scattering
@@ -25,7 +25,7 @@ vec3 spectralIridescence(float thicknessNm, float cosIncidence) {
 // get F0 from the film's value F. Here F0 solves F0·dfg.x + F90·dfg.y = F·(dfg.x + dfg.y): the lobe
 // reflects the film's own F of its energy, so a smooth surface shows F at every angle (Schlick's
 // inversion against the table drifts from 35° on: ΔE00 0.3 at 50°, 3 at 80°, the film lost past 88°).
-vec3 spectralIridescenceF0(vec3 film, vec2 dfg, float f90) {
+vec3 tfcSpectralIridescenceF0(vec3 film, vec2 dfg, float f90) {
   return film + (film - f90) * dfg.y / max(dfg.x, 1e-4);
 }
 

@@ -30,34 +30,34 @@ uniform sampler2D uSpectralTransform;
 
 struct AirySeriesTerms { float c0; vec2 b; vec2 q; };
 
-AirySeriesTerms airySeriesTerms(AiryTerms c) {
-  float rab2 = cAbs2(c.rab);
+AirySeriesTerms tfcAirySeriesTerms(AiryTerms c) {
+  float rab2 = tfcCAbs2(c.rab);
   if (c.multiple == vec2(0.0)) return AirySeriesTerms(rab2, vec2(0.0), vec2(0.0));
-  float g = cAbs2(c.multiple) / (1.0 - cAbs2(c.roundTrip));
-  return AirySeriesTerms(rab2 + g, cMul(c.multiple, vec2(c.rab.x, -c.rab.y)) + g * c.roundTrip, c.roundTrip);
+  float g = tfcCAbs2(c.multiple) / (1.0 - tfcCAbs2(c.roundTrip));
+  return AirySeriesTerms(rab2 + g, tfcCMul(c.multiple, vec2(c.rab.x, -c.rab.y)) + g * c.roundTrip, c.roundTrip);
 }
 
 // H at entry i, real and imaginary parts.
-void transformEntry(int i, out vec3 re, out vec3 im) {
+void tfcTransformEntry(int i, out vec3 re, out vec3 im) {
   ivec2 p = ivec2(i % TFC_SPECTRAL_TRANSFORM_WIDTH, i / TFC_SPECTRAL_TRANSFORM_WIDTH);
   re = texelFetch(uSpectralTransform, p, 0).xyz;
   im = texelFetch(uSpectralTransform, p + ivec2(0, TFC_SPECTRAL_TRANSFORM_ROWS), 0).xyz;
 }
 
 // The carrier e^{i2πσ0 x}, its phase reduced to turns before the 2π so float32 keeps its digits.
-vec2 transformCarrier(float pathNm) {
-  return cExpI(vec2(6.283185307179586 * fract(float(TFC_SPECTRAL_TRANSFORM_CARRIER_PER_NM) * pathNm), 0.0));
+vec2 tfcTransformCarrier(float pathNm) {
+  return tfcCExpI(vec2(6.283185307179586 * fract(float(TFC_SPECTRAL_TRANSFORM_CARRIER_PER_NM) * pathNm), 0.0));
 }
 
 // F(x) = H(x) carrier, H linear between entries; false past the table (F taken as 0).
-bool transformAt(float pathNm, vec2 carrier, out vec3 re, out vec3 im) {
+bool tfcTransformAt(float pathNm, vec2 carrier, out vec3 re, out vec3 im) {
   float pos = pathNm / float(TFC_SPECTRAL_TRANSFORM_STEP_NM);
   float first = floor(pos);
   if (first >= float(TFC_SPECTRAL_TRANSFORM_COUNT - 1)) return false;
   int i = int(first);
   vec3 re0, im0, re1, im1;
-  transformEntry(i, re0, im0);
-  transformEntry(i + 1, re1, im1);
+  tfcTransformEntry(i, re0, im0);
+  tfcTransformEntry(i + 1, re1, im1);
   float f = pos - first;
   vec3 hr = mix(re0, re1, f);
   vec3 hi = mix(im0, im1, f);
@@ -67,17 +67,17 @@ bool transformAt(float pathNm, vec2 carrier, out vec3 re, out vec3 im) {
 }
 
 // |B| / (1 - |q|): with |q|^(m-1), a bound on the terms from order m on (|F| <= W).
-float airySeriesTailScale(AirySeriesTerms t) {
+float tfcAirySeriesTailScale(AirySeriesTerms t) {
   return length(t.b) / max(1.0 - length(t.q), 1e-7);
 }
 
 // Whether TFC_AIRY_SERIES_MAX_ORDERS terms reach the tolerance or the end of F's table at path x. They
 // do not for high-finesse thin films near grazing incidence (|q| -> 1): callers integrate those by bins.
-bool airySeriesConvergesAt(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
+bool tfcAirySeriesConvergesAt(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
   float orders = float(TFC_AIRY_SERIES_MAX_ORDERS);
   if (x * orders >= float(TFC_SPECTRAL_TRANSFORM_STEP_NM) * float(TFC_SPECTRAL_TRANSFORM_COUNT - 1)) return true;
   for (int c = 0; c < TFC_FILM_CHANNELS; c++) {
-    float scale = airySeriesTailScale(t[c]);
+    float scale = tfcAirySeriesTailScale(t[c]);
     float rho = length(t[c].q);
     if (scale >= TFC_AIRY_SERIES_TOLERANCE && (rho >= 1.0 || (orders - 1.0) * log(rho) > log(TFC_AIRY_SERIES_TOLERANCE / scale))) return false;
   }
@@ -85,7 +85,7 @@ bool airySeriesConvergesAt(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
 }
 
 // X_j = C0 W_j + 2 Re(B sum q^(m-1) F_j(m x)), averaged over the channels.
-vec3 airySeriesSum(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
+vec3 tfcAirySeriesSum(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
   vec3 sumRe[TFC_FILM_CHANNELS];
   vec3 sumIm[TFC_FILM_CHANNELS];
   vec2 power[TFC_FILM_CHANNELS];
@@ -98,22 +98,22 @@ vec3 airySeriesSum(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
     power[c] = vec2(1.0, 0.0);
     powerAbs[c] = 1.0;
     rho[c] = length(t[c].q);
-    leftScale[c] = airySeriesTailScale(t[c]);
+    leftScale[c] = tfcAirySeriesTailScale(t[c]);
   }
   // The carrier of order m is the first one's m-th power (a product per order, not a sine).
-  vec2 step = transformCarrier(x);
+  vec2 step = tfcTransformCarrier(x);
   vec2 carrier = step;
   for (int m = 1; m <= TFC_AIRY_SERIES_MAX_ORDERS; m++) {
     float left = 0.0;
     for (int c = 0; c < TFC_FILM_CHANNELS; c++) left = max(left, leftScale[c] * powerAbs[c]);
     if (left < TFC_AIRY_SERIES_TOLERANCE) break;
     vec3 fr, fi;
-    if (!transformAt(float(m) * x, carrier, fr, fi)) break;
-    carrier = cMul(carrier, step);
+    if (!tfcTransformAt(float(m) * x, carrier, fr, fi)) break;
+    carrier = tfcCMul(carrier, step);
     for (int c = 0; c < TFC_FILM_CHANNELS; c++) {
       sumRe[c] += power[c].x * fr - power[c].y * fi;
       sumIm[c] += power[c].x * fi + power[c].y * fr;
-      power[c] = cMul(power[c], t[c].q);
+      power[c] = tfcCMul(power[c], t[c].q);
       powerAbs[c] *= rho[c];
     }
   }
@@ -123,8 +123,8 @@ vec3 airySeriesSum(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
   return xyz / float(TFC_FILM_CHANNELS);
 }
 
-void airySeriesTermsOf(FilmOptics o, out AirySeriesTerms t[TFC_FILM_CHANNELS]) {
-  for (int c = 0; c < TFC_FILM_CHANNELS; c++) t[c] = airySeriesTerms(o.channels[c]);
+void tfcAirySeriesTermsOf(FilmOptics o, out AirySeriesTerms t[TFC_FILM_CHANNELS]) {
+  for (int c = 0; c < TFC_FILM_CHANNELS; c++) t[c] = tfcAirySeriesTerms(o.channels[c]);
 }
 
 #endif

@@ -4,9 +4,9 @@
 #ifndef THIN_FILM_COLOR_CONVERSIONS
 #define THIN_FILM_COLOR_CONVERSIONS
 
-vec3 applyMatrix3(mat3 m, vec3 v) { return m * v; }
+vec3 tfcApplyMatrix3(mat3 m, vec3 v) { return m * v; }
 
 // No TypeScript twin: only the shader hatches out-of-gamut pixels (the CPU image and the plots clip).
-bool outsideGamut(vec3 linearRgb) { return any(lessThan(linearRgb, vec3(-1e-4))) || any(greaterThan(linearRgb, vec3(1.0 + 1e-4))); }
+bool tfcOutsideGamut(vec3 linearRgb) { return any(lessThan(linearRgb, vec3(-1e-4))) || any(greaterThan(linearRgb, vec3(1.0 + 1e-4))); }
 
 #endif

@@ -3,10 +3,10 @@
 #ifndef THIN_FILM_COMPLEX
 #define THIN_FILM_COMPLEX
 
-vec2 cMul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
+vec2 tfcCMul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
 
 // a / b by Smith's algorithm (no overflow in |b|^2); b != 0.
-vec2 cDiv(vec2 a, vec2 b) {
+vec2 tfcCDiv(vec2 a, vec2 b) {
   if (abs(b.x) >= abs(b.y)) {
     float t = b.y / b.x;
     float d = b.x + b.y * t;
@@ -17,9 +17,9 @@ vec2 cDiv(vec2 a, vec2 b) {
   return vec2(a.x * t + a.y, a.y * t - a.x) / d;
 }
 
-float cAbs2(vec2 a) { return dot(a, a); }
+float tfcCAbs2(vec2 a) { return dot(a, a); }
 
 // e^{i z} = e^{-Im z} (cos Re z + i sin Re z)
-vec2 cExpI(vec2 z) { return exp(-z.y) * vec2(cos(z.x), sin(z.x)); }
+vec2 tfcCExpI(vec2 z) { return exp(-z.y) * vec2(cos(z.x), sin(z.x)); }
 
 #endif

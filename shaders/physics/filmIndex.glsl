@@ -8,18 +8,18 @@
 
 uniform vec4 uFilmIndexKnots[(TFC_FILM_INDEX_KNOTS + 3) / 4];
 
-float filmIndexKnot(int i) { return uFilmIndexKnots[i / 4][i % 4]; }
+float tfcFilmIndexKnot(int i) { return uFilmIndexKnots[i / 4][i % 4]; }
 
-float filmIndexAt(float lambdaNm) {
+float tfcFilmIndexAt(float lambdaNm) {
   float pos = clamp((lambdaNm - float(TFC_FILM_INDEX_FIRST_NM)) / float(TFC_FILM_INDEX_STEP_NM), 0.0, float(TFC_FILM_INDEX_KNOTS - 1));
   int i = min(int(pos), TFC_FILM_INDEX_KNOTS - 2);
-  return mix(filmIndexKnot(i), filmIndexKnot(i + 1), pos - float(i));
+  return mix(tfcFilmIndexKnot(i), tfcFilmIndexKnot(i + 1), pos - float(i));
 }
 
 // Re Δ per nm of thickness at λ: 2 n_b(λ) Re cos θ_r(λ) (eq 12 reduced), 0 for an evanescent film.
-float filmPathPerNm(float lambdaNm, float nOutside, float cosIncidence) {
-  float nb = filmIndexAt(lambdaNm);
-  return 2.0 * nb * refractedCos(nb, nOutside, cosIncidence).x;
+float tfcFilmPathPerNm(float lambdaNm, float nOutside, float cosIncidence) {
+  float nb = tfcFilmIndexAt(lambdaNm);
+  return 2.0 * nb * tfcRefractedCos(nb, nOutside, cosIncidence).x;
 }
 
 #endif

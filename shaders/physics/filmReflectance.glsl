@@ -1,8 +1,10 @@
 // Film reflectance by the Airy sum, eqs (1)-(14), and its closed-form mean over a phase window.
 // Mirrors src/physics/filmReflectance.ts. Defines:
-//   TFC_POLARIZATION  0 unpolarized (R_s + R_p)/2 | 1 paper (eqs 4, 8: amplitudes averaged) | 2 s | 3 p
-//   TFC_POLARIZATION_UNIFORM  1: the polarisation is the uniform uPolarization (same codes) and there are
-//     always two channels (a single polarisation twice): one program for every polarisation.
+//   TFC_POLARIZATION  TFC_POLARIZATION_UNPOLARIZED (R_s + R_p)/2 | _PAPER (eqs 4, 8: amplitudes
+//     averaged) | _S | _P, codes from src/gpu/enumDefines.ts
+//   TFC_POLARIZATION_UNIFORM  1: the polarisation is the uniform uPolarization (the same codes) and
+//     there are always two channels (a single polarisation twice): one program for every polarisation.
+//   Sets TFC_FILM_CHANNELS (1 or 2) and, for two, TFC_BOTH_CHANNELS.
 #ifndef THIN_FILM_REFLECTANCE
 #define THIN_FILM_REFLECTANCE
 #include "complex.glsl"
@@ -10,9 +12,10 @@
 #include "fresnel.glsl"
 
 #ifndef TFC_POLARIZATION
-#define TFC_POLARIZATION 0
+#define TFC_POLARIZATION TFC_POLARIZATION_UNPOLARIZED
 #endif
-#if TFC_POLARIZATION == 0 || defined(TFC_POLARIZATION_UNIFORM)
+#if TFC_POLARIZATION == TFC_POLARIZATION_UNPOLARIZED || defined(TFC_POLARIZATION_UNIFORM)
+#define TFC_BOTH_CHANNELS
 #define TFC_FILM_CHANNELS 2
 #else
 #define TFC_FILM_CHANNELS 1
@@ -32,81 +35,78 @@ struct FilmOptics {
 };
 
 // (r, t) of one interface for channel kind 0 = s, 1 = p, 2 = the paper's average (eqs 4, 8).
-vec4 channelOf(InterfaceCoefficients c, int kind) {
+vec4 tfcChannelOf(InterfaceCoefficients c, int kind) {
   if (kind == 0) return vec4(c.rs, c.ts);
   if (kind == 1) return vec4(c.rp, c.tp);
   return 0.5 * vec4(c.rs + c.rp, c.ts + c.tp);
 }
 
-AiryTerms airyTerms(InterfaceCoefficients ab, InterfaceCoefficients ba, InterfaceCoefficients bc, int kind) {
-  vec4 a = channelOf(ab, kind);
-  vec4 b = channelOf(ba, kind);
-  vec4 c = channelOf(bc, kind);
-  return AiryTerms(a.xy, cMul(cMul(a.zw, b.zw), c.xy), cMul(b.xy, c.xy));
+AiryTerms tfcAiryTerms(InterfaceCoefficients ab, InterfaceCoefficients ba, InterfaceCoefficients bc, int kind) {
+  vec4 a = tfcChannelOf(ab, kind);
+  vec4 b = tfcChannelOf(ba, kind);
+  vec4 c = tfcChannelOf(bc, kind);
+  return AiryTerms(a.xy, tfcCMul(tfcCMul(a.zw, b.zw), c.xy), tfcCMul(b.xy, c.xy));
 }
 
-int channelKind(int i) {
+int tfcChannelKind(int i) {
 #ifdef TFC_POLARIZATION_UNIFORM
-  return uPolarization == 0 ? i : (uPolarization == 1 ? 2 : uPolarization - 2);
-#elif TFC_POLARIZATION == 0
-  return i;
-#elif TFC_POLARIZATION == 1
-  return 2;
-#elif TFC_POLARIZATION == 2
-  return 0;
+  int polarization = uPolarization;
 #else
-  return 1;
+  int polarization = TFC_POLARIZATION;
 #endif
+  if (polarization == TFC_POLARIZATION_UNPOLARIZED) return i;
+  if (polarization == TFC_POLARIZATION_PAPER) return 2;
+  return polarization == TFC_POLARIZATION_S ? 0 : 1;
 }
 
-FilmOptics filmOptics(float nOutside, float nFilm, float nInside, float thicknessNm, float cosIncidence) {
-  vec2 cosI = refractedCos(nOutside, nOutside, cosIncidence);
-  vec2 cosR = refractedCos(nFilm, nOutside, cosIncidence);
-  vec2 cosT = refractedCos(nInside, nOutside, cosIncidence);
+FilmOptics tfcFilmOptics(float nOutside, float nFilm, float nInside, float thicknessNm, float cosIncidence) {
+  vec2 cosI = tfcRefractedCos(nOutside, nOutside, cosIncidence);
+  vec2 cosR = tfcRefractedCos(nFilm, nOutside, cosIncidence);
+  vec2 cosT = tfcRefractedCos(nInside, nOutside, cosIncidence);
   FilmOptics o;
   o.opticalPathNm = 2.0 * nFilm * thicknessNm * cosR;
-  InterfaceCoefficients ab = fresnelCoefficients(nOutside, cosI, nFilm, cosR);
-  InterfaceCoefficients ba = fresnelCoefficients(nFilm, cosR, nOutside, cosI);
-  InterfaceCoefficients bc = fresnelCoefficients(nFilm, cosR, nInside, cosT);
-  for (int i = 0; i < TFC_FILM_CHANNELS; i++) o.channels[i] = airyTerms(ab, ba, bc, channelKind(i));
+  InterfaceCoefficients ab = tfcFresnelCoefficients(nOutside, cosI, nFilm, cosR);
+  InterfaceCoefficients ba = tfcFresnelCoefficients(nFilm, cosR, nOutside, cosI);
+  InterfaceCoefficients bc = tfcFresnelCoefficients(nFilm, cosR, nInside, cosT);
+  for (int i = 0; i < TFC_FILM_CHANNELS; i++) o.channels[i] = tfcAiryTerms(ab, ba, bc, tfcChannelKind(i));
   if (thicknessNm == 0.0) {
     // At d = 0 the physical channels (s, p) are the bare a|c interface, eq (13)'s own value there
     // (the Stokes relations) and its limit at grazing; the paper's channel keeps eq (13). See
     // bareInterface in the TypeScript twin.
-    InterfaceCoefficients ac = fresnelCoefficients(nOutside, cosI, nInside, cosT);
+    InterfaceCoefficients ac = tfcFresnelCoefficients(nOutside, cosI, nInside, cosT);
     for (int i = 0; i < TFC_FILM_CHANNELS; i++) {
-      int kind = channelKind(i);
-      if (kind != 2) o.channels[i] = AiryTerms(channelOf(ac, kind).xy, vec2(0.0), vec2(0.0));
+      int kind = tfcChannelKind(i);
+      if (kind != 2) o.channels[i] = AiryTerms(tfcChannelOf(ac, kind).xy, vec2(0.0), vec2(0.0));
     }
   }
   return o;
 }
 
 // One channel's R, eq (13) squared, at the round-trip phase factor z = e^{iφ}.
-float channelReflectance(AiryTerms c, vec2 z) {
-  vec2 series = (c.multiple == vec2(0.0)) ? vec2(0.0) : cDiv(cMul(c.multiple, z), vec2(1.0, 0.0) - cMul(c.roundTrip, z));
-  return cAbs2(c.rab + series);
+float tfcChannelReflectance(AiryTerms c, vec2 z) {
+  vec2 series = (c.multiple == vec2(0.0)) ? vec2(0.0) : tfcCDiv(tfcCMul(c.multiple, z), vec2(1.0, 0.0) - tfcCMul(c.roundTrip, z));
+  return tfcCAbs2(c.rab + series);
 }
 
 // R at one wavelength, eqs (11), (13), (14), averaged over the channels.
-float reflectanceAt(FilmOptics o, float lambdaNm) {
-  vec2 z = cExpI(o.opticalPathNm * (6.283185307179586 / lambdaNm));
+float tfcReflectanceAt(FilmOptics o, float lambdaNm) {
+  vec2 z = tfcCExpI(o.opticalPathNm * (6.283185307179586 / lambdaNm));
   float sum = 0.0;
-  for (int i = 0; i < TFC_FILM_CHANNELS; i++) sum += channelReflectance(o.channels[i], z);
+  for (int i = 0; i < TFC_FILM_CHANNELS; i++) sum += tfcChannelReflectance(o.channels[i], z);
   return min(1.0, sum / float(TFC_FILM_CHANNELS));
 }
 
 // The mean of one channel's R over phases [φ0 - w, φ0 + w] in closed form; the derivation is in
 // src/physics/filmReflectance.ts (meanChannelReflectance).
-float meanChannelReflectance(AiryTerms c, float phaseCenter, float halfWidth) {
+float tfcMeanChannelReflectance(AiryTerms c, float phaseCenter, float halfWidth) {
   vec2 alpha = c.rab;
-  vec2 beta = c.multiple - cMul(c.rab, c.roundTrip);
-  float a0 = cAbs2(alpha) + cAbs2(beta);
-  vec2 ab = cMul(vec2(alpha.x, -alpha.y), beta);
-  float rho2 = cAbs2(c.roundTrip);
+  vec2 beta = c.multiple - tfcCMul(c.rab, c.roundTrip);
+  float a0 = tfcCAbs2(alpha) + tfcCAbs2(beta);
+  vec2 ab = tfcCMul(vec2(alpha.x, -alpha.y), beta);
+  float rho2 = tfcCAbs2(c.roundTrip);
   float w = halfWidth;
   float sinc = w == 0.0 ? 1.0 : sin(w) / w;
-  if (c.multiple == vec2(0.0)) return cAbs2(alpha);
+  if (c.multiple == vec2(0.0)) return tfcCAbs2(alpha);
   if (rho2 == 0.0) return a0 + 2.0 * sinc * (ab.x * cos(phaseCenter) - ab.y * sin(phaseCenter));
   float rho = sqrt(rho2);
   // float32 guard (not in the float64 twin): near an Airy resonance with |r_ba r_bc| → 1 (grazing
@@ -115,14 +115,14 @@ float meanChannelReflectance(AiryTerms c, float phaseCenter, float halfWidth) {
   // narrower than the resonance (w < (1 − ρ)/2) is averaged by Simpson's rule on eq (13) itself,
   // which has no such cancellation; its error is ~(w / (1 − ρ))⁴ / 180 ≤ 4e-4 of R.
   if (w < 0.5 * (1.0 - rho)) {
-    return clamp((channelReflectance(c, cExpI(vec2(phaseCenter - w, 0.0))) + 4.0 * channelReflectance(c, cExpI(vec2(phaseCenter, 0.0)))
-      + channelReflectance(c, cExpI(vec2(phaseCenter + w, 0.0)))) / 6.0, 0.0, 1.0);
+    return clamp((tfcChannelReflectance(c, tfcCExpI(vec2(phaseCenter - w, 0.0))) + 4.0 * tfcChannelReflectance(c, tfcCExpI(vec2(phaseCenter, 0.0)))
+      + tfcChannelReflectance(c, tfcCExpI(vec2(phaseCenter + w, 0.0)))) / 6.0, 0.0, 1.0);
   }
   // arg(c), with Im c = -0.0 read as 0: GLSL need not honour signed zeros, and SwiftShader's
   // atan(-0.0, x) returns pi for x > 0, which shifts the p channel's fringes by half a period.
   float gamma = c.roundTrip.y == 0.0 ? (c.roundTrip.x < 0.0 ? 3.141592653589793 : 0.0) : atan(c.roundTrip.y, c.roundTrip.x);
   float psi0 = phaseCenter + gamma;
-  vec2 u = cDiv(ab, c.roundTrip);
+  vec2 u = tfcCDiv(ab, c.roundTrip);
   float cosW = cos(w), cos0 = cos(psi0), sin0 = sin(psi0);
   float y = 2.0 * rho * sinc * (cos0 - rho * cosW);
   float x = 1.0 - 2.0 * rho * cos0 * cosW + rho2 * cos(2.0 * w);

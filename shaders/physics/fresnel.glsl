@@ -7,7 +7,7 @@
 
 struct InterfaceCoefficients { vec2 rs; vec2 rp; vec2 ts; vec2 tp; };
 
-InterfaceCoefficients fresnelCoefficients(float n1, vec2 cos1, float n2, vec2 cos2) {
+InterfaceCoefficients tfcFresnelCoefficients(float n1, vec2 cos1, float n2, vec2 cos2) {
   if (n1 == n2) return InterfaceCoefficients(vec2(0.0), vec2(0.0), vec2(1.0, 0.0), vec2(1.0, 0.0));
   vec2 n1c1 = n1 * cos1;
   vec2 n2c2 = n2 * cos2;
@@ -16,10 +16,10 @@ InterfaceCoefficients fresnelCoefficients(float n1, vec2 cos1, float n2, vec2 co
   vec2 sDen = n1c1 + n2c2;
   vec2 pDen = n2c1 + n1c2;
   return InterfaceCoefficients(
-    cDiv(n1c1 - n2c2, sDen),
-    cDiv(n2c1 - n1c2, pDen),
-    cDiv(2.0 * n1c1, sDen),
-    cDiv(2.0 * n1c1, pDen));
+    tfcCDiv(n1c1 - n2c2, sDen),
+    tfcCDiv(n2c1 - n1c2, pDen),
+    tfcCDiv(2.0 * n1c1, sDen),
+    tfcCDiv(2.0 * n1c1, pDen));
 }
 
 #endif

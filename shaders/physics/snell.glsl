@@ -4,7 +4,7 @@
 #ifndef THIN_FILM_SNELL
 #define THIN_FILM_SNELL
 
-vec2 refractedCos(float n, float nOutside, float cosIncidence) {
+vec2 tfcRefractedCos(float n, float nOutside, float cosIncidence) {
   float nCosIncidence = nOutside * cosIncidence;
   float nCos2 = (n - nOutside) * (n + nOutside) + nCosIncidence * nCosIncidence;
   return nCos2 >= 0.0 ? vec2(sqrt(nCos2) / n, 0.0) : vec2(0.0, sqrt(-nCos2) / n);

@@ -1,18 +1,21 @@
 import { BackSide, type DataTexture, ShaderMaterial, Vector2 } from 'three';
 import { type FilmSettings, isHdrEnvironment } from '../settings/filmSettings.ts';
+import { enumDefines } from '../gpu/enumDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 
 /** What shaders/bubble/environment.glsl needs: which environment, its rotation, and the exposure on all light. */
 export type EnvironmentSettings = Pick<FilmSettings, 'env' | 'envRotationDeg' | 'exposure'>;
 
+/** The kinds of environment the shader tells apart: black, the procedural sky, an equirectangular HDR map. */
+const ENVIRONMENT_KINDS = ['none', 'sky', 'map'] as const;
+
 /**
- * TFC_ENVIRONMENT for the environment shown: 0 none, 1 the procedural sky, 2 an HDR map (the
+ * TFC_ENVIRONMENT for the environment shown: none, the procedural sky, or an HDR map (the
  * caller shows `sky` until the map has arrived).
  */
-export const environmentDefines = (s: Pick<FilmSettings, 'env'>): Record<string, number> => ({
-  TFC_ENVIRONMENT: s.env === 'none' ? 0 : s.env === 'sky' ? 1 : 2,
-});
+export const environmentDefines = (s: Pick<FilmSettings, 'env'>): Record<string, number> =>
+  enumDefines('TFC_ENVIRONMENT', ENVIRONMENT_KINDS, s.env === 'none' || s.env === 'sky' ? s.env : 'map');
 
 /** The uniforms shaders/bubble/environment.glsl reads, plus the exposure. */
 export const environmentUniforms = () => ({
@@ -48,7 +51,7 @@ void main() {
 uniform float uExposure;
 varying vec3 vDirection;
 void main() {
-  gl_FragColor = vec4(uExposure * environmentRadiance(vDirection), 1.0);
+  gl_FragColor = vec4(uExposure * tfcEnvironmentRadiance(vDirection), 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
 }`,

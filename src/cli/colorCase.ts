@@ -6,11 +6,10 @@ import {
   filmIndexProblem,
 } from '../physics/filmIndex.ts';
 import { FILM_STACK_DOMAIN, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
-import { DAYLIGHT_CCT_DOMAIN_K, ILLUMINANT_EXPECTED, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
+import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralWeights.ts';
-import { type NumberDomain, expectedNumber, isInDomain } from '../physics/validate.ts';
+import { isInDomain, type NumberDomain, oneOf, rejectValue, expectedNumber } from '../physics/validate.ts';
 import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../settings/filmParameters.ts';
-import { oneOf, rejectValue } from './inputErrors.ts';
 
 /** One film to colour: what the command line or one entry of a cases file describes. */
 export interface ColorCase {
@@ -118,7 +117,7 @@ export function validateColorCase(raw: RawCase, index: number, nameOf: (field: C
       thicknessNm: number('thicknessNm'),
       angleDeg: number('angleDeg'),
     },
-    illuminant: validateIlluminant(raw.illuminant, nameOf('illuminant')),
+    illuminant: raw.illuminant === undefined ? DEFAULT_SETTINGS.illuminant : illuminantFromJson(raw.illuminant, nameOf('illuminant')),
     polarization: oneOf(nameOf('polarization'), orDefault('polarization', DEFAULT_SETTINGS.polarization), POLARIZATIONS),
     normalization: oneOf(nameOf('normalization'), orDefault('normalization', DEFAULT_SETTINGS.normalization), NORMALIZATIONS),
     wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm')),
@@ -141,17 +140,6 @@ function validateFilmIndex(value: unknown, name: string): FilmIndex {
   if (index === null) return rejectValue(name, value, FILM_INDEX_EXPECTED);
   const problem = filmIndexProblem(index);
   return problem === null ? index : rejectValue(name, value, `${FILM_INDEX_EXPECTED} (here ${problem})`);
-}
-
-function validateIlluminant(value: unknown, name: string): IlluminantSpec {
-  if (value === undefined) return DEFAULT_SETTINGS.illuminant;
-  if (typeof value === 'string' && (NAMED_ILLUMINANTS as readonly string[]).includes(value)) return value as IlluminantSpec;
-  const isObject = typeof value === 'object' && value !== null && !Array.isArray(value);
-  if (isObject && Object.keys(value).join() === 'daylightCct') {
-    const cct = (value as { daylightCct: unknown }).daylightCct;
-    if (isInDomain(cct, DAYLIGHT_CCT_DOMAIN_K)) return { daylightCct: cct };
-  }
-  return rejectValue(name, value, ILLUMINANT_EXPECTED);
 }
 
 function validateWavelengths(value: unknown, name: string): readonly number[] {

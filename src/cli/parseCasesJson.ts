@@ -1,6 +1,5 @@
-import { ParameterError } from '../physics/validate.ts';
+import { describeValue, ParameterError, rejectValue } from '../physics/validate.ts';
 import { CASE_FIELDS, type CaseField, type ColorCase, type RawCase, isValidId, validateColorCase } from './colorCase.ts';
-import { describeValue, rejectValue } from './inputErrors.ts';
 import { parseJsonArray } from './parseJsonArray.ts';
 
 const CASE_EXPECTED = `an object with some of the fields ${CASE_FIELDS.join(', ')}`;

@@ -2,7 +2,7 @@ import { parseArgs } from 'node:util';
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
 import { FILM_INDEX_EXPECTED, readFilmIndex } from '../physics/filmIndex.ts';
 import { ILLUMINANT_EXPECTED, parseIlluminant } from '../physics/illuminants.ts';
-import { ParameterError, expectedNumber } from '../physics/validate.ts';
+import { describeValue, oneOf, ParameterError, rejectValue, expectedNumber } from '../physics/validate.ts';
 import {
   CASE_FLAGS,
   type CaseField,
@@ -12,7 +12,6 @@ import {
   WAVELENGTH_DOMAIN_NM,
   validateColorCase,
 } from './colorCase.ts';
-import { describeValue, oneOf, rejectValue } from './inputErrors.ts';
 import { CELL_HEIGHT_2D_PX, STRIP_HEIGHT_PX, checkChartSize } from './chartLayout.ts';
 import { parseStrictNumber } from './parseStrictNumber.ts';
 import { parseColonRange, parseRange } from './tableValues.ts';

@@ -1,5 +1,5 @@
-import { ParameterError, shorten } from '../physics/validate.ts';
-import { describePath, rejectValue } from './inputErrors.ts';
+import { ParameterError, rejectValue, shorten } from '../physics/validate.ts';
+import { describePath } from './inputErrors.ts';
 import { jsonNestingDepth } from './jsonNestingDepth.ts';
 
 /** More entries than this in one file is a mistake, not a workload. */

@@ -1,5 +1,4 @@
-import { parseDecimal } from '../physics/validate.ts';
-import { rejectValue } from './inputErrors.ts';
+import { parseDecimal, rejectValue } from '../physics/validate.ts';
 
 /**
  * The finite number written in `text` (plain decimal, see `parseDecimal`), or a ParameterError

@@ -1,8 +1,7 @@
 import { parseArgs } from 'node:util';
 import { parameterNamed, readParameter, settingsToQuery } from '../settings/settingsQuery.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
-import { ParameterError, isInDomain, parseDecimal } from '../physics/validate.ts';
-import { describeValue, rejectValue } from './inputErrors.ts';
+import { parseDecimal, describeValue, isInDomain, ParameterError, rejectValue } from '../physics/validate.ts';
 import { parseJsonArray } from './parseJsonArray.ts';
 
 /** One picture to render: the demo at `query`, in a `widthPx` × `heightPx` CSS-pixel window. */

@@ -4,7 +4,8 @@ import { filmOptics } from '../physics/filmReflectance.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import { type FilmTableLayout, filmTableCosIncidence } from '../settings/filmTableLayout.ts';
 
-const TEXELS_PER_ROW = 3;
+/** RGBA texels per row (shaders/film/filmTable.glsl reads them as TFC_AIRY_ROW_TEXELS). */
+export const AIRY_ROW_TEXELS = 3;
 
 /**
  * The Airy series' C₀, B, q of every row of the film table (they depend on cos θ_i and the
@@ -28,7 +29,7 @@ export function airySeriesRows(
       const path = optics.opticalPathNm;
       data.set(
         [t0!.c0, t0!.b.re, t0!.b.im, t0!.q.re, t0!.q.im, t1!.c0, t1!.b.re, t1!.b.im, t1!.q.re, t1!.q.im, path.re, path.im === 0 ? 1 : 0],
-        4 * TEXELS_PER_ROW * (half * layout.rows + row),
+        4 * AIRY_ROW_TEXELS * (half * layout.rows + row),
       );
     }
   }
@@ -37,8 +38,8 @@ export function airySeriesRows(
 /** A texture for airySeriesRows of a layout (filled and uploaded by FilmTable). */
 export function airySeriesRowsTexture(layout: FilmTableLayout): DataTexture {
   const texture = new DataTexture(
-    new Float32Array(4 * TEXELS_PER_ROW * 2 * layout.rows),
-    TEXELS_PER_ROW,
+    new Float32Array(4 * AIRY_ROW_TEXELS * 2 * layout.rows),
+    AIRY_ROW_TEXELS,
     2 * layout.rows,
     RGBAFormat,
     FloatType,

@@ -5,7 +5,8 @@ import { refractedCos } from '../physics/snell.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 import { type FilmTableLayout, filmTableCosIncidence } from '../settings/filmTableLayout.ts';
 
-const TEXELS_PER_BIN = 4;
+/** RGBA texels per row and bin (shaders/physics/binnedIntegration.glsl's stride TFC_DISPERSIVE_BIN_TEXELS). */
+export const DISPERSIVE_BIN_TEXELS = 4;
 
 interface DispersiveFilm {
   readonly nOutside: number;
@@ -50,7 +51,7 @@ export function dispersiveRows(s: DispersiveFilm, layout: FilmTableLayout, data:
             pathPerNm(l1),
             pathPerNm(l1 + width),
           ],
-          4 * TEXELS_PER_BIN * ((half * layout.rows + row) * bins + b),
+          4 * DISPERSIVE_BIN_TEXELS * ((half * layout.rows + row) * bins + b),
         );
       }
     }
@@ -59,7 +60,7 @@ export function dispersiveRows(s: DispersiveFilm, layout: FilmTableLayout, data:
 
 /** A texture for dispersiveRows of a layout (filled and uploaded by FilmTable). */
 export function dispersiveRowsTexture(layout: FilmTableLayout): DataTexture {
-  const width = TEXELS_PER_BIN * layout.spectralBins;
+  const width = DISPERSIVE_BIN_TEXELS * layout.spectralBins;
   const texture = new DataTexture(new Float32Array(4 * width * 2 * layout.rows), width, 2 * layout.rows, RGBAFormat, FloatType);
   texture.minFilter = texture.magFilter = NearestFilter;
   return texture;

@@ -14,11 +14,14 @@ import {
 import { type FilmIndex } from '../physics/filmIndex.ts';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { dispersiveRows, dispersiveRowsTexture } from './dispersiveRows.ts';
-import { filmIndexDefines, filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
+import { filmIndexDefines } from './filmIndexUniforms.ts';
+import { filmMediaUniforms, updateFilmMediaUniforms } from './filmMedia.ts';
+import { enumCode, enumConstants } from '../gpu/enumDefines.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
 import { type FilmSettings, maxFieldThicknessNm } from '../settings/filmSettings.ts';
-import { filmTableLayoutDefines, filmTableWidth } from '../settings/filmTableLayout.ts';
+import { filmTableWidth } from '../settings/filmTableLayout.ts';
+import { filmTableLayoutDefines } from './filmTableDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
@@ -82,9 +85,7 @@ export class FilmTable {
       uAirySeriesRows: { value: null },
       uDispersiveRows: { value: null },
       uPolarization: { value: 0 },
-      uNOutside: { value: 1 },
-      ...filmIndexUniforms(),
-      uNInside: { value: 1 },
+      ...filmMediaUniforms(),
       uTableMaxThicknessNm: { value: 1 },
       uFilmTableWidth: { value: 1 },
       uFilmTableRows: { value: 1 },
@@ -202,10 +203,8 @@ export class FilmTable {
     this.updateRows(s, grid, bins);
     u.uDispersiveRows!.value = this.rows.texture;
     u.uAirySeriesRows!.value = this.rows.texture;
-    u.uPolarization!.value = POLARIZATIONS.indexOf(s.polarization);
-    u.uNOutside!.value = s.nOutside;
-    updateFilmIndexUniforms(u, s.nFilm);
-    u.uNInside!.value = s.nInside;
+    u.uPolarization!.value = enumCode('TFC_POLARIZATION', POLARIZATIONS, s.polarization);
+    updateFilmMediaUniforms(u, s);
     u.uTableMaxThicknessNm!.value = this.maxThicknessNm;
     u.uFilmTableWidth!.value = grid.width;
     u.uFilmTableRows!.value = grid.rows;
@@ -270,6 +269,7 @@ export class FilmTable {
     setDefines(this.pass, {
       ...filmIndexDefines(index),
       TFC_POLARIZATION_UNIFORM: 1,
+      ...enumConstants('TFC_POLARIZATION', POLARIZATIONS),
       ...spectralBinDefines(bins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),
       ...airySeriesDefines(),

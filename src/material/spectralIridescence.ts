@@ -7,14 +7,13 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { FILM_STACK_DOMAIN, POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
-import { DAYLIGHT_CCT_DOMAIN_K, ILLUMINANT_EXPECTED, type IlluminantSpec, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
+import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
 import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
-import { ParameterError, assertInRange, isInDomain } from '../physics/validate.ts';
-import { filmColorDefines, filmColorUniforms, releaseFilmColorTextures, updateFilmColorTextures } from '../bubble/bubbleMaterial.ts';
+import { assertInRange, oneOf } from '../physics/validate.ts';
+import { filmColorDefines, filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } from '../film/filmColor.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../settings/filmQuality.ts';
 import { type FilmSettings, MODES } from '../settings/filmSettings.ts';
-import { updateFilmIndexUniforms } from '../film/filmIndexUniforms.ts';
 import { FilmTable, tableKey } from '../film/filmTable.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
@@ -32,35 +31,20 @@ export interface SpectralIridescenceOptions {
 
 type Options = Required<SpectralIridescenceOptions>;
 
-const expectChoice = <T extends string>(name: string, value: unknown, choices: readonly T[]): T => {
-  if (typeof value === 'string' && (choices as readonly string[]).includes(value)) return value as T;
-  throw new ParameterError(name, `${name}: ${String(value)} is not allowed; expected one of ${choices.join(', ')}`);
-};
-
-function expectIlluminant(value: unknown): IlluminantSpec {
-  if (typeof value === 'string' && (NAMED_ILLUMINANTS as readonly string[]).includes(value)) return value as IlluminantSpec;
-  const cct = typeof value === 'object' && value !== null ? (value as { daylightCct?: unknown }).daylightCct : undefined;
-  if (isInDomain(cct, DAYLIGHT_CCT_DOMAIN_K)) return { daylightCct: cct };
-  throw new ParameterError(
-    'illuminant',
-    `illuminant: ${JSON.stringify(value) ?? String(value)} is not allowed; expected ${ILLUMINANT_EXPECTED}`,
-  );
-}
-
 /** The options with their defaults, each checked (a ParameterError names the first bad one). */
 export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): Options {
   return {
-    mode: expectChoice('mode', o.mode ?? 'table', MODES),
-    illuminant: expectIlluminant(o.illuminant ?? DEFAULT_SETTINGS.illuminant),
-    polarization: expectChoice('polarization', o.polarization ?? DEFAULT_SETTINGS.polarization, POLARIZATIONS),
-    normalization: expectChoice('normalization', o.normalization ?? DEFAULT_SETTINGS.normalization, NORMALIZATIONS),
+    mode: oneOf('mode', o.mode ?? 'table', MODES),
+    illuminant: illuminantFromJson(o.illuminant ?? DEFAULT_SETTINGS.illuminant),
+    polarization: oneOf('polarization', o.polarization ?? DEFAULT_SETTINGS.polarization, POLARIZATIONS),
+    normalization: oneOf('normalization', o.normalization ?? DEFAULT_SETTINGS.normalization, NORMALIZATIONS),
     quality: o.quality ?? DEFAULT_FILM_QUALITY,
   };
 }
 
 /** The call in three's lights_fragment_begin chunk that gives the film over the dielectric base. */
 const DIELECTRIC_FILM = 'evalIridescence( 1.0, material.iridescenceIOR, dotNVi, material.iridescenceThickness, material.specularColor )';
-const SPECTRAL_FILM = 'spectralIridescence( material.iridescenceThickness, dotNVi )';
+const SPECTRAL_FILM = 'tfcSpectralIridescence( material.iridescenceThickness, dotNVi )';
 /**
  * three's F0 for the film's image-based light: Schlick's curve inverted at n·v. Ours inverts the
  * DFG table the light is then integrated with (docs/material.md#the-films-f0-for-image-based-light),
@@ -68,7 +52,7 @@ const SPECTRAL_FILM = 'spectralIridescence( material.iridescenceThickness, dotNV
  */
 const DIELECTRIC_F0 = 'material.iridescenceF0Dielectric = Schlick_to_F0( iridescenceFresnelDielectric, 1.0, dotNVi );';
 const SPECTRAL_F0 =
-  'material.iridescenceF0Dielectric = spectralIridescenceF0( iridescenceFresnelDielectric, texture2D( dfgLUT, vec2( material.roughness, dotNVi ) ).rg, material.specularF90 );';
+  'material.iridescenceF0Dielectric = tfcSpectralIridescenceF0( iridescenceFresnelDielectric, texture2D( dfgLUT, vec2( material.roughness, dotNVi ) ).rg, material.specularF90 );';
 
 /** three's lights_fragment_begin with the two replacements, or an error naming what a three.js release no longer has. */
 function lightsFragmentBegin(): string {
@@ -117,20 +101,15 @@ const films = new WeakMap<MeshPhysicalMaterial, SpectralFilm>();
 function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRenderer): void {
   const o = film.options;
   const s = filmSettingsOf(m, o);
-  const u = film.uniforms;
-  u.uNOutside!.value = s.nOutside;
-  updateFilmIndexUniforms(u, s.nFilm);
-  u.uNInside!.value = s.nInside;
-  updateFilmColorTextures(film, s, o.quality);
   if (o.mode === 'table') {
     const table = tables.hold(JSON.stringify({ quality: o.quality, table: tableKey(s) }), film);
     table.update(renderer, s);
-    table.bind(u);
     film.table = table;
   } else if (film.table) {
     tables.release(film);
     film.table = null;
   }
+  updateFilmColorUniforms(film, s, o.quality, film.table);
 }
 
 /** The GLSL defines of the film (filmColor.glsl's, for the mode). */

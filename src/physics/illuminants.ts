@@ -6,7 +6,7 @@ import {
   CIE_DAYLIGHT_START_NM,
   CIE_DAYLIGHT_STEP_NM,
 } from './data/cieDaylightComponents.ts';
-import { type NumberDomain, ParameterError, assertInRange, isInDomain, parseDecimal } from './validate.ts';
+import { type NumberDomain, ParameterError, assertInRange, isInDomain, parseDecimal, rejectValue } from './validate.ts';
 
 /**
  * Incident spectra I_in(λ) for eq (15).
@@ -28,6 +28,20 @@ export const DAYLIGHT_CCT_MAX_K = 25000;
 export const DAYLIGHT_CCT_DOMAIN_K: NumberDomain = { min: DAYLIGHT_CCT_MIN_K, max: DAYLIGHT_CCT_MAX_K, unit: 'K' };
 /** What an illuminant may be, as every message (URL, element, CLI, this module) states it. */
 export const ILLUMINANT_EXPECTED = `one of ${NAMED_ILLUMINANTS.join(', ')} or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`;
+/**
+ * An illuminant as a JSON value (cases files, the material's options): a name, or exactly
+ * `{ daylightCct: K }` in the CCT's domain; anything else is a ParameterError naming `field`.
+ */
+export function illuminantFromJson(value: unknown, field = 'illuminant'): IlluminantSpec {
+  if (typeof value === 'string' && (NAMED_ILLUMINANTS as readonly string[]).includes(value)) return value as NamedIlluminant;
+  const isObject = typeof value === 'object' && value !== null && !Array.isArray(value);
+  if (isObject && Object.keys(value).join() === 'daylightCct') {
+    const cct = (value as { daylightCct: unknown }).daylightCct;
+    if (isInDomain(cct, DAYLIGHT_CCT_DOMAIN_K)) return { daylightCct: cct };
+  }
+  return rejectValue(field, value, ILLUMINANT_EXPECTED);
+}
+
 /** An illuminant as text (URL, attribute, command line): a name, or a CCT in kelvin; null when neither. */
 export function parseIlluminant(text: string): IlluminantSpec | null {
   if ((NAMED_ILLUMINANTS as readonly string[]).includes(text)) return text as NamedIlluminant;

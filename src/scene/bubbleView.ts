@@ -14,7 +14,8 @@ import {
   WebGLRenderer,
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
-import { createBubbleMaterial, releaseFilmColorTextures, updateBubbleUniforms } from '../bubble/bubbleMaterial.ts';
+import { createBubbleMaterial, updateBubbleUniforms } from '../bubble/bubbleMaterial.ts';
+import { releaseFilmColorTextures } from '../film/filmColor.ts';
 import { createBackgroundMaterial, updateBackgroundMaterial } from '../bubble/environmentMaterial.ts';
 import { environmentTexture, loadEnvironmentPixels, releaseEnvironmentTexture } from '../bubble/environmentMaps.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../settings/filmQuality.ts';

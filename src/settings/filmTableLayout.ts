@@ -5,6 +5,8 @@
  * cos θ_i = v^cosPower. Powers above 1 put texels where colour changes fastest: thin films and
  * grazing incidence (R rises steeply as cos θ_i → 0).
  */
+export const TABLE_FILLS = ['binned', 'series'] as const;
+
 export interface FilmTableLayout {
   /** texels along thickness at most */
   readonly width: number;
@@ -19,7 +21,7 @@ export interface FilmTableLayout {
   readonly thicknessPower: number;
   readonly cosPower: number;
   /** how texels are filled: `binned` (cell-averaged bins) or `series` (the Airy series at the texel) */
-  readonly fill: 'binned' | 'series';
+  readonly fill: (typeof TABLE_FILLS)[number];
 }
 
 /**
@@ -33,10 +35,3 @@ export function filmTableWidth(l: FilmTableLayout, maxThicknessNm: number): numb
 
 /** cos θ_i of the table's row `row` of `l.rows` (twin of filmTableCosIncidence in the GLSL). */
 export const filmTableCosIncidence = (l: FilmTableLayout, row: number): number => (row / (l.rows - 1)) ** l.cosPower;
-
-/** The defines shaders/film/filmTableLayout.glsl reads (its grid is uniforms: the width follows the thickness range, and a coarse table has fewer texels). */
-export const filmTableLayoutDefines = (l: FilmTableLayout): Record<string, number> => ({
-  TFC_FILM_TABLE_THICKNESS_POWER: l.thicknessPower,
-  TFC_FILM_TABLE_COS_POWER: l.cosPower,
-  TFC_TABLE_FILL: l.fill === 'series' ? 1 : 0,
-});

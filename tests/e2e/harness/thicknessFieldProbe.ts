@@ -13,7 +13,7 @@ const FRAGMENT = `${shaderSource('thicknessField.glsl')}
 uniform sampler2D uPoints;
 void main() {
   vec3 p = texelFetch(uPoints, ivec2(gl_FragCoord.xy), 0).xyz;
-  gl_FragColor = vec4(thicknessAt(p), 0.0, 0.0, 1.0);
+  gl_FragColor = vec4(tfcThicknessAt(p), 0.0, 0.0, 1.0);
 }`;
 
 export function renderThickness(

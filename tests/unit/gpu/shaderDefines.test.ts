@@ -9,7 +9,7 @@ import { bubbleDefines } from '../../../src/bubble/bubbleMaterial.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
 import { ENVIRONMENTS, FIELDS, FILM_METHODS, SIDES, SPACES } from '../../../src/settings/filmSettings.ts';
-import { filmTableLayoutDefines } from '../../../src/settings/filmTableLayout.ts';
+import { filmTableLayoutDefines } from '../../../src/film/filmTableDefines.ts';
 import { spectralBinDefines } from '../../../src/film/spectralBinsTexture.ts';
 import { airySeriesDefines } from '../../../src/film/spectralTransformTexture.ts';
 
@@ -62,5 +62,23 @@ describe('shader defines', () => {
     }
     expect(shaders.length).toBeGreaterThan(10);
     expect(bad).toEqual([]);
+  });
+
+  it('compared in #if and #elif by name, never with a bare number (the TypeScript side emits every code)', () => {
+    const bare: string[] = [];
+    for (const file of shaders)
+      readFileSync(new URL(file, shaderDir), 'utf8')
+        .split('\n')
+        .forEach((line, i) => {
+          const condition = /^\s*#\s*(?:if|elif)\b(.*)$/.exec(line)?.[1];
+          if (condition !== undefined && /(?<![A-Za-z_0-9])\d/.test(condition)) bare.push(`${file}:${i + 1}: ${line.trim()}`);
+        });
+    expect(bare).toEqual([]);
+  });
+
+  it('the bare-number check finds a number in a condition', () => {
+    const condition = /^\s*#\s*(?:if|elif)\b(.*)$/.exec('#elif TFC_FILM_MODE == 2')![1]!;
+    expect(/(?<![A-Za-z_0-9])\d/.test(condition)).toBe(true);
+    expect(/(?<![A-Za-z_0-9])\d/.test(' TFC_FILM_MODE == TFC_FILM_MODE_TABLE2')).toBe(false);
   });
 });

@@ -1,0 +1,114 @@
+import { Matrix3, type ShaderMaterial } from 'three';
+import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { type Matrix3 as Rows3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
+import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
+import { FILM_METHODS, type FilmSettings } from '../settings/filmSettings.ts';
+import { enumDefines } from '../gpu/enumDefines.ts';
+import { filmIndexDefines } from './filmIndexUniforms.ts';
+import { type FilmMedia, filmMediaUniforms, updateFilmMediaUniforms } from './filmMedia.ts';
+import { filmTableLayoutDefines } from './filmTableDefines.ts';
+import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
+import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
+
+/**
+ * The film's colour as shaders/film/filmColor.glsl computes it, from the TypeScript side: its
+ * defines, its uniforms and one function that brings them up to the settings, shared by every
+ * shader that computes a film colour (the bubble, the material for any mesh, the parity probe).
+ */
+
+export const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
+
+export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm'>;
+
+/**
+ * The defines shaders/film/filmColor.glsl needs: the method and polarisation in use, and only the
+ * sizes of that method (the spectral bins it visits, or the table's layout).
+ */
+export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
+  const filmMode = enumDefines('TFC_FILM_MODE', FILM_METHODS, s.mode);
+  const method = { ...filmMode, ...enumDefines('TFC_POLARIZATION', POLARIZATIONS, s.polarization) };
+  if (s.mode === 'exact')
+    return {
+      ...method,
+      ...spectralBinDefines(spectralBinsFor(s.nFilm, q, q.exactSpectralBins), q.spectralTailTolerance),
+      ...filmIndexDefines(s.nFilm),
+    };
+  // The lookup does not depend on the polarisation (the table pass does), so changing it compiles no bubble.
+  if (s.mode === 'table') return { ...filmMode, ...filmTableLayoutDefines(q.table) };
+  // The series, and the binned integral for evanescent films (which have no real optical path).
+  if (s.mode === 'fourier')
+    return {
+      ...method,
+      ...airySeriesDefines(q.airySeriesMaxOrders),
+      ...spectralBinDefines(spectralBinsFor(s.nFilm, q, q.exactSpectralBins), q.spectralTailTolerance),
+      ...filmIndexDefines(s.nFilm),
+    };
+  return method;
+}
+
+/**
+ * Points a film-colour material (or any holder of its uniforms: the spectral iridescence) at the
+ * light's textures its method reads (the bin weights, the spectral transform), held for it, and
+ * lets go of those it does not read.
+ */
+function updateFilmColorTextures(
+  m: Pick<ShaderMaterial, 'uniforms'>,
+  s: FilmColorSettings & Pick<FilmSettings, 'illuminant' | 'normalization'>,
+  q: FilmQuality,
+): void {
+  const u = m.uniforms;
+  const binned = s.mode === 'exact' || s.mode === 'fourier';
+  if (binned)
+    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s.nFilm, q, q.exactSpectralBins), m);
+  else {
+    releaseSpectralBinsTexture(m);
+    u.uSpectralBins!.value = null;
+  }
+  if (s.mode === 'fourier') u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, m);
+  else {
+    releaseSpectralTransformTexture(m);
+    u.uSpectralTransform!.value = null;
+  }
+}
+
+/** Frees what a film-colour material holds (call before disposing it). */
+export function releaseFilmColorTextures(m: object): void {
+  releaseSpectralBinsTexture(m);
+  releaseSpectralTransformTexture(m);
+}
+
+/**
+ * The uniforms shaders/film/filmColor.glsl reads in any mode (the light's textures, the table and its
+ * grid, the three media), and the XYZ → working space matrix (eq 19) its users apply.
+ */
+export const filmColorUniforms = (): ShaderMaterial['uniforms'] => ({
+  uSpectralBins: { value: null },
+  uSpectralTransform: { value: null },
+  uFilmTable: { value: null },
+  uTableMaxThicknessNm: { value: 1 },
+  uFilmTableWidth: { value: 1 },
+  uFilmTableRows: { value: 1 },
+  ...filmMediaUniforms(),
+  uXyzToLinearWorking: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
+});
+
+/** Something that binds a film table's texture and grid (FilmTable). */
+export interface FilmTableBinding {
+  bind(uniforms: ShaderMaterial['uniforms']): void;
+}
+
+/**
+ * Brings a film-colour material's uniforms (or any holder of filmColorUniforms) up to `s`: the
+ * light's textures its method reads, the table (`null`: none bound), the three media.
+ */
+export function updateFilmColorUniforms(
+  m: Pick<ShaderMaterial, 'uniforms'>,
+  s: FilmColorSettings & FilmMedia & Pick<FilmSettings, 'illuminant' | 'normalization'>,
+  q: FilmQuality,
+  table: FilmTableBinding | null,
+): void {
+  updateFilmColorTextures(m, s, q);
+  if (table) table.bind(m.uniforms);
+  else m.uniforms.uFilmTable!.value = null;
+  updateFilmMediaUniforms(m.uniforms, s);
+}
