@@ -5,6 +5,7 @@
  * largest thickness (as the bubble's table covers its field's). Used by the parity harness and
  * the benchmark's error columns.
  */
+import { FULLSCREEN_VERTEX } from '../../src/gpu/fullscreenPass.ts';
 import { ShaderMaterial, type WebGLRenderer } from 'three';
 import { filmColorDefines, filmColorUniforms, updateFilmColorUniforms } from '../../src/film/filmColor.ts';
 import { type FilmQuality } from '../../src/settings/filmQuality.ts';
@@ -40,7 +41,7 @@ export class FilmXyzProbe {
     const m = new ShaderMaterial({
       defines,
       uniforms: { uInputs: { value: null }, ...filmColorUniforms() },
-      vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
+      vertexShader: FULLSCREEN_VERTEX,
       fragmentShader: FRAGMENT,
     });
     this.materials.set(key, m);

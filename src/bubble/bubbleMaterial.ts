@@ -1,7 +1,8 @@
 import { type DataTexture, type Matrix3, ShaderMaterial } from 'three';
 import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
-import { FIELDS, type FilmSettings, SIDES } from '../settings/filmSettings.ts';
+import { type FilmSettings, SIDES } from '../settings/filmSettings.ts';
+import { thicknessFieldDefines } from '../fields/thicknessField.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
@@ -12,7 +13,7 @@ import { environmentDefines, environmentUniforms, updateEnvironmentUniforms } fr
 export function bubbleDefines(s: FilmSettings, q: FilmQuality): Record<string, number> {
   return {
     ...filmColorDefines(s, q),
-    ...enumDefines('TFC_THICKNESS_FIELD', FIELDS, s.field),
+    ...thicknessFieldDefines(s),
     ...enumDefines('TFC_SIDES', SIDES, s.sides),
     ...environmentDefines(s),
     TFC_HATCH_OUT_OF_GAMUT: s.space === 'wide-gamut' ? 1 : 0,

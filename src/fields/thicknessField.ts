@@ -1,5 +1,10 @@
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
-import type { FilmSettings } from '../settings/filmSettings.ts';
+import { FIELDS, type FilmSettings } from '../settings/filmSettings.ts';
+import { enumDefines } from '../gpu/enumDefines.ts';
+
+/** The defines of shaders/fields/thicknessField.glsl for the field shown. */
+export const thicknessFieldDefines = (s: Pick<FilmSettings, 'field'>): Record<string, number> =>
+  enumDefines('TFC_THICKNESS_FIELD', FIELDS, s.field);
 
 /** A point on the unit sphere, y up. */
 export type Vec3 = readonly [number, number, number];

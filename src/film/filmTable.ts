@@ -3,9 +3,6 @@ import {
   FloatType,
   HalfFloatType,
   LinearFilter,
-  Mesh,
-  OrthographicCamera,
-  PlaneGeometry,
   RGBAFormat,
   ShaderMaterial,
   type WebGLRenderer,
@@ -24,6 +21,7 @@ import { filmTableWidth } from '../settings/filmTableLayout.ts';
 import { filmTableLayoutDefines } from './filmTableDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
+import { FULLSCREEN_VERTEX, FullscreenPass } from '../gpu/fullscreenPass.ts';
 import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 
@@ -75,8 +73,7 @@ export class FilmTable {
   /** The full grid being built behind a coarse one: its settings and the bands done. */
   private building: { readonly s: FilmSettings; bands: number } | null = null;
   private shownGrid: Grid = { width: 1, rows: 1 };
-  private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
-  private readonly quad = new Mesh(new PlaneGeometry(2, 2));
+  private readonly fullscreen = new FullscreenPass();
   /** The table pass: one program for every polarisation (a uniform), so changing it compiles nothing. */
   private readonly pass = new ShaderMaterial({
     uniforms: {
@@ -90,7 +87,7 @@ export class FilmTable {
       uFilmTableWidth: { value: 1 },
       uFilmTableRows: { value: 1 },
     },
-    vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
+    vertexShader: FULLSCREEN_VERTEX,
     fragmentShader: shaderSource('filmTable.glsl'),
   });
   /**
@@ -208,10 +205,9 @@ export class FilmTable {
     u.uTableMaxThicknessNm!.value = this.maxThicknessNm;
     u.uFilmTableWidth!.value = grid.width;
     u.uFilmTableRows!.value = grid.rows;
-    this.quad.material = material;
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(target);
-    renderer.render(this.quad, this.camera);
+    this.fullscreen.render(renderer, material);
     renderer.readRenderTargetPixels(target, from, 0, 1, 1, type === FloatType ? new Float32Array(4) : new Uint16Array(4));
     renderer.setRenderTarget(previous);
     // The pass reads the light's textures only while it draws: let go of them until the next
@@ -248,10 +244,9 @@ export class FilmTable {
    */
   async prepare(renderer: WebGLRenderer, s: FilmSettings): Promise<void> {
     const bins = spectralBinsFor(s.nFilm, this.quality, this.quality.table.spectralBins);
-    this.quad.material = this.material(s.nFilm, bins);
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(this.coarseTarget); // three picks a program by its target (no tone mapping into a texture)
-    const compiled = renderer.compileAsync(this.quad, this.camera);
+    const compiled = this.fullscreen.compileAsync(renderer, this.material(s.nFilm, bins));
     renderer.setRenderTarget(previous);
     spectralBinsTexture(s.illuminant, s.normalization, bins, this);
     spectralTransformTexture(s.illuminant, s.normalization, this);
@@ -280,7 +275,7 @@ export class FilmTable {
   dispose(): void {
     this.target.dispose();
     this.coarseTarget.dispose();
-    this.quad.geometry.dispose();
+    this.fullscreen.dispose();
     this.pass.dispose();
     this.rows.texture.dispose();
     releaseSpectralBinsTexture(this);

@@ -1,15 +1,5 @@
-import {
-  DataTexture,
-  FloatType,
-  Mesh,
-  NearestFilter,
-  OrthographicCamera,
-  PlaneGeometry,
-  RGBAFormat,
-  type ShaderMaterial,
-  WebGLRenderTarget,
-  type WebGLRenderer,
-} from 'three';
+import { DataTexture, FloatType, NearestFilter, RGBAFormat, type ShaderMaterial, WebGLRenderTarget, type WebGLRenderer } from 'three';
+import { FullscreenPass } from './fullscreenPass.ts';
 
 /** One row of RGBA float texels, read by texelFetch (no filtering): a shader's per-case inputs. */
 export function floatRowTexture(rgba: readonly (readonly number[])[]): DataTexture {
@@ -21,21 +11,19 @@ export function floatRowTexture(rgba: readonly (readonly number[])[]): DataTextu
   return texture;
 }
 
-const camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
-
 /**
  * Draws `material` over a row of `count` float pixels and reads them back (RGBA per pixel, no
  * colour conversion): how the parity checks see a shader's own numbers.
  */
 export function renderFloatRow(renderer: WebGLRenderer, material: ShaderMaterial, count: number): Float32Array {
-  const quad = new Mesh(new PlaneGeometry(2, 2), material);
+  const pass = new FullscreenPass();
   const target = new WebGLRenderTarget(count, 1, { type: FloatType, format: RGBAFormat, depthBuffer: false });
   renderer.setRenderTarget(target);
-  renderer.render(quad, camera);
+  pass.render(renderer, material);
   const out = new Float32Array(4 * count);
   renderer.readRenderTargetPixels(target, 0, 0, count, 1, out);
   renderer.setRenderTarget(null);
   target.dispose();
-  quad.geometry.dispose();
+  pass.dispose();
   return out;
 }

@@ -2,8 +2,10 @@
  * Renders shaders/fields/thicknessField.glsl's thicknessAt at given points of the unit sphere into a
  * float target and reads it back, one pixel per point (the parity harness's thickness twin check).
  */
+import { FULLSCREEN_VERTEX } from '../../../src/gpu/fullscreenPass.ts';
 import { ShaderMaterial, type WebGLRenderer } from 'three';
-import { FIELDS, type FilmSettings } from '../../../src/settings/filmSettings.ts';
+import type { FilmSettings } from '../../../src/settings/filmSettings.ts';
+import { thicknessFieldDefines } from '../../../src/fields/thicknessField.ts';
 import { floatRowTexture, renderFloatRow } from '../../../src/gpu/floatRow.ts';
 import { shaderSource } from '../../../src/gpu/shaderSource.ts';
 
@@ -23,7 +25,7 @@ export function renderThickness(
 ): number[] {
   const texture = floatRowTexture(points.map((p) => [...p, 0]));
   const material = new ShaderMaterial({
-    defines: { TFC_THICKNESS_FIELD: FIELDS.indexOf(s.field) },
+    defines: thicknessFieldDefines(s),
     uniforms: {
       uPoints: { value: texture },
       uThicknessNm: { value: s.thicknessNm },
@@ -31,7 +33,7 @@ export function renderThickness(
       uSwirlSpeed: { value: s.swirlSpeed },
       uTimeSeconds: { value: s.timeSeconds },
     },
-    vertexShader: 'void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }',
+    vertexShader: FULLSCREEN_VERTEX,
     fragmentShader: FRAGMENT,
   });
   const out = renderFloatRow(renderer, material, points.length);

@@ -1,23 +1,5 @@
-import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS } from '../../../src/settings/viewParameters.ts';
-
-/** The README's parameter table: name → default column (names in one cell share a list of defaults). */
-function readmeDefaults(): Map<string, string> {
-  const readme = readFileSync(new URL('../../../README.md', import.meta.url), 'utf8');
-  const start = readme.indexOf('| parameter | values | default | meaning |');
-  const table = readme.slice(start, readme.indexOf('\n\n', start));
-  const defaults = new Map<string, string>();
-  for (const line of table.split('\n')) {
-    const cells = line.split('|').map((c) => c.trim());
-    if (cells.length < 5 || !cells[1]!.startsWith('`')) continue;
-    const names = [...cells[1]!.matchAll(/`([^`]+)`/g)].map((m) => m[1]!);
-    const values = cells[3]!.split(/,\s(?=\S)/).map((v) => v.replaceAll('`', ''));
-    if (names.length === values.length) names.forEach((n, i) => defaults.set(n, values[i]!));
-    else if (names.length === 1) defaults.set(names[0]!, cells[3]!.replaceAll('`', ''));
-  }
-  return defaults;
-}
 
 describe('the parameter schema', () => {
   it('names each parameter once in the URL, as an attribute and in the colour tool', () => {
@@ -37,12 +19,6 @@ describe('the parameter schema', () => {
       expect(row.read(row.defaultText), row.url).toEqual({ [row.key]: DEFAULT_VIEW_SETTINGS[row.key] });
       expect(row.write(DEFAULT_VIEW_SETTINGS), row.url).toBe(row.defaultText);
     }
-  });
-
-  it('has the defaults the README documents, for every parameter it documents', () => {
-    const documented = readmeDefaults();
-    expect(new Set(documented.keys())).toEqual(new Set(VIEW_PARAMETERS.map((r) => r.url)));
-    for (const row of VIEW_PARAMETERS) expect(row.defaultText, row.url).toBe(documented.get(row.url));
   });
 
   it('gives every slider the range the URL accepts: both ends read, one step beyond is refused', () => {

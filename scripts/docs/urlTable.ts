@@ -1,0 +1,24 @@
+/**
+ * The README's table of the demo's URL parameters, generated from the schema (VIEW_PARAMETERS:
+ * the same rows the URL parser, the element's attributes, the panel and the usage texts come
+ * from), so the table cannot drift from what the page accepts. `npm run docs` writes it between
+ * the README's markers; a unit test checks the README holds exactly this.
+ */
+import { VIEW_PARAMETERS } from '../../src/settings/viewParameters.ts';
+
+const cell = (text: string): string => text.replaceAll('|', '\\|');
+
+export function urlTableMarkdown(): string {
+  const rows = VIEW_PARAMETERS.map((r) => `| \`${r.url}\` | ${cell(r.label)} | ${cell(r.expected)} | \`${cell(r.defaultText)}\` |`);
+  return ['| parameter | what it sets | accepts | default |', '|---|---|---|---|', ...rows].join('\n');
+}
+
+/** `text` with the lines between `<!-- name -->` and `<!-- /name -->` replaced by `content`. */
+export function withBlock(text: string, name: string, content: string): string {
+  const open = `<!-- ${name} -->`;
+  const close = `<!-- /${name} -->`;
+  const start = text.indexOf(open);
+  const end = text.indexOf(close);
+  if (start < 0 || end < start) throw new Error(`README.md has no ${open} … ${close} block`);
+  return `${text.slice(0, start + open.length)}\n${content}\n${text.slice(end)}`;
+}
