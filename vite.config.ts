@@ -53,7 +53,8 @@ export default defineConfig(({ mode }): UserConfig => {
         emptyOutDir: false, // the types are written beside them
         chunkSizeWarningLimit: 800,
         lib: { entry: LIBRARY_ENTRIES, formats: ['es'] },
-        rolldownOptions: { external: [/^three($|\/)/] },
+        // Class and function names kept (`ThinFilmMaterial`, `ParameterError` in a stack trace and in `.name`).
+        rolldownOptions: { external: [/^three($|\/)/], output: { keepNames: true } },
       },
     };
   if (mode !== 'element') return site(SITE_PAGES, 'dist');

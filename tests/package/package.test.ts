@@ -36,7 +36,7 @@ describe('the packed library in a fresh project', () => {
       const files = packed[0]!.files.map((f) => f.path);
       expect(files).toContain('dist-lib/material.js');
       expect(files).toContain('dist-lib/types/lib/physics.d.ts');
-      expect(files.filter((f) => !f.startsWith('dist-lib/') && f !== 'package.json' && f !== 'README.md')).toEqual([]);
+      expect(files.filter((f) => !f.startsWith('dist-lib/') && !['package.json', 'README.md', 'LICENSE'].includes(f))).toEqual([]);
 
       const project = join(dir, 'project');
       mkdirSync(project);
@@ -93,6 +93,7 @@ describe('the packed library in a fresh project', () => {
       expect(out.uniforms).toEqual(expect.arrayContaining(['uNFilm', 'uSpectralTransform', 'uXyzToLinearWorking']));
       expect(out.upgraded).toBe(1);
       expect(out.refused).toBe('mode');
+      expect(out.names).toEqual(['ThinFilmMaterial', 'ParameterError', 'spectralIridescence', 'filmXyz', 'ThinFilmMaterial']);
     },
     PACK_TIMEOUT_MS,
   );
