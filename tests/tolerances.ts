@@ -104,3 +104,9 @@ export const DISPERSIVE_REFERENCE_DE00 = 0.01;
  * shader's fixed-grid goal, which float32 and the table's interpolation must also fit in.
  */
 export const DISPERSIVE_BINNED_DE00 = 0.1;
+
+/**
+ * The beams of Figure 1 summed one by one (to 1e-16 of E_inc, up to thousands of terms near
+ * |r_ba r_bc e^{iφ}| = 1) against the closed form: the rounding of many terms stays far below this.
+ */
+export const BEAM_SUM_TOL = 1e-9;

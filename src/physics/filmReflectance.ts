@@ -77,9 +77,15 @@ function airyTerms(ab: Complex[], ba: Complex[], bc: Complex[]): AiryTerms {
   return { rab, multiple: cMul(cMul(tab, tba), rbc), roundTrip: cMul(rba, rbc), through: cMul(tab, tbc) };
 }
 
-const pick = (c: InterfaceCoefficients, pol: 's' | 'p'): Complex[] => (pol === 's' ? [c.rs, c.ts] : [c.rp, c.tp]);
-/** The paper's amplitude average, eqs (4) and (8). */
-const average = (c: InterfaceCoefficients): Complex[] => [cScale(cAdd(c.rs, c.rp), 0.5), cScale(cAdd(c.ts, c.tp), 0.5)];
+/** One polarisation channel of an interface: s, p, or the paper's amplitude average of the two (eqs 4, 8). */
+export type Channel = 's' | 'p' | 'paper';
+
+/** [r, t] of one channel of an interface: its s or p coefficients, or in `paper` their averages (eqs 4, 8). */
+export const channelCoefficients = (c: InterfaceCoefficients, channel: Channel): Complex[] =>
+  channel === 'paper' ? [cScale(cAdd(c.rs, c.rp), 0.5), cScale(cAdd(c.ts, c.tp), 0.5)] : channel === 's' ? [c.rs, c.ts] : [c.rp, c.tp];
+
+/** The channels whose reflectances a polarisation averages: [s, p] for unpolarized, one otherwise. */
+export const channelsOf = (polarization: Polarization): Channel[] => (polarization === 'unpolarized' ? ['s', 'p'] : [polarization]);
 
 /**
  * A zero-thickness film in the physical channels (s, p): the bare a|c interface. This is eq (13)'s
@@ -116,8 +122,7 @@ export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpol
   const fluxRatio = cos > 0 ? (nc * cosT.re) / (na * cosI.re) : noInterface ? 1 : 0;
   const opticalPathNm = cScale(cosR, 2 * nb * d);
 
-  const kinds: ('s' | 'p' | 'paper')[] = polarization === 'unpolarized' ? ['s', 'p'] : [polarization === 'paper' ? 'paper' : polarization];
-  const select = (c: InterfaceCoefficients, kind: 's' | 'p' | 'paper') => (kind === 'paper' ? average(c) : pick(c, kind));
+  const kinds = channelsOf(polarization);
 
   const ab = fresnelCoefficients(na, cosI, nb, cosR);
   const ba = fresnelCoefficients(nb, cosR, na, cosI);
@@ -125,7 +130,9 @@ export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpol
   const ac = d === 0 ? fresnelCoefficients(na, cosI, nc, cosT) : null;
   return {
     channels: kinds.map((k) =>
-      ac && k !== 'paper' ? bareInterface(select(ac, k)) : airyTerms(select(ab, k), select(ba, k), select(bc, k)),
+      ac && k !== 'paper'
+        ? bareInterface(channelCoefficients(ac, k))
+        : airyTerms(channelCoefficients(ab, k), channelCoefficients(ba, k), channelCoefficients(bc, k)),
     ),
     opticalPathNm,
     fluxRatio,
