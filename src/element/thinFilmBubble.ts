@@ -15,6 +15,15 @@ import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.t
  * `--tfb-*-start` properties). A horizontal drag on the stage moves the probe, a vertical one
  * scrolls the page.
  */
+/** While the swirl animates, the probe's film is read (and `probechange` sent) at most this often. */
+const PROBE_INTERVAL_MS = 250;
+
+/** The film at the bubble's probe: what `probechange` carries. */
+export interface ProbedFilm {
+  readonly thicknessNm: number;
+  readonly angleDeg: number;
+}
+
 const STYLE = `
 thin-film-bubble { display: block; position: relative; width: 100%; height: 360px; background: #111; color: #eee; overflow: hidden;
   container: tfb / inline-size; }
@@ -53,7 +62,9 @@ function addElementStyles(doc: Document): void {
  * `plots` (show the plots). It sizes to its CSS box, draws nothing while off screen or in a
  * hidden page, and frees its GPU resources when removed. A bad attribute is named, with its
  * range, in a message inside the element, and its default (or last good) value is kept.
- * Events: `change` (detail: { settings, query }) when its panel or a press on the bubble changes the view.
+ * Events: `change` (detail: { settings, query }) when its panel or a press on the bubble changes the view;
+ * `probechange` (detail: { thicknessNm, angleDeg }) when the film at the probe changes (after a
+ * complete frame; while the swirl animates, at most every PROBE_INTERVAL_MS), also read as `probeReading`.
  */
 export class ThinFilmBubble extends HTMLElement {
   static readonly observedAttributes = [...VIEW_PARAMETERS.map((row) => row.attribute), 'controls', 'plots'];
@@ -62,6 +73,14 @@ export class ThinFilmBubble extends HTMLElement {
   private messages: HTMLElement | null = null;
   /** Whether the element is built (live, or as the CPU image without WebGL2). */
   private built = false;
+  private probed: ProbedFilm | null = null;
+  /** What the last probe reading was taken of (the view's film settings and the probe), and when. */
+  private probedOf: readonly [unknown, unknown, number] = [null, null, -Infinity];
+
+  /** The film at the probe as last drawn: its thickness and θ_i (null before a frame, off the bubble, or without WebGL2). */
+  get probeReading(): ProbedFilm | null {
+    return this.probed;
+  }
 
   /**
    * The shared renderer's live GPU objects (three's renderer.info), for pages that watch memory;
@@ -124,7 +143,9 @@ export class ThinFilmBubble extends HTMLElement {
         },
         // Frames that show the settings in full (not from a coarse table) are counted.
         onFrame: (complete) => {
-          if (complete) this.dataset.frames = String(Number(this.dataset.frames ?? 0) + 1);
+          if (!complete) return;
+          this.dataset.frames = String(Number(this.dataset.frames ?? 0) + 1);
+          this.readProbe(view);
         },
         onChange: (s) => {
           this.dispatchEvent(new CustomEvent('change', { detail: { settings: s, query: settingsToQuery(s) } }));
@@ -134,10 +155,24 @@ export class ThinFilmBubble extends HTMLElement {
     );
   }
 
+  /** Reads the film at the probe when the film or the probe changed since the last reading, and says so (`probechange`). */
+  private readProbe(view: BubbleView): void {
+    const { probe, animate, field } = this.app?.current ?? DEFAULT_VIEW_SETTINGS;
+    const [film, at, ms] = this.probedOf;
+    const now = performance.now();
+    if (at === probe && (film === view.current || (animate && field === 'swirl' && now - ms < PROBE_INTERVAL_MS))) return;
+    this.probedOf = [view.current, probe, now];
+    const reading = view.probe(probe[0], probe[1]);
+    this.probed = reading && { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg };
+    if (this.probed) this.dispatchEvent(new CustomEvent('probechange', { detail: this.probed }));
+  }
+
   disconnectedCallback(): void {
     if (!this.built) return;
     this.built = false;
     this.replaceChildren();
+    this.probed = null;
+    this.probedOf = [null, null, -Infinity];
     if (!this.app) return;
     this.app.dispose();
     this.app = null;

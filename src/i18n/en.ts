@@ -33,6 +33,7 @@ export const EN = {
   'diagram.mediumA': 'medium a: n_a = {n}',
   'diagram.mediumB': 'medium b (film, d = {thickness} nm): n_b = {n}',
   'diagram.mediumC': 'medium c: n_c = {n}',
+  'diagram.drawnAngle': 'the angles are drawn at {angle}° so the beams stay apart',
   'diagram.incident': 'incident light',
   'diagram.evanescent': 'evanescent in the film',
   'diagram.refractedEvanescent': 'complex (total internal reflection: the wave in the film is evanescent)',
@@ -59,7 +60,8 @@ export const EN = {
   'diagram.summary': 'R = {reflectance} at λ = {wavelength} nm ({polarization}).',
   'diagram.summaryBeams': '{count} beams drawn; the rest of the series adds at most {bound} of the incident amplitude.',
   'diagram.summaryTail': '{count} beams drawn; the rest, at most {bound} of the incident amplitude, is added in closed form (eq 13).',
-  'diagram.summaryDiverges': '{count} beams drawn; here the series does not converge (|r_ba r_bc e^{iφ}| = 1), so E is the closed form of eq 13.',
+  'diagram.summaryDiverges':
+    '{count} beams drawn; here the series does not converge (|r_ba r_bc e^{iφ}| = 1), so E is the closed form of eq 13.',
   'diagram.summaryNoEntry': 'No light enters the film (grazing incidence): only E0 is reflected.',
   'diagram.error.number': '{attribute}={value} is not allowed: expected a number from {min} to {max}{unit}.',
   'diagram.error.choice': '{attribute}={value} is not allowed: expected one of {choices}.',

@@ -33,6 +33,7 @@ export const JA: Catalogue = {
   'diagram.mediumA': '媒質 a：n_a = {n}',
   'diagram.mediumB': '媒質 b（薄膜、d = {thickness} nm）：n_b = {n}',
   'diagram.mediumC': '媒質 c：n_c = {n}',
+  'diagram.drawnAngle': '反射光が重ならないよう、角度は {angle}° で描いている',
   'diagram.incident': '入射光',
   'diagram.evanescent': '薄膜内はエバネッセント波',
   'diagram.refractedEvanescent': '複素数（全反射：薄膜内の波はエバネッセント波）',
@@ -58,7 +59,8 @@ export const JA: Catalogue = {
   'diagram.summary': '反射率 R = {reflectance}（波長 λ = {wavelength} nm、{polarization}）。',
   'diagram.summaryBeams': '反射光を {count} 本描いた。残りの項の和は入射光の振幅の {bound} 以下である。',
   'diagram.summaryTail': '反射光を {count} 本描いた。残りの項（入射光の振幅の {bound} 以下）は式 (13) の閉じた形で加えている。',
-  'diagram.summaryDiverges': '反射光を {count} 本描いた。ここでは級数が収束しない（|r_ba r_bc e^{iφ}| = 1）ので、E は式 (13) の閉じた形による。',
+  'diagram.summaryDiverges':
+    '反射光を {count} 本描いた。ここでは級数が収束しない（|r_ba r_bc e^{iφ}| = 1）ので、E は式 (13) の閉じた形による。',
   'diagram.summaryNoEntry': '光は薄膜に入らない（すれすれの入射）：反射光は E0 だけである。',
   'diagram.error.number': '{attribute}={value} は使えない：{min} から {max}{unit} までの数値を指定すること。',
   'diagram.error.choice': '{attribute}={value} は使えない：{choices} のいずれかを指定すること。',

@@ -23,13 +23,16 @@ describe('the text catalogues', () => {
     for (const [key, text] of Object.entries(JA)) {
       const words = (text.replace(MARKS, '').match(/[A-Za-z]+/g) ?? []).filter((w) => w.length > 2 && !SYMBOLS.has(w));
       expect(words, key).toEqual([]);
-      expect(/[\u3000-\u30ff\u4e00-\u9fff\uff00-\uffef]/.test(text) || text.replace(MARKS, '').length <= 4, `${key} has no Japanese`).toBe(true);
+      expect(/[\u3000-\u30ff\u4e00-\u9fff\uff00-\uffef]/.test(text) || text.replace(MARKS, '').length <= 4, `${key} has no Japanese`).toBe(
+        true,
+      );
     }
   });
 
   it("use the paper's terms", () => {
     const all = Object.values(JA).join('');
-    for (const term of ['薄膜干渉', '膜厚', '屈折率', '入射角', '反射率', '等色関数', '色空間', '光源', '偏光']) expect(all).toContain(term);
+    for (const term of ['薄膜干渉', '膜厚', '屈折率', '入射角', '反射率', '等色関数', '色空間', '光源', '偏光'])
+      expect(all).toContain(term);
   });
 
   it('are chosen by a lang value, English for a language without one, and fill in marks', () => {

@@ -1,0 +1,85 @@
+import { type Complex, cAbs2, cAdd } from '../physics/complex.ts';
+import type { ChannelBeams } from '../physics/reflectedBeams.ts';
+import type { Catalogue } from '../i18n/en.ts';
+import { message } from '../i18n/messages.ts';
+import { complexText, fourFigures } from './numberText.ts';
+import { svg } from './svgNodes.ts';
+
+const SIZE = 200;
+const MARGIN = 22;
+/** Arrows shorter than this (SVG units) are drawn without a head, which would hide them. */
+const MIN_HEAD_LENGTH = 4;
+/** The beams' colours in turn, all dark enough for text contrast on white. */
+const COLORS = ['#b03a00', '#1f4fbf', '#2f6b1f', '#7a2a8c', '#8a5a00', '#005f73'];
+
+/**
+ * One channel's phasor diagram (eq 13 in the complex plane): E_0, E_1, … head to tail from the
+ * origin, the closed-form tail where beams were left out, and the resultant E, with |E|² = R.
+ */
+export function drawPhasorFigure(
+  figure: SVGSVGElement,
+  channel: ChannelBeams,
+  channelName: string,
+  catalogue: Catalogue,
+  ids: { title: string; desc: string; marker: string },
+): void {
+  const doc = figure.ownerDocument;
+  const el = <K extends keyof SVGElementTagNameMap>(
+    tag: K,
+    attrs: Record<string, string | number> = {},
+    text?: string,
+    parent: Element = figure,
+  ) => parent.appendChild(svg(doc, tag, attrs, text));
+  figure.replaceChildren();
+  figure.setAttribute('viewBox', `0 0 ${SIZE} ${SIZE}`);
+  const { beams, total } = channel.beams;
+  const reflectance = cAbs2(total);
+  el('title', { id: ids.title }, message(catalogue, 'diagram.phasorTitle', { channel: channelName }));
+  el(
+    'desc',
+    { id: ids.desc },
+    message(catalogue, 'diagram.phasorDescription', { total: complexText(total), reflectance: fourFigures(reflectance) }),
+  );
+
+  const heads: Complex[] = [{ re: 0, im: 0 }];
+  for (const e of beams) heads.push(cAdd(heads[heads.length - 1]!, e));
+  const all = [...heads, total];
+  const extent = Math.max(1e-12, ...all.map((p) => Math.max(Math.abs(p.re), Math.abs(p.im))));
+  const scale = (SIZE / 2 - MARGIN) / extent;
+  const at = (p: Complex) => [SIZE / 2 + p.re * scale, SIZE / 2 - p.im * scale] as const;
+
+  const defs = el('defs');
+  const marker = el(
+    'marker',
+    { id: ids.marker, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 5, markerHeight: 5, orient: 'auto-start-reverse' },
+    undefined,
+    defs,
+  );
+  el('path', { d: 'M 0 0 L 10 5 L 0 10 z', fill: '#1b1b1b' }, undefined, marker);
+  el('line', { x1: 4, y1: SIZE / 2, x2: SIZE - 4, y2: SIZE / 2, stroke: '#777', 'stroke-width': 0.6 });
+  el('line', { x1: SIZE / 2, y1: SIZE - 14, x2: SIZE / 2, y2: 4, stroke: '#777', 'stroke-width': 0.6 });
+  el('text', { x: SIZE - 4, y: SIZE / 2 - 3, 'font-size': 8, 'text-anchor': 'end', fill: '#1b1b1b' }, 'Re');
+  el('text', { x: SIZE / 2 + 3, y: 10, 'font-size': 8, fill: '#1b1b1b' }, 'Im');
+
+  const arrow = (from: Complex, to: Complex, attrs: Record<string, string | number>) => {
+    const [x1, y1] = at(from);
+    const [x2, y2] = at(to);
+    const head: Record<string, string> = Math.hypot(x2 - x1, y2 - y1) >= MIN_HEAD_LENGTH ? { 'marker-end': `url(#${ids.marker})` } : {};
+    return el('line', { x1, y1, x2, y2, 'stroke-linecap': 'round', ...head, ...attrs });
+  };
+  beams.forEach((e, n) => {
+    const line = arrow(heads[n]!, heads[n + 1]!, { stroke: COLORS[n % COLORS.length]!, 'stroke-width': 1.6, 'data-beam': n });
+    line.appendChild(svg(doc, 'title', {}, `E${n} = ${complexText(e)}`));
+    if (n < 3) {
+      const [x, y] = at({ re: (heads[n]!.re + heads[n + 1]!.re) / 2, im: (heads[n]!.im + heads[n + 1]!.im) / 2 });
+      el('text', { x: x + 3, y: y - 3, 'font-size': 8, fill: COLORS[n % COLORS.length]! }, `E${n}`);
+    }
+  });
+  const reached = heads[heads.length - 1]!;
+  const leftOut = Math.sqrt(cAbs2({ re: total.re - reached.re, im: total.im - reached.im }));
+  if (leftOut * scale >= 1) arrow(reached, total, { stroke: '#555', 'stroke-width': 1, 'stroke-dasharray': '1.5 1.5' });
+  arrow({ re: 0, im: 0 }, total, { stroke: '#1b1b1b', 'stroke-width': 1.2, 'stroke-dasharray': '4 2', 'data-total': '' });
+  const [ex, ey] = at(total);
+  el('text', { x: ex + 4, y: ey + 10, 'font-size': 9, 'font-weight': 'bold', fill: '#1b1b1b' }, 'E');
+  el('text', { x: 4, y: SIZE - 4, 'font-size': 9, fill: '#1b1b1b' }, `${channelName}: |E|² = R = ${fourFigures(reflectance)}`);
+}
