@@ -69,7 +69,7 @@ export function drawBeamFigure(figure: SVGSVGElement, input: BeamFigureInput, id
   const step = 2 * film * tanR;
   const back = SURFACE_Y + film;
 
-  const refracted = evanescent ? cat['diagram.refractedEvanescent'] : `${settingText(Math.acos(cosRefracted.re) / DEG)}°`;
+  const refracted = evanescent ? cat['diagram.evanescent'] : `${(Math.acos(cosRefracted.re) / DEG).toFixed(1)}°`;
   el('title', { id: ids.title }, cat['diagram.figureTitle']);
   el(
     'desc',
@@ -91,22 +91,22 @@ export function drawBeamFigure(figure: SVGSVGElement, input: BeamFigureInput, id
   el('rect', { x: 0, y: SURFACE_Y, width: WIDTH, height: film, fill: '#fbe3bd' });
   el('rect', { x: 0, y: back, width: WIDTH, height: HEIGHT - back, fill: '#e9f3e4' });
   const text = (x: number, y: number, content: string, attrs: Record<string, string | number> = {}) =>
-    el('text', { x, y, 'font-size': 9, fill: '#1b1b1b', ...attrs }, content);
+    el('text', { x, y, 'font-size': 10, fill: '#1b1b1b', ...attrs }, content);
   text(4, 12, message(cat, 'diagram.mediumA', { n: settingText(stack.nOutside) }));
-  text(
-    4,
-    film >= 16 ? SURFACE_Y + film / 2 + 3 : back + 11,
-    message(cat, 'diagram.mediumB', { n: settingText(stack.nFilm), thickness: settingText(stack.thicknessNm) }),
-  );
+  // Under the film: θ_ri on the left, the film's own label on the right, then total reflection at the back.
+  text(4, back + 13, `θri = ${refracted}`);
+  text(WIDTH - 4, back + 27, message(cat, 'diagram.mediumB', { n: settingText(stack.nFilm), thickness: settingText(stack.thicknessNm) }), {
+    'text-anchor': 'end',
+  });
   text(4, HEIGHT - 5, message(cat, 'diagram.mediumC', { n: settingText(stack.nInside) }));
   if (flipTop) text(WIDTH - 4, 12, cat['diagram.flipTopNote'], { 'text-anchor': 'end', fill: '#8a1c00', 'font-weight': 'bold' });
-  if (drawnDeg !== stack.angleDeg || evanescent)
-    text(WIDTH - 4, 24, message(cat, 'diagram.drawnAngle', { angle: settingText(drawnDeg) }), { 'text-anchor': 'end', 'font-size': 7.5 });
+  if (drawnDeg !== stack.angleDeg)
+    text(WIDTH - 4, 24, message(cat, 'diagram.drawnAngle', { angle: settingText(drawnDeg) }), { 'text-anchor': 'end', 'font-size': 8.5 });
 
   // The normal, the incident ray and the angles.
-  el('line', { x1: X0, y1: SURFACE_Y - 70, x2: X0, y2: back + 18, stroke: '#555', 'stroke-dasharray': '3 3', 'stroke-width': 0.7 });
+  el('line', { x1: X0, y1: SURFACE_Y - 70, x2: X0, y2: back + 4, stroke: '#555', 'stroke-dasharray': '3 3', 'stroke-width': 0.7 });
   el('line', { x1: X0 - RAY * sinI, y1: SURFACE_Y - RAY * cosI, x2: X0, y2: SURFACE_Y, stroke: '#1b1b1b', 'stroke-width': 2.5 });
-  text(X0 - RAY * sinI + 4, SURFACE_Y - RAY * cosI + 4, cat['diagram.incident'], { 'font-size': 8 });
+  text(X0 - RAY * sinI, SURFACE_Y - RAY * cosI - 5, cat['diagram.incident'], { 'font-size': 9 });
   const arc = 24;
   el('path', {
     d: `M ${X0} ${SURFACE_Y - arc} A ${arc} ${arc} 0 0 0 ${X0 - arc * sinI} ${SURFACE_Y - arc * cosI}`,
@@ -122,7 +122,6 @@ export function drawBeamFigure(figure: SVGSVGElement, input: BeamFigureInput, id
     stroke: '#1b1b1b',
     'stroke-width': 0.8,
   });
-  text(X0 - 4, back + 11, `θri = ${evanescent ? cat['diagram.evanescent'] : refracted}`, { 'text-anchor': 'end' });
 
   // The path through the film, and Δ between E0 and E1 (the path in the film minus its projection in a).
   const zigzag = Array.from({ length: 2 * last + 1 }, (_, k) => `${X0 + (k * step) / 2},${k % 2 ? back : SURFACE_Y}`);
@@ -149,11 +148,11 @@ export function drawBeamFigure(figure: SVGSVGElement, input: BeamFigureInput, id
   }
   text(
     WIDTH - 4,
-    HEIGHT - 5,
+    HEIGHT - 20,
     message(cat, evanescent ? 'diagram.opticalPathEvanescent' : 'diagram.opticalPath', { delta: complexText(delta) }),
     { 'text-anchor': 'end', fill: '#1f4fbf' },
   );
-  if (!evanescent && cosTransmitted.im !== 0) text(WIDTH - 4, back + 11, cat['diagram.backTotalReflection'], { 'text-anchor': 'end' });
+  if (!evanescent && cosTransmitted.im !== 0) text(WIDTH - 4, back + 41, cat['diagram.backTotalReflection'], { 'text-anchor': 'end' });
 
   // The reflected beams, each as wide as its amplitude, with its amplitude written along it.
   const strongest = Math.max(...magnitudes, Number.MIN_VALUE);
@@ -178,9 +177,9 @@ export function drawBeamFigure(figure: SVGSVGElement, input: BeamFigureInput, id
     if (!withFormula && spacing < 7 && n > 0 && n !== last) return;
     const label = el('text', {
       transform: `translate(${x + 10 * sinI + (width / 2 + 2) * cosI} ${SURFACE_Y - 10 * cosI + (width / 2 + 2) * sinI}) rotate(${drawnDeg - 90})`,
-      'font-size': 8,
+      'font-size': 9,
       fill: '#1b1b1b',
-      dy: 7,
+      dy: 8,
     });
     label.append(...formulaNodes(doc, withFormula ? `${beamName(n)} = ${beamFormula(n, flipTop)}` : beamName(n), true));
   });

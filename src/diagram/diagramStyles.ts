@@ -11,7 +11,7 @@ thin-film-diagram .tfd-controls label.tfd-check { flex-direction: row; align-ite
 thin-film-diagram input, thin-film-diagram select { font: inherit; color: inherit; }
 thin-film-diagram input[type='range'] { width: 100%; }
 thin-film-diagram :focus-visible { outline: 3px solid #1f4fbf; outline-offset: 2px; }
-thin-film-diagram svg { display: block; width: 100%; height: auto; user-select: text; }
+thin-film-diagram svg { display: block; width: 100%; max-width: 640px; height: auto; user-select: text; }
 thin-film-diagram figure { margin: 6px 0; }
 thin-film-diagram .tfd-phasors { display: flex; flex-wrap: wrap; gap: 8px; }
 thin-film-diagram .tfd-phasors svg { flex: 1 1 170px; max-width: 300px; border: 1px solid #ddd; }

@@ -81,5 +81,6 @@ export function drawPhasorFigure(
   arrow({ re: 0, im: 0 }, total, { stroke: '#1b1b1b', 'stroke-width': 1.2, 'stroke-dasharray': '4 2', 'data-total': '' });
   const [ex, ey] = at(total);
   el('text', { x: ex + 4, y: ey + 10, 'font-size': 9, 'font-weight': 'bold', fill: '#1b1b1b' }, 'E');
-  el('text', { x: 4, y: SIZE - 4, 'font-size': 9, fill: '#1b1b1b' }, `${channelName}: |E|² = R = ${fourFigures(reflectance)}`);
+  el('text', { x: 4, y: SIZE - 15, 'font-size': 8, fill: '#1b1b1b' }, channelName);
+  el('text', { x: 4, y: SIZE - 4, 'font-size': 9, fill: '#1b1b1b' }, `|E|² = R = ${fourFigures(reflectance)}`);
 }
