@@ -24,7 +24,8 @@ async function plainPage(page: Page, body: string, lang = 'en'): Promise<void> {
   await page.locator('thin-film-diagram .tfd-summary').first().waitFor();
 }
 
-const reflectanceOf = (page: Page) => page.locator('thin-film-diagram').evaluate((e) => (e as HTMLElement & { reflectance: number }).reflectance);
+const reflectanceOf = (page: Page) =>
+  page.locator('thin-film-diagram').evaluate((e) => (e as HTMLElement & { reflectance: number }).reflectance);
 const soap = (thicknessNm: number, angleDeg: number): FilmStack => ({ nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm, angleDeg });
 
 test('the diagram renders the golden film, follows its attributes, and names a bad one with its range as text', async ({ page }) => {
@@ -79,7 +80,10 @@ test('for= follows the probe of a bubble: its thickness and angle set the diagra
   const followed = () =>
     page.evaluate(() => {
       const bubble = document.getElementById('b') as HTMLElement & { probeReading: { thicknessNm: number; angleDeg: number } | null };
-      const d = document.querySelector('thin-film-diagram') as HTMLElement & { settings: { thicknessNm: number; angleDeg: number }; reflectance: number };
+      const d = document.querySelector('thin-film-diagram') as HTMLElement & {
+        settings: { thicknessNm: number; angleDeg: number };
+        reflectance: number;
+      };
       return { probe: bubble.probeReading, shown: d.settings, reflectance: d.reflectance };
     });
   await expect.poll(async () => (await followed()).shown.thicknessNm).toBe(450);
@@ -92,7 +96,9 @@ test('for= follows the probe of a bubble: its thickness and angle set the diagra
   const rim = await followed();
   expect(rim.shown).toMatchObject(rim.probe!);
   expect(Math.abs(rim.reflectance - filmReflectance(500, soap(450, rim.shown.angleDeg)))).toBeLessThan(1e-9);
-  console.log(`probe at the centre: θi ${centre.shown.angleDeg.toFixed(3)}°, R ${centre.reflectance}; near the rim: θi ${rim.shown.angleDeg.toFixed(2)}°`);
+  console.log(
+    `probe at the centre: θi ${centre.shown.angleDeg.toFixed(3)}°, R ${centre.reflectance}; near the rim: θi ${rim.shown.angleDeg.toFixed(2)}°`,
+  );
 
   await expect(page.locator('thin-film-diagram').nth(1).locator('.tfd-errors')).toContainText('for="nowhere"');
   expect(problems).toEqual([]);

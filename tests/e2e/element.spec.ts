@@ -130,6 +130,7 @@ test('the built teaching page shows all its bubbles without an error', async ({ 
     await expect(bubbles.nth(i)).toHaveAttribute('data-frames', /\d+/);
   }
   await expect(page.locator('.tfb-plots')).toHaveAttribute('data-probe', /bubble$/);
+  await expect(page.locator('thin-film-diagram')).toHaveAttribute('data-reflectance', /^0\.\d+/);
   expect(problems).toEqual([]);
 });
 
