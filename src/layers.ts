@@ -4,7 +4,7 @@
  * of one layer know nothing of each other. docs/architecture.md draws the same order.
  */
 export const SOURCE_LAYERS: readonly (readonly string[])[] = [
-  ['physics'], // the float64 reference and its data: no DOM, no three.js
+  ['physics', 'i18n'], // the float64 reference and its data: no DOM, no three.js; the texts of every language
   ['settings'], // the schema of every user-facing parameter, and the film's quality knobs
   ['gpu'], // three.js plumbing: shader source, defines, shared resources, the fullscreen pass
   ['fields', 'film'], // the film's thickness over the bubble; the film's colour on the GPU
@@ -12,6 +12,6 @@ export const SOURCE_LAYERS: readonly (readonly string[])[] = [
   ['material', 'twins'], // the material for any three.js mesh; the CPU twins of the bubble's shaders
   ['scene'], // the bubble's view: renderer, frame loop, probe
   ['plots'], // the plots of the film at the probe
-  ['app'], // the demo's app: panel, settings in the URL, messages
+  ['app', 'diagram'], // the demo's app: panel, settings in the URL, messages; the SVG diagram of the reflected beams
   ['element', 'pages', 'lib', 'cli'], // entries: the custom element, the pages, the library, the command line
 ];

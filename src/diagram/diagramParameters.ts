@@ -4,9 +4,9 @@ import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
 import { type NumberDomain, quoted } from '../physics/validate.ts';
 import type { Catalogue, MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
-import { FILM_PARAMETERS } from '../render/filmParameters.ts';
-import type { FilmSettings } from '../render/filmSettings.ts';
-import { type ParameterRow, defaultsOf, numberRow } from '../render/parameterRow.ts';
+import { FILM_PARAMETERS } from '../settings/filmParameters.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
+import { type ParameterRow, defaultsOf, numberRow } from '../settings/parameterRow.ts';
 
 /** What <thin-film-diagram> shows: one film at one wavelength. */
 export interface DiagramSettings {

@@ -4,7 +4,7 @@ import { stackAt } from '../physics/filmIndex.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { BEAM_TAIL_FRACTION, type FilmBeams, filmBeams } from '../physics/reflectedBeams.ts';
 import { isInDomain, quoted } from '../physics/validate.ts';
-import type { ProbedFilm } from '../element/thinFilmBubble.ts';
+import type { ProbedFilm } from '../scene/probe.ts';
 import { drawBeamFigure } from './beamFigure.ts';
 import { fillBeamTable } from './beamTable.ts';
 import { type DiagramControls, buildDiagramControls, polarizationName } from './diagramControls.ts';

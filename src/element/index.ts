@@ -5,7 +5,8 @@
 import { defineThinFilmDiagram } from '../diagram/thinFilmDiagram.ts';
 import { defineThinFilmBubble } from './thinFilmBubble.ts';
 
-export { ThinFilmBubble, type ProbedFilm, defineThinFilmBubble } from './thinFilmBubble.ts';
+export { ThinFilmBubble, defineThinFilmBubble } from './thinFilmBubble.ts';
+export type { ProbedFilm } from '../scene/probe.ts';
 export { ThinFilmDiagram, defineThinFilmDiagram } from '../diagram/thinFilmDiagram.ts';
 defineThinFilmBubble();
 defineThinFilmDiagram();

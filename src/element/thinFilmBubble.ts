@@ -5,6 +5,7 @@ import { parseSettings, settingsToQuery } from '../settings/settingsQuery.ts';
 import { startsClosed } from '../app/startsClosed.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
+import type { ProbedFilm } from '../scene/probe.ts';
 import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
 
 /**
@@ -17,12 +18,6 @@ import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.t
  */
 /** While the swirl animates, the probe's film is read (and `probechange` sent) at most this often. */
 const PROBE_INTERVAL_MS = 250;
-
-/** The film at the bubble's probe: what `probechange` carries. */
-export interface ProbedFilm {
-  readonly thicknessNm: number;
-  readonly angleDeg: number;
-}
 
 const STYLE = `
 thin-film-bubble { display: block; position: relative; width: 100%; height: 360px; background: #111; color: #eee; overflow: hidden;

@@ -23,6 +23,9 @@ export interface ProbeReading {
   readonly renderedXyz: Xyz;
 }
 
+/** The film at the probe without the GPU's colour: what a bubble's `probechange` event carries. */
+export type ProbedFilm = Pick<ProbeReading, 'thicknessNm' | 'angleDeg'>;
+
 const UNIT_SPHERE = new Sphere(new Vector3(), 1);
 
 /**
