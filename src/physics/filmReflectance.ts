@@ -14,7 +14,7 @@ import {
 } from './complex.ts';
 import { type InterfaceCoefficients, fresnelCoefficients } from './fresnel.ts';
 import { cosDeg, refractedCos } from './snell.ts';
-import { type NumberDomain, ParameterError, assertInRange, expectedNumber, isInDomain } from './validate.ts';
+import { type NumberDomain, ParameterError, assertInRange, isInDomain } from './validate.ts';
 
 /**
  * How the two polarisations are combined:
@@ -71,9 +71,16 @@ export const complexIndexText = (n: Complex): string => `${n.re}${n.im < 0 ? '-'
 
 /** What is wrong with a complex index (null: nothing), in words a message can quote. */
 export function complexIndexProblem(n: Complex): string | null {
-  const { n: nDomain, k: kDomain } = COMPLEX_INDEX_DOMAIN;
-  if (!isInDomain(n.re, nDomain)) return `n is ${String(n.re)}; expected n ${expectedNumber(nDomain)}`;
-  if (!isInDomain(n.im, kDomain)) return `k is ${String(n.im)}; expected k ${expectedNumber(kDomain)} (k ≥ 0: the medium absorbs)`;
+  for (const [name, value, domain] of [
+    ['n', n.re, COMPLEX_INDEX_DOMAIN.n],
+    ['k', n.im, COMPLEX_INDEX_DOMAIN.k],
+  ] as const) {
+    const v: number = value;
+    if (isInDomain(v, domain)) continue;
+    if (!Number.isFinite(v)) return `${name} is not a finite number`;
+    const gain = name === 'k' && v < 0 ? ' (k < 0 would be a medium with gain)' : '';
+    return `${name} is ${String(v)}, ${v < domain.min ? `below ${domain.min}` : `above ${domain.max}`}${gain}`;
+  }
   return null;
 }
 

@@ -2,7 +2,6 @@ import { type RefractiveIndex, realIndex } from './complex.ts';
 import {
   type DispersiveFilmStack,
   FILM_INDEX_EXPECTED,
-  FILM_MATERIALS,
   type FilmIndex,
   assertFilmIndex,
   filmIndexAt,
@@ -14,7 +13,7 @@ import {
 } from './filmIndex.ts';
 import { type AbsorbingFilmStack, COMPLEX_INDEX_DOMAIN, FILM_STACK_DOMAIN, complexIndexProblem } from './filmReflectance.ts';
 import { NAMED_MEDIA, NAMED_MEDIUM_INDEX, type NamedMedium, isNamedMedium } from './namedMedia.ts';
-import { ParameterError, expectedNumber, parseDecimal, quoted } from './validate.ts';
+import { ParameterError, expectedNumber, parseDecimal } from './validate.ts';
 
 /**
  * What a film or the inside is made of (docs/physics.md#absorbing-media):
@@ -67,13 +66,11 @@ export function mediumText(m: Medium): string {
   return isNamedMedium(m) ? m : filmIndexText(m);
 }
 
-const COMPLEX_EXPECTED =
-  `complex:n,k (ñ = n + ik, n ${expectedNumber(COMPLEX_INDEX_DOMAIN.n)}, ` + `k ${expectedNumber(COMPLEX_INDEX_DOMAIN.k)}: k ≥ 0 absorbs)`;
-
 /** What a role accepts, as every refusal states it. */
 export function mediumExpected(role: MediumRole): string {
-  if (role === 'outside') return `${expectedNumber(FILM_STACK_DOMAIN.nOutside)} (the outside is transparent: a real constant index)`;
-  return `${FILM_INDEX_EXPECTED}, ${NAMED_MEDIA.join(', ')}, or ${COMPLEX_EXPECTED}`;
+  if (role === 'outside') return expectedNumber(FILM_STACK_DOMAIN.nOutside);
+  const { n, k } = COMPLEX_INDEX_DOMAIN;
+  return `${FILM_INDEX_EXPECTED}; ${NAMED_MEDIA.join(', ')}; or complex:n,k (ñ = n + ik, n in [${n.min}, ${n.max}], k in [${k.min}, ${k.max}])`;
 }
 
 /** The medium a text writes (`complex:n,k`, a name, or what parseFilmIndexText reads), whatever its range, or null. */
@@ -102,7 +99,7 @@ export function mediumFromJson(value: unknown): Medium | null {
 export function mediumProblem(m: Medium, role: MediumRole): string | null {
   if (role === 'outside') {
     const { min, max } = FILM_STACK_DOMAIN.nOutside;
-    if (typeof m !== 'number') return 'the outside medium must be transparent with a constant real index';
+    if (typeof m !== 'number') return 'the outside is transparent: a constant real index';
     return m >= min && m <= max ? null : `n is ${m}, outside [${min}, ${max}]`;
   }
   if (isComplexConstant(m)) {
@@ -120,22 +117,17 @@ export function assertMedium(name: string, m: Medium, role: MediumRole): void {
   if (problem) throw new ParameterError(name, `${name}: ${mediumText(m)} is not allowed (${problem}); expected ${mediumExpected(role)}`);
 }
 
-/** The checked medium of a text for a role, or why it is refused (quoting the text). */
-export function readMedium(text: string, role: MediumRole): { readonly medium: Medium } | { readonly problem: string } {
+/** The checked medium of a text for a role, or why it is refused (null: the text is no medium at all; `mediumExpected` says what is). */
+export function readMedium(text: string, role: MediumRole): { readonly medium: Medium } | { readonly problem: string | null } {
   const medium = parseMediumText(text);
-  if (medium === null) {
-    const what =
-      role === 'outside'
-        ? 'a number'
-        : `a number, a material (${[...FILM_MATERIALS, ...NAMED_MEDIA].join(', ')}), cauchy:A,B[,C] or complex:n,k`;
-    return { problem: `${quoted(text)} is not ${what}` };
-  }
+  if (medium === null) return { problem: null };
   const problem = mediumProblem(medium, role);
   return problem ? { problem } : { medium };
 }
 
 /** An index as JSON reports it: a number when real (k = 0), { n, k } when it absorbs. */
-export function indexJson(index: RefractiveIndex): number | { readonly n: number; readonly k: number } {
+export type IndexJson = number | { readonly n: number; readonly k: number };
+export function indexJson(index: RefractiveIndex): IndexJson {
   const real = realIndex(index);
   return real ?? { n: (index as { re: number }).re, k: (index as { im: number }).im };
 }
