@@ -41,6 +41,7 @@ export function monotoneCubic(xs: readonly number[], ys: readonly number[]): (x:
     if (t === 1) return ys[i + 1]!;
     const t2 = t * t;
     const t3 = t2 * t;
-    return (2 * t3 - 3 * t2 + 1) * ys[i]! + (t3 - 2 * t2 + t) * hi * m[i]! + (-2 * t3 + 3 * t2) * ys[i + 1]! + (t3 - t2) * hi * m[i + 1]!;
+    // y_i + Δy·(3t² − 2t³) + h·(m_i(t³ − 2t² + t) + m_{i+1}(t³ − t²)): a flat segment gives y_i exactly.
+    return ys[i]! + (ys[i + 1]! - ys[i]!) * (3 * t2 - 2 * t3) + hi * (m[i]! * (t3 - 2 * t2 + t) + m[i + 1]! * (t3 - t2));
   };
 }
