@@ -118,5 +118,5 @@ export const GOLD_GOLDEN_TOL = 5e-7;
 /** A table value given to 4 significant digits (the Rakić model's tabulation): half a unit of the 4th, relative. */
 export const FOUR_DIGIT_REL_TOL = 1e-4;
 
-/** A 1 nm table sampled every 10 nm: what the monotone cubic leaves between its rows (measured 1.6e-5 for the TiO2 film). */
+/** A 1 nm table sampled every 10 nm: what the monotone cubic leaves between its rows (TiO2 film: 4.1e-5 at 385 nm near the absorption edge, under 1e-6 from 450 nm). */
 export const TABLE_SUBSAMPLE_TOL = 5e-5;
