@@ -110,3 +110,19 @@ export const DISPERSIVE_BINNED_DE00 = 0.1;
  * |r_ba r_bc e^{iφ}| = 1) against the closed form: the rounding of many terms stays far below this.
  */
 export const BEAM_SUM_TOL = 1e-9;
+
+/**
+ * Eqs (13)–(14) with complex indices against a characteristic-matrix computation: the same
+ * physics by other algebra (matrix products, sin/cos of a complex phase), so rounding only
+ * (measured 2.2e-13 on the test's 12 600 cases, 89.9° and metals included).
+ */
+export const TMM_TOL = 1e-12;
+
+/** The gold golden value is given to 6 decimals (docs/physics.md#absorbing-media). */
+export const GOLD_GOLDEN_TOL = 5e-7;
+
+/** A table value given to 4 significant digits (the Rakić model's tabulation): half a unit of the 4th, relative. */
+export const FOUR_DIGIT_REL_TOL = 1e-4;
+
+/** A 1 nm table sampled every 10 nm: what the monotone cubic leaves between its rows (TiO2 film: 4.1e-5 at 385 nm near the absorption edge, under 1e-6 from 450 nm). */
+export const TABLE_SUBSAMPLE_TOL = 5e-5;

@@ -1,12 +1,15 @@
-import {
-  type DispersiveFilmStack,
-  FILM_INDEX_EXPECTED,
-  type FilmIndex,
-  filmIndexFromJson,
-  filmIndexProblem,
-} from '../physics/filmIndex.ts';
 import { FILM_STACK_DOMAIN, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
+import {
+  type Medium,
+  type MediumRole,
+  type MediumStack,
+  mediumExpected,
+  mediumFromJson,
+  mediumProblem,
+  mediumRangeNm,
+  mediumText,
+} from '../physics/medium.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { isInDomain, type NumberDomain, oneOf, rejectValue, expectedNumber } from '../physics/validate.ts';
 import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../settings/filmParameters.ts';
@@ -14,7 +17,7 @@ import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../settings/filmParameters.ts
 /** One film to colour: what the command line or one entry of a cases file describes. */
 export interface ColorCase {
   readonly id: string | number;
-  readonly stack: DispersiveFilmStack;
+  readonly stack: MediumStack;
   readonly illuminant: IlluminantSpec;
   readonly polarization: Polarization;
   readonly normalization: Normalization;
@@ -29,15 +32,21 @@ export interface ColorCase {
 export const NUMBER_FIELDS = {
   thicknessNm: { ...FILM_STACK_DOMAIN.thicknessNm, fallback: 500 },
   angleDeg: { ...FILM_STACK_DOMAIN.angleDeg, fallback: 0 },
-  nOutside: { ...FILM_STACK_DOMAIN.nOutside, fallback: SOAP_FILM_IN_AIR.nOutside },
-  nInside: { ...FILM_STACK_DOMAIN.nInside, fallback: SOAP_FILM_IN_AIR.nInside },
 } as const satisfies Record<string, NumberDomain & { fallback: number }>;
 export type NumberField = keyof typeof NUMBER_FIELDS;
+
+/** The media of a case (medium.ts), each with its role and default: soap film in air. */
+export const MEDIUM_FIELDS = {
+  nOutside: { role: 'outside', fallback: SOAP_FILM_IN_AIR.nOutside },
+  nInside: { role: 'inside', fallback: SOAP_FILM_IN_AIR.nInside },
+  nFilm: { role: 'film', fallback: SOAP_FILM_IN_AIR.nFilm },
+} as const satisfies Record<string, { role: MediumRole; fallback: Medium }>;
+export type MediumField = keyof typeof MEDIUM_FIELDS;
 
 export const CASE_FIELDS = [
   'id',
   ...(Object.keys(NUMBER_FIELDS) as NumberField[]),
-  'nFilm',
+  ...(Object.keys(MEDIUM_FIELDS) as MediumField[]),
   'illuminant',
   'polarization',
   'normalization',
@@ -68,7 +77,8 @@ const SHARED_FLAGS: readonly CaseFlag[] = FILM_PARAMETERS.flatMap((row) =>
           flag: row.cli,
           field: row.key as CaseFlag['field'],
           label: row.label,
-          expected: row.expected,
+          // The colour tool takes absorbing media too (the view's schema does not yet).
+          expected: row.key in MEDIUM_FIELDS ? mediumExpected(MEDIUM_FIELDS[row.key as MediumField].role) : row.expected,
           defaultText: row.key in NUMBER_FIELDS ? String(NUMBER_FIELDS[row.key as NumberField].fallback) : row.defaultText,
         },
       ],
@@ -108,19 +118,20 @@ export function validateColorCase(raw: RawCase, index: number, nameOf: (field: C
     return isInDomain(value, d) ? value : rejectValue(nameOf(field), value, expectedNumber(d));
   };
   const orDefault = (field: CaseField, fallback: string) => (raw[field] === undefined ? fallback : raw[field]);
+  const stack: MediumStack = {
+    nOutside: validateMedium(raw.nOutside, 'nOutside', nameOf('nOutside')) as number,
+    nFilm: validateMedium(raw.nFilm, 'nFilm', nameOf('nFilm')),
+    nInside: validateMedium(raw.nInside, 'nInside', nameOf('nInside')),
+    thicknessNm: number('thicknessNm'),
+    angleDeg: number('angleDeg'),
+  };
   return {
     id: validateId(raw.id, index, nameOf('id')),
-    stack: {
-      nOutside: number('nOutside'),
-      nFilm: validateFilmIndex(raw.nFilm, nameOf('nFilm')),
-      nInside: number('nInside'),
-      thicknessNm: number('thicknessNm'),
-      angleDeg: number('angleDeg'),
-    },
+    stack,
     illuminant: raw.illuminant === undefined ? DEFAULT_SETTINGS.illuminant : illuminantFromJson(raw.illuminant, nameOf('illuminant')),
     polarization: oneOf(nameOf('polarization'), orDefault('polarization', DEFAULT_SETTINGS.polarization), POLARIZATIONS),
     normalization: oneOf(nameOf('normalization'), orDefault('normalization', DEFAULT_SETTINGS.normalization), NORMALIZATIONS),
-    wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm')),
+    wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm'), stack),
   };
 }
 
@@ -133,20 +144,37 @@ function validateId(id: unknown, index: number, name: string): string | number {
   return isValidId(id) ? id : rejectValue(name, id, `a string of at most ${MAX_ID_CHARS} characters or a number`);
 }
 
-/** A film index: a number, a material's name or { cauchy: [A, B(, C)] } (filmIndex.ts), within its domain over the band. */
-function validateFilmIndex(value: unknown, name: string): FilmIndex {
-  if (value === undefined) return SOAP_FILM_IN_AIR.nFilm;
-  const index = filmIndexFromJson(value);
-  if (index === null) return rejectValue(name, value, FILM_INDEX_EXPECTED);
-  const problem = filmIndexProblem(index);
-  return problem === null ? index : rejectValue(name, value, `${FILM_INDEX_EXPECTED} (here ${problem})`);
+/**
+ * A medium (medium.ts): a number, a material's name, { cauchy: [A, B(, C)] } or { complex: [n, k] },
+ * allowed in its role (the outside: a real constant in its domain). The outside comes back a number.
+ */
+function validateMedium(value: unknown, field: MediumField, name: string): Medium {
+  const { role, fallback } = MEDIUM_FIELDS[field];
+  if (value === undefined) return fallback;
+  const medium = mediumFromJson(value);
+  if (medium === null) return rejectValue(name, value, mediumExpected(role));
+  const problem = mediumProblem(medium, role);
+  return problem === null ? medium : rejectValue(name, value, `${mediumExpected(role)} (here ${problem})`);
 }
 
-function validateWavelengths(value: unknown, name: string): readonly number[] {
+/**
+ * Wavelengths within WAVELENGTH_DOMAIN_NM and within the range of every medium's source (a metal's
+ * table ends near 368 nm, so R(300 nm) on gold has no data behind it).
+ */
+function validateWavelengths(value: unknown, name: string, stack: MediumStack): readonly number[] {
   if (value === undefined) return [];
-  const expected = expectedNumber(WAVELENGTH_DOMAIN_NM);
+  let domain = WAVELENGTH_DOMAIN_NM;
+  let why = '';
+  for (const field of ['nFilm', 'nInside'] as const) {
+    const range = mediumRangeNm(stack[field]);
+    if (range && (range.min > domain.min || range.max < domain.max)) {
+      domain = { ...domain, min: Math.max(domain.min, range.min), max: Math.min(domain.max, range.max) };
+      why = ` (where ${field} ${mediumText(stack[field])} has data)`;
+    }
+  }
+  const expected = `${expectedNumber(domain)}${why}`;
   if (!Array.isArray(value)) return rejectValue(name, value, `an array of numbers, each ${expected}`);
   if (value.length > MAX_WAVELENGTHS) return rejectValue(name, value, `at most ${MAX_WAVELENGTHS} wavelengths`);
-  value.forEach((v: unknown, i) => isInDomain(v, WAVELENGTH_DOMAIN_NM) || rejectValue(`${name}[${i}]`, v, expected));
+  value.forEach((v: unknown, i) => isInDomain(v, domain) || rejectValue(`${name}[${i}]`, v, expected));
   return value as number[];
 }

@@ -8,8 +8,8 @@ import {
   encode8,
   mapToGamut,
 } from '../physics/colorConversions.ts';
-import { filmIndexAt } from '../physics/filmIndex.ts';
 import type { IlluminantSpec } from '../physics/illuminants.ts';
+import { type IndexJson, indexJson, mediumIndexAt } from '../physics/medium.ts';
 import { dispersiveReflectance, filmXyz } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 import type { ColorCase } from './colorCase.ts';
@@ -31,8 +31,10 @@ export interface CaseColor {
   readonly displayP3_8: Rgb;
   /** R(λ) at each of the case's `wavelengthsNm`, eqs (1)–(14). */
   readonly reflectance: readonly number[];
-  /** n_b(λ), the film's index, at each of the case's `wavelengthsNm`. */
-  readonly nFilm: readonly number[];
+  /** ñ_b(λ), the film's index, at each of the case's `wavelengthsNm`: a number when real, { n, k } when it absorbs. */
+  readonly nFilm: readonly IndexJson[];
+  /** ñ_c(λ), the inside's index, the same way. */
+  readonly nInside: readonly IndexJson[];
 }
 
 /** 8-bit codes of a linear colour after mapping it into [0, 1] (Y is the luminance it keeps). */
@@ -55,6 +57,7 @@ export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
     linearWideGamut: applyMatrix3(XYZ_TO_LINEAR_WIDE_GAMUT, xyz),
     displayP3_8: to8Bit(applyMatrix3(XYZ_TO_LINEAR_DISPLAY_P3, xyz), xyz[1], gamut),
     reflectance: c.wavelengthsNm.map((lambdaNm) => dispersiveReflectance(lambdaNm, c.stack, c.polarization)),
-    nFilm: c.wavelengthsNm.map((lambdaNm) => filmIndexAt(c.stack.nFilm, lambdaNm)),
+    nFilm: c.wavelengthsNm.map((lambdaNm) => indexJson(mediumIndexAt(c.stack.nFilm, lambdaNm))),
+    nInside: c.wavelengthsNm.map((lambdaNm) => indexJson(mediumIndexAt(c.stack.nInside, lambdaNm))),
   };
 }

@@ -1,5 +1,6 @@
 import type { Rgb } from '../physics/colorConversions.ts';
 import { illuminantKey } from '../physics/illuminants.ts';
+import { type IndexJson } from '../physics/medium.ts';
 import type { ColorCase } from './colorCase.ts';
 import type { CaseColor } from './computeCaseColor.ts';
 
@@ -24,7 +25,13 @@ export const jsonLines = (rows: readonly object[]): string =>
 
 const channels = (name: string) => [`${name}R`, `${name}G`, `${name}B`];
 
-/** A table as CSV: a header line, then one line per row; R(λ) columns are named `R_<λ>nm`, n_b(λ) columns `nFilm_<λ>nm`. */
+/** n and k of an index as JSON reports it (k = 0 for a real one). */
+const nk = (index: IndexJson): [number, number] => (typeof index === 'number' ? [index, 0] : [index.n, index.k]);
+
+/**
+ * A table as CSV: a header line, then one line per row; R(λ) columns are named `R_<λ>nm`, the film's
+ * ñ_b(λ) = n + ik columns `nFilm_<λ>nm` and `kFilm_<λ>nm`, the inside's `nInside_<λ>nm` and `kInside_<λ>nm`.
+ */
 export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly number[]): string {
   const header = [
     'id',
@@ -42,6 +49,9 @@ export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly numb
     ...channels('displayP3_8'),
     ...wavelengthsNm.map((l) => `R_${l}nm`),
     ...wavelengthsNm.map((l) => `nFilm_${l}nm`),
+    ...wavelengthsNm.map((l) => `kFilm_${l}nm`),
+    ...wavelengthsNm.map((l) => `nInside_${l}nm`),
+    ...wavelengthsNm.map((l) => `kInside_${l}nm`),
   ];
   const line = (r: TableRow) =>
     [
@@ -57,7 +67,10 @@ export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly numb
       ...r.linearWideGamut,
       ...r.displayP3_8,
       ...r.reflectance,
-      ...r.nFilm,
+      ...r.nFilm.map((i) => nk(i)[0]),
+      ...r.nFilm.map((i) => nk(i)[1]),
+      ...r.nInside.map((i) => nk(i)[0]),
+      ...r.nInside.map((i) => nk(i)[1]),
     ].join(',');
   return `${[header.join(','), ...rows.map(line)].join('\n')}\n`;
 }

@@ -1,12 +1,14 @@
 import { parseArgs } from 'node:util';
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
-import { FILM_INDEX_EXPECTED, readFilmIndex } from '../physics/filmIndex.ts';
 import { ILLUMINANT_EXPECTED, parseIlluminant } from '../physics/illuminants.ts';
+import { mediumExpected, readMedium } from '../physics/medium.ts';
 import { describeValue, oneOf, ParameterError, rejectValue, expectedNumber } from '../physics/validate.ts';
 import {
   CASE_FLAGS,
   type CaseField,
   type ColorCase,
+  MEDIUM_FIELDS,
+  type MediumField,
   NUMBER_FIELDS,
   type NumberField,
   WAVELENGTH_DOMAIN_NM,
@@ -178,9 +180,11 @@ function flagValue(field: Exclude<CaseField, 'id'>, flag: string, text: string):
     return text.split(',').map((part, i) => parseStrictNumber(`${flag}[${i}]`, part, expected));
   }
   if (field === 'illuminant') return parseIlluminant(text) ?? rejectValue(flag, text, ILLUMINANT_EXPECTED);
-  if (field === 'nFilm') {
-    const reading = readFilmIndex(text);
-    return 'index' in reading ? reading.index : rejectValue(flag, text, `${FILM_INDEX_EXPECTED} (here ${reading.problem})`);
+  if (field in MEDIUM_FIELDS) {
+    const { role } = MEDIUM_FIELDS[field as MediumField];
+    const reading = readMedium(text, role);
+    if ('medium' in reading) return reading.medium;
+    return rejectValue(flag, text, `${mediumExpected(role)}${reading.problem === null ? '' : ` (here ${reading.problem})`}`);
   }
   return text;
 }

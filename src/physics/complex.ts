@@ -40,3 +40,34 @@ export function cExpI(z: Complex): Complex {
   const m = Math.exp(-z.im);
   return { re: m * Math.cos(z.re), im: m * Math.sin(z.re) };
 }
+
+/** The principal square root (Re ≥ 0), formed without cancellation. */
+export function cSqrt(z: Complex): Complex {
+  if (z.re === 0 && z.im === 0) return { re: 0, im: 0 };
+  const m = Math.sqrt((Math.abs(z.re) + Math.hypot(z.re, z.im)) / 2);
+  return z.re >= 0 ? { re: m, im: z.im / (2 * m) } : { re: Math.abs(z.im) / (2 * m), im: z.im >= 0 ? m : -m };
+}
+
+/**
+ * A refractive index at one wavelength: a real n, or ñ = n + ik with k ≥ 0 for an absorbing medium
+ * (docs/physics.md#absorbing-media). A complex value with k = 0 is the real index n, bit for bit.
+ */
+export type RefractiveIndex = number | Complex;
+
+/** ñ as a complex number. */
+export const asComplex = (n: RefractiveIndex): Complex => (typeof n === 'number' ? { re: n, im: 0 } : n);
+
+/** The real index n when there is no absorption (k = 0), else null. */
+export const realIndex = (n: RefractiveIndex): number | null => (typeof n === 'number' ? n : n.im === 0 ? n.re : null);
+
+/** z · n: a real scale where n is real (so the real path is unchanged), a complex product otherwise. */
+export function cTimesIndex(z: Complex, n: RefractiveIndex): Complex {
+  const real = realIndex(n);
+  return real === null ? cMul(z, n as Complex) : cScale(z, real);
+}
+
+/** Whether two indices are the same number (n and k). */
+export const sameIndex = (a: RefractiveIndex, b: RefractiveIndex): boolean => {
+  const [x, y] = [asComplex(a), asComplex(b)];
+  return x.re === y.re && x.im === y.im;
+};

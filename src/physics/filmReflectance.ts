@@ -1,7 +1,20 @@
-import { type Complex, cAbs2, cAdd, cDiv, cExpI, cMul, cScale, cSub } from './complex.ts';
+import {
+  type Complex,
+  type RefractiveIndex,
+  cAbs2,
+  cAdd,
+  cDiv,
+  cExpI,
+  cMul,
+  cScale,
+  cSub,
+  cTimesIndex,
+  realIndex,
+  sameIndex,
+} from './complex.ts';
 import { type InterfaceCoefficients, fresnelCoefficients } from './fresnel.ts';
 import { cosDeg, refractedCos } from './snell.ts';
-import { type NumberDomain, assertInRange } from './validate.ts';
+import { type NumberDomain, ParameterError, assertInRange, isInDomain } from './validate.ts';
 
 /**
  * How the two polarisations are combined:
@@ -23,6 +36,16 @@ export interface FilmStack {
   /** θ_i in degrees, 0 ≤ θ ≤ 90 */ readonly angleDeg: number;
 }
 
+/**
+ * The same stack with a film and an inside that may absorb (ñ = n + ik, docs/physics.md#absorbing-media),
+ * each a real index within FILM_STACK_DOMAIN or ñ within COMPLEX_INDEX_DOMAIN. The outside, where the
+ * light comes from and returns to, stays transparent.
+ */
+export interface AbsorbingFilmStack extends Omit<FilmStack, 'nFilm' | 'nInside'> {
+  readonly nFilm: RefractiveIndex;
+  readonly nInside: RefractiveIndex;
+}
+
 /** The domain of each field of a FilmStack: what every entry point checks and filmOptics enforces. */
 export const FILM_STACK_DOMAIN = {
   nOutside: { min: 1, max: 4, unit: '' },
@@ -32,11 +55,46 @@ export const FILM_STACK_DOMAIN = {
   angleDeg: { min: 0, max: 90, unit: 'degrees' },
 } as const satisfies Record<keyof FilmStack, NumberDomain>;
 
+/**
+ * The domain of a complex index ñ = n + ik (film or inside): n > 0 (metals have n well below 1;
+ * the floor keeps cos θ = (ñ cos θ)/ñ finite) and 0 ≤ k (absorbing, never gain). The upper ends
+ * are far past any tabulated material (k ≈ 9 for aluminium at 830 nm) and leave room for the
+ * perfect-conductor limit k → ∞.
+ */
+export const COMPLEX_INDEX_DOMAIN = {
+  n: { min: 0.01, max: 10, unit: '' },
+  k: { min: 0, max: 100, unit: '' },
+} as const satisfies Record<'n' | 'k', NumberDomain>;
+
+/** ñ as messages write it: `0.43+2.455i`. */
+export const complexIndexText = (n: Complex): string => `${n.re}${n.im < 0 ? '-' : '+'}${Math.abs(n.im)}i`;
+
+/** What is wrong with a complex index (null: nothing), in words a message can quote. */
+export function complexIndexProblem(n: Complex): string | null {
+  for (const [name, value, domain] of [
+    ['n', n.re, COMPLEX_INDEX_DOMAIN.n],
+    ['k', n.im, COMPLEX_INDEX_DOMAIN.k],
+  ] as const) {
+    const v: number = value;
+    if (isInDomain(v, domain)) continue;
+    if (!Number.isFinite(v)) return `${name} is not a finite number`;
+    const gain = name === 'k' && v < 0 ? ' (k < 0 would be a medium with gain)' : '';
+    return `${name} is ${String(v)}, ${v < domain.min ? `below ${domain.min}` : `above ${domain.max}`}${gain}`;
+  }
+  return null;
+}
+
 /** Throws a ParameterError naming the first field outside FILM_STACK_DOMAIN (NaN and ±Infinity included). */
-export function assertFilmStack(stack: FilmStack): void {
+export function assertFilmStack(stack: AbsorbingFilmStack): void {
   for (const field of Object.keys(FILM_STACK_DOMAIN) as (keyof FilmStack)[]) {
     const { min, max, unit } = FILM_STACK_DOMAIN[field];
-    assertInRange(field, stack[field], min, max, unit);
+    const value = stack[field];
+    if (typeof value === 'number') {
+      assertInRange(field, value, min, max, unit);
+      continue;
+    }
+    const problem = complexIndexProblem(value);
+    if (problem) throw new ParameterError(field, `${field}: ${complexIndexText(value)} is not allowed (${problem})`);
   }
 }
 
@@ -61,9 +119,9 @@ export interface AiryTerms {
 export interface FilmOptics {
   /** Channels whose reflectances are averaged: [s, p] for unpolarized, one otherwise. */
   readonly channels: readonly AiryTerms[];
-  /** Δ = 2 n_b d cos θ_r in nm, the reduced form of eq (12); complex past the critical angle. */
+  /** Δ = 2 n_b d cos θ_r in nm, the reduced form of eq (12); complex past the critical angle or in an absorbing film. */
   readonly opticalPathNm: Complex;
-  /** Re(n_c cos θ_t) / (n_a cos θ_i), the ratio of normal energy fluxes for T (its limit at grazing). */
+  /** Re(n_c cos θ_t) / (n_a cos θ_i), the ratio of normal energy fluxes for T (its limit at grazing); 0 for an absorbing inside. */
   readonly fluxRatio: number;
 }
 
@@ -108,7 +166,7 @@ const bareInterface = ([r, t]: Complex[]): AiryTerms => ({
  * the optical path difference Δ (eq 12, reduced to 2 n_b d cos θ_r). A stack outside
  * FILM_STACK_DOMAIN throws a ParameterError before anything is computed.
  */
-export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpolarized'): FilmOptics {
+export function filmOptics(stack: AbsorbingFilmStack, polarization: Polarization = 'unpolarized'): FilmOptics {
   assertFilmStack(stack);
   const { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: d } = stack;
   const cos = cosDeg(stack.angleDeg);
@@ -118,9 +176,13 @@ export function filmOptics(stack: FilmStack, polarization: Polarization = 'unpol
   // At exact grazing incidence no energy crosses any real interface (R = 1); only where there is
   // no interface at all (n_c = n_a and the film absent or index-matched) does the light go on. The
   // paper mode keeps eq (13) at d = 0, whose t_ab = 0 at grazing reflects everything there too.
-  const noInterface = na === nc && ((d === 0 && polarization !== 'paper') || na === nb);
-  const fluxRatio = cos > 0 ? (nc * cosT.re) / (na * cosI.re) : noInterface ? 1 : 0;
-  const opticalPathNm = cScale(cosR, 2 * nb * d);
+  // An absorbing inside is opaque: what crosses into it is absorbed there, so T = 0.
+  const noInterface = sameIndex(na, nc) && ((d === 0 && polarization !== 'paper') || sameIndex(na, nb));
+  const ncReal = realIndex(nc);
+  const fluxRatio = ncReal === null ? 0 : cos > 0 ? (ncReal * cosT.re) / (na * cosI.re) : noInterface ? 1 : 0;
+  // Δ = 2 ñ_b d cos θ_r, complex for an absorbing film (Im Δ > 0: the round trip's attenuation).
+  const realFilm = realIndex(nb);
+  const opticalPathNm = realFilm === null ? cScale(cTimesIndex(cosR, nb), 2 * d) : cScale(cosR, 2 * realFilm * d);
 
   const kinds = channelsOf(polarization);
 
@@ -175,11 +237,11 @@ export function transmittanceAt(optics: FilmOptics, lambdaNm: number): number {
 }
 
 /** R(λ; n_a, n_b, n_c, d, θ_i): eqs (1)–(14) in one call. */
-export const filmReflectance = (lambdaNm: number, stack: FilmStack, polarization: Polarization = 'unpolarized') =>
+export const filmReflectance = (lambdaNm: number, stack: AbsorbingFilmStack, polarization: Polarization = 'unpolarized') =>
   reflectanceAt(filmOptics(stack, polarization), lambdaNm);
 
 /** T(λ; n_a, n_b, n_c, d, θ_i), the transmitted fraction. */
-export const filmTransmittance = (lambdaNm: number, stack: FilmStack, polarization: Polarization = 'unpolarized') =>
+export const filmTransmittance = (lambdaNm: number, stack: AbsorbingFilmStack, polarization: Polarization = 'unpolarized') =>
   transmittanceAt(filmOptics(stack, polarization), lambdaNm);
 
 /**

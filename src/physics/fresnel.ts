@@ -1,4 +1,4 @@
-import { type Complex, cAdd, cDiv, cScale, cSub } from './complex.ts';
+import { type Complex, type RefractiveIndex, cAdd, cDiv, cScale, cSub, cTimesIndex, sameIndex } from './complex.ts';
 
 /** Amplitude coefficients of one interface, medium 1 → medium 2. */
 export interface InterfaceCoefficients {
@@ -23,17 +23,18 @@ const NO_INTERFACE: InterfaceCoefficients = {
  *   t^s = 2 n1 cos θ1 / (n1 cos θ1 + n2 cos θ2)                  eq (9)
  *   t^p = 2 n1 cos θ1 / (n1 cos θ2 + n2 cos θ1)                  eq (10)
  * The reverse interface (2 → 1) is the same call with the media swapped.
- * Cosines are complex (see snell.ts), so total internal reflection gives |r| = 1.
+ * Cosines are complex (see snell.ts), so total internal reflection gives |r| = 1; the indices may
+ * be complex too, ñ = n + ik (docs/physics.md#absorbing-media), and the formulas hold unchanged.
  * Equal indices are no interface at all (r = 0, t = 1), also at grazing incidence where the
  * formulas would read 0/0; for unequal indices the denominators never vanish.
- * Domain: n1, n2 ≥ 1; cosines from `refractedCos`.
+ * Domain: the indices and cosines of `refractedCos`.
  */
-export function fresnelCoefficients(n1: number, cos1: Complex, n2: number, cos2: Complex): InterfaceCoefficients {
-  if (n1 === n2) return NO_INTERFACE;
-  const n1c1 = cScale(cos1, n1);
-  const n2c2 = cScale(cos2, n2);
-  const n2c1 = cScale(cos1, n2);
-  const n1c2 = cScale(cos2, n1);
+export function fresnelCoefficients(n1: RefractiveIndex, cos1: Complex, n2: RefractiveIndex, cos2: Complex): InterfaceCoefficients {
+  if (sameIndex(n1, n2)) return NO_INTERFACE;
+  const n1c1 = cTimesIndex(cos1, n1);
+  const n2c2 = cTimesIndex(cos2, n2);
+  const n2c1 = cTimesIndex(cos1, n2);
+  const n1c2 = cTimesIndex(cos2, n1);
   const sDen = cAdd(n1c1, n2c2);
   const pDen = cAdd(n2c1, n1c2);
   return {

@@ -1,6 +1,6 @@
-import { type DispersiveFilmStack, assertFilmIndex, stackAt } from './filmIndex.ts';
 import { type FilmOptics, type Polarization, filmOptics, reflectanceAt } from './filmReflectance.ts';
 import { type IlluminantSpec } from './illuminants.ts';
+import { type MediumStack, assertMedium, isDispersiveMedium, mediumStackAt } from './medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type Normalization, type SpectralWeights, type Xyz, spectralWeights } from './spectralWeights.ts';
 
 /**
@@ -96,25 +96,27 @@ export interface ColorOptions {
 }
 
 /**
- * XYZ of the light a film reflects, eqs (15)–(18). A dispersive film (a material or a Cauchy film)
- * takes n_b(λ) exactly: Snell, Fresnel and the phase at every sample (docs/physics.md#a-dispersive-film).
+ * XYZ of the light a film reflects, eqs (15)–(18). A dispersive film or inside (a material, a
+ * Cauchy film, a tabulated metal) takes ñ(λ) exactly: Snell, Fresnel and the phase at every sample
+ * (docs/physics.md#a-dispersive-film); an absorbing one takes the complex phase of
+ * docs/physics.md#absorbing-media. Constant real indices take the path they always did.
  */
-export function filmXyz(stack: DispersiveFilmStack, options: ColorOptions = {}): Xyz {
+export function filmXyz(stack: MediumStack, options: ColorOptions = {}): Xyz {
   const polarization = options.polarization ?? 'unpolarized';
   const w = spectralWeights(options.illuminant ?? 'D65', options.normalization ?? 'white');
-  const { nFilm } = stack;
-  if (typeof nFilm === 'number') {
-    const optics = filmOptics({ ...stack, nFilm }, polarization);
+  if (!isDispersiveMedium(stack.nFilm) && !isDispersiveMedium(stack.nInside)) {
+    const optics = filmOptics(mediumStackAt(stack, LAMBDA_MIN_NM), polarization);
     return integrateXyz((l) => reflectanceAt(optics, l), w, options.stepsPerNm ?? adaptiveStepsPerNm(optics));
   }
-  assertFilmIndex('nFilm', nFilm);
-  const opticsAt = (l: number) => filmOptics(stackAt(stack, l), polarization);
+  assertMedium('nFilm', stack.nFilm, 'film');
+  assertMedium('nInside', stack.nInside, 'inside');
+  const opticsAt = (l: number) => filmOptics(mediumStackAt(stack, l), polarization);
   return integrateXyz((l) => reflectanceAt(opticsAt(l), l), w, options.stepsPerNm ?? dispersiveStepsPerNm(opticsAt));
 }
 
-/** R at one wavelength of a film whose index may depend on λ (eqs 1–14 with n_b(λ)). */
-export const dispersiveReflectance = (lambdaNm: number, stack: DispersiveFilmStack, polarization: Polarization = 'unpolarized'): number =>
-  reflectanceAt(filmOptics(stackAt(stack, lambdaNm), polarization), lambdaNm);
+/** R at one wavelength of a film whose media may depend on λ (eqs 1–14 with ñ_b(λ), ñ_c(λ)). */
+export const dispersiveReflectance = (lambdaNm: number, stack: MediumStack, polarization: Polarization = 'unpolarized'): number =>
+  reflectanceAt(filmOptics(mediumStackAt(stack, lambdaNm), polarization), lambdaNm);
 
 /** XYZ of the illuminant itself (a perfect white reflector), the white point for CIELAB. */
 export const whiteXyz = (illuminant: IlluminantSpec, normalization: Normalization = 'white'): Xyz =>

@@ -1,0 +1,133 @@
+import { type RefractiveIndex, realIndex } from './complex.ts';
+import {
+  type DispersiveFilmStack,
+  FILM_INDEX_EXPECTED,
+  type FilmIndex,
+  assertFilmIndex,
+  filmIndexAt,
+  filmIndexFromJson,
+  filmIndexProblem,
+  filmIndexText,
+  isDispersive,
+  parseFilmIndexText,
+} from './filmIndex.ts';
+import { type AbsorbingFilmStack, COMPLEX_INDEX_DOMAIN, FILM_STACK_DOMAIN, complexIndexProblem } from './filmReflectance.ts';
+import { NAMED_MEDIA, NAMED_MEDIUM_INDEX, type NamedMedium, isNamedMedium } from './namedMedia.ts';
+import { ParameterError, expectedNumber, parseDecimal } from './validate.ts';
+
+/**
+ * What a film or the inside is made of (docs/physics.md#absorbing-media):
+ * - a FilmIndex (filmIndex.ts): a real number, `water` or a Cauchy film;
+ * - a named medium (namedMedia.ts): a metal or an oxide from a published table or formula;
+ * - a constant complex index ñ = n + ik, `complex:n,k` ({ complex: [n, k] } in JSON), k ≥ 0.
+ * The outside, where the light comes from, is always a real constant.
+ */
+export interface ComplexConstant {
+  /** [n, k]: ñ = n + ik */
+  readonly complex: readonly [number, number];
+}
+export type Medium = FilmIndex | NamedMedium | ComplexConstant;
+
+/** Which layer a medium is for: the outside takes a real constant only. */
+export type MediumRole = 'outside' | 'film' | 'inside';
+
+/** A stack whose film and inside may be any Medium; `mediumStackAt` gives it at one wavelength. */
+export interface MediumStack extends Omit<DispersiveFilmStack, 'nInside' | 'nFilm'> {
+  readonly nFilm: Medium;
+  readonly nInside: Medium;
+}
+
+const isComplexConstant = (m: Medium): m is ComplexConstant => typeof m === 'object' && 'complex' in m;
+
+/** ñ at λ in nm: a number for a FilmIndex (exactly filmIndexAt), ñ = n + ik otherwise (k may be 0). */
+export function mediumIndexAt(m: Medium, lambdaNm: number): RefractiveIndex {
+  if (isComplexConstant(m)) return { re: m.complex[0], im: m.complex[1] };
+  if (isNamedMedium(m)) return NAMED_MEDIUM_INDEX[m].indexAt(lambdaNm);
+  return filmIndexAt(m, lambdaNm);
+}
+
+/** Whether ñ depends on λ. */
+export const isDispersiveMedium = (m: Medium): boolean => isNamedMedium(m) || (!isComplexConstant(m) && isDispersive(m));
+
+/** Where the medium's source gives values (null: at every λ). */
+export const mediumRangeNm = (m: Medium): { readonly min: number; readonly max: number } | null =>
+  isNamedMedium(m) ? NAMED_MEDIUM_INDEX[m].rangeNm : null;
+
+/** The stack at one wavelength. */
+export const mediumStackAt = (stack: MediumStack, lambdaNm: number): AbsorbingFilmStack => ({
+  ...stack,
+  nFilm: mediumIndexAt(stack.nFilm, lambdaNm),
+  nInside: mediumIndexAt(stack.nInside, lambdaNm),
+});
+
+/** The medium as URL, attribute and command line write it: `1.33`, `water`, `cauchy:1.45,6000`, `Au`, `complex:0.43,2.455`. */
+export function mediumText(m: Medium): string {
+  if (isComplexConstant(m)) return `complex:${m.complex[0]},${m.complex[1]}`;
+  return isNamedMedium(m) ? m : filmIndexText(m);
+}
+
+/** What a role accepts, as every refusal states it. */
+export function mediumExpected(role: MediumRole): string {
+  if (role === 'outside') return expectedNumber(FILM_STACK_DOMAIN.nOutside);
+  const { n, k } = COMPLEX_INDEX_DOMAIN;
+  return `${FILM_INDEX_EXPECTED}; ${NAMED_MEDIA.join(', ')}; or complex:n,k (ñ = n + ik, n in [${n.min}, ${n.max}], k in [${k.min}, ${k.max}])`;
+}
+
+/** The medium a text writes (`complex:n,k`, a name, or what parseFilmIndexText reads), whatever its range, or null. */
+export function parseMediumText(text: string): Medium | null {
+  if (isNamedMedium(text)) return text;
+  if (text.startsWith('complex:')) {
+    const parts = text.slice('complex:'.length).split(',').map(parseDecimal);
+    return parts.length === 2 && parts.every(Number.isFinite) ? { complex: [parts[0]!, parts[1]!] } : null;
+  }
+  return parseFilmIndexText(text);
+}
+
+/** A cases file's value: what filmIndexFromJson reads, a named medium, or `{ "complex": [n, k] }`; null when none. */
+export function mediumFromJson(value: unknown): Medium | null {
+  if (isNamedMedium(value)) return value;
+  const isObject = typeof value === 'object' && value !== null && !Array.isArray(value);
+  if (isObject && Object.keys(value).join() === 'complex') {
+    const nk = (value as { complex: unknown }).complex;
+    const isPair = Array.isArray(nk) && nk.length === 2 && nk.every((t) => typeof t === 'number');
+    return isPair ? { complex: [nk[0] as number, nk[1] as number] } : null;
+  }
+  return filmIndexFromJson(value);
+}
+
+/** What is wrong with a medium in a role (null: nothing), in words a message can quote. */
+export function mediumProblem(m: Medium, role: MediumRole): string | null {
+  if (role === 'outside') {
+    const { min, max } = FILM_STACK_DOMAIN.nOutside;
+    if (typeof m !== 'number') return 'the outside is transparent: a constant real index';
+    return m >= min && m <= max ? null : `n is ${m}, outside [${min}, ${max}]`;
+  }
+  if (isComplexConstant(m)) {
+    const [n, k] = m.complex;
+    return complexIndexProblem({ re: n, im: k });
+  }
+  // A named medium's source keeps n and k inside COMPLEX_INDEX_DOMAIN over its range (a unit test holds every one).
+  return isNamedMedium(m) ? null : filmIndexProblem(m);
+}
+
+/** Throws a ParameterError naming `name` when the medium is not allowed in its role. */
+export function assertMedium(name: string, m: Medium, role: MediumRole): void {
+  if (role !== 'outside' && !isNamedMedium(m) && !isComplexConstant(m)) return assertFilmIndex(name, m);
+  const problem = mediumProblem(m, role);
+  if (problem) throw new ParameterError(name, `${name}: ${mediumText(m)} is not allowed (${problem}); expected ${mediumExpected(role)}`);
+}
+
+/** The checked medium of a text for a role, or why it is refused (null: the text is no medium at all; `mediumExpected` says what is). */
+export function readMedium(text: string, role: MediumRole): { readonly medium: Medium } | { readonly problem: string | null } {
+  const medium = parseMediumText(text);
+  if (medium === null) return { problem: null };
+  const problem = mediumProblem(medium, role);
+  return problem ? { problem } : { medium };
+}
+
+/** An index as JSON reports it: a number when real (k = 0), { n, k } when it absorbs. */
+export type IndexJson = number | { readonly n: number; readonly k: number };
+export function indexJson(index: RefractiveIndex): IndexJson {
+  const real = realIndex(index);
+  return real ?? { n: (index as { re: number }).re, k: (index as { im: number }).im };
+}
