@@ -1,0 +1,156 @@
+import { type CubeSphereGrid, cubeSphereGrid } from './cubeSphereGrid.ts';
+import { type CubeSphereHalo, cubeSphereHalo, padField, paddedSampler } from './cubeSphereSampler.ts';
+import type { FilmHole } from './filmHoles.ts';
+import { type FlowNumbers, flowNumbers } from './flowNumbers.ts';
+import { type FlowParameters, validateFlowParameters } from './flowParameters.ts';
+import { initialFilm } from './initialFilm.ts';
+import { type EdgePrediction, predictEdgeVelocity } from './predictEdgeVelocity.ts';
+import { reconstructCellVelocity } from './reconstructCellVelocity.ts';
+import { openHole, ruptureFilm } from './ruptureFilm.ts';
+import { type SurfactantWork, correctEdgeVelocity, solveSurfactant, surfactantWork } from './solveSurfactant.ts';
+import { WIND_SURFACE_FACTOR, timeStep } from './timeStep.ts';
+import { type TransportWork, transportFilm, transportWork } from './transportFilm.ts';
+
+/** The evolving fields, in the units of eq. (17) (docs/flow.md#the-model). */
+export interface FilmState {
+  /** η/η0 per cell. */
+  readonly eta: Float64Array;
+  /** Γ/Γ0 per cell. */
+  readonly gamma: Float64Array;
+  /** u·n_e per edge (n_e from the edge's cell A to B), in U. */
+  readonly edgeVelocity: Float64Array;
+  /** 1 where the film is whole, 0 where a hole has opened. */
+  readonly intact: Uint8Array;
+  readonly holes: FilmHole[];
+  /** Steps taken. */
+  steps: number;
+  /** Simulated seconds still to run (less than one step) after the last advance. */
+  pendingSeconds: number;
+  /** The relative residual the last surfactant solve reached. */
+  surfactantResidual: number;
+}
+
+export interface FilmSimulation {
+  readonly parameters: FlowParameters;
+  readonly numbers: FlowNumbers;
+  readonly grid: CubeSphereGrid;
+  readonly halo: CubeSphereHalo;
+  /** The fixed step in R/U, and in seconds. */
+  readonly dt: number;
+  readonly stepSeconds: number;
+  readonly state: FilmState;
+  readonly work: StepWork;
+}
+
+interface StepWork {
+  readonly cellVelocity: Float64Array;
+  readonly paddedCellVelocity: Float64Array;
+  readonly windAlongNormal: Float64Array;
+  readonly prediction: EdgePrediction;
+  readonly surfactant: SurfactantWork;
+  readonly transport: TransportWork;
+  readonly sampleVector: ReturnType<typeof paddedSampler>;
+}
+
+/** A film at rest on a bubble, every parameter checked first (validateFlowParameters). */
+export function createFilmSimulation(given: Partial<Record<string, unknown>> = {}): FilmSimulation {
+  const parameters = validateFlowParameters(given);
+  const numbers = flowNumbers(parameters);
+  const grid = cubeSphereGrid(parameters.gridN);
+  const halo = cubeSphereHalo(grid);
+  const dt = timeStep(grid, numbers);
+  const { eta, gamma } = initialFilm(grid, parameters.seed);
+  const windAlongNormal = new Float64Array(grid.edgeCount);
+  // The air at the surface: WIND_SURFACE_FACTOR × the wind (along +x) projected onto the tangent plane.
+  for (let e = 0; e < grid.edgeCount; e++) windAlongNormal[e] = WIND_SURFACE_FACTOR * numbers.wind * grid.edgeNormal[3 * e]!;
+  return {
+    parameters,
+    numbers,
+    grid,
+    halo,
+    dt,
+    stepSeconds: dt * numbers.timeScaleS,
+    state: {
+      eta,
+      gamma,
+      edgeVelocity: new Float64Array(grid.edgeCount),
+      intact: new Uint8Array(grid.cellCount).fill(1),
+      holes: [],
+      steps: 0,
+      pendingSeconds: 0,
+      surfactantResidual: 0,
+    },
+    work: {
+      cellVelocity: new Float64Array(3 * grid.cellCount),
+      paddedCellVelocity: new Float64Array(3 * halo.paddedCell.length),
+      windAlongNormal,
+      prediction: { predicted: new Float64Array(grid.edgeCount), marangoniCoefficient: new Float64Array(grid.edgeCount) },
+      surfactant: surfactantWork(grid),
+      transport: transportWork(grid),
+      sampleVector: paddedSampler(halo, 3),
+    },
+  };
+}
+
+/**
+ * One fixed step Δt of eq. (17), as the passes a GPU mirrors (docs/flow.md#the-step): reconstruct
+ * cell velocities, halo, advect + force at edges, surfactant solve, edge correction, conservative
+ * transport of η and Γ, evaporation, rupture and rims.
+ */
+export function stepFilm(sim: FilmSimulation): void {
+  const { grid, halo, numbers, dt, state, work } = sim;
+  reconstructCellVelocity(grid, state.edgeVelocity, work.cellVelocity);
+  padField(halo, work.cellVelocity, 3, work.paddedCellVelocity);
+  predictEdgeVelocity(
+    grid,
+    numbers,
+    dt,
+    {
+      cellVelocity: work.cellVelocity,
+      paddedCellVelocity: work.paddedCellVelocity,
+      sample: work.sampleVector,
+      eta: state.eta,
+      intact: state.intact,
+      windAlongNormal: work.windAlongNormal,
+    },
+    work.prediction,
+  );
+  state.surfactantResidual = solveSurfactant(grid, dt, state.gamma, work.prediction, work.surfactant);
+  correctEdgeVelocity(grid, work.prediction, work.surfactant.solution, state.edgeVelocity);
+  transportFilm(grid, dt, state.edgeVelocity, state.eta, state.gamma, work.transport);
+  evaporate(state, numbers.evaporation * dt);
+  ruptureFilm({ halo, parameters: sim.parameters, numbers, eta: state.eta, gamma: state.gamma, intact: state.intact, holes: state.holes }, dt);
+  state.steps++;
+}
+
+/** Dη/Dt = … − e of eq. (17): every intact cell loses e·Δt of η, never going below 0 (GPU pass 8). */
+function evaporate(state: FilmState, loss: number): void {
+  if (loss === 0) return;
+  for (let c = 0; c < state.eta.length; c++) if (state.intact[c] === 1) state.eta[c] = Math.max(0, state.eta[c]! - loss);
+}
+
+/** Runs as many whole steps as `seconds` (plus what was left over last time) holds; returns how many. */
+export function advanceFilm(sim: FilmSimulation, seconds: number): number {
+  const { state, stepSeconds } = sim;
+  state.pendingSeconds += seconds;
+  let taken = 0;
+  // A relative slack of 1e-9 so that k·Δt seconds take k steps despite rounding.
+  while (state.pendingSeconds >= stepSeconds * (1 - 1e-9)) {
+    stepFilm(sim);
+    state.pendingSeconds -= stepSeconds;
+    taken++;
+  }
+  state.pendingSeconds = Math.max(0, state.pendingSeconds);
+  return taken;
+}
+
+/** Pricks the film at a direction: a hole opens there and bursts outward. */
+export function punctureFilm(sim: FilmSimulation, x: number, y: number, z: number): void {
+  openHole(sim.state.holes, x, y, z);
+}
+
+/** Simulated seconds so far. */
+export const filmSeconds = (sim: FilmSimulation): number => sim.state.steps * sim.stepSeconds;
+
+/** The padded η, for samplers (kept here so the sampler module needs no state). */
+export const paddedEta = (sim: FilmSimulation): Float64Array => padField(sim.halo, sim.state.eta, 1);

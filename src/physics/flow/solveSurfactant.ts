@@ -1,0 +1,99 @@
+import type { CubeSphereGrid } from './cubeSphereGrid.ts';
+import type { EdgePrediction } from './predictEdgeVelocity.ts';
+
+/** Jacobi sweeps per step: a fixed count, so a GPU runs the same passes (docs/flow.md#the-surfactant-solve). */
+export const SURFACTANT_JACOBI_SWEEPS = 12;
+
+export interface SurfactantWork {
+  /** w_e = Δt L_e Γ̄_e c_e/d_e, the edge weight of the 5-point operator. */
+  readonly weight: Float64Array;
+  readonly rhs: Float64Array;
+  readonly diagonal: Float64Array;
+  /** Ping-pong buffers; the solution ends in `solution`. */
+  readonly solution: Float64Array;
+  readonly scratch: Float64Array;
+}
+
+export const surfactantWork = (grid: CubeSphereGrid): SurfactantWork => ({
+  weight: new Float64Array(grid.edgeCount),
+  rhs: new Float64Array(grid.cellCount),
+  diagonal: new Float64Array(grid.cellCount),
+  solution: new Float64Array(grid.cellCount),
+  scratch: new Float64Array(grid.cellCount),
+});
+
+/**
+ * The surfactant at the end of the step, implicit in the Marangoni term (GPU passes 3 and 4):
+ * DΓ/Dt = −Γ∇·u of eq. (17) in flux form, A_c Γ'_c = A_c Γ_c − Δt Σ_e L_e Γ_e u_e, with the edge
+ * velocity u_e = u*_e − c_e (Γ'_B − Γ'_A)/d_e. The u* flux takes the upwind Γ; the Marangoni flux
+ * the edge mean Γ̄_e, which makes the system symmetric positive definite:
+ *   (A_c + Σ_e w_e) Γ'_c − Σ_e w_e Γ'_nb = A_c Γ_c − Δt Σ_e L_e (u*·n_out)_e Γ_upwind.
+ * Solved by SURFACTANT_JACOBI_SWEEPS Jacobi sweeps from Γ; returns the relative residual
+ * ‖b − AΓ'‖/‖b‖ reached. The Γ' found sets the velocity only: the step then moves η and Γ with
+ * conservative fluxes, so an unconverged solve costs accuracy, never mass.
+ */
+export function solveSurfactant(
+  grid: CubeSphereGrid,
+  dt: number,
+  gamma: Float64Array,
+  prediction: EdgePrediction,
+  work: SurfactantWork,
+  sweeps = SURFACTANT_JACOBI_SWEEPS,
+): number {
+  const { area, cellEdge, cellEdgeSign, cellNeighbor, edgeA, edgeB, edgeLength, edgeDistance } = grid;
+  const { predicted, marangoniCoefficient } = prediction;
+  const { weight, rhs, diagonal } = work;
+  for (let e = 0; e < grid.edgeCount; e++) {
+    const meanGamma = 0.5 * (gamma[edgeA[e]!]! + gamma[edgeB[e]!]!);
+    weight[e] = (dt * edgeLength[e]! * meanGamma * marangoniCoefficient[e]!) / edgeDistance[e]!;
+  }
+  for (let c = 0; c < grid.cellCount; c++) {
+    let b = area[c]! * gamma[c]!;
+    let d = area[c]!;
+    for (let s = 0; s < 4; s++) {
+      const e = cellEdge[4 * c + s]!;
+      const outward = cellEdgeSign[4 * c + s]! * predicted[e]!;
+      b -= dt * edgeLength[e]! * outward * (outward > 0 ? gamma[c]! : gamma[cellNeighbor[4 * c + s]!]!);
+      d += weight[e]!;
+    }
+    rhs[c] = b;
+    diagonal[c] = d;
+  }
+  let x = work.solution;
+  let next = work.scratch;
+  x.set(gamma);
+  for (let k = 0; k < sweeps; k++) {
+    for (let c = 0; c < grid.cellCount; c++) {
+      let sum = rhs[c]!;
+      for (let s = 0; s < 4; s++) sum += weight[cellEdge[4 * c + s]!]! * x[cellNeighbor[4 * c + s]!]!;
+      next[c] = sum / diagonal[c]!;
+    }
+    [x, next] = [next, x];
+  }
+  if (x !== work.solution) work.solution.set(x);
+  return relativeResidual(grid, work);
+}
+
+/** ‖b − AΓ'‖₂/‖b‖₂ of the last solve. */
+function relativeResidual(grid: CubeSphereGrid, work: SurfactantWork): number {
+  const { cellEdge, cellNeighbor } = grid;
+  const { weight, rhs, diagonal, solution } = work;
+  let r2 = 0;
+  let b2 = 0;
+  for (let c = 0; c < grid.cellCount; c++) {
+    let ax = diagonal[c]! * solution[c]!;
+    for (let s = 0; s < 4; s++) ax -= weight[cellEdge[4 * c + s]!]! * solution[cellNeighbor[4 * c + s]!]!;
+    r2 += (rhs[c]! - ax) ** 2;
+    b2 += rhs[c]! ** 2;
+  }
+  return b2 > 0 ? Math.sqrt(r2 / b2) : 0;
+}
+
+/** u_e = u*_e − c_e (Γ'_B − Γ'_A)/d_e: the end-of-step edge velocity (GPU pass 5). */
+export function correctEdgeVelocity(grid: CubeSphereGrid, prediction: EdgePrediction, solvedGamma: Float64Array, out: Float64Array): void {
+  const { edgeA, edgeB, edgeDistance } = grid;
+  for (let e = 0; e < grid.edgeCount; e++) {
+    const slope = (solvedGamma[edgeB[e]!]! - solvedGamma[edgeA[e]!]!) / edgeDistance[e]!;
+    out[e] = prediction.predicted[e]! - prediction.marangoniCoefficient[e]! * slope;
+  }
+}
