@@ -126,3 +126,37 @@ export const FOUR_DIGIT_REL_TOL = 1e-4;
 
 /** A 1 nm table sampled every 10 nm: what the monotone cubic leaves between its rows (TiO2 film: 4.1e-5 at 385 nm near the absorption edge, under 1e-6 from 450 nm). */
 export const TABLE_SUBSAMPLE_TOL = 5e-5;
+
+/** The settled film's ln h against cos θ: its slope within 2% of −a (docs/flow.md#the-stationary-film). */
+export const SETTLED_SLOPE_REL_TOL = 0.02;
+
+/**
+ * The settled azimuthal-mean profile against h̄ (a/sinh a) e^(−a cos θ): a 10-cell face resolves
+ * it to ~0.5% (the measured slope error is 0.1–0.4%, and the sampler's bilinear blur adds a little).
+ */
+export const SETTLED_PROFILE_REL_TOL = 0.02;
+
+/** ∫h dA and ∫Γ dA over 10⁴ steps without evaporation or rupture (the flux form makes it rounding, ~1e-14). */
+export const CONSERVATION_REL_TOL = 1e-4;
+
+/** Evaporation removes exactly E·t of the mean while no cell is emptied: rounding of 10³ steps. */
+export const EVAPORATION_REL_TOL = 1e-9;
+
+/** Mirror images under the cube's symmetries differ only by the order of float64 sums. */
+export const MIRROR_SYMMETRY_TOL = 1e-9;
+
+/**
+ * A point on a seam between two faces is sampled from one of them by a fixed rule (x before y), so
+ * a quarter turn and the mirror x ↔ y hold to the two faces' interpolation difference, not to
+ * rounding: measured 5e-7 at 10 cells per face side.
+ */
+export const SEAM_SYMMETRY_TOL = 1e-5;
+
+/**
+ * Axisymmetry on a cube-sphere holds to its truncation error: at 10 cells per face side the
+ * settled film varies along a circle of latitude by under 1% of its mean there.
+ */
+export const AXISYMMETRY_REL_TOL = 0.01;
+
+/** The rim's measured speed against √(2γ/(ρh)) × the factor (the mask quantises the hole to cells). */
+export const RIM_SPEED_REL_TOL = 0.05;

@@ -5,7 +5,9 @@ import { type CubeSphereGrid, cellOf } from './cubeSphereGrid.ts';
  * Bilinear sampling of a cell-centred field at any direction. Each face is padded with one ring of
  * ghost cells; a ghost's value is interpolated on the face its centre falls on (for an edge ghost
  * that point lies on a row of cell centres there, so the interpolation runs along the row only).
- * The field's components (1 for η, 3 for a Cartesian velocity) need no change of basis across
+ * The 4 corner ghosts of a face, where three faces meet and no face continues the grid, are
+ * extrapolated from their two edge ghosts and the corner cell (g₁ + g₂ − c, exact for a linear
+ * field). The field's components (1 for η, 3 for a Cartesian velocity) need no change of basis across
  * face edges. On a GPU this is one halo pass per field and a 4-tap lookup per sample.
  * docs/flow.md#the-grid.
  */
@@ -17,6 +19,8 @@ export interface CubeSphereHalo {
   readonly ghostPadded: Int32Array;
   readonly ghostCells: Int32Array;
   readonly ghostWeights: Float64Array;
+  /** For each face corner: the padded corner ghost, its two edge ghosts and the corner cell's padded index. */
+  readonly cornerGhosts: Int32Array;
 }
 
 const QUARTER_PI = Math.PI / 4;
@@ -34,6 +38,7 @@ export function cubeSphereHalo(grid: CubeSphereGrid): CubeSphereHalo {
   const ghosts: number[] = [];
   const cells: number[] = [];
   const weights: number[] = [];
+  const corners: number[] = [];
   const dir = new Float64Array(3);
   const point: FacePoint = { face: 0, tanA: 0, tanB: 0 };
   const step = (2 * QUARTER_PI) / n;
@@ -42,8 +47,14 @@ export function cubeSphereHalo(grid: CubeSphereGrid): CubeSphereHalo {
       for (let pi = 0; pi < m; pi++) {
         const padded = (f * m + pj) * m + pi;
         const [i, j] = [pi - 1, pj - 1];
-        if (i >= 0 && i < n && j >= 0 && j < n) {
+        const [insideI, insideJ] = [i >= 0 && i < n, j >= 0 && j < n];
+        if (insideI && insideJ) {
           paddedCell[padded] = (f * n + j) * n + i;
+          continue;
+        }
+        if (!insideI && !insideJ) {
+          const [ei, ej] = [i < 0 ? 1 : n, j < 0 ? 1 : n];
+          corners.push(padded, (f * m + pj) * m + ei, (f * m + ej) * m + pi, (f * m + ej) * m + ei);
           continue;
         }
         faceDirection(f, Math.tan(-QUARTER_PI + (i + 0.5) * step), Math.tan(-QUARTER_PI + (j + 0.5) * step), dir, 0);
@@ -63,6 +74,7 @@ export function cubeSphereHalo(grid: CubeSphereGrid): CubeSphereHalo {
     ghostPadded: Int32Array.from(ghosts),
     ghostCells: Int32Array.from(cells),
     ghostWeights: Float64Array.from(weights),
+    cornerGhosts: Int32Array.from(corners),
   };
   haloCache.set(n, halo);
   return halo;
@@ -77,7 +89,7 @@ function clampedLerp(n: number, coordinate: number): [number, number] {
 /** The padded copy of a field with `components` values per cell, ghosts filled (the halo pass). */
 export function padField(halo: CubeSphereHalo, field: Float64Array, components: number, out?: Float64Array): Float64Array {
   const padded = out ?? new Float64Array(halo.paddedCell.length * components);
-  const { paddedCell, ghostPadded, ghostCells, ghostWeights } = halo;
+  const { paddedCell, ghostPadded, ghostCells, ghostWeights, cornerGhosts } = halo;
   for (let p = 0; p < paddedCell.length; p++) {
     const c = paddedCell[p]!;
     if (c >= 0) for (let k = 0; k < components; k++) padded[p * components + k] = field[c * components + k]!;
@@ -88,6 +100,12 @@ export function padField(halo: CubeSphereHalo, field: Float64Array, components: 
       let sum = 0;
       for (let t = 0; t < 4; t++) sum += ghostWeights[4 * g + t]! * field[ghostCells[4 * g + t]! * components + k]!;
       padded[p * components + k] = sum;
+    }
+  }
+  for (let g = 0; g < cornerGhosts.length; g += 4) {
+    const [p, a, b, c] = [cornerGhosts[g]!, cornerGhosts[g + 1]!, cornerGhosts[g + 2]!, cornerGhosts[g + 3]!];
+    for (let k = 0; k < components; k++) {
+      padded[p * components + k] = padded[a * components + k]! + padded[b * components + k]! - padded[c * components + k]!;
     }
   }
   return padded;

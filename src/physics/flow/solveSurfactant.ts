@@ -7,6 +7,8 @@ export const SURFACTANT_JACOBI_SWEEPS = 12;
 export interface SurfactantWork {
   /** w_e = Δt L_e Γ̄_e c_e/d_e, the edge weight of the 5-point operator. */
   readonly weight: Float64Array;
+  /** The same weights per cell and side (4 per cell), so a sweep reads them in order. */
+  readonly cellWeight: Float64Array;
   readonly rhs: Float64Array;
   readonly diagonal: Float64Array;
   /** Ping-pong buffers; the solution ends in `solution`. */
@@ -16,6 +18,7 @@ export interface SurfactantWork {
 
 export const surfactantWork = (grid: CubeSphereGrid): SurfactantWork => ({
   weight: new Float64Array(grid.edgeCount),
+  cellWeight: new Float64Array(4 * grid.cellCount),
   rhs: new Float64Array(grid.cellCount),
   diagonal: new Float64Array(grid.cellCount),
   solution: new Float64Array(grid.cellCount),
@@ -28,8 +31,8 @@ export const surfactantWork = (grid: CubeSphereGrid): SurfactantWork => ({
  * velocity u_e = u*_e − c_e (Γ'_B − Γ'_A)/d_e. The u* flux takes the upwind Γ; the Marangoni flux
  * the edge mean Γ̄_e, which makes the system symmetric positive definite:
  *   (A_c + Σ_e w_e) Γ'_c − Σ_e w_e Γ'_nb = A_c Γ_c − Δt Σ_e L_e (u*·n_out)_e Γ_upwind.
- * Solved by SURFACTANT_JACOBI_SWEEPS Jacobi sweeps from Γ; returns the relative residual
- * ‖b − AΓ'‖/‖b‖ reached. The Γ' found sets the velocity only: the step then moves η and Γ with
+ * Solved by SURFACTANT_JACOBI_SWEEPS Jacobi sweeps from Γ; returns the residual reached relative to
+ * that of the starting guess, ‖b − AΓ'‖/‖b − AΓ‖ (0 when Γ already solves it). The Γ' found sets the velocity only: the step then moves η and Γ with
  * conservative fluxes, so an unconverged solve costs accuracy, never mass.
  */
 export function solveSurfactant(
@@ -42,7 +45,7 @@ export function solveSurfactant(
 ): number {
   const { area, cellEdge, cellEdgeSign, cellNeighbor, edgeA, edgeB, edgeLength, edgeDistance } = grid;
   const { predicted, marangoniCoefficient } = prediction;
-  const { weight, rhs, diagonal } = work;
+  const { weight, cellWeight, rhs, diagonal } = work;
   for (let e = 0; e < grid.edgeCount; e++) {
     const meanGamma = 0.5 * (gamma[edgeA[e]!]! + gamma[edgeB[e]!]!);
     weight[e] = (dt * edgeLength[e]! * meanGamma * marangoniCoefficient[e]!) / edgeDistance[e]!;
@@ -55,6 +58,7 @@ export function solveSurfactant(
       const outward = cellEdgeSign[4 * c + s]! * predicted[e]!;
       b -= dt * edgeLength[e]! * outward * (outward > 0 ? gamma[c]! : gamma[cellNeighbor[4 * c + s]!]!);
       d += weight[e]!;
+      cellWeight[4 * c + s] = weight[e]!;
     }
     rhs[c] = b;
     diagonal[c] = d;
@@ -62,31 +66,35 @@ export function solveSurfactant(
   let x = work.solution;
   let next = work.scratch;
   x.set(gamma);
-  for (let k = 0; k < sweeps; k++) {
-    for (let c = 0; c < grid.cellCount; c++) {
-      let sum = rhs[c]!;
-      for (let s = 0; s < 4; s++) sum += weight[cellEdge[4 * c + s]!]! * x[cellNeighbor[4 * c + s]!]!;
-      next[c] = sum / diagonal[c]!;
-    }
-    [x, next] = [next, x];
+  const initial = jacobiSweep(grid.cellCount, cellNeighbor, work, x, next);
+  for (let k = 1; k < sweeps; k++) {
+    const swap = x;
+    x = next;
+    next = swap;
+    jacobiSweep(grid.cellCount, cellNeighbor, work, x, next);
   }
-  if (x !== work.solution) work.solution.set(x);
-  return relativeResidual(grid, work);
+  if (next !== work.solution) work.solution.set(next);
+  // One more sweep into the scratch buffer measures the residual of the solution.
+  const reached = jacobiSweep(grid.cellCount, cellNeighbor, work, work.solution, work.scratch);
+  return initial > 0 ? reached / initial : 0;
 }
 
-/** ‖b − AΓ'‖₂/‖b‖₂ of the last solve. */
-function relativeResidual(grid: CubeSphereGrid, work: SurfactantWork): number {
-  const { cellEdge, cellNeighbor } = grid;
-  const { weight, rhs, diagonal, solution } = work;
-  let r2 = 0;
-  let b2 = 0;
-  for (let c = 0; c < grid.cellCount; c++) {
-    let ax = diagonal[c]! * solution[c]!;
-    for (let s = 0; s < 4; s++) ax -= weight[cellEdge[4 * c + s]!]! * solution[cellNeighbor[4 * c + s]!]!;
-    r2 += (rhs[c]! - ax) ** 2;
-    b2 += rhs[c]! ** 2;
+/** One Jacobi sweep x → next; returns ‖b − Ax‖₂ of the x it started from. */
+function jacobiSweep(cells: number, neighbor: Int32Array, work: SurfactantWork, x: Float64Array, next: Float64Array): number {
+  const { cellWeight, rhs, diagonal } = work;
+  let residual2 = 0;
+  for (let c = 0; c < cells; c++) {
+    const k = 4 * c;
+    const sum =
+      rhs[c]! +
+      cellWeight[k]! * x[neighbor[k]!]! +
+      cellWeight[k + 1]! * x[neighbor[k + 1]!]! +
+      cellWeight[k + 2]! * x[neighbor[k + 2]!]! +
+      cellWeight[k + 3]! * x[neighbor[k + 3]!]!;
+    residual2 += (sum - diagonal[c]! * x[c]!) ** 2;
+    next[c] = sum / diagonal[c]!;
   }
-  return b2 > 0 ? Math.sqrt(r2 / b2) : 0;
+  return Math.sqrt(residual2);
 }
 
 /** u_e = u*_e − c_e (Γ'_B − Γ'_A)/d_e: the end-of-step edge velocity (GPU pass 5). */
