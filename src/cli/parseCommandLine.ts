@@ -1,8 +1,7 @@
-import { parseArgs } from 'node:util';
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
 import { ILLUMINANT_EXPECTED, parseIlluminant } from '../physics/illuminants.ts';
 import { mediumExpected, readMedium } from '../physics/medium.ts';
-import { describeValue, oneOf, ParameterError, rejectValue, expectedNumber } from '../physics/validate.ts';
+import { oneOf, ParameterError, rejectValue, expectedNumber } from '../physics/validate.ts';
 import {
   CASE_FLAGS,
   type CaseField,
@@ -16,13 +15,13 @@ import {
 } from './colorCase.ts';
 import { CELL_HEIGHT_2D_PX, STRIP_HEIGHT_PX, checkChartSize } from './chartLayout.ts';
 import { parseStrictNumber } from './parseStrictNumber.ts';
+import { readFlags } from './readFlags.ts';
 import { parseColonRange, parseRange } from './tableValues.ts';
 
 const MODE_FLAGS = ['cases', 'from', 'to', 'step', 'angles', 'format', 'gamut', 'out', 'height'] as const;
 /** A flag's name: a case flag's (from the schema) or one of MODE_FLAGS. */
 type Flag = string;
 const VALUE_FLAGS = [...CASE_FLAGS.map((f) => f.flag), ...MODE_FLAGS];
-const ALL_FLAGS = [...VALUE_FLAGS, 'help'].map((f) => `--${f}`).join(', ');
 
 export const OUTPUT_FORMATS = ['json', 'csv', 'png', 'svg'] as const;
 export type OutputFormat = (typeof OUTPUT_FORMATS)[number];
@@ -60,7 +59,7 @@ export type Command =
  * Pure: the cases file is named here and read by the caller.
  */
 export function parseCommandLine(argv: readonly string[]): Command {
-  const flags = readFlags(argv);
+  const flags = readColorFlags(argv);
   if (flags === 'help') return { kind: 'help' };
   const has = (f: Flag) => flags.has(f);
   const clash = (flag: Flag, reason: string): never => {
@@ -130,34 +129,9 @@ function chartCommand(flags: Map<Flag, string>, format: ChartFormat, gamut: Gamu
 }
 
 /** Flag name → raw text, or 'help'. Rejects unknown and repeated flags and positionals. */
-function readFlags(argv: readonly string[]): Map<Flag, string> | 'help' {
-  const options = Object.fromEntries<{ type: 'string' | 'boolean' }>([
-    ...VALUE_FLAGS.map((f): [string, { type: 'string' }] => [f, { type: 'string' }]),
-    ['help', { type: 'boolean' }],
-  ]);
-  const { tokens } = parseArgs({ args: [...argv], options, strict: false, allowPositionals: true, tokens: true });
-  const flags = new Map<Flag, string>();
-  let help = false;
-  for (const token of tokens) {
-    if (token.kind !== 'option') {
-      rejectValue('argument', token.kind === 'positional' ? token.value : '--', 'only flags, each --name value (see --help)');
-    }
-    const flag = `--${token.name}`;
-    if (token.name === 'help') {
-      if (token.value !== undefined) rejectValue(flag, token.value, 'no value');
-      help = true;
-      continue;
-    }
-    if (!(VALUE_FLAGS as readonly string[]).includes(token.name)) {
-      throw new ParameterError(token.rawName, `${describeValue(token.rawName)}: unknown flag; expected one of ${ALL_FLAGS}`);
-    }
-    if (flags.has(token.name)) throw new ParameterError(flag, `${flag}: given more than once; expected it at most once`);
-    // A flag with nothing after it reads as an empty value, which every check below rejects.
-    // An absurdly long value is refused by the same checks (numbers are at most 32 characters),
-    // so its message names the allowed range, with the value cut short.
-    flags.set(token.name, token.value ?? '');
-  }
-  return help ? 'help' : flags;
+function readColorFlags(argv: readonly string[]): Map<Flag, string> | 'help' {
+  const { values, switches } = readFlags(argv, VALUE_FLAGS, ['help']);
+  return switches.has('help') ? 'help' : values;
 }
 
 /** The case the case flags describe (defaults for the rest), checked like a cases-file entry. */

@@ -8,8 +8,8 @@ import { ParameterError, expectedNumber, isInDomain, type NumberDomain } from '.
  */
 export interface FlowParameterRow {
   readonly key: FlowParameterKey;
-  /** The command-line flag, without the leading "--". */
-  readonly flag: string;
+  /** The command-line flag, without the leading "--"; null for what only the app uses. */
+  readonly flag: string | null;
   readonly label: string;
   readonly domain: NumberDomain;
   readonly defaultValue: number;
@@ -39,7 +39,7 @@ const THICKNESS_DOMAIN: NumberDomain = { min: 1, max: FILM_STACK_DOMAIN.thicknes
 
 const row = (
   key: FlowParameterKey,
-  flag: string,
+  flag: string | null,
   label: string,
   domain: NumberDomain,
   defaultValue: number,
@@ -57,7 +57,7 @@ export const FLOW_PARAMETERS: readonly FlowParameterRow[] = [
   row('ruptureThicknessNm', 'rupture-nm', 'rupture thickness (nm)', { min: 0, max: 100, unit: 'nm' }, 10),
   row('rimSpeedFactor', 'rim-speed-factor', 'rim speed / Taylor–Culick', { min: 0.01, max: 1, unit: '' }, 1),
   row('gridN', 'grid', 'cells per cube face side', { min: 4, max: 256, unit: '' }, 128, true),
-  row('simSpeed', 'sim-speed', 'simulation speed (× real time)', { min: 0, max: 10, unit: '' }, 1),
+  row('simSpeed', null, 'simulation speed (× real time)', { min: 0, max: 10, unit: '' }, 1),
 ];
 
 export const DEFAULT_FLOW_PARAMETERS: FlowParameters = Object.fromEntries(FLOW_PARAMETERS.map((r) => [r.key, r.defaultValue])) as FlowParameters;

@@ -30,7 +30,7 @@ export function initialFilm(grid: CubeSphereGrid, seed: number): { eta: Float64A
       let exponent = 0;
       for (const b of bumps) exponent += b.amplitude * Math.exp(-(1 - (x * b.x + y * b.y + z * b.z)) / BUMP_WIDTH_RAD ** 2);
       eta[c] = Math.exp(exponent);
-      volume += grid.area[c]! * eta[c];
+      volume += grid.area[c]! * eta[c]!;
       totalArea += grid.area[c]!;
     }
     for (let c = 0; c < grid.cellCount; c++) eta[c] = (eta[c]! * totalArea) / volume;
