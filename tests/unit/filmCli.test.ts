@@ -40,7 +40,17 @@ describe('film command', () => {
   it('prints the specified fields: the profile at θ = 0, 5, …, 180°, the extremes, the conserved totals', () => {
     const out = runJson('--grid', '6', '--seed', '3', '--seconds', '0.5', '--json');
     expect(Object.keys(out).sort()).toEqual(
-      ['maxNm', 'minNm', 'ruptured', 'seconds', 'steps', 'surfactantRelativeChange', 'thetaDeg', 'thicknessNm', 'volumeRelativeChange'].sort(),
+      [
+        'maxNm',
+        'minNm',
+        'ruptured',
+        'seconds',
+        'steps',
+        'surfactantRelativeChange',
+        'thetaDeg',
+        'thicknessNm',
+        'volumeRelativeChange',
+      ].sort(),
     );
     expect(out.thetaDeg).toEqual(Array.from({ length: 37 }, (_, k) => 5 * k));
     expect(out.thicknessNm).toHaveLength(37);
@@ -61,7 +71,9 @@ describe('film command', () => {
     expect(out.surfactantRelativeChange).toBeCloseTo(0, 12);
   });
   it('reports a film that bursts', () => {
-    expect(runJson('--grid', '4', '--thickness-nm', '30', '--rupture-nm', '29', '--evaporation', '100', '--seconds', '0.1').ruptured).toBe(true);
+    expect(runJson('--grid', '4', '--thickness-nm', '30', '--rupture-nm', '29', '--evaporation', '100', '--seconds', '0.1').ruptured).toBe(
+      true,
+    );
   });
   it('prints usage for --help', () => {
     const r = runFilmCommand(['--help']);
@@ -88,7 +100,8 @@ describe('film command, bad input', () => {
   }
   it('--seconds: missing, not a number or outside its range', () => {
     refused(['--grid', '4'], '--seconds');
-    for (const text of [...NOT_NUMBERS, ...outsideRange(FILM_SECONDS_DOMAIN.min, FILM_SECONDS_DOMAIN.max)]) refused(['--seconds', text], '--seconds');
+    for (const text of [...NOT_NUMBERS, ...outsideRange(FILM_SECONDS_DOMAIN.min, FILM_SECONDS_DOMAIN.max)])
+      refused(['--seconds', text], '--seconds');
   });
   it('unknown flags, repeated flags, positional arguments, a value for --json', () => {
     refused(['--seconds', '1', '--bogus', '3'], '"--bogus"');
@@ -97,7 +110,10 @@ describe('film command, bad input', () => {
     refused(['--seconds', '1', '--json=yes'], '--json');
   });
   it('the real process: exit 2, one line on stderr, nothing on stdout', { timeout: SPAWN_TIMEOUT_MS }, () => {
-    const r = spawnSync('node_modules/.bin/tsx', ['src/cli/film.ts', '--wind', '3', '--seconds', '1', '--json'], { cwd: ROOT, encoding: 'utf8' });
+    const r = spawnSync('node_modules/.bin/tsx', ['src/cli/film.ts', '--wind', '3', '--seconds', '1', '--json'], {
+      cwd: ROOT,
+      encoding: 'utf8',
+    });
     expect(r.status).toBe(2);
     expect(r.stdout).toBe('');
     expect(r.stderr).toBe('film: --wind: 3 is not allowed; expected a number in [0, 2] m/s\n');

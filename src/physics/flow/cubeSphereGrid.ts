@@ -144,7 +144,9 @@ function buildGrid(n: number): CubeSphereGrid {
       const ny = corner[p + 2]! * corner[q]! - corner[p]! * corner[q + 2]!;
       const nz = corner[p]! * corner[q + 1]! - corner[p + 1]! * corner[q]!;
       const towardsB =
-        nx * (center[3 * nb]! - center[3 * c]!) + ny * (center[3 * nb + 1]! - center[3 * c + 1]!) + nz * (center[3 * nb + 2]! - center[3 * c + 2]!);
+        nx * (center[3 * nb]! - center[3 * c]!) +
+        ny * (center[3 * nb + 1]! - center[3 * c + 1]!) +
+        nz * (center[3 * nb + 2]! - center[3 * c + 2]!);
       const scale = (towardsB >= 0 ? 1 : -1) / Math.hypot(nx, ny, nz);
       edgeNormal[3 * e] = nx * scale;
       edgeNormal[3 * e + 1] = ny * scale;

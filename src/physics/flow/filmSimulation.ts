@@ -119,7 +119,10 @@ export function stepFilm(sim: FilmSimulation): void {
   correctEdgeVelocity(grid, work.prediction, work.surfactant.solution, state.edgeVelocity);
   transportFilm(grid, dt, state.edgeVelocity, state.eta, state.gamma, work.transport);
   evaporate(state, numbers.evaporation * dt);
-  ruptureFilm({ halo, parameters: sim.parameters, numbers, eta: state.eta, gamma: state.gamma, intact: state.intact, holes: state.holes }, dt);
+  ruptureFilm(
+    { halo, parameters: sim.parameters, numbers, eta: state.eta, gamma: state.gamma, intact: state.intact, holes: state.holes },
+    dt,
+  );
   state.steps++;
 }
 

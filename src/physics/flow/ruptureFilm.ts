@@ -18,7 +18,8 @@ export interface RuptureInputs {
 }
 
 /** Whether cell c of an intact film ruptures now: γ = γ_a − R̄TΓ would reach 0, or the film is at or below the rupture thickness. */
-const rupturesHere = (numbers: FlowNumbers, eta: number, gamma: number): boolean => eta <= numbers.ruptureEta || gamma >= numbers.ruptureGamma;
+const rupturesHere = (numbers: FlowNumbers, eta: number, gamma: number): boolean =>
+  eta <= numbers.ruptureEta || gamma >= numbers.ruptureGamma;
 
 /** A hole at a direction (a puncture, or where the film gave way): a new tracked hole, if there is room. */
 export function openHole(holes: FilmHole[], x: number, y: number, z: number): void {
@@ -74,7 +75,8 @@ function growRims(inputs: RuptureInputs, dt: number): void {
       sample(paddedEta, point[0]!, point[1]!, point[2]!, value);
       const thicknessM = Math.max(floorM, 2 * numbers.halfThicknessM * value[0]!);
       sample(paddedGamma, point[0]!, point[1]!, point[2]!, value);
-      const speed = (parameters.rimSpeedFactor * taylorCulickSpeedMps(surfaceTensionNM(parameters, value[0]!), thicknessM)) / VELOCITY_SCALE_M_S;
+      const speed =
+        (parameters.rimSpeedFactor * taylorCulickSpeedMps(surfaceTensionNM(parameters, value[0]!), thicknessM)) / VELOCITY_SCALE_M_S;
       hole.radius[k] = Math.min(Math.PI, r + speed * dt);
     }
   }

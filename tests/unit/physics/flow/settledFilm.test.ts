@@ -9,7 +9,13 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { type FilmSimulation, advanceFilm, createFilmSimulation } from '../../../../src/physics/flow/filmSimulation.ts';
 import { PROFILE_THETA_DEG, thicknessProfileNm, thicknessSampler } from '../../../../src/physics/flow/filmMeasures.ts';
 import { nearestCell } from '../../../../src/physics/flow/cubeSphereSampler.ts';
-import { AXISYMMETRY_REL_TOL, MIRROR_SYMMETRY_TOL, SEAM_SYMMETRY_TOL, SETTLED_PROFILE_REL_TOL, SETTLED_SLOPE_REL_TOL } from '../../../tolerances.ts';
+import {
+  AXISYMMETRY_REL_TOL,
+  MIRROR_SYMMETRY_TOL,
+  SEAM_SYMMETRY_TOL,
+  SETTLED_PROFILE_REL_TOL,
+  SETTLED_SLOPE_REL_TOL,
+} from '../../../tolerances.ts';
 import { logThicknessSlope, stationaryExponent } from './flowTestHelpers.ts';
 
 /** 10 cells per face side settle in ~800 steps; 4 s of film time is well past the measured settling (~3 s). */
