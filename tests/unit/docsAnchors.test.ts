@@ -20,7 +20,7 @@ describe('docs anchors cited in the code and docs exist', () => {
   const sources = ['src', 'shaders', 'tests', 'scripts'].flatMap(files).concat(['README.md'], files('docs'));
   const cited = new Set(
     sources.flatMap((f) =>
-      [...readFileSync(f, 'utf8').matchAll(/(?:docs\/)?\b(physics|browser|gpu)\.md#([\w-]+)/g)].map((m) => `${m[1]}.md#${m[2]}`),
+      [...readFileSync(f, 'utf8').matchAll(/(?:docs\/)?\b(physics|browser|gpu|flow)\.md#([\w-]+)/g)].map((m) => `${m[1]}.md#${m[2]}`),
     ),
   );
   it('cites some', () => expect(cited.size).toBeGreaterThan(0));

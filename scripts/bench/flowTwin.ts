@@ -1,0 +1,37 @@
+/**
+ * `npm run bench:flow`: the speed of the float64 film-flow simulation (src/physics/flow) in Node,
+ * the reference a GPU port is checked against. For 64² and 128² cells per cube face it prints
+ * steps per second, the wall and CPU time per cell-step, and what the run reached: the surfactant
+ * solve's residual and the drift of the conserved totals. Benchmarks measure; the tests check.
+ */
+import { createFilmSimulation, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
+import { sphereIntegral } from '../../src/physics/flow/filmMeasures.ts';
+
+/** Steps timed per grid after a few untimed ones (a seeded, gently blown film, so every pass has work). */
+const RUNS = [
+  { gridN: 64, warmUp: 5, steps: 60 },
+  { gridN: 128, warmUp: 3, steps: 20 },
+];
+
+console.log('| cells per face | cells | steps/s | wall ns per cell-step | CPU ns per cell-step | worst solve residual | volume drift |');
+console.log('|---|---|---|---|---|---|---|');
+for (const { gridN, warmUp, steps } of RUNS) {
+  const sim = createFilmSimulation({ gridN, seed: 1, windMps: 0.05 });
+  const volume0 = sphereIntegral(sim, sim.state.eta);
+  for (let s = 0; s < warmUp; s++) stepFilm(sim);
+  let worstResidual = 0;
+  const cpu0 = process.cpuUsage();
+  const wall0 = performance.now();
+  for (let s = 0; s < steps; s++) {
+    stepFilm(sim);
+    worstResidual = Math.max(worstResidual, sim.state.surfactantResidual);
+  }
+  const wallS = (performance.now() - wall0) / 1000;
+  const cpu = process.cpuUsage(cpu0);
+  const cpuS = (cpu.user + cpu.system) / 1e6;
+  const cellSteps = steps * sim.grid.cellCount;
+  const drift = sphereIntegral(sim, sim.state.eta) / volume0 - 1;
+  console.log(
+    `| ${gridN}² | ${sim.grid.cellCount} | ${(steps / wallS).toFixed(2)} | ${((wallS / cellSteps) * 1e9).toFixed(0)} | ${((cpuS / cellSteps) * 1e9).toFixed(0)} | ${worstResidual.toExponential(1)} | ${drift.toExponential(1)} |`,
+  );
+}
