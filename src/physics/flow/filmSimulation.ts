@@ -126,7 +126,7 @@ export function stepFilm(sim: FilmSimulation): void {
   state.steps++;
 }
 
-/** Dη/Dt = … − e of eq. (17): every intact cell loses e·Δt of η, never going below 0 (GPU pass 8). */
+/** Dη/Dt = … − e of eq. (17): every intact cell loses e·Δt of η, never going below 0 (GPU pass 7). */
 function evaporate(state: FilmState, loss: number): void {
   if (loss === 0) return;
   for (let c = 0; c < state.eta.length; c++) if (state.intact[c] === 1) state.eta[c] = Math.max(0, state.eta[c]! - loss);

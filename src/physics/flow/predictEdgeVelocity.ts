@@ -12,7 +12,7 @@ export interface EdgePrediction {
 }
 
 /**
- * Advection and the semi-implicit force step of eq. (17) at each edge (GPU pass 2). The
+ * Advection and the semi-implicit force step of eq. (17) at each edge (GPU pass 3). The
  * velocity is traced back along the great circle for Δt (semi-Lagrangian), sampled there and
  * parallel-transported to the edge; then
  *   u_e = (η_e u_adv/Δt + η_e g_e + Cr u_air − M ∂Γ/∂n) / (η_e/Δt + Cr),

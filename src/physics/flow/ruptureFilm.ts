@@ -27,7 +27,7 @@ export function openHole(holes: FilmHole[], x: number, y: number, z: number): vo
 }
 
 /**
- * Rupture and Taylor–Culick bursting (GPU passes 9–11): cells that give way open holes; every
+ * Rupture and Taylor–Culick bursting (GPU pass 8): cells that give way open holes; every
  * rim ray advances by Δt·V, V = rimSpeedFactor·√(2γ/(ρh)) with h the full thickness and γ the
  * tension of the film a little ahead of the rim; cells the rims have passed lose their film
  * (η = Γ = 0, no longer intact). docs/flow.md#rupture-and-bursting.

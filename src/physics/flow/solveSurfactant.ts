@@ -26,7 +26,7 @@ export const surfactantWork = (grid: CubeSphereGrid): SurfactantWork => ({
 });
 
 /**
- * The surfactant at the end of the step, implicit in the Marangoni term (GPU passes 3 and 4):
+ * The surfactant at the end of the step, implicit in the Marangoni term (GPU pass 4: one draw for the system, one per sweep):
  * DΓ/Dt = −Γ∇·u of eq. (17) in flux form, A_c Γ'_c = A_c Γ_c − Δt Σ_e L_e Γ_e u_e, with the edge
  * velocity u_e = u*_e − c_e (Γ'_B − Γ'_A)/d_e. The u* flux takes the upwind Γ; the Marangoni flux
  * the edge mean Γ̄_e, which makes the system symmetric positive definite:

@@ -15,7 +15,7 @@ export const transportWork = (grid: CubeSphereGrid): TransportWork => ({
 
 /**
  * Dη/Dt = −η∇·u and DΓ/Dt = −Γ∇·u of eq. (17) in conservation form, ∂q/∂t + ∇·(qu) = 0, by
- * first-order upwind finite volumes (GPU passes 6–8): each edge carries Δt L_e u_e q_upwind from
+ * first-order upwind finite volumes (GPU pass 6: limiter, edge fluxes, cell update): each edge carries Δt L_e u_e q_upwind from
  * one cell to the other, the same number leaving one and entering the other, so ∫η dA and ∫Γ dA
  * change only by rounding. A cell whose outflow in one step would exceed its content has all its
  * outflows scaled down to exactly its content (the same factor for η and Γ, so Γ/η is carried
