@@ -1,5 +1,5 @@
 import { FILM_STACK_DOMAIN } from '../filmReflectance.ts';
-import { ParameterError, expectedNumber, isInDomain, type NumberDomain, shorten } from '../validate.ts';
+import { ParameterError, describeValue, expectedNumber, isInDomain, type NumberDomain } from '../validate.ts';
 
 /**
  * Every parameter of the film-flow simulation in one table: its key, its command-line flag, its
@@ -87,12 +87,9 @@ export function validateFlowParameters(given: Partial<Record<string, unknown>> =
     const value = given[r.key];
     if (value === undefined) continue;
     if (!acceptsFlowValue(r, value)) {
-      throw new ParameterError(r.key, `${r.key}: ${describe(value)} is not allowed; expected ${expectedFlowValue(r)}`);
+      throw new ParameterError(r.key, `${r.key}: ${describeValue(value)} is not allowed; expected ${expectedFlowValue(r)}`);
     }
     values[r.key] = value;
   }
   return values;
 }
-
-/** A value as a message repeats it: numbers as written, anything else as JSON (cut short when long). */
-const describe = (value: unknown): string => (typeof value === 'number' ? String(value) : shorten(JSON.stringify(value) ?? typeof value));
