@@ -1,5 +1,6 @@
 import type { CubeSphereGrid } from './cubeSphereGrid.ts';
 import type { FlowNumbers } from './flowNumbers.ts';
+import { logarithmicMean } from './logarithmicMean.ts';
 
 /** A function writing the bilinear value of a padded 3-component field at a direction into out. */
 export type VectorSampler = (padded: Float64Array, x: number, y: number, z: number, out: Float64Array) => void;
@@ -16,9 +17,11 @@ export interface EdgePrediction {
  * velocity is traced back along the great circle for Δt (semi-Lagrangian), sampled there and
  * parallel-transported to the edge; then
  *   u_e = (η_e u_adv/Δt + η_e g_e + Cr u_air − M ∂Γ/∂n) / (η_e/Δt + Cr),
+ * η_e the logarithmic mean of the two cells' η,
  * the paper's u = (u_adv/Δt + f)/(1/Δt + Cr/η) multiplied through by η so a vanishing film follows the
  * air instead of dividing by zero. g_e = −g ∂(cos θ)/∂n is gravity as the gradient of its
- * potential, so a film at rest in the analytic profile is exactly at rest here. The Marangoni term
+ * potential; with the logarithmic mean, η_e g_e = M ∂Γ/∂n holds exactly on every edge of a film
+ * with Γ = η ∝ e^(−a cos θ), so the stationary film is exactly at rest here (well balanced). The Marangoni term
  * waits for the surfactant solve; this pass returns u* and c_e. Edges beside a ruptured cell are
  * closed (both 0). docs/flow.md#the-step.
  */
@@ -87,7 +90,7 @@ export function predictEdgeVelocity(
     } else {
       advected = wx * nx + wy * ny + wz * nz;
     }
-    const etaEdge = 0.5 * (eta[ca]! + eta[cb]!);
+    const etaEdge = logarithmicMean(eta[ca]!, eta[cb]!);
     const gravityAlongNormal = (-gravity * (center[3 * cb + 2]! - center[3 * ca + 2]!)) / edgeDistance[e]!;
     const denominator = etaEdge / dt + airFriction;
     out.predicted[e] = ((etaEdge * advected) / dt + etaEdge * gravityAlongNormal + airFriction * windAlongNormal[e]!) / denominator;

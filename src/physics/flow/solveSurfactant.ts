@@ -28,9 +28,10 @@ export const surfactantWork = (grid: CubeSphereGrid): SurfactantWork => ({
 /**
  * The surfactant at the end of the step, implicit in the Marangoni term (GPU pass 4: one draw for the system, one per sweep):
  * DΓ/Dt = −Γ∇·u of eq. (17) in flux form, A_c Γ'_c = A_c Γ_c − Δt Σ_e L_e Γ_e u_e, with the edge
- * velocity u_e = u*_e − c_e (Γ'_B − Γ'_A)/d_e. The u* flux takes the upwind Γ; the Marangoni flux
- * the edge mean Γ̄_e, which makes the system symmetric positive definite:
- *   (A_c + Σ_e w_e) Γ'_c − Σ_e w_e Γ'_nb = A_c Γ_c − Δt Σ_e L_e (u*·n_out)_e Γ_upwind.
+ * velocity u_e = u*_e − c_e (Γ'_B − Γ'_A)/d_e and the edge mean Γ̄_e of the old Γ as the flux's Γ,
+ * which makes the system symmetric positive definite:
+ *   (A_c + Σ_e w_e) Γ'_c − Σ_e w_e Γ'_nb = A_c Γ_c − Δt Σ_e L_e (u*·n_out)_e Γ̄_e.
+ * (With Γ̄_e in both parts, a film whose u* the old Γ's gradient balances returns Γ' = Γ and u = 0.)
  * Solved by SURFACTANT_JACOBI_SWEEPS Jacobi sweeps from Γ; returns the residual reached relative to
  * that of the starting guess, ‖b − AΓ'‖/‖b − AΓ‖ (0 when Γ already solves it). The Γ' found sets the velocity only: the step then moves η and Γ with
  * conservative fluxes, so an unconverged solve costs accuracy, never mass.
@@ -55,8 +56,8 @@ export function solveSurfactant(
     let d = area[c]!;
     for (let s = 0; s < 4; s++) {
       const e = cellEdge[4 * c + s]!;
-      const outward = cellEdgeSign[4 * c + s]! * predicted[e]!;
-      b -= dt * edgeLength[e]! * outward * (outward > 0 ? gamma[c]! : gamma[cellNeighbor[4 * c + s]!]!);
+      const meanGamma = 0.5 * (gamma[c]! + gamma[cellNeighbor[4 * c + s]!]!);
+      b -= dt * edgeLength[e]! * cellEdgeSign[4 * c + s]! * predicted[e]! * meanGamma;
       d += weight[e]!;
       cellWeight[4 * c + s] = weight[e]!;
     }
