@@ -13,17 +13,16 @@ export interface EdgePrediction {
 }
 
 /**
- * Advection and the semi-implicit force step of eq. (17) at each edge (GPU pass 3). The
- * velocity is traced back along the great circle for Δt (semi-Lagrangian), sampled there and
+ * Advection and the semi-implicit force step of eq. (17) at each edge (GPU pass 3). The velocity
+ * is traced back along the great circle for Δt (semi-Lagrangian), sampled there and
  * parallel-transported to the edge; then
  *   u_e = (η_e u_adv/Δt + η_e g_e + Cr u_air − M ∂Γ/∂n) / (η_e/Δt + Cr),
- * η_e the logarithmic mean of the two cells' η,
- * the paper's u = (u_adv/Δt + f)/(1/Δt + Cr/η) multiplied through by η so a vanishing film follows the
- * air instead of dividing by zero. g_e = −g ∂(cos θ)/∂n is gravity as the gradient of its
- * potential; with the logarithmic mean, η_e g_e = M ∂Γ/∂n holds exactly on every edge of a film
- * with Γ = η ∝ e^(−a cos θ), so the stationary film is exactly at rest here (well balanced). The Marangoni term
- * waits for the surfactant solve; this pass returns u* and c_e. Edges beside a ruptured cell are
- * closed (both 0). docs/flow.md#the-step.
+ * the paper's u = (u_adv/Δt + f)/(1/Δt + Cr/η) multiplied through by η, so a vanishing film follows
+ * the air instead of dividing by zero. η_e is the logarithmic mean of the two cells' η and
+ * g_e = −g ∂(cos θ)/∂n gravity as the gradient of its potential: then η_e g_e = M ∂Γ/∂n holds
+ * exactly on every edge of a film with Γ = η ∝ e^(−a cos θ), and the stationary film is exactly
+ * at rest (well balanced). The Marangoni term waits for the surfactant solve; this pass returns u*
+ * and c_e. Edges beside a ruptured cell are closed (both 0). docs/flow.md#the-step.
  */
 export function predictEdgeVelocity(
   grid: CubeSphereGrid,
@@ -42,7 +41,6 @@ export function predictEdgeVelocity(
   const { edgeA, edgeB, edgeMid, edgeNormal, edgeDistance, center } = grid;
   const { cellVelocity, paddedCellVelocity, sample, eta, intact, windAlongNormal } = inputs;
   const { airFriction, gravity, marangoni } = numbers;
-  const v = new Float64Array(3);
   const b = new Float64Array(3);
   for (let e = 0; e < grid.edgeCount; e++) {
     const ca = edgeA[e]!;
@@ -83,10 +81,7 @@ export function predictEdgeVelocity(
       const kz = mx * ty - my * tx;
       const along = b[0]! * (sn * mx + cs * tx) + b[1]! * (sn * my + cs * ty) + b[2]! * (sn * mz + cs * tz);
       const across = b[0]! * kx + b[1]! * ky + b[2]! * kz;
-      v[0] = along * tx + across * kx;
-      v[1] = along * ty + across * ky;
-      v[2] = along * tz + across * kz;
-      advected = v[0] * nx + v[1] * ny + v[2] * nz;
+      advected = along * (tx * nx + ty * ny + tz * nz) + across * (kx * nx + ky * ny + kz * nz);
     } else {
       advected = wx * nx + wy * ny + wz * nz;
     }
