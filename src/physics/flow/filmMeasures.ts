@@ -24,8 +24,8 @@ export function thicknessRangeNm(sim: FilmSimulation): { minNm: number; maxNm: n
 }
 
 /**
- * h(direction): the full thickness (nm) at a unit direction, bilinear between cell centres, for
- * rendering on the CPU. The sampler reads the state as it is when created.
+ * h(direction): the full thickness (nm) at a direction (x, y, z), any non-zero vector, bilinear
+ * between cell centres, for rendering on the CPU. The sampler reads the state as it is when created.
  */
 export function thicknessSampler(sim: FilmSimulation): (x: number, y: number, z: number) => number {
   const padded = paddedEta(sim);
