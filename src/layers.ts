@@ -5,9 +5,10 @@
  */
 export const SOURCE_LAYERS: readonly (readonly string[])[] = [
   ['physics', 'i18n'], // the float64 reference and its data: no DOM, no three.js; the texts of every language
+  ['fields'], // the film's thickness over the bubble: one module per field, registered in fields.ts
   ['settings'], // the schema of every user-facing parameter, and the film's quality knobs
   ['gpu'], // three.js plumbing: shader source, defines, shared resources, the fullscreen pass
-  ['fields', 'film'], // the film's thickness over the bubble; the film's colour on the GPU
+  ['film'], // the film's colour on the GPU
   ['bubble'], // the bubble's and the environment's materials
   ['material', 'twins'], // the material for any three.js mesh; the CPU twins of the bubble's shaders
   ['scene'], // the bubble's view: renderer, frame loop, probe

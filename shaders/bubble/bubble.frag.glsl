@@ -7,7 +7,7 @@
 // mapping (renderer.toneMapping) then maps it to the display.
 // Defines: TFC_FILM_MODE, TFC_THICKNESS_FIELD, TFC_SIDES (_FRONT | _BOTH), TFC_ENVIRONMENT, TFC_HATCH_OUT_OF_GAMUT;
 // TFC_PROBE (src/scene/probe.ts) outputs the near wall's film XYZ and thickness instead of a colour.
-#include "thicknessField.glsl"
+// tfcThicknessAt(p): the field's GLSL, placed before this file (src/bubble/thicknessFieldSource.ts).
 #include "filmColor.glsl"
 #include "colorConversions.glsl"
 #include "environment.glsl"

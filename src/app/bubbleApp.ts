@@ -1,3 +1,4 @@
+import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import type GUI from 'lil-gui';
 import type { WebGLRenderer } from 'three';
 import { PlotPanel } from '../plots/plotPanel.ts';
@@ -228,7 +229,7 @@ export class BubbleApp {
   }
 
   private get animating(): boolean {
-    return this.settings.animate && this.settings.field === 'swirl';
+    return this.settings.animate && THICKNESS_FIELDS[this.settings.field].animates;
   }
 
   private change(s: ViewSettings): void {

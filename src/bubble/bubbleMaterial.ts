@@ -2,7 +2,12 @@ import { type DataTexture, type Matrix3, ShaderMaterial } from 'three';
 import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { type FilmSettings, SIDES } from '../settings/filmSettings.ts';
-import { thicknessFieldDefines } from '../fields/thicknessField.ts';
+import {
+  thicknessFieldDefines,
+  thicknessFieldSource,
+  thicknessFieldUniforms,
+  updateThicknessFieldUniforms,
+} from './thicknessFieldSource.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
@@ -26,15 +31,12 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
     defines: bubbleDefines(s, q),
     uniforms: {
       ...filmColorUniforms(),
-      uThicknessNm: { value: 500 },
-      uThicknessRangeNm: { value: 0 },
-      uSwirlSpeed: { value: 0 },
-      uTimeSeconds: { value: 0 },
+      ...thicknessFieldUniforms(),
       ...environmentUniforms(),
       uXyzToLinearDisplay: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
     },
     vertexShader: shaderSource('bubble.vert.glsl'),
-    fragmentShader: shaderSource('bubble.frag.glsl'),
+    fragmentShader: thicknessFieldSource() + shaderSource('bubble.frag.glsl'),
   });
 }
 
@@ -53,10 +55,7 @@ export function updateBubbleUniforms(
   const u = m.uniforms;
   setDefines(m, bubbleDefines(s, q));
   updateFilmColorUniforms(m, s, q, table);
-  u.uThicknessNm!.value = s.thicknessNm;
-  u.uThicknessRangeNm!.value = s.thicknessRangeNm;
-  u.uSwirlSpeed!.value = s.swirlSpeed;
-  u.uTimeSeconds!.value = s.timeSeconds;
+  updateThicknessFieldUniforms(u, s);
   updateEnvironmentUniforms(m, s, environmentMap);
   (u.uXyzToLinearDisplay!.value as Matrix3).set(...(displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB));
 }

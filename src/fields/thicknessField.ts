@@ -1,36 +1,36 @@
-import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
-import { FIELDS, type FilmSettings } from '../settings/filmSettings.ts';
-import { enumDefines } from '../gpu/enumDefines.ts';
-
-/** The defines of shaders/fields/thicknessField.glsl for the field shown. */
-export const thicknessFieldDefines = (s: Pick<FilmSettings, 'field'>): Record<string, number> =>
-  enumDefines('TFC_THICKNESS_FIELD', FIELDS, s.field);
-
 /** A point on the unit sphere, y up. */
 export type Vec3 = readonly [number, number, number];
 
-/** GLSL's smoothstep. */
-const smoothstep = (e0: number, e1: number, x: number) => {
-  const t = Math.min(1, Math.max(0, (x - e0) / (e1 - e0)));
-  return t * t * (3 - 2 * t);
-};
-const clamp = (x: number, lo: number, hi: number) => Math.min(hi, Math.max(lo, x));
+/** What a field reads of the settings (the schema's rows in src/settings/filmParameters.ts). */
+export interface FieldSettings {
+  /** the mean thickness, nm */
+  readonly thicknessNm: number;
+  /** the drained film's top-to-bottom difference, nm */
+  readonly thicknessRangeNm: number;
+  readonly swirlSpeed: number;
+  readonly timeSeconds: number;
+}
 
-/** Film thickness in nm at point p of the bubble: the twin of shaders/fields/thicknessField.glsl. */
-export function thicknessAt(
-  [x, y, z]: Vec3,
-  s: Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm' | 'swirlSpeed' | 'timeSeconds'>,
-): number {
-  if (s.field === 'uniform') return s.thicknessNm;
-  let h = y;
-  if (s.field === 'swirl') {
-    // Swirling bands: the height is advected around the vertical axis by a slow, smooth flow.
-    const t = s.timeSeconds * s.swirlSpeed;
-    const azimuth = Math.atan2(z, x);
-    h += 0.12 * Math.sin(3 * azimuth + 2 * h + t) + 0.07 * Math.sin(5 * azimuth - 3 * h - 1.7 * t) + 0.05 * Math.sin(9 * h + 0.6 * t);
-  }
-  // Gravity drains the film: thin at the top, thick at the bottom, down to a ~10 nm black film in a cap.
-  const d = s.thicknessNm - 0.5 * s.thicknessRangeNm * clamp(h, -1, 1);
-  const capped = Math.max(d, 10) + (10 - Math.max(d, 10)) * smoothstep(0.82, 0.95, y);
-  return clamp(capped, FILM_STACK_DOMAIN.thicknessNm.min, FILM_STACK_DOMAIN.thicknessNm.max);
+/** A uniform of a field's shader, as three.js holds it. */
+export type FieldUniforms = Record<string, { value: unknown }>;
+
+/**
+ * A film thickness field over the bubble: one TypeScript module and its GLSL twin (the same
+ * name in shaders/fields/), registered once in src/fields/fields.ts. The module owns its
+ * uniforms, their update per frame, its thickness lookup, the largest thickness it reaches (which
+ * the film table must cover) and whether it changes with time.
+ */
+export interface ThicknessField {
+  /** Its GLSL file, which defines `float tfcThicknessAt(vec3 p)` and declares the uniforms below. */
+  readonly glsl: string;
+  /** Its uniforms, with placeholder values. */
+  readonly uniforms: () => FieldUniforms;
+  /** Sets its uniforms to the settings (each frame). */
+  readonly update: (u: FieldUniforms, s: FieldSettings) => void;
+  /** The thickness in nm at `p` (the twin of its GLSL `tfcThicknessAt`). */
+  readonly thicknessAt: (p: Vec3, s: FieldSettings) => number;
+  /** The largest thickness it reaches, in nm, at least 1 (the field is clamped to the domain's 20 µm). */
+  readonly maxThicknessNm: (s: FieldSettings) => number;
+  /** Whether it changes with time (the view animates only such a field). */
+  readonly animates: boolean;
 }

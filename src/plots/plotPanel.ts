@@ -1,5 +1,6 @@
 import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
-import { type FilmSettings, maxFieldThicknessNm } from '../settings/filmSettings.ts';
+import { type FilmSettings } from '../settings/filmSettings.ts';
+import { maxFieldThicknessNm } from '../fields/fields.ts';
 import type { ProbeReading } from '../scene/probe.ts';
 import { drawChromaticityPlot } from './chromaticityPlot.ts';
 import { type ProbedView, downloadName } from './downloadName.ts';

@@ -1,6 +1,7 @@
 import { type FilmIndex } from '../physics/filmIndex.ts';
+import { FIELDS, type FieldName } from '../fields/fields.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { FILM_STACK_DOMAIN, type Polarization } from '../physics/filmReflectance.ts';
+import { type Polarization } from '../physics/filmReflectance.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
 
 export const SPACES = ['srgb', 'display-p3', 'wide-gamut'] as const;
@@ -12,7 +13,7 @@ export const SPACES = ['srgb', 'display-p3', 'wide-gamut'] as const;
 export const MODES = ['exact', 'table', 'fourier'] as const;
 /** What a film shader can compute: the modes, and three.js's own iridescence (the benchmark's peer). */
 export const FILM_METHODS = [...MODES, 'three-iridescence'] as const;
-export const FIELDS = ['uniform', 'drainage', 'swirl'] as const;
+export { FIELDS };
 export const SIDES = ['both', 'front'] as const;
 /** Real HDR environments (CC0 equirectangular EXRs, 512 × 256; environmentMaps.ts loads them). */
 export const HDR_ENVIRONMENTS = ['park', 'sunset', 'studio', 'city'] as const;
@@ -44,7 +45,7 @@ export interface FilmSettings {
   readonly normalization: Normalization;
   readonly space: (typeof SPACES)[number];
   readonly mode: (typeof FILM_METHODS)[number];
-  readonly field: (typeof FIELDS)[number];
+  readonly field: FieldName;
   readonly thicknessNm: number;
   readonly thicknessRangeNm: number;
   readonly swirlSpeed: number;
@@ -55,12 +56,4 @@ export interface FilmSettings {
   readonly tonemap: (typeof TONE_MAPPINGS)[number];
   readonly exposure: number;
   readonly timeSeconds: number;
-}
-
-/** The largest thickness the field reaches, which the table must cover (the field is clamped to the domain's 20 µm). */
-export function maxFieldThicknessNm(s: Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm'>): number {
-  const max = FILM_STACK_DOMAIN.thicknessNm.max;
-  if (s.field === 'uniform') return Math.min(max, Math.max(s.thicknessNm, 1));
-  // drainage: mean + range/2 at the bottom; the swirl moves h by at most 0.24 beyond ±1 (clamped).
-  return Math.min(max, Math.max(s.thicknessNm + 0.5 * s.thicknessRangeNm, 1));
 }

@@ -5,9 +5,10 @@ import { spectralWeights } from '../physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../settings/filmQuality.ts';
 import { type ShownEnvironment, environmentRadiance, reflectedRadiance } from './environment.ts';
 import type { EnvironmentPixels } from '../bubble/environmentMaps.ts';
-import { type FilmSettings, isHdrEnvironment, maxFieldThicknessNm, toneMappingOf } from '../settings/filmSettings.ts';
+import { type FilmSettings, isHdrEnvironment, toneMappingOf } from '../settings/filmSettings.ts';
+import { maxFieldThicknessNm, thicknessAt } from '../fields/fields.ts';
 import { toneMap } from './toneMapping.ts';
-import { thicknessAt, type Vec3 } from '../fields/thicknessField.ts';
+import type { Vec3 } from '../fields/thicknessField.ts';
 
 /** The view of src/scene/bubbleView.ts: a camera on +z at distance 4 with a 35° vertical field of view. */
 export const CAMERA_DISTANCE = 4;

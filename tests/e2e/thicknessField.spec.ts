@@ -1,6 +1,6 @@
 import { expect, test } from '@playwright/test';
 import { FIELDS } from '../../src/settings/filmSettings.ts';
-import { thicknessAt } from '../../src/fields/thicknessField.ts';
+import { thicknessAt } from '../../src/fields/fields.ts';
 import { mulberry32 } from '../seededRandom.ts';
 import { THICKNESS_TWIN_RELATIVE, THICKNESS_TWIN_TOL_NM } from '../tolerances.ts';
 import type { FieldSettings } from './harness/thicknessFieldProbe.ts';

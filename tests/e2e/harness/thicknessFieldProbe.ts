@@ -1,17 +1,21 @@
 /**
- * Renders shaders/fields/thicknessField.glsl's thicknessAt at given points of the unit sphere into a
+ * Renders the thickness fields' tfcThicknessAt (shaders/fields/) at given points of the unit sphere into a
  * float target and reads it back, one pixel per point (the parity harness's thickness twin check).
  */
 import { FULLSCREEN_VERTEX } from '../../../src/gpu/fullscreenPass.ts';
 import { ShaderMaterial, type WebGLRenderer } from 'three';
 import type { FilmSettings } from '../../../src/settings/filmSettings.ts';
-import { thicknessFieldDefines } from '../../../src/fields/thicknessField.ts';
+import {
+  thicknessFieldDefines,
+  thicknessFieldSource,
+  thicknessFieldUniforms,
+  updateThicknessFieldUniforms,
+} from '../../../src/bubble/thicknessFieldSource.ts';
 import { floatRowTexture, renderFloatRow } from '../../../src/gpu/floatRow.ts';
-import { shaderSource } from '../../../src/gpu/shaderSource.ts';
 
 export type FieldSettings = Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm' | 'swirlSpeed' | 'timeSeconds'>;
 
-const FRAGMENT = `${shaderSource('thicknessField.glsl')}
+const FRAGMENT = `${thicknessFieldSource()}
 uniform sampler2D uPoints;
 void main() {
   vec3 p = texelFetch(uPoints, ivec2(gl_FragCoord.xy), 0).xyz;
@@ -26,16 +30,11 @@ export function renderThickness(
   const texture = floatRowTexture(points.map((p) => [...p, 0]));
   const material = new ShaderMaterial({
     defines: thicknessFieldDefines(s),
-    uniforms: {
-      uPoints: { value: texture },
-      uThicknessNm: { value: s.thicknessNm },
-      uThicknessRangeNm: { value: s.thicknessRangeNm },
-      uSwirlSpeed: { value: s.swirlSpeed },
-      uTimeSeconds: { value: s.timeSeconds },
-    },
+    uniforms: { uPoints: { value: texture }, ...thicknessFieldUniforms() },
     vertexShader: FULLSCREEN_VERTEX,
     fragmentShader: FRAGMENT,
   });
+  updateThicknessFieldUniforms(material.uniforms, s);
   const out = renderFloatRow(renderer, material, points.length);
   texture.dispose();
   material.dispose();

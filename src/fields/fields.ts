@@ -1,0 +1,25 @@
+import { drainageField } from './drainageField.ts';
+import { swirlField } from './swirlField.ts';
+import type { FieldSettings, ThicknessField, Vec3 } from './thicknessField.ts';
+import { uniformField } from './uniformField.ts';
+
+/**
+ * Every thickness field, by its name in the URL (`field=`): the one place a field is registered.
+ * The schema's choices, the shader's TFC_THICKNESS_FIELD and the table's range all come from here.
+ */
+export const THICKNESS_FIELDS = {
+  uniform: uniformField,
+  drainage: drainageField,
+  swirl: swirlField,
+} as const satisfies Record<string, ThicknessField>;
+
+export type FieldName = keyof typeof THICKNESS_FIELDS;
+export const FIELDS = Object.keys(THICKNESS_FIELDS) as FieldName[];
+
+/** The thickness in nm at `p` of the field `s.field` (the TypeScript twin of the shader's `tfcThicknessAt`). */
+export const thicknessAt = (p: Vec3, s: FieldSettings & { readonly field: FieldName }): number =>
+  THICKNESS_FIELDS[s.field].thicknessAt(p, s);
+
+/** The largest thickness the field reaches, which the film table must cover. */
+export const maxFieldThicknessNm = (s: FieldSettings & { readonly field: FieldName }): number =>
+  THICKNESS_FIELDS[s.field].maxThicknessNm(s);
