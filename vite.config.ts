@@ -14,6 +14,12 @@ const TEST_PAGES = ['tests/e2e/harness/parity.html', 'tests/e2e/harness/material
  */
 const LIBRARY_ENTRIES = { physics: 'src/lib/physics.ts', material: 'src/lib/material.ts', element: ELEMENT_ENTRY };
 
+/**
+ * The library's and the element's files (the light's Web Worker, the HDR environments) are found
+ * beside the module that loads them (`new URL('./assets/…', import.meta.url)`), wherever it is served from.
+ */
+const MODULE_RELATIVE = './';
+
 /** In development, the element's URL serves its source, so public/ pages work unbuilt. */
 const elementInDevelopment = (): Plugin => ({
   name: 'thin-film-bubble-dev-url',
@@ -48,6 +54,7 @@ export default defineConfig(({ mode }): UserConfig => {
   if (mode === 'lib')
     return {
       publicDir: false,
+      base: MODULE_RELATIVE,
       build: {
         outDir: 'dist-lib',
         emptyOutDir: false, // the types are written beside them
@@ -60,6 +67,7 @@ export default defineConfig(({ mode }): UserConfig => {
   if (mode !== 'element') return site(SITE_PAGES, 'dist');
   return {
     publicDir: false,
+    base: MODULE_RELATIVE,
     build: {
       emptyOutDir: false,
       chunkSizeWarningLimit: 800,

@@ -58,6 +58,9 @@ export class BubbleApp {
   private clockOrigin = 0;
   private plotsDue = true;
   private lastPlotMs = -Infinity;
+  /** Whether the plots' probe is waiting for its pixel, and how many times the settings were set (a reading for older ones is dropped). */
+  private probing = false;
+  private settingsSet = 0;
   private readonly disconnect: () => void;
   /** A ring over the bubble where the probe is (only with plots). */
   private readonly marker: HTMLElement | null;
@@ -152,6 +155,7 @@ export class BubbleApp {
     const { animate, probe, ...film } = s;
     this.app = { animate, probe };
     this.parts.view.apply(film);
+    this.settingsSet++;
     this.completeShown = false;
     this.plotsDue = true;
     if (rebuildControls) this.buildControls();
@@ -286,14 +290,35 @@ export class BubbleApp {
     if (this.looping || this.parts.view.coarse) this.requestFrame();
   }
 
+  /**
+   * Probes the frame shown and, when its pixel is back (a frame or two later), redraws the plots
+   * for it, unless the settings changed meanwhile; one probe at a time.
+   */
   private updatePlots(now: number): void {
-    if (!this.panel || this.parts.view.contextLost || !(this.plotsDue || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS)))
-      return;
-    const [fx, fy] = this.settings.probe;
+    const panel = this.panel;
+    const due = this.plotsDue || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS);
+    if (!panel || this.probing || this.parts.view.contextLost || !due) return;
+    const s = this.settings;
+    const set = this.settingsSet;
+    const [fx, fy] = s.probe;
     const { offsetLeft, offsetTop, clientWidth, clientHeight } = this.parts.surface;
     Object.assign(this.marker!.style, { left: `${offsetLeft + fx * clientWidth}px`, top: `${offsetTop + fy * clientHeight}px` });
-    this.panel.update(this.settings, this.settings.probe, this.parts.view.probe(fx, fy), this.parts.view.displayIsP3);
     this.plotsDue = false;
     this.lastPlotMs = now;
+    this.probing = true;
+    this.parts.view
+      .probe(fx, fy)
+      .then(
+        (reading) => {
+          if (!this.disposed && set === this.settingsSet) panel.update(s, s.probe, reading, this.parts.view.displayIsP3);
+        },
+        // The context was lost before the pixel came back: the plots follow the restored view.
+        () => (this.plotsDue = true),
+      )
+      .finally(() => {
+        this.probing = false;
+        // Settings set meanwhile, their complete frame shown already: their plots are still due.
+        if (!this.disposed && this.plotsDue && this.completeShown) this.schedulePlots();
+      });
   }
 }

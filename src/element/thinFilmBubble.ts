@@ -156,10 +156,19 @@ export class ThinFilmBubble extends HTMLElement {
     const [film, at, ms] = this.probedOf;
     const now = performance.now();
     if (at === probe && (film === view.current || (animate && field === 'swirl' && now - ms < PROBE_INTERVAL_MS))) return;
-    this.probedOf = [view.current, probe, now];
-    const reading = view.probe(probe[0], probe[1]);
-    this.probed = reading && { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg };
-    if (this.probed) this.dispatchEvent(new CustomEvent('probechange', { detail: this.probed }));
+    const of = (this.probedOf = [view.current, probe, now]);
+    // The pixel comes back from the GPU a frame or two later; a reading asked for since (or the element removed) counts instead.
+    view.probe(probe[0], probe[1]).then(
+      (reading) => {
+        if (this.probedOf !== of) return;
+        this.probed = reading && { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg };
+        if (this.probed) this.dispatchEvent(new CustomEvent('probechange', { detail: this.probed }));
+      },
+      // The context was lost before the pixel came back: the next complete frame reads it again.
+      () => {
+        if (this.probedOf === of) this.probedOf = [null, null, -Infinity];
+      },
+    );
   }
 
   disconnectedCallback(): void {

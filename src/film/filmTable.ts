@@ -8,7 +8,7 @@ import {
   type WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { type FilmIndex } from '../physics/filmIndex.ts';
+import { type FilmIndex, isDispersive } from '../physics/filmIndex.ts';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { dispersiveRows, dispersiveRowsTexture } from './dispersiveRows.ts';
 import { filmIndexDefines } from './filmIndexUniforms.ts';
@@ -23,8 +23,14 @@ import { filmTableLayoutDefines } from './filmTableDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { FULLSCREEN_VERTEX, FullscreenPass } from '../gpu/fullscreenPass.ts';
-import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
+import {
+  airySeriesDefines,
+  releaseSpectralTransformTexture,
+  spectralTransformReady,
+  spectralTransformTexture,
+} from './spectralTransformTexture.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
+import { type PassKind, TableBandBudget } from './tableBandBudget.ts';
 
 /** What the table depends on; anything else (the field's animation, exposure, space) leaves it alone. */
 export function tableKey(s: FilmSettings): string {
@@ -41,14 +47,7 @@ export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['
   return precision === 'auto' && e.has('EXT_color_buffer_float') && e.has('OES_texture_float_linear') ? FloatType : HalfFloatType;
 }
 
-/** A coarse table has this many times fewer texels along each side than the full one. */
-const COARSE_DIVISOR = 4;
-/**
- * A full table built behind a coarse one is drawn in this many bands of thickness, one per
- * frame, so no frame waits for the whole table (on SwiftShader a full table costs about two
- * frames of the default view, a band about a quarter of one).
- */
-const FULL_BANDS = 8;
+const passKind = (s: FilmSettings): PassKind => (isDispersive(s.nFilm) ? 'dispersive' : 'constant');
 
 interface Grid {
   readonly width: number;
@@ -60,19 +59,25 @@ interface Grid {
  * film's XYZ over (thickness 0..max, cos θ_i 0..1), for light from outside and from inside, laid
  * out as `quality.table` says. It is rebuilt only when `tableKey` changes.
  *
- * A `quick` update (the app's frames) that finds the settings changed fills a coarse grid, 1/16
- * of the texels, in a small texture of its own, so the next frame shows the change at once; the
- * quick updates after it fill the full grid band by band (FULL_BANDS, one per frame) while the
- * coarse one is shown, and the full one is shown once complete. Without `quick` (tests,
- * screenshots, the benchmark's timed builds) the full grid is built at once.
+ * A `quick` update (the app's frames) that finds the settings changed fills a coarse grid (at
+ * most 1/16 of the texels) in a small texture of its own, so the next frame shows the change at
+ * once; the quick updates after it fill the full grid band by band, one band per frame, while the
+ * coarse one is shown, and the full one is shown once complete. Bands and the coarse grid are
+ * sized by the pass's measured cost so that each fits in a share of a frame (TableBandBudget). A
+ * new light's spectral transform is computed in a Web Worker: until it arrives, quick updates keep
+ * the table shown (the previous light's). Without `quick` (tests, screenshots, the benchmark's
+ * timed builds) the full grid is built at once.
  */
 export class FilmTable {
   private readonly target: WebGLRenderTarget;
   private readonly coarseTarget: WebGLRenderTarget;
   /** What is shown: the settings' tableKey ('' for nothing) and whether from the coarse texture. */
   private shown = { key: '', coarse: false };
-  /** The full grid being built behind a coarse one: its settings and the bands done. */
-  private building: { readonly s: FilmSettings; bands: number } | null = null;
+  /** The full grid being built behind a coarse one: its settings and the columns done. */
+  private building: { readonly s: FilmSettings; columns: number } | null = null;
+  /** Whether quick updates wait for a new light's transform (the table shown is for other settings). */
+  private waiting = false;
+  private readonly budget = new TableBandBudget();
   private shownGrid: Grid = { width: 1, rows: 1 };
   private readonly fullscreen = new FullscreenPass();
   /** The table pass: one program for every polarisation (a uniform), so changing it compiles nothing. */
@@ -111,9 +116,12 @@ export class FilmTable {
     this.coarseTarget = new WebGLRenderTarget(1, 2, options);
   }
 
-  /** Whether the table shown is the coarse one: more updates will make it full. */
+  /**
+   * Whether the table shown is the coarse one, or another settings' while a quick update waits for
+   * the light's transform: more updates will make it the full one for the settings.
+   */
   get coarse(): boolean {
-    return this.shown.coarse;
+    return this.shown.coarse || this.waiting;
   }
 
   /** Points a material that looks the table up (shaders/film/filmColor.glsl, table mode) at it. */
@@ -130,6 +138,7 @@ export class FilmTable {
    */
   update(renderer: WebGLRenderer, s: FilmSettings, quick = false): boolean {
     const key = tableKey(s);
+    this.waiting = false;
     if (!quick) {
       if (key === this.shown.key && !this.shown.coarse) return false;
       this.building = null;
@@ -137,26 +146,41 @@ export class FilmTable {
       this.show(key, false);
       return true;
     }
+    // A table shown (the first is not waited for) stays until the new light's transform is at hand.
+    if (key !== this.shown.key && this.shown.key !== '' && !spectralTransformReady(s.illuminant, s.normalization)) {
+      this.waiting = true;
+      this.budget.idle(); // the frames meanwhile draw no table: they are not timed
+      return false;
+    }
+    this.budget.frameBegins(performance.now());
+    const kind = passKind(s);
     if (key !== this.shown.key) {
       const full = this.fullGrid(s);
-      const grid = { width: Math.max(2, Math.ceil(full.width / COARSE_DIVISOR)), rows: Math.ceil(full.rows / COARSE_DIVISOR) };
-      this.building = { s, bands: 0 };
-      this.draw(renderer, s, this.coarseTarget, grid, null);
+      const divisor = this.budget.coarseDivisor(kind, full.width * 2 * full.rows);
+      const grid = { width: Math.max(2, Math.ceil(full.width / divisor)), rows: Math.max(2, Math.ceil(full.rows / divisor)) };
+      this.building = { s, columns: 0 };
+      this.timedDraw(renderer, s, this.coarseTarget, grid, [0, grid.width]);
       this.show(key, true, grid);
       return true;
     }
     if (!this.shown.coarse || !this.building) return false;
     const b = this.building;
     const grid = this.fullGrid(b.s);
-    const from = Math.floor((b.bands * grid.width) / FULL_BANDS);
-    b.bands++;
-    const to = Math.floor((b.bands * grid.width) / FULL_BANDS);
-    const last = b.bands === FULL_BANDS;
+    const from = b.columns;
+    b.columns += this.budget.bandColumns(kind, 2 * grid.rows, grid.width, grid.width - from);
+    const last = b.columns === grid.width;
     if (last) this.building = null; // the last band lets go of the light's textures
-    this.draw(renderer, b.s, this.target, grid, [from, to]);
+    this.timedDraw(renderer, b.s, this.target, grid, [from, b.columns]);
     if (!last) return false;
+    this.budget.idle();
     this.show(key, false);
     return true;
+  }
+
+  /** `draw` in the app's frames: its cost, synced, goes to the budget. */
+  private timedDraw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: [number, number]): void {
+    const ms = this.draw(renderer, s, target, grid, columns);
+    this.budget.drawn(passKind(s), (columns[1] - columns[0]) * 2 * grid.rows, ms, performance.now());
   }
 
   /** The full grid for the settings (its width follows the thickness range). */
@@ -179,9 +203,10 @@ export class FilmTable {
 
   /**
    * Runs the pass over `grid` in `target` (sized to it), over the columns [from, to) if given
-   * (the rest of the texture is kept), and waits for it (a 1-pixel read).
+   * (the rest of the texture is kept), and waits for it (a 1-pixel read); returns the pass's
+   * milliseconds, from a 1-pixel read before it (the GPU's earlier work done) to the one after.
    */
-  private draw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: [number, number] | null): void {
+  private draw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: [number, number] | null): number {
     const type = tableTexelType(renderer, this.quality.tablePrecision);
     if (target.texture.type !== type) {
       target.dispose(); // reallocated at the new type on the next render
@@ -208,14 +233,20 @@ export class FilmTable {
     u.uFilmTableRows!.value = grid.rows;
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(target);
+    const pixel = type === FloatType ? new Float32Array(4) : new Uint16Array(4);
+    renderer.readRenderTargetPixels(target, from, 0, 1, 1, pixel);
+    const started = performance.now();
     this.fullscreen.render(renderer, material);
-    renderer.readRenderTargetPixels(target, from, 0, 1, 1, type === FloatType ? new Float32Array(4) : new Uint16Array(4));
+    renderer.readRenderTargetPixels(target, from, 0, 1, 1, pixel);
+    const ms = performance.now() - started;
     renderer.setRenderTarget(previous);
     // The pass reads the light's textures only while it draws: let go of them until the next
     // build, unless a full table is being built band by band.
-    if (this.building) return;
-    releaseSpectralBinsTexture(this);
-    releaseSpectralTransformTexture(this);
+    if (!this.building) {
+      releaseSpectralBinsTexture(this);
+      releaseSpectralTransformTexture(this);
+    }
+    return ms;
   }
 
   /** The per-row terms for `s` on `grid` (computed in float64 on the CPU), unless the texture holds them already. */
@@ -258,6 +289,7 @@ export class FilmTable {
   invalidate(): void {
     this.shown = { key: '', coarse: false };
     this.building = null;
+    this.waiting = false;
     this.rowsFor = ''; // its row terms too, with the rest of the table
   }
 

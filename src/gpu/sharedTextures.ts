@@ -27,6 +27,11 @@ export class SharedTextures<T extends { dispose(): void }> {
     return entry.texture;
   }
 
+  /** Whether some holder holds the texture for `key` (`hold` would not create it). */
+  has(key: string): boolean {
+    return this.entries.has(key);
+  }
+
   /** `holder` needs no texture from here any more (it is disposed, or its method needs none). */
   release(holder: object): void {
     const key = this.heldKey.get(holder);

@@ -165,7 +165,10 @@ export class BubbleView {
     this.table.bind(this.bubble.material.uniforms);
   }
 
-  /** Whether the last frame was drawn from a coarse table (FilmTable): the next one will be full. */
+  /**
+   * Whether the last frame was drawn from a coarse table, or from the previous light's while the
+   * new light's transform is computed (FilmTable): more frames follow until one is full.
+   */
   get coarse(): boolean {
     return this.settings.mode === 'table' && this.table.coarse;
   }
@@ -200,8 +203,11 @@ export class BubbleView {
     r.render(this.scene, this.camera);
   }
 
-  /** The film at a point of the view (fractions from the top left), or null off the bubble. */
-  probe(fx: number, fy: number): ProbeReading | null {
+  /**
+   * The film at a point of the view (fractions from the top left) as drawn now, or null off the
+   * bubble: the pixel comes back from the GPU a frame or two later (FilmProbe).
+   */
+  probe(fx: number, fy: number): Promise<ProbeReading | null> {
     this.syncTable();
     return this.filmProbe.read(this.renderer, this.camera, this.bubble, this.size, fx, fy);
   }

@@ -46,20 +46,27 @@ export function incidenceAngleDeg(camera: PerspectiveCamera, fx: number, fy: num
 /**
  * Reads the film at one pixel back from the GPU: the bubble is drawn once more through a
  * 1-pixel window of the camera (setViewOffset) with the material's TFC_PROBE output — the near
- * wall's film XYZ and thickness — into a 1×1 float target.
+ * wall's film XYZ and thickness — into a 1×1 float target, read back without waiting for the GPU:
+ * three's readRenderTargetPixelsAsync copies the pixel into a pixel-pack buffer, puts a fence
+ * after it and polls the fence (clientWaitSync with timeout 0) until it is signalled, then reads
+ * the buffer, so the frames go on meanwhile.
  */
 export class FilmProbe {
   private readonly target = new WebGLRenderTarget(1, 1, { type: FloatType, format: RGBAFormat });
   private material: ShaderMaterial | null = null;
 
-  read(
+  /**
+   * The film at (fx, fy) (fractions of the view from the top left) as the bubble is drawn now: null
+   * off the bubble; rejects if the context is lost before the pixel is back.
+   */
+  async read(
     renderer: WebGLRenderer,
     camera: PerspectiveCamera,
     bubble: Mesh<SphereGeometry, ShaderMaterial>,
     viewSize: { width: number; height: number },
     fx: number,
     fy: number,
-  ): ProbeReading | null {
+  ): Promise<ProbeReading | null> {
     const angleDeg = incidenceAngleDeg(camera, fx, fy);
     if (angleDeg === null) return null;
     const shown = bubble.material;
@@ -74,10 +81,11 @@ export class FilmProbe {
     renderer.clear();
     renderer.render(bubble, camera);
     const pixel = new Float32Array(4);
-    renderer.readRenderTargetPixels(this.target, 0, 0, 1, 1, pixel);
+    const read = renderer.readRenderTargetPixelsAsync(this.target, 0, 0, 1, 1, pixel);
     renderer.setRenderTarget(previous);
     bubble.material = shown;
     camera.clearViewOffset();
+    await read;
     return { thicknessNm: pixel[3]!, angleDeg, renderedXyz: [pixel[0]!, pixel[1]!, pixel[2]!] };
   }
 

@@ -28,11 +28,13 @@ async function save(page: Page, file: string): Promise<{ name: string; bytes: Bu
 test('each plot saves as a PNG of its pixels, the spectrum as the reference CSV, named after the view', async ({ page }) => {
   await page.goto(VIEW);
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
-  // The film the plots show: the probe's reading (thickness from the shader, θ_i from the camera ray).
-  const { thicknessNm, angleDeg } = await page.evaluate(
-    ([fx, fy]) => (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView.probe(fx, fy)!,
+  // The film the plots show: the probe's reading (thickness from the shader, θ_i from the camera ray), once back from the GPU.
+  const reading = await page.evaluate(
+    ([fx, fy]) => (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView.probe(fx, fy),
     PROBE,
   );
+  expect(reading, 'the probe is on the bubble').not.toBeNull();
+  const { thicknessNm, angleDeg } = reading!;
   console.log(`downloads: probed ${thicknessNm} nm at ${angleDeg}°`);
   expect(angleDeg).toBeGreaterThan(5);
   const base = `film-450nm-D65-${Math.round(angleDeg)}deg`;
