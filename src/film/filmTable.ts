@@ -152,7 +152,6 @@ export class FilmTable {
       this.budget.idle(); // the frames meanwhile draw no table: they are not timed
       return false;
     }
-    this.budget.frameBegins(performance.now());
     const kind = passKind(s);
     if (key !== this.shown.key) {
       const full = this.fullGrid(s);
@@ -177,10 +176,10 @@ export class FilmTable {
     return true;
   }
 
-  /** `draw` in the app's frames: its cost, synced, goes to the budget. */
+  /** `draw` in the app's frames: when it began and what it cost go to the budget. */
   private timedDraw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: [number, number]): void {
-    const ms = this.draw(renderer, s, target, grid, columns);
-    this.budget.drawn(passKind(s), (columns[1] - columns[0]) * 2 * grid.rows, ms, performance.now());
+    const { began, ms } = this.draw(renderer, s, target, grid, columns);
+    this.budget.drawn(passKind(s), (columns[1] - columns[0]) * 2 * grid.rows, began, ms);
   }
 
   /** The full grid for the settings (its width follows the thickness range). */
@@ -203,10 +202,16 @@ export class FilmTable {
 
   /**
    * Runs the pass over `grid` in `target` (sized to it), over the columns [from, to) if given
-   * (the rest of the texture is kept), and waits for it (a 1-pixel read); returns the pass's
-   * milliseconds, from a 1-pixel read before it (the GPU's earlier work done) to the one after.
+   * (the rest of the texture is kept), and waits for it (a 1-pixel read); returns when the pass
+   * began, after a 1-pixel read before it (the GPU's earlier work done), and its milliseconds.
    */
-  private draw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: [number, number] | null): number {
+  private draw(
+    renderer: WebGLRenderer,
+    s: FilmSettings,
+    target: WebGLRenderTarget,
+    grid: Grid,
+    columns: [number, number] | null,
+  ): { began: number; ms: number } {
     const type = tableTexelType(renderer, this.quality.tablePrecision);
     if (target.texture.type !== type) {
       target.dispose(); // reallocated at the new type on the next render
@@ -235,10 +240,10 @@ export class FilmTable {
     renderer.setRenderTarget(target);
     const pixel = type === FloatType ? new Float32Array(4) : new Uint16Array(4);
     renderer.readRenderTargetPixels(target, from, 0, 1, 1, pixel);
-    const started = performance.now();
+    const began = performance.now();
     this.fullscreen.render(renderer, material);
     renderer.readRenderTargetPixels(target, from, 0, 1, 1, pixel);
-    const ms = performance.now() - started;
+    const ms = performance.now() - began;
     renderer.setRenderTarget(previous);
     // The pass reads the light's textures only while it draws: let go of them until the next
     // build, unless a full table is being built band by band.
@@ -246,7 +251,7 @@ export class FilmTable {
       releaseSpectralBinsTexture(this);
       releaseSpectralTransformTexture(this);
     }
-    return ms;
+    return { began, ms };
   }
 
   /** The per-row terms for `s` on `grid` (computed in float64 on the CPU), unless the texture holds them already. */

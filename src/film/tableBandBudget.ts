@@ -11,38 +11,43 @@ export const COARSE_DIVISOR = 4;
 /** … and the first band of a kind of pass not yet measured is this share of the width. */
 const FIRST_BAND_SHARE = 1 / 16;
 /**
- * A frame's time is taken as at most this many times the last one measured: a frame that came
- * late (the page was hidden, a long task ran) does not make the next band a whole table.
+ * The estimates err on the side of smaller bands. A frame's time measured longer than the one
+ * taken counts half (their mean), and at most this many times the one taken: a frame that came late
+ * (the page was hidden, a long task ran) does not make the next band a whole table; a shorter one
+ * counts at once. A pass's cost per texel measured higher counts at once, a lower one half.
  */
 const FRAME_GROWTH = 2;
-/** A band is at least this many columns: the fixed cost of a draw and its sync is then small beside its texels'. */
+/** A band is at least this many columns: the fixed cost of a draw and its syncs is then small beside its texels'. */
 const MIN_BAND_COLUMNS = 4;
 
 /** What is measured of a table pass: a dispersive film's texel sums its bins, a constant film's the series. */
 export type PassKind = 'dispersive' | 'constant';
 
 export class TableBandBudget {
-  /** A frame's own time (ms): from the end of one table draw to the next, less that draw. */
-  private frameMs: number | null = null;
-  /** The pass's measured cost per texel (ms), by kind. */
+  /** A frame's own time (ms): from the end of one table draw to the start of the next, the GPU's work for the frame between included. */
+  private frameMs: number | undefined;
+  /** The pass's cost per texel (ms), by kind. */
   private readonly msPerTexel = new Map<PassKind, number>();
-  /** When the last table draw of the app's frames ended (performance.now()). */
+  /** When the last table draw of the app's frames ended (performance.now()), if the frames since are building. */
   private lastDrawEnd: number | null = null;
 
-  /** A frame of the app begins (before its table draw, if any): the time since the last draw is a frame's. */
-  frameBegins(now: number): void {
-    if (this.lastDrawEnd === null) return;
-    const measured = now - this.lastDrawEnd;
-    this.frameMs = this.frameMs === null ? measured : Math.min(measured, FRAME_GROWTH * this.frameMs);
+  /**
+   * A table draw in the app's frames: it began at `began` (performance.now(), once the GPU had
+   * done the work before it) and took `ms` (synced) for `texels` texels.
+   */
+  drawn(kind: PassKind, texels: number, began: number, ms: number): void {
+    if (this.lastDrawEnd !== null) {
+      const frame = began - this.lastDrawEnd;
+      const taken = this.frameMs;
+      this.frameMs = taken === undefined || frame <= taken ? frame : Math.min((taken + frame) / 2, FRAME_GROWTH * taken);
+    }
+    const cost = ms / texels;
+    const taken = this.msPerTexel.get(kind);
+    this.msPerTexel.set(kind, taken === undefined || cost >= taken ? cost : (taken + cost) / 2);
+    this.lastDrawEnd = began + ms;
   }
 
-  /** A table draw of `texels` texels took `ms` (synced), ending `now`. */
-  drawn(kind: PassKind, texels: number, ms: number, now: number): void {
-    this.msPerTexel.set(kind, ms / texels);
-    this.lastDrawEnd = now;
-  }
-
-  /** The app's frames stopped building (the table is complete): the next frame's time is not a frame's. */
+  /** The app's frames stopped building (the table is complete, or waits): the time until the next draw is not a frame's. */
   idle(): void {
     this.lastDrawEnd = null;
   }
@@ -51,7 +56,7 @@ export class TableBandBudget {
   bandColumns(kind: PassKind, rows: number, width: number, remaining: number): number {
     const cost = this.msPerTexel.get(kind);
     const columns =
-      cost === undefined || this.frameMs === null
+      cost === undefined || this.frameMs === undefined
         ? Math.ceil(width * FIRST_BAND_SHARE)
         : Math.floor((BAND_SHARE * this.frameMs) / (cost * rows));
     return Math.min(remaining, Math.max(MIN_BAND_COLUMNS, columns));
@@ -60,7 +65,7 @@ export class TableBandBudget {
   /** How many times fewer texels per side the coarse table has than the full one (`texels` texels). */
   coarseDivisor(kind: PassKind, texels: number): number {
     const cost = this.msPerTexel.get(kind);
-    if (cost === undefined || this.frameMs === null) return COARSE_DIVISOR;
+    if (cost === undefined || this.frameMs === undefined) return COARSE_DIVISOR;
     return Math.max(COARSE_DIVISOR, Math.ceil(Math.sqrt((texels * cost) / (BAND_SHARE * this.frameMs))));
   }
 }
