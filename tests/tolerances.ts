@@ -161,3 +161,11 @@ export const AXISYMMETRY_REL_TOL = 0.01;
 
 /** The rim's measured speed against √(2γ/(ρh)) × the factor (the mask quantises the hole to cells). */
 export const RIM_SPEED_REL_TOL = 0.05;
+
+/**
+ * A frame drawn from the coarse table (1/16 of the texels or fewer, interpolated) against the
+ * reference colour, in 8-bit codes: the full table's 2 plus its coarser cells' interpolation (at a
+ * uniform 450 nm film head-on the coarse frames measured 0), well under the 15 codes between D55
+ * and D93 there, so each frame is told to be one light or the other.
+ */
+export const COARSE_FRAME_CODES = 5;
