@@ -104,3 +104,6 @@ export const ROWS: readonly BenchRow[] = [
   },
   { ...exact(90), name: 'exact, nFilm=water (150 bins, Fresnel per bin)', settings: view('exact', { nFilm: 'water' }) },
 ];
+
+/** The spectral material's figures (the example page, the app bundle): they run with every row, or when this name is picked. */
+export const MATERIALS_ROW = 'materials page: spectral film against three.js iridescence';

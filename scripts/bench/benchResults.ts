@@ -1,0 +1,64 @@
+/**
+ * What a benchmark run writes (bench-results.json, or the smoke's file) and what docs/benchmarks.md
+ * is generated from; and the check that every figure a run should have is there and finite.
+ */
+import type { BenchPlan } from './benchPlan.ts';
+import type { BundleSizes } from './bundleSize.ts';
+import type { DemoPageFigures } from './demoPage.ts';
+import type { MaterialFigures } from './materialFigures.ts';
+import type { PackageSize } from './packageSize.ts';
+import type { ReferenceSpeed } from './referenceSpeed.ts';
+import type { MeasuredRow } from './rowsMarkdown.ts';
+
+export interface BenchResults {
+  readonly plan: BenchPlan;
+  /** the machine: Node's version, logical CPUs, their model, the 1-minute load average at the start and the end */
+  readonly machine: { readonly node: string; readonly cpus: number; readonly cpuModel: string; readonly load: readonly number[] };
+  readonly reference: ReferenceSpeed | null;
+  readonly rows: readonly MeasuredRow[];
+  /** null: not run (rows picked without it) or failed */
+  readonly materials: MaterialFigures | null;
+  readonly bundle: BundleSizes | null;
+  readonly package: PackageSize | null;
+  readonly demo: DemoPageFigures | null;
+  /** each stage's time, s */
+  readonly stageSeconds: Readonly<Record<string, number>>;
+  readonly seconds: number;
+  /** the stages that threw, with why */
+  readonly failures: readonly { readonly stage: string; readonly message: string }[];
+}
+
+/** Every number under `value` that is not finite, and every undefined, by its path. */
+function nonFinite(value: unknown, path: string): string[] {
+  if (value === undefined) return [`${path} is missing`];
+  if (typeof value === 'number') return Number.isFinite(value) ? [] : [`${path} is ${value}`];
+  if (value === null || typeof value !== 'object') return [];
+  return Object.entries(value).flatMap(([key, v]) => nonFinite(v, `${path}.${key}`));
+}
+
+/**
+ * What is wrong with a run's results: a stage that threw, a figure that is not finite, or one that
+ * is missing — a row without its first frame time, error columns where a row measures error and
+ * none where it does not; in a smoke run (whose sizes are small) every size and change timed.
+ */
+export function resultProblems(r: BenchResults, measuresError: (rowName: string) => boolean, expectMaterials: boolean): string[] {
+  const problems = r.failures.map((f) => `${f.stage} threw: ${f.message}`);
+  problems.push(
+    ...nonFinite(
+      { reference: r.reference, rows: r.rows, materials: r.materials, bundle: r.bundle, package: r.package, demo: r.demo },
+      'results',
+    ),
+  );
+  for (const [name, figures] of Object.entries({ reference: r.reference, bundle: r.bundle, package: r.package, demo: r.demo }))
+    if (figures === null) problems.push(`no ${name} figures`);
+  if (expectMaterials && r.materials === null) problems.push('no materials figures');
+  for (const row of r.rows) {
+    if (row.frames[0] == null) problems.push(`${row.name}: no frame time at the first size`);
+    if (measuresError(row.name) && row.errors === null) problems.push(`${row.name}: no error columns, though the row measures error`);
+    if (!measuresError(row.name) && row.errors !== null) problems.push(`${row.name}: error columns, though the row measures no error`);
+    if (row.errors !== null && row.errors.length !== 2) problems.push(`${row.name}: ${row.errors.length} error grids, not 2`);
+    if (r.plan.smoke && row.frames.some((f) => f === null)) problems.push(`${row.name}: a size not timed`);
+    if (r.plan.smoke && row.changeToFrameMs.some((c) => c === null)) problems.push(`${row.name}: a change not timed`);
+  }
+  return problems;
+}

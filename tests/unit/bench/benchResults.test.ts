@@ -1,0 +1,83 @@
+/** The check a benchmark run ends with: a stage that threw, a figure missing or not finite. */
+import { describe, expect, it } from 'vitest';
+import { FULL_PLAN, SMOKE_PLAN } from '../../../scripts/bench/benchPlan.ts';
+import type { BenchResults } from '../../../scripts/bench/benchResults.ts';
+import { resultProblems } from '../../../scripts/bench/benchResults.ts';
+import type { MeasuredRow } from '../../../scripts/bench/rowsMarkdown.ts';
+import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
+import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
+
+const stats = { cases: 100, max: 0.1, p99: 0.08, mean: 0.02, worst: { thicknessNm: 10, angleDeg: 5 } };
+const row = (name: string, more: Partial<MeasuredRow> = {}): MeasuredRow => ({
+  name,
+  settings: DEFAULT_SETTINGS,
+  quality: DEFAULT_FILM_QUALITY,
+  firstFrameMs: 900,
+  tableBuildMs: 300,
+  rebuildsWhileAnimating: 0,
+  frames: [{ medianMs: 60, count: 30 }],
+  changeToFrameMs: [300, 310, 320, 330],
+  errors: null,
+  seconds: 12,
+  ...more,
+});
+const results = (rows: MeasuredRow[], more: Partial<BenchResults> = {}): BenchResults => ({
+  plan: FULL_PLAN,
+  machine: { node: 'v20', cpus: 2, cpuModel: 'cpu', load: [1, 1] },
+  reference: {
+    reflectancePerSecondSharedOptics: 1e7,
+    reflectancePerSecondFullCall: 5e5,
+    table0to2000nmAt1nmMs: 99,
+    thickestFilmColorMs: 1,
+    sink: 3,
+  },
+  rows,
+  materials: null,
+  bundle: { files: {}, demoGzipBytes: 1000, elementGzipBytes: 900, environmentGzipBytes: [100] },
+  package: { tarballBytes: 100, unpackedBytes: 300, files: 5 },
+  demo: null,
+  stageSeconds: {},
+  seconds: 600,
+  failures: [],
+  ...more,
+});
+const measures = (name: string) => name !== 'floor';
+
+describe('bench results check', () => {
+  const good = [row('floor'), row('table', { errors: [stats, stats] })];
+
+  it('a complete run has no problems but the figures it lacks', () => {
+    expect(resultProblems(results(good), measures, false)).toEqual(['no demo figures']);
+  });
+
+  it('names a figure that is not finite, by its path', () => {
+    const bad = [good[0]!, row('table', { errors: [stats, stats], frames: [{ medianMs: NaN, count: 30 }] })];
+    expect(resultProblems(results(bad), measures, false)).toContain('results.rows.1.frames.0.medianMs is NaN');
+  });
+
+  it('error columns exist exactly where a row measures error', () => {
+    const problems = resultProblems(results([row('floor', { errors: [stats, stats] }), row('table')]), measures, false);
+    expect(problems).toContain('floor: error columns, though the row measures no error');
+    expect(problems).toContain('table: no error columns, though the row measures error');
+  });
+
+  it('a stage that threw, missing materials, and in a smoke run a size or change not timed', () => {
+    const slow = row('table', {
+      errors: [stats, stats],
+      frames: [{ medianMs: 4000, count: 1 }, null],
+      changeToFrameMs: [null, null, null, null],
+    });
+    const r = results([good[0]!, slow], { plan: SMOKE_PLAN, failures: [{ stage: 'exact, 90 bins', message: 'lost context' }] });
+    const problems = resultProblems(r, measures, true);
+    expect(problems).toEqual(
+      expect.arrayContaining([
+        'exact, 90 bins threw: lost context',
+        'no materials figures',
+        'table: a size not timed',
+        'table: a change not timed',
+      ]),
+    );
+    // The same slow row in a full run is trimmed, not incomplete.
+    expect(resultProblems(results([good[0]!, slow]), measures, false)).toEqual(['no demo figures']);
+  });
+});
