@@ -39,8 +39,8 @@ console.log(benchMarkdown(results));
 mkdirSync(dirname(plan.resultsFile), { recursive: true });
 writeFileSync(plan.resultsFile, JSON.stringify(results, null, 2));
 console.error(`${plan.resultsFile} written (${results.seconds.toFixed(0)} s)`);
-const measuresError = (name: string) => ROWS.find((r) => r.name === name)?.measuresError ?? false;
-const problems = resultProblems(results, measuresError, withMaterials);
+const rowOf = (name: string) => ROWS.find((r) => r.name === name)!;
+const problems = resultProblems(results, rowOf, withMaterials);
 if (problems.length > 0) {
   console.error(`The run is incomplete:\n${problems.map((p) => `- ${p}`).join('\n')}`);
   process.exit(1);

@@ -13,8 +13,9 @@ export interface BenchPlan {
   /** frames timed per size at most; the budget cuts a slow row's frames and changes short */
   readonly frames: number;
   readonly frameBudgetMs: number;
-  /** how often each change and its way back is timed, at most (fewer where they outlast the budget) */
+  /** how often each change and its way back is timed, at most (fewer where they outlast the budget); whether the way back is timed */
   readonly changeRepeats: number;
+  readonly changesBack: boolean;
   /** every `gridStride`-th film of each error grid */
   readonly gridStride: number;
   readonly materials: { readonly width: number; readonly height: number; readonly frames: number };
@@ -31,12 +32,13 @@ export const FULL_PLAN: BenchPlan = {
     [1280, 720],
     [1920, 1080],
   ],
-  frames: 30,
-  frameBudgetMs: 3000,
-  changeRepeats: 3,
+  frames: 20,
+  frameBudgetMs: 2000,
+  changeRepeats: 2,
+  changesBack: true,
   gridStride: 1,
-  materials: { width: 1280, height: 720, frames: 30 },
-  demo: { width: 1280, height: 720, panelRepeats: 3, windowMs: 1000 },
+  materials: { width: 1280, height: 720, frames: 20 },
+  demo: { width: 1280, height: 720, panelRepeats: 2, windowMs: 1000 },
   devPort: 5192,
   previewPort: 5193,
   resultsFile: 'bench-results.json',
@@ -48,6 +50,7 @@ export const SMOKE_PLAN: BenchPlan = {
   frames: 1,
   frameBudgetMs: 3000,
   changeRepeats: 1,
+  changesBack: false,
   gridStride: 16,
   materials: { width: 160, height: 90, frames: 1 },
   demo: { width: 320, height: 180, panelRepeats: 1, windowMs: 400 },

@@ -8,6 +8,7 @@ import type { DemoPageFigures } from './demoPage.ts';
 import type { MaterialFigures } from './materialFigures.ts';
 import type { PackageSize } from './packageSize.ts';
 import type { ReferenceSpeed } from './referenceSpeed.ts';
+import type { BenchRow } from './rows.ts';
 import type { MeasuredRow } from './rowsMarkdown.ts';
 
 export interface BenchResults {
@@ -39,9 +40,13 @@ function nonFinite(value: unknown, path: string): string[] {
 /**
  * What is wrong with a run's results: a stage that threw, a figure that is not finite, or one that
  * is missing — a row without its first frame time, error columns where a row measures error and
- * none where it does not; in a smoke run (whose sizes are small) every size and change timed.
+ * none where it does not, a size or a change not timed but where the frame budget trims them.
  */
-export function resultProblems(r: BenchResults, measuresError: (rowName: string) => boolean, expectMaterials: boolean): string[] {
+export function resultProblems(
+  r: BenchResults,
+  rowOf: (rowName: string) => Pick<BenchRow, 'kind' | 'measuresError'>,
+  expectMaterials: boolean,
+): string[] {
   const problems = r.failures.map((f) => `${f.stage} threw: ${f.message}`);
   problems.push(
     ...nonFinite(
@@ -53,12 +58,18 @@ export function resultProblems(r: BenchResults, measuresError: (rowName: string)
     if (figures === null) problems.push(`no ${name} figures`);
   if (expectMaterials && r.materials === null) problems.push('no materials figures');
   for (const row of r.rows) {
+    const { kind, measuresError } = rowOf(row.name);
     if (row.frames[0] == null) problems.push(`${row.name}: no frame time at the first size`);
-    if (measuresError(row.name) && row.errors === null) problems.push(`${row.name}: no error columns, though the row measures error`);
-    if (!measuresError(row.name) && row.errors !== null) problems.push(`${row.name}: error columns, though the row measures no error`);
+    if (measuresError && row.errors === null) problems.push(`${row.name}: no error columns, though the row measures error`);
+    if (!measuresError && row.errors !== null) problems.push(`${row.name}: error columns, though the row measures no error`);
     if (row.errors !== null && row.errors.length !== 2) problems.push(`${row.name}: ${row.errors.length} error grids, not 2`);
-    if (r.plan.smoke && row.frames.some((f) => f === null)) problems.push(`${row.name}: a size not timed`);
-    if (r.plan.smoke && row.changeToFrameMs.some((c) => c === null)) problems.push(`${row.name}: a change not timed`);
+    // Trimmed by the budget: the sizes after a frame that outlasted it, and the changes of a row whose first did.
+    const overBudget = row.frames.map((f) => f !== null && f.medianMs > r.plan.frameBudgetMs);
+    row.frames.forEach((f, k) => {
+      if (f === null && !overBudget.slice(0, k).includes(true)) problems.push(`${row.name}: size ${k + 1} not timed`);
+    });
+    const changesTrimmed = kind === 'textured' || overBudget[0] === true;
+    if (!changesTrimmed && row.changeToFrameMs.some((c) => c === null)) problems.push(`${row.name}: a change not timed`);
   }
   return problems;
 }

@@ -15,8 +15,9 @@ export interface BenchRowSpec {
   /** frames timed per size, at most, and the time budget that may cut them short (slow rows) */
   readonly frames: number;
   readonly frameBudgetMs: number;
-  /** how often each change and its way back is timed, at most */
+  /** how often each change and its way back is timed, at most; whether the way back is timed too */
   readonly changeRepeats: number;
+  readonly changesBack: boolean;
   /** cases whose film XYZ the shader computes for the error columns (none where the row measures no error) */
   readonly grids: readonly ParityGroup[];
 }
@@ -35,7 +36,8 @@ export interface BenchRowResult {
   readonly frames: readonly ({ readonly medianMs: number; readonly count: number } | null)[];
   /**
    * per change of CHANGES: the change applied → the next frame drawn and read back, ms (median of
-   * the changes and changes back); null: not timed (the row's frame outlasts the budget)
+   * the changes and changes back); null: not timed (the textured sphere, or the row's frame
+   * outlasts the budget)
    */
   readonly changeToFrameMs: readonly (number | null)[];
   /** per grid of the spec, per case: XYZ */

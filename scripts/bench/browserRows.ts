@@ -26,6 +26,7 @@ export async function runRow(
       frames: plan.frames,
       frameBudgetMs: plan.frameBudgetMs,
       changeRepeats: plan.changeRepeats,
+      changesBack: plan.changesBack,
       grids,
     });
   } finally {

@@ -77,11 +77,14 @@ async function panelChanges(
           if (running) requestAnimationFrame(tick);
         };
         requestAnimationFrame(tick);
+        // At least three frames before the input and two after the full one, however slow the frames.
         await wait(windowMs);
+        while (stamps.length < 3) await wait(50);
         inputAt = performance.now();
         set(name, value);
         while (fullAt === Infinity) await wait(50);
         await wait(windowMs);
+        while (stamps.filter((t) => t > fullAt).length < 2) await wait(50);
         running = false;
         const before = stamps.filter((t) => t < inputAt);
         const gapsBefore = before.slice(1).map((t, i) => t - before[i]!);

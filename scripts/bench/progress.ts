@@ -19,11 +19,11 @@ export function rowCost(row: BenchRow): number {
   const dispersive = typeof row.settings.nFilm !== 'number';
   switch (row.settings.mode) {
     case 'exact':
-      return dispersive ? 4 : 1 + row.quality.exactSpectralBins / 45;
+      return dispersive ? 2.5 : 1.5;
     case 'fourier':
-      return dispersive ? 4 : 2;
+      return dispersive ? 2.5 : 2;
     case 'table':
-      return row.kind === 'bubble' && row.quality.table.fill === 'binned' ? 2 : 1;
+      return row.kind === 'bubble' && (row.quality.table.fill === 'binned' || dispersive) ? 2 : 1;
     default:
       return 1;
   }

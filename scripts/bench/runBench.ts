@@ -105,7 +105,10 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
   const devUrl = `http://127.0.0.1:${plan.devPort}`;
   const browser = await chromium.launch(chromiumLaunchOptions());
   try {
-    const server = await createServer({ logLevel: 'silent', server: { port: plan.devPort, strictPort: true, host: '127.0.0.1' } });
+    const server = await createServer({
+      logLevel: 'silent',
+      server: { port: plan.devPort, strictPort: true, host: '127.0.0.1', hmr: false, watch: null },
+    });
     await server.listen();
     const measured: MeasuredRow[] = [];
     let materials = null;

@@ -9,6 +9,7 @@ import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
 
 const stats = { cases: 100, max: 0.1, p99: 0.08, mean: 0.02, worst: { thicknessNm: 10, angleDeg: 5 } };
 const row = (name: string, more: Partial<MeasuredRow> = {}): MeasuredRow => ({
+  // the floor shows no film: its changes are not timed
   name,
   settings: DEFAULT_SETTINGS,
   quality: DEFAULT_FILM_QUALITY,
@@ -16,7 +17,7 @@ const row = (name: string, more: Partial<MeasuredRow> = {}): MeasuredRow => ({
   tableBuildMs: 300,
   rebuildsWhileAnimating: 0,
   frames: [{ medianMs: 60, count: 30 }],
-  changeToFrameMs: [300, 310, 320, 330],
+  changeToFrameMs: name === 'floor' ? [null, null, null, null] : [300, 310, 320, 330],
   errors: null,
   seconds: 12,
   ...more,
@@ -41,7 +42,10 @@ const results = (rows: MeasuredRow[], more: Partial<BenchResults> = {}): BenchRe
   failures: [],
   ...more,
 });
-const measures = (name: string) => name !== 'floor';
+const measures = (name: string) => ({
+  kind: name === 'floor' ? ('textured' as const) : ('bubble' as const),
+  measuresError: name !== 'floor',
+});
 
 describe('bench results check', () => {
   const good = [row('floor'), row('table', { errors: [stats, stats] })];
@@ -61,23 +65,29 @@ describe('bench results check', () => {
     expect(problems).toContain('table: no error columns, though the row measures error');
   });
 
-  it('a stage that threw, missing materials, and in a smoke run a size or change not timed', () => {
-    const slow = row('table', {
+  it('a stage that threw, missing materials, a size or a change not timed where the budget does not trim them', () => {
+    const untimed = row('table', {
       errors: [stats, stats],
-      frames: [{ medianMs: 4000, count: 1 }, null],
-      changeToFrameMs: [null, null, null, null],
+      frames: [{ medianMs: 60, count: 20 }, null],
+      changeToFrameMs: [300, null, 320, 330],
     });
-    const r = results([good[0]!, slow], { plan: SMOKE_PLAN, failures: [{ stage: 'exact, 90 bins', message: 'lost context' }] });
-    const problems = resultProblems(r, measures, true);
-    expect(problems).toEqual(
+    const r = results([good[0]!, untimed], { plan: SMOKE_PLAN, failures: [{ stage: 'exact, 90 bins', message: 'lost context' }] });
+    expect(resultProblems(r, measures, true)).toEqual(
       expect.arrayContaining([
         'exact, 90 bins threw: lost context',
         'no materials figures',
-        'table: a size not timed',
+        'table: size 2 not timed',
         'table: a change not timed',
       ]),
     );
-    // The same slow row in a full run is trimmed, not incomplete.
+  });
+
+  it('a row whose frame outlasts the budget is trimmed (its larger sizes and its changes), not incomplete', () => {
+    const slow = row('exact', {
+      errors: [stats, stats],
+      frames: [{ medianMs: FULL_PLAN.frameBudgetMs + 1, count: 1 }, null],
+      changeToFrameMs: [null, null, null, null],
+    });
     expect(resultProblems(results([good[0]!, slow]), measures, false)).toEqual(['no demo figures']);
   });
 });
