@@ -29,12 +29,19 @@ export interface BenchResults {
   readonly failures: readonly { readonly stage: string; readonly message: string }[];
 }
 
-/** Every number under `value` that is not finite, and every undefined, by its path. */
-function nonFinite(value: unknown, path: string): string[] {
+/** The fields that may be null (not measured, or not applicable), or hold entries that may be. */
+const NULLABLE = new Set(['tableBuildMs', 'errors', 'elementGzipBytes', 'frames', 'changeToFrameMs']);
+
+/**
+ * Every number under `value` that is not finite, every undefined, and every null but in NULLABLE,
+ * by its path: the same on the results in memory and read back from JSON (where NaN is null).
+ */
+function nonFinite(value: unknown, path: string, key: string, parentKey: string): string[] {
   if (value === undefined) return [`${path} is missing`];
+  if (value === null) return NULLABLE.has(key) || NULLABLE.has(parentKey) ? [] : [`${path} is null`];
   if (typeof value === 'number') return Number.isFinite(value) ? [] : [`${path} is ${value}`];
-  if (value === null || typeof value !== 'object') return [];
-  return Object.entries(value).flatMap(([key, v]) => nonFinite(v, `${path}.${key}`));
+  if (typeof value !== 'object') return [];
+  return Object.entries(value).flatMap(([k, v]) => nonFinite(v, `${path}.${k}`, k, key));
 }
 
 /**
@@ -48,12 +55,8 @@ export function resultProblems(
   expectMaterials: boolean,
 ): string[] {
   const problems = r.failures.map((f) => `${f.stage} threw: ${f.message}`);
-  problems.push(
-    ...nonFinite(
-      { reference: r.reference, rows: r.rows, materials: r.materials, bundle: r.bundle, package: r.package, demo: r.demo },
-      'results',
-    ),
-  );
+  const figures = { reference: r.reference, rows: r.rows, materials: r.materials, bundle: r.bundle, package: r.package, demo: r.demo };
+  for (const [name, f] of Object.entries(figures)) if (f !== null) problems.push(...nonFinite(f, `results.${name}`, name, ''));
   for (const [name, figures] of Object.entries({ reference: r.reference, bundle: r.bundle, package: r.package, demo: r.demo }))
     if (figures === null) problems.push(`no ${name} figures`);
   if (expectMaterials && r.materials === null) problems.push('no materials figures');

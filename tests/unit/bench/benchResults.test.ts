@@ -59,6 +59,13 @@ describe('bench results check', () => {
     expect(resultProblems(results(bad), measures, false)).toContain('results.rows.1.frames.0.medianMs is NaN');
   });
 
+  it('finds it again in the results read back from JSON (where NaN is null), and accepts the nulls that mean not measured', () => {
+    const bad = [good[0]!, row('table', { errors: [stats, stats], frames: [{ medianMs: NaN, count: 30 }] })];
+    const readBack = JSON.parse(JSON.stringify(results(bad))) as BenchResults;
+    expect(resultProblems(readBack, measures, false)).toEqual(['results.rows.1.frames.0.medianMs is null', 'no demo figures']);
+    expect(resultProblems(JSON.parse(JSON.stringify(results(good))) as BenchResults, measures, false)).toEqual(['no demo figures']);
+  });
+
   it('error columns exist exactly where a row measures error', () => {
     const problems = resultProblems(results([row('floor', { errors: [stats, stats] }), row('table')]), measures, false);
     expect(problems).toContain('floor: error columns, though the row measures no error');
