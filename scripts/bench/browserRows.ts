@@ -4,6 +4,7 @@ import type { ParityGroup } from '../harness/parityCase.ts';
 import type { BenchPlan } from './benchPlan.ts';
 import type { BenchRowResult } from './benchRow.ts';
 import type { BenchRow } from './rows.ts';
+import { openPage } from './openPage.ts';
 
 /** One row in a fresh page; `grids` empty where the row measures no error (then `xyz` is empty). */
 export async function runRow(
@@ -13,7 +14,7 @@ export async function runRow(
   row: BenchRow,
   grids: readonly ParityGroup[],
 ): Promise<BenchRowResult> {
-  const page = await browser.newPage({ viewport: { width: 640, height: 360 } });
+  const page = await openPage(browser, { viewport: { width: 640, height: 360 } });
   try {
     await page.goto(`${baseUrl}/scripts/bench/page/bench.html`);
     await page.waitForSelector('body[data-ready="yes"]');
@@ -36,7 +37,7 @@ export async function runRow(
 
 /** Loads the page once so the dev server has transformed every module before the first-frame times. */
 export async function warmUp(browser: Browser, baseUrl: string): Promise<void> {
-  const page = await browser.newPage();
+  const page = await openPage(browser);
   await page.goto(`${baseUrl}/scripts/bench/page/bench.html`);
   await page.waitForSelector('body[data-ready="yes"]');
   await page.close();

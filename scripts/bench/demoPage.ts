@@ -5,6 +5,7 @@
 import type { Browser, Page } from '@playwright/test';
 import { FRAME_MARKS } from '../../src/app/frameMarks.ts';
 import type { BenchPlan } from './benchPlan.ts';
+import { openPage } from './openPage.ts';
 
 type DemoPlan = BenchPlan['demo'];
 
@@ -135,7 +136,7 @@ async function open(
   url: string,
   how: DemoPlan,
 ): Promise<{ page: Page; firstFrameMs: number; firstCompleteFrameMs: number }> {
-  const page = await browser.newPage({ viewport: { width: how.width, height: how.height } });
+  const page = await openPage(browser, { viewport: { width: how.width, height: how.height } });
   // tsx names the functions it compiles with a helper (__name) that pages evaluated from here lack.
   // From before any script runs, the timestamp of every animation frame shown.
   await page.addInitScript({

@@ -13,6 +13,7 @@ import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import type { BenchPlan } from './benchPlan.ts';
 import { type GridError, gridError } from './errorGrids.ts';
+import { openPage } from './openPage.ts';
 
 /** The modes whose error the material's grids measure. */
 const GRID_MODES = ['table', 'fourier'] as const;
@@ -40,7 +41,7 @@ async function gridErrors(
   grids: readonly ParityGroup[],
   reference: readonly (readonly Xyz[])[],
 ): Promise<MaterialFigures['gridErrors']> {
-  const page = await browser.newPage();
+  const page = await openPage(browser);
   try {
     await page.goto(`${baseUrl}/scripts/bench/page/materialGrid.html`);
     await page.waitForSelector('body[data-ready="yes"]');
@@ -70,7 +71,7 @@ type FrameTimesPlan = BenchPlan['materials'];
 
 /** Median frame times of the example page (materials.html), the two views alternating frame by frame so noise hits both alike. */
 async function frameTimes(browser: Browser, baseUrl: string, how: FrameTimesPlan): Promise<MaterialFigures['frameMs']> {
-  const page = await browser.newPage({ viewport: { width: how.width, height: how.height }, deviceScaleFactor: 1 });
+  const page = await openPage(browser, { viewport: { width: how.width, height: how.height }, deviceScaleFactor: 1 });
   try {
     await page.goto(`${baseUrl}/materials.html`);
     await page.waitForSelector('body[data-frames]');
