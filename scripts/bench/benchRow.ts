@@ -15,7 +15,10 @@ export interface BenchRowSpec {
   /** frames timed per size, at most, and the time budget that may cut them short (slow rows) */
   readonly frames: number;
   readonly frameBudgetMs: number;
-  /** cases whose film XYZ the shader computes for the error columns (none for `textured`) */
+  /** how often each change and its way back is timed, at most; whether the way back is timed too */
+  readonly changeRepeats: number;
+  readonly changesBack: boolean;
+  /** cases whose film XYZ the shader computes for the error columns (none where the row measures no error) */
   readonly grids: readonly ParityGroup[];
 }
 
@@ -26,11 +29,18 @@ export interface BenchRowResult {
   readonly tableBuildMs: number | null;
   /** table rebuilds while the timed frames animated the field */
   readonly rebuildsWhileAnimating: number;
-  /** per size: median ms/frame and how many frames it is the median of */
-  readonly frames: readonly { readonly medianMs: number; readonly count: number }[];
-  /** per change of CHANGES: the change applied → the next frame drawn and read back, ms (median of 3) */
-  readonly changeToFrameMs: readonly number[];
-  /** per grid, per case: XYZ */
+  /**
+   * per size: median ms/frame and how many frames it is the median of; null: not timed (a smaller
+   * size's frame outlasted the budget)
+   */
+  readonly frames: readonly ({ readonly medianMs: number; readonly count: number } | null)[];
+  /**
+   * per change of CHANGES: the change applied → the next frame drawn and read back, ms (median of
+   * the changes and changes back); null: not timed (the textured sphere, or the row's frame
+   * outlasts the budget)
+   */
+  readonly changeToFrameMs: readonly (number | null)[];
+  /** per grid of the spec, per case: XYZ */
   readonly xyz: readonly number[][][];
 }
 

@@ -1,19 +1,20 @@
 /** Runs the benchmark rows in headless Chromium, one fresh page (and WebGL context) per row. */
 import type { Browser } from '@playwright/test';
 import type { ParityGroup } from '../harness/parityCase.ts';
+import type { BenchPlan } from './benchPlan.ts';
 import type { BenchRowResult } from './benchRow.ts';
 import type { BenchRow } from './rows.ts';
+import { openPage } from './openPage.ts';
 
-export const SIZES = [
-  [1280, 720],
-  [1920, 1080],
-] as const;
-/** A frame time is the median of ≥ 30 frames; slow rows stop at this much time per size (≥ 5 frames). */
-export const FRAMES = 30;
-export const FRAME_BUDGET_MS = 3000;
-
-export async function runRow(browser: Browser, baseUrl: string, row: BenchRow, grids: readonly ParityGroup[]): Promise<BenchRowResult> {
-  const page = await browser.newPage({ viewport: { width: 640, height: 360 } });
+/** One row in a fresh page; `grids` empty where the row measures no error (then `xyz` is empty). */
+export async function runRow(
+  browser: Browser,
+  baseUrl: string,
+  plan: BenchPlan,
+  row: BenchRow,
+  grids: readonly ParityGroup[],
+): Promise<BenchRowResult> {
+  const page = await openPage(browser, { viewport: { width: 640, height: 360 } });
   try {
     await page.goto(`${baseUrl}/scripts/bench/page/bench.html`);
     await page.waitForSelector('body[data-ready="yes"]');
@@ -22,10 +23,12 @@ export async function runRow(browser: Browser, baseUrl: string, row: BenchRow, g
       reflections: row.reflections ?? true,
       settings: row.settings,
       quality: row.quality,
-      sizes: SIZES,
-      frames: FRAMES,
-      frameBudgetMs: FRAME_BUDGET_MS,
-      grids: row.measuresError ? grids : [],
+      sizes: plan.sizes,
+      frames: plan.frames,
+      frameBudgetMs: plan.frameBudgetMs,
+      changeRepeats: plan.changeRepeats,
+      changesBack: plan.changesBack,
+      grids,
     });
   } finally {
     await page.close();
@@ -34,7 +37,7 @@ export async function runRow(browser: Browser, baseUrl: string, row: BenchRow, g
 
 /** Loads the page once so the dev server has transformed every module before the first-frame times. */
 export async function warmUp(browser: Browser, baseUrl: string): Promise<void> {
-  const page = await browser.newPage();
+  const page = await openPage(browser);
   await page.goto(`${baseUrl}/scripts/bench/page/bench.html`);
   await page.waitForSelector('body[data-ready="yes"]');
   await page.close();

@@ -4,6 +4,10 @@
  */
 import type { Browser, Page } from '@playwright/test';
 import { FRAME_MARKS } from '../../src/app/frameMarks.ts';
+import type { BenchPlan } from './benchPlan.ts';
+import { openPage } from './openPage.ts';
+
+type DemoPlan = BenchPlan['demo'];
 
 export interface DemoPageFigures {
   /** navigation start to the first frame shown (the first animation frame after the page's first-frame mark) */
@@ -15,7 +19,7 @@ export interface DemoPageFigures {
   readonly animating: FrameCounts;
   readonly canvasHidden: FrameCounts;
   readonly pageHidden: FrameCounts;
-  /** per change of PANEL_CHANGES: the longest gap between frames shown after the input, in median frame intervals (median of 6, and the worst) */
+  /** per change of PANEL_CHANGES: the longest gap between frames shown after the input, in median frame intervals (median of the changes there and back, and the worst) */
   readonly panelLongestGap: readonly { readonly median: number; readonly max: number }[];
   /** … input to the first frame shown in full, plots included, median ms */
   readonly panelChangeFullMs: readonly number[];
@@ -34,68 +38,75 @@ export const PANEL_CHANGES = [
 
 /**
  * Each change through the lil-gui panel (a number box's input event, or a list's change event),
- * three times there and back, as a user sees it: the animation frames shown (requestAnimationFrame
- * timestamps) from 1 s before the input to 1 s after the frame that shows it in full; the longest
+ * there and back `panelRepeats` times, as a user sees it: the animation frames shown (requestAnimationFrame
+ * timestamps) from `windowMs` before the input to `windowMs` after the frame that shows it in full; the longest
  * gap between two of them after the input, against the median gap before it; and the time from
  * the input to the first frame shown in full with the plots drawn.
  */
 async function panelChanges(
   page: Page,
+  how: DemoPlan,
 ): Promise<{ panelLongestGap: { median: number; max: number }[]; panelChangeFullMs: number[]; frameMs: number }> {
-  return page.evaluate(async (changes) => {
-    const view = (window as unknown as { bubbleView: { coarse: boolean } }).bubbleView;
-    const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
-    const wait = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
-    const controller = (name: string) =>
-      [...document.querySelectorAll<HTMLElement>('.lil-controller')].find((c) => c.querySelector('.lil-name')!.textContent === name)!;
-    const set = (name: string, value: string) => {
-      const c = controller(name);
-      const select = c.querySelector('select');
-      if (select) {
-        select.value = value;
-        select.dispatchEvent(new Event('change', { bubbles: true }));
-      } else {
-        const input = c.querySelector('input')!;
-        input.value = value;
-        input.dispatchEvent(new Event('input', { bubbles: true }));
-      }
-    };
-    /** [longest gap after the input / median gap before, ms to the first frame in full, the median gap]. */
-    const measure = async (name: string, value: string): Promise<[number, number, number]> => {
-      const stamps: number[] = [];
-      let running = true;
-      let inputAt = Infinity;
-      let fullAt = Infinity;
-      const tick = (t: number) => {
-        stamps.push(t);
-        if (t > inputAt && !view.coarse && fullAt === Infinity) fullAt = t;
-        if (running) requestAnimationFrame(tick);
+  return page.evaluate(
+    async ([changes, repeats, windowMs]) => {
+      const view = (window as unknown as { bubbleView: { coarse: boolean } }).bubbleView;
+      const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
+      const wait = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
+      const controller = (name: string) =>
+        [...document.querySelectorAll<HTMLElement>('.lil-controller')].find((c) => c.querySelector('.lil-name')!.textContent === name)!;
+      const set = (name: string, value: string) => {
+        const c = controller(name);
+        const select = c.querySelector('select');
+        if (select) {
+          select.value = value;
+          select.dispatchEvent(new Event('change', { bubbles: true }));
+        } else {
+          const input = c.querySelector('input')!;
+          input.value = value;
+          input.dispatchEvent(new Event('input', { bubbles: true }));
+        }
       };
-      requestAnimationFrame(tick);
-      await wait(1000);
-      inputAt = performance.now();
-      set(name, value);
-      while (fullAt === Infinity) await wait(50);
-      await wait(1000);
-      running = false;
-      const before = stamps.filter((t) => t < inputAt);
-      const gapsBefore = before.slice(1).map((t, i) => t - before[i]!);
-      const after = stamps.slice(before.length - 1);
-      const gapsAfter = after.slice(1).map((t, i) => t - after[i]!);
-      return [Math.max(...gapsAfter) / median(gapsBefore), fullAt - inputAt, median(gapsBefore)];
-    };
-    const panelLongestGap: { median: number; max: number }[] = [];
-    const panelChangeFullMs: number[] = [];
-    const frames: number[] = [];
-    for (const [name, value, back] of changes) {
-      const runs: [number, number, number][] = [];
-      for (let i = 0; i < 3; i++) runs.push(await measure(name, value), await measure(name, back));
-      panelLongestGap.push({ median: median(runs.map((r) => r[0])), max: Math.max(...runs.map((r) => r[0])) });
-      panelChangeFullMs.push(median(runs.map((r) => r[1])));
-      frames.push(...runs.map((r) => r[2]));
-    }
-    return { panelLongestGap, panelChangeFullMs, frameMs: median(frames) };
-  }, PANEL_CHANGES);
+      /** [longest gap after the input / median gap before, ms to the first frame in full, the median gap]. */
+      const measure = async (name: string, value: string): Promise<[number, number, number]> => {
+        const stamps: number[] = [];
+        let running = true;
+        let inputAt = Infinity;
+        let fullAt = Infinity;
+        const tick = (t: number) => {
+          stamps.push(t);
+          if (t > inputAt && !view.coarse && fullAt === Infinity) fullAt = t;
+          if (running) requestAnimationFrame(tick);
+        };
+        requestAnimationFrame(tick);
+        // At least three frames before the input and two after the full one, however slow the frames.
+        await wait(windowMs);
+        while (stamps.length < 3) await wait(50);
+        inputAt = performance.now();
+        set(name, value);
+        while (fullAt === Infinity) await wait(50);
+        await wait(windowMs);
+        while (stamps.filter((t) => t > fullAt).length < 2) await wait(50);
+        running = false;
+        const before = stamps.filter((t) => t < inputAt);
+        const gapsBefore = before.slice(1).map((t, i) => t - before[i]!);
+        const after = stamps.slice(before.length - 1);
+        const gapsAfter = after.slice(1).map((t, i) => t - after[i]!);
+        return [Math.max(...gapsAfter) / median(gapsBefore), fullAt - inputAt, median(gapsBefore)];
+      };
+      const panelLongestGap: { median: number; max: number }[] = [];
+      const panelChangeFullMs: number[] = [];
+      const frames: number[] = [];
+      for (const [name, value, back] of changes) {
+        const runs: [number, number, number][] = [];
+        for (let i = 0; i < repeats; i++) runs.push(await measure(name, value), await measure(name, back));
+        panelLongestGap.push({ median: median(runs.map((r) => r[0])), max: Math.max(...runs.map((r) => r[0])) });
+        panelChangeFullMs.push(median(runs.map((r) => r[1])));
+        frames.push(...runs.map((r) => r[2]));
+      }
+      return { panelLongestGap, panelChangeFullMs, frameMs: median(frames) };
+    },
+    [PANEL_CHANGES, how.panelRepeats, how.windowMs] as const,
+  );
 }
 export interface FrameCounts {
   readonly frames: number;
@@ -120,8 +131,12 @@ async function countOneSecond(page: Page): Promise<FrameCounts> {
   }, WINDOW_MS);
 }
 
-async function open(browser: Browser, url: string): Promise<{ page: Page; firstFrameMs: number; firstCompleteFrameMs: number }> {
-  const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
+async function open(
+  browser: Browser,
+  url: string,
+  how: DemoPlan,
+): Promise<{ page: Page; firstFrameMs: number; firstCompleteFrameMs: number }> {
+  const page = await openPage(browser, { viewport: { width: how.width, height: how.height } });
   // tsx names the functions it compiles with a helper (__name) that pages evaluated from here lack.
   // From before any script runs, the timestamp of every animation frame shown.
   await page.addInitScript({
@@ -142,13 +157,13 @@ async function open(browser: Browser, url: string): Promise<{ page: Page; firstF
   return { page, firstFrameMs, firstCompleteFrameMs };
 }
 
-export async function demoPageFigures(browser: Browser, baseUrl: string): Promise<DemoPageFigures> {
-  const still = await open(browser, `${baseUrl}/?animate=0`);
+export async function demoPageFigures(browser: Browser, baseUrl: string, how: DemoPlan): Promise<DemoPageFigures> {
+  const still = await open(browser, `${baseUrl}/?animate=0`, how);
   const stillCounts = await countOneSecond(still.page);
   await still.page.close();
-  const { page, firstFrameMs, firstCompleteFrameMs } = await open(browser, `${baseUrl}/`);
+  const { page, firstFrameMs, firstCompleteFrameMs } = await open(browser, `${baseUrl}/`, how);
   const animating = await countOneSecond(page);
-  const { panelLongestGap, panelChangeFullMs, frameMs } = await panelChanges(page);
+  const { panelLongestGap, panelChangeFullMs, frameMs } = await panelChanges(page, how);
   await page.evaluate(() => (document.querySelector<HTMLCanvasElement>('#bubble')!.style.display = 'none'));
   const canvasHidden = await countOneSecond(page);
   await page.evaluate(() => {

@@ -11,7 +11,9 @@ import { build } from 'vite';
 import type { View } from '../../src/pages/materialsScene.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
+import type { BenchPlan } from './benchPlan.ts';
 import { type GridError, gridError } from './errorGrids.ts';
+import { openPage } from './openPage.ts';
 
 /** The modes whose error the material's grids measure. */
 const GRID_MODES = ['table', 'fourier'] as const;
@@ -39,7 +41,7 @@ async function gridErrors(
   grids: readonly ParityGroup[],
   reference: readonly (readonly Xyz[])[],
 ): Promise<MaterialFigures['gridErrors']> {
-  const page = await browser.newPage();
+  const page = await openPage(browser);
   try {
     await page.goto(`${baseUrl}/scripts/bench/page/materialGrid.html`);
     await page.waitForSelector('body[data-ready="yes"]');
@@ -65,12 +67,11 @@ async function gridErrors(
   }
 }
 
-const FRAMES = 30;
-const SIZE = [1280, 720] as const;
+type FrameTimesPlan = BenchPlan['materials'];
 
 /** Median frame times of the example page (materials.html), the two views alternating frame by frame so noise hits both alike. */
-async function frameTimes(browser: Browser, baseUrl: string): Promise<MaterialFigures['frameMs']> {
-  const page = await browser.newPage({ viewport: { width: SIZE[0], height: SIZE[1] }, deviceScaleFactor: 1 });
+async function frameTimes(browser: Browser, baseUrl: string, how: FrameTimesPlan): Promise<MaterialFigures['frameMs']> {
+  const page = await openPage(browser, { viewport: { width: how.width, height: how.height }, deviceScaleFactor: 1 });
   try {
     await page.goto(`${baseUrl}/materials.html`);
     await page.waitForSelector('body[data-frames]');
@@ -87,7 +88,7 @@ async function frameTimes(browser: Browser, baseUrl: string): Promise<MaterialFi
       // (No named functions in here: tsx would wrap them in a helper the page does not have.)
       for (const v of views) times[v]!.sort((x, y) => x - y);
       return { 'three.js': times['three.js']![frames >> 1]!, spectral: times.spectral![frames >> 1]! };
-    }, FRAMES);
+    }, how.frames);
   } finally {
     await page.close();
   }
@@ -128,15 +129,16 @@ async function appGzipBytes(spectral: boolean): Promise<number> {
 export async function materialFigures(
   browser: Browser,
   baseUrl: string,
+  how: FrameTimesPlan,
   grids: readonly ParityGroup[],
   reference: readonly (readonly Xyz[])[],
 ): Promise<MaterialFigures> {
   return {
     gridErrors: await gridErrors(browser, baseUrl, grids, reference),
-    width: SIZE[0],
-    height: SIZE[1],
-    frameMs: await frameTimes(browser, baseUrl),
-    frames: FRAMES,
+    width: how.width,
+    height: how.height,
+    frameMs: await frameTimes(browser, baseUrl, how),
+    frames: how.frames,
     threeAppGzipBytes: await appGzipBytes(false),
     spectralAppGzipBytes: await appGzipBytes(true),
   };

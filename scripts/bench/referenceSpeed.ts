@@ -49,7 +49,7 @@ export function referenceSpeed(): ReferenceSpeed {
   };
 }
 
-export const referenceSpeedMarkdown = (r: ReferenceSpeed): string => `| reference (Node ${process.version}, median) | value |
+export const referenceSpeedMarkdown = (r: ReferenceSpeed, node: string): string => `| reference (Node ${node}, median) | value |
 |---|---|
 | R(λ) evaluations/s, unpolarised, optics shared across λ (as the integrator does) | ${(r.reflectancePerSecondSharedOptics / 1e6).toFixed(2)} M |
 | R(λ) evaluations/s, each call from scratch (\`filmReflectance\`) | ${(r.reflectancePerSecondFullCall / 1e6).toFixed(2)} M |

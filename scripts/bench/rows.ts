@@ -99,8 +99,11 @@ export const ROWS: readonly BenchRow[] = [
   // A dispersive film (water at 20 °C) in each mode, against the same modes' rows with n 1.33 above.
   { ...table({}, ', nFilm=water (150 bins, Fresnel per row and bin)'), settings: view('table', { nFilm: 'water' }) },
   {
-    ...fourier(q.airySeriesMaxOrders, ', nFilm=water (falls back to the 150 dispersive bins)'),
+    ...fourier(q.airySeriesMaxOrders, ", nFilm=water (the shader's fallback: 150 dispersive bins per fragment; the app draws the table)"),
     settings: view('fourier', { nFilm: 'water' }),
   },
   { ...exact(90), name: 'exact, nFilm=water (150 bins, Fresnel per bin)', settings: view('exact', { nFilm: 'water' }) },
 ];
+
+/** The spectral material's figures (the example page, the app bundle): they run with every row, or when this name is picked. */
+export const MATERIALS_ROW = 'materials page: spectral film against three.js iridescence';

@@ -1,21 +1,26 @@
 /** The benchmark's main table, as Markdown. */
 import type { DeltaStats } from '../../src/physics/deltaStats.ts';
+import type { FilmQuality } from '../../src/settings/filmQuality.ts';
+import type { FilmSettings } from '../../src/settings/filmSettings.ts';
+import type { BenchPlan } from './benchPlan.ts';
 import type { BenchRowResult } from './benchRow.ts';
 
 export interface MeasuredRow extends Omit<BenchRowResult, 'xyz'> {
   readonly name: string;
+  readonly settings: FilmSettings;
+  readonly quality: FilmQuality;
+  /** per error grid (fixed, stress); null where the row measures no error */
   readonly errors: readonly DeltaStats[] | null;
+  /** the row's own time in the run, s */
+  readonly seconds: number;
 }
 
 const ms = (v: number) => (v >= 100 ? v.toFixed(0) : v.toFixed(1));
 const stats = (s: DeltaStats | undefined) => (s ? `${s.max.toFixed(2)} / ${s.p99.toFixed(2)} / ${s.mean.toFixed(3)}` : '—');
 
-export function rowsMarkdown(
-  rows: readonly MeasuredRow[],
-  how: { sizes: readonly (readonly [number, number])[]; frames: number; frameBudgetMs: number },
-): string {
+export function rowsMarkdown(rows: readonly MeasuredRow[], plan: BenchPlan): string {
   const floor = rows[0]!; // the plain textured sphere
-  const sizeHeads = how.sizes.map(([w, h]) => `${w}×${h} ms (× floor)`);
+  const sizeHeads = plan.sizes.map(([w, h]) => `${w}×${h} ms (× floor)`);
   const head = [
     'method',
     ...sizeHeads,
@@ -25,17 +30,23 @@ export function rowsMarkdown(
     'first frame ms',
     'fixed grid ΔE00 max / p99 / mean',
     'stress grid ΔE00 max / p99 / mean',
+    'row s',
   ];
   const lines = rows.map((r) => {
     const frames = r.frames.map((f, i) => {
-      const ratio = f.medianMs / floor.frames[i]!.medianMs;
-      return `${ms(f.medianMs)} (${ratio.toFixed(2)}×)${f.count < how.frames ? ` [${f.count}]` : ''}`;
+      if (f === null) return 'not timed';
+      const floorMs = floor.frames[i]?.medianMs;
+      const ratio = floorMs === undefined ? '' : ` (${(f.medianMs / floorMs).toFixed(2)}×)`;
+      return `${ms(f.medianMs)}${ratio}${f.count < plan.frames ? ` [${f.count}]` : ''}`;
     });
     const table = r.tableBuildMs === null ? '—' : ms(r.tableBuildMs);
+    const timed = r.changeToFrameMs.filter((c): c is number => c !== null);
     const change =
       r === floor
         ? '—'
-        : `${r.changeToFrameMs.map(ms).join(' / ')} (${(Math.max(...r.changeToFrameMs) / r.frames[0]!.medianMs).toFixed(1)}×)`;
+        : timed.length === 0
+          ? 'not timed'
+          : `${r.changeToFrameMs.map((c) => (c === null ? '—' : ms(c))).join(' / ')} (${(Math.max(...timed) / r.frames[0]!.medianMs).toFixed(1)}×)`;
     return [
       r.name,
       ...frames,
@@ -45,13 +56,15 @@ export function rowsMarkdown(
       ms(r.firstFrameMs),
       stats(r.errors?.[0]),
       stats(r.errors?.[1]),
+      r.seconds.toFixed(0),
     ];
   });
+  const budgetS = plan.frameBudgetMs / 1000;
   return [
     `| ${head.join(' | ')} |`,
     `|${head.map(() => '---').join('|')}|`,
     ...lines.map((l) => `| ${l.join(' | ')} |`),
     '',
-    `Frame times: median of ${how.frames} frames after 3 warm-up frames, each synced by a 1-pixel readPixels; [n]: a slow row's median of n frames (stopped at ${how.frameBudgetMs / 1000} s per size; [1]: one frame, when a single frame takes longer than that — the \`exact\` rows on SwiftShader, where 30 frames at 1920×1080 would take minutes per row). × floor: the ratio to the plain textured sphere at the same size, measured in the same run. Change → next frame: at 1280×720 the view takes the changed settings, draws and reads a pixel back — table rebuild (if any) and frame — median of 3 changes and 3 changes back; the × is the largest of the four against this row's own frame time. First frame: navigation start of a fresh page (Vite dev server, unbundled) to that row's first frame read back. ΔE00: film XYZ rendered by the row's shader (shaders/film/filmColor.glsl's filmXyz; three.js's Rec.709 output taken back to XYZ with its own matrix) into a float target, against the float64 reference, soap film n 1.33 in air, D65, unpolarised; fixed grid 0–2000 nm × 0–85° (3618 films), stress grid 0–20 µm × 0–89.9° (4025 films).`,
+    `Frame times: median of up to ${plan.frames} frames after ${Math.min(3, plan.frames)} warm-up frames (the first compiles), each synced by a 1-pixel readPixels; [n]: a slow row's median of n frames, stopped at ${budgetS} s per size. [1]: a single frame, where one frame takes longer than ${budgetS} s (the per-fragment \`exact\` rows and the dispersive films' per-fragment bins on SwiftShader); such a row is **trimmed**: its larger sizes are not timed (each frame would take longer still) and neither are its changes (“not timed”). × floor: the ratio to the plain textured sphere at the same size, measured in the same run. Change → next frame: at ${plan.sizes[0]![0]}×${plan.sizes[0]![1]} the view takes the changed settings, draws and reads a pixel back — table rebuild (if any) and frame — the upper median of ${plan.changesBack ? 'each change and its way back' : 'each change (its way back not timed)'}, repeated up to ${plan.changeRepeats} times while that change has taken under ${budgetS} s; not timed for the textured sphere, which shows no film; the × is the largest of the four against this row's own frame time. First frame: navigation start of a fresh page (Vite dev server, unbundled) to that row's first frame read back. ΔE00: film XYZ rendered by the row's shader (shaders/film/filmColor.glsl's filmXyz; three.js's Rec.709 output taken back to XYZ with its own matrix) into a float target, against the float64 reference, the row's film in air, D65, unpolarised; fixed grid 0–2000 nm × 0–85° (3618 films), stress grid 0–20 µm × 0–89.9° (4025 films)${plan.gridStride > 1 ? `, every ${plan.gridStride}th film of each` : ''}. Row s: the row's own time in this run (page load, frames, changes, the grids drawn and compared).`,
   ].join('\n');
 }

@@ -5,7 +5,9 @@ import { PlotPanel } from '../plots/plotPanel.ts';
 import type { BubbleView } from '../scene/bubbleView.ts';
 import { createControlPanel } from './controlPanel.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
+import { shownMethod } from './shownMethod.ts';
 import { startsClosed } from './startsClosed.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
 import type { AppSettings, ViewSettings } from '../settings/viewParameters.ts';
 
 /** While the swirl animates, the plots follow the probed film this often. */
@@ -27,7 +29,10 @@ export interface BubbleAppParts {
   readonly controls?: HTMLElement | 'page';
   /** Where the plots go, if any; they are redrawn when this element's box changes (e.g. a drawer opens). */
   readonly plots?: HTMLElement;
-  /** Where a line on the HDR environment goes while it loads, or if it failed (role status; text only). */
+  /**
+   * Where a line on the HDR environment goes while it loads, or if it failed, and the line saying
+   * that the method asked for is drawn with another (shownMethod) (role status; text only).
+   */
   readonly messages?: HTMLElement;
   /** Called when the panel or a press on the bubble changes the settings. */
   readonly onChange?: (s: ViewSettings) => void;
@@ -68,14 +73,19 @@ export class BubbleApp {
   /** The line saying that the HDR environment is loading or failed (in `parts.messages`). */
   private readonly environmentLine: HTMLElement;
 
-  /** The page's own settings (the view holds the film's). */
+  /** The line saying that the view draws with another method than the one asked for (shownMethod). */
+  private readonly methodLine: HTMLElement;
+
+  /** The page's own settings (the view holds the film's, but for the method asked for). */
   private app: AppSettings;
+  private askedMode: ViewSettings['mode'];
 
   constructor(
     private readonly parts: BubbleAppParts,
     initial: AppSettings,
   ) {
     this.app = { animate: initial.animate, probe: initial.probe };
+    this.askedMode = parts.view.current.mode;
     this.panel = parts.plots ? new PlotPanel(parts.surface.ownerDocument) : null;
     if (this.panel) parts.plots!.append(this.panel.element);
     this.marker = this.panel ? parts.surface.ownerDocument.createElement('div') : null;
@@ -85,6 +95,9 @@ export class BubbleApp {
     }
     this.environmentLine = parts.surface.ownerDocument.createElement('p');
     this.environmentLine.className = 'environment-status';
+    this.methodLine = parts.surface.ownerDocument.createElement('p');
+    this.methodLine.className = 'method-notice';
+    this.showMethod(parts.view.current);
     parts.view.onEnvironmentChange = () => {
       this.plotsDue = true;
       this.requestFrame();
@@ -142,8 +155,9 @@ export class BubbleApp {
     });
   }
 
+  /** The settings asked for (the view may draw another method: shownMethod). */
   get current(): ViewSettings {
-    return { ...this.parts.view.current, ...this.app };
+    return { ...this.parts.view.current, mode: this.askedMode, ...this.app };
   }
 
   get renderer(): WebGLRenderer {
@@ -154,7 +168,7 @@ export class BubbleApp {
   set(s: ViewSettings, rebuildControls = false): void {
     const { animate, probe, ...film } = s;
     this.app = { animate, probe };
-    this.parts.view.apply(film);
+    this.showMethod(film);
     this.settingsSet++;
     this.completeShown = false;
     this.plotsDue = true;
@@ -206,8 +220,23 @@ export class BubbleApp {
     this.panel?.element.remove();
     this.marker?.remove();
     this.environmentLine.remove();
+    this.methodLine.remove();
     this.parts.view.onEnvironmentChange = null;
     this.parts.view.dispose();
+  }
+
+  /** Gives the view the film settings asked for, or those it draws instead, saying why (as text, never HTML). */
+  private showMethod(film: FilmSettings): void {
+    const { settings, notice } = shownMethod(film);
+    this.askedMode = film.mode;
+    this.parts.view.apply(settings);
+    const line = this.methodLine;
+    if (notice === null || !this.parts.messages) {
+      line.remove();
+      return;
+    }
+    line.textContent = notice;
+    if (line.parentElement !== this.parts.messages) this.parts.messages.append(line);
   }
 
   /** Says (as text, never HTML) that the HDR environment is loading or failed, or removes the line once it shows. */

@@ -23,6 +23,30 @@ test('a bad URL parameter shows a message naming it and its range, uses the defa
   expect(problems).toEqual([]);
 });
 
+test('fourier with a dispersive film draws with the table and says why; the URL keeps mode=fourier', async ({ page }) => {
+  const problems = watchProblems(page);
+  await page.goto('/?nFilm=water&mode=fourier&field=uniform&animate=0&env=none');
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
+  await expect(page.locator('#messages .method-notice')).toContainText('nFilm=water');
+  await expect(page.locator('#messages .method-notice')).toContainText('mode=table');
+  const modes = () =>
+    page.evaluate(() => {
+      const w = window as unknown as {
+        bubbleView: { current: { mode: string }; table: { builds: number } };
+        bubbleApp: { current: { mode: string } };
+      };
+      return { shown: w.bubbleView.current.mode, asked: w.bubbleApp.current.mode, tables: w.bubbleView.table.builds };
+    });
+  expect(await modes()).toMatchObject({ shown: 'table', asked: 'fourier' });
+  expect((await modes()).tables).toBeGreaterThan(0);
+  // A change through the panel keeps the mode asked for in the URL.
+  await openPanel(page);
+  await page.getByRole('combobox', { name: 'illuminant' }).selectOption('D93');
+  await expect(page).toHaveURL(/illuminant=D93/);
+  expect(page.url()).toContain('mode=fourier');
+  expect(problems).toEqual([]);
+});
+
 test('the panel changes the view and the URL, and the URL restores the state', async ({ page }) => {
   await page.goto('/?animate=0&env=none&sides=front');
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });

@@ -64,36 +64,54 @@ window.benchRow = async (spec: BenchRowSpec) => {
   const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? view.table.lastBuildMs : null;
   const buildsBefore = view.table.builds;
 
-  const frames = spec.sizes.map(([width, height]) => {
+  // Per size: the first frame, up to 2 warm-up frames, then up to `frames` timed ones within the
+  // budget. A frame longer than the budget is its own measurement (the shader compiled with the
+  // first frame), and the larger sizes are not timed (null): each would cost more than it.
+  const frames: ({ medianMs: number; count: number } | null)[] = [];
+  let slow = false;
+  for (const [width, height] of spec.sizes) {
+    if (slow) {
+      frames.push(null);
+      continue;
+    }
     view.resize(width, height);
-    const first = frame();
-    // A frame longer than the budget is its own measurement (the shader compiled with the first frame).
-    if (first > spec.frameBudgetMs) return { medianMs: first, count: 1 };
-    const warm = [first, frame(), frame()];
-    const count = Math.max(3, Math.min(spec.frames, Math.floor(spec.frameBudgetMs / Math.min(...warm))));
+    const warm = [frame()];
+    slow = warm[0]! > spec.frameBudgetMs;
+    if (slow) {
+      frames.push({ medianMs: warm[0]!, count: 1 });
+      continue;
+    }
+    while (warm.length < Math.min(3, spec.frames)) warm.push(frame());
+    const count = Math.max(Math.min(3, spec.frames), Math.min(spec.frames, Math.floor(spec.frameBudgetMs / Math.min(...warm))));
     const times = Array.from({ length: count }, frame);
-    return { medianMs: median(times), count };
-  });
+    frames.push({ medianMs: median(times), count });
+  }
   const rebuildsWhileAnimating = view.table.builds - buildsBefore;
-  // Each change and its way back, three times (once for rows whose frame alone outlasts the budget).
+  // Each change and its way back (timed too where `changesBack`), up to `changeRepeats` times while
+  // that change has taken less than the budget; none (null) for the textured sphere, which shows no
+  // film, and for a row whose frame alone outlasts the budget.
   view.resize(firstWidth, firstHeight);
-  const repeats = frames[0]!.count === 1 ? [0] : [0, 1, 2];
+  const changesTimed = spec.kind === 'bubble' && frames[0]!.medianMs <= spec.frameBudgetMs;
   const changeToFrameMs = CHANGES.map(({ values }) => {
-    const times = repeats.flatMap(() =>
-      values(spec.settings).map((v) => {
+    if (!changesTimed) return null;
+    const times: number[] = [];
+    let spentMs = 0;
+    for (let repeat = 0; repeat < spec.changeRepeats && (repeat === 0 || spentMs < spec.frameBudgetMs); repeat++)
+      for (const [i, v] of values(spec.settings).entries()) {
         const started = performance.now();
         view.apply({ ...view.current, ...v });
+        if (i > 0 && !spec.changesBack) continue; // drawn with the next change
         view.render();
         gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-        return performance.now() - started;
-      }),
-    );
+        times.push(performance.now() - started);
+        spentMs += times.at(-1)!;
+      }
     return median(times);
   });
   view.dispose();
 
   let xyz: number[][][] = [];
-  if (spec.grids.length > 0 && spec.settings.mode !== undefined && spec.kind === 'bubble') {
+  if (spec.grids.length > 0) {
     const renderer = new WebGLRenderer({ canvas: document.createElement('canvas') });
     xyz = new FilmXyzProbe(renderer).render(spec.grids, spec.settings.mode, spec.quality);
     renderer.dispose();

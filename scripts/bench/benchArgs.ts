@@ -1,0 +1,51 @@
+/**
+ * The benchmark's command line, read before anything is started: `[--smoke] [<text>[|<text>…]]`.
+ * A text picks the rows whose name holds it (the floor always runs, as the ratios' base); a text
+ * that picks no row, an unknown flag or a second list is an error that names it and lists what is
+ * allowed (exit status 2).
+ */
+
+export const BENCH_FLAGS: Readonly<Record<string, string>> = {
+  '--smoke': 'every row and figure once, small and fast, to check that each runs and gives finite figures (results in .scratch/)',
+  '--help': 'this text',
+};
+
+export type BenchArgs =
+  | { readonly help: true }
+  | {
+      readonly help: false;
+      readonly smoke: boolean;
+      /** the texts that pick rows, or null for every row */
+      readonly only: readonly string[] | null;
+    };
+
+export const benchUsage = (rowNames: readonly string[]): string =>
+  [
+    'usage: npm run bench -- [--smoke] [<text>[|<text>…]]',
+    '',
+    'flags:',
+    ...Object.entries(BENCH_FLAGS).map(([flag, what]) => `  ${flag}  ${what}`),
+    '',
+    'rows (a text picks those whose name holds it):',
+    ...rowNames.map((name) => `  ${name}`),
+  ].join('\n');
+
+/** `argv`: the arguments after the script; `rowNames`: every row that a text may pick. */
+export function parseBenchArgs(argv: readonly string[], rowNames: readonly string[]): { args: BenchArgs } | { error: string } {
+  let smoke = false;
+  let only: string[] | null = null;
+  for (const arg of argv) {
+    if (arg === '--help' || arg === '-h') return { args: { help: true } };
+    if (arg === '--smoke') smoke = true;
+    else if (arg.startsWith('-')) return { error: `unknown flag ${JSON.stringify(arg)}\n\n${benchUsage(rowNames)}` };
+    else if (only) return { error: `one list of rows at most (got ${JSON.stringify(only.join('|'))} and ${JSON.stringify(arg)})` };
+    else {
+      only = arg.split('|');
+      if (only.includes('')) return { error: `an empty row text in ${JSON.stringify(arg)}\n\n${benchUsage(rowNames)}` };
+      const unknown = only.filter((text) => !rowNames.some((name) => name.includes(text)));
+      if (unknown.length > 0)
+        return { error: `no row named ${unknown.map((t) => JSON.stringify(t)).join(', ')}\n\n${benchUsage(rowNames)}` };
+    }
+  }
+  return { args: { help: false, smoke, only } };
+}

@@ -1,0 +1,74 @@
+/** A run's results as the Markdown that `npm run bench` prints and docs/benchmarks.md holds. */
+import type { BenchResults } from './benchResults.ts';
+import { ELEMENT_BUNDLE } from './bundleSize.ts';
+import { PANEL_CHANGES } from './demoPage.ts';
+import { referenceSpeedMarkdown } from './referenceSpeed.ts';
+import { MATERIALS_ROW } from './rows.ts';
+import { rowsMarkdown } from './rowsMarkdown.ts';
+
+const kb = (bytes: number) => `${(bytes / 1024).toFixed(1)} KiB`;
+
+function builtMarkdown(r: BenchResults): string {
+  const lines = ['| built demo and package | value |', '|---|---|'];
+  const b = r.bundle;
+  if (b)
+    lines.push(
+      `| demo JavaScript, gzipped (all of dist's JS but the element, the environments and the example page) | ${kb(b.demoGzipBytes)} |`,
+      `| element \`${ELEMENT_BUNDLE}\`, gzipped | ${b.elementGzipBytes === null ? 'not built' : kb(b.elementGzipBytes)} |`,
+      `| each HDR environment's module, gzipped (fetched only when shown) | ${kb(Math.min(...b.environmentGzipBytes))} – ${kb(Math.max(...b.environmentGzipBytes))} |`,
+    );
+  const p = r.package;
+  if (p)
+    lines.push(`| package tarball (\`npm pack\`), ${p.files} files: packed / unpacked | ${kb(p.tarballBytes)} / ${kb(p.unpackedBytes)} |`);
+  const d = r.demo;
+  const { width, height } = r.plan.demo;
+  if (d)
+    lines.push(
+      `| navigation start → first frame shown / → first frame shown in full (${width}×${height}, vite preview) | ${d.firstFrameMs.toFixed(0)} ms / ${d.firstCompleteFrameMs.toFixed(0)} ms |`,
+      `| frames drawn / tables built in 1 s: still (\`animate=0\`) | ${d.still.frames} / ${d.still.tableBuilds} |`,
+      `| … swirl animating | ${d.animating.frames} / ${d.animating.tableBuilds} |`,
+      `| … canvas hidden (display: none) | ${d.canvasHidden.frames} / ${d.canvasHidden.tableBuilds} |`,
+      `| … page hidden | ${d.pageHidden.frames} / ${d.pageHidden.tableBuilds} |`,
+      `| frame interval while the swirl animates (${width}×${height}, median) | ${d.frameMs.toFixed(0)} ms |`,
+      ...PANEL_CHANGES.map(
+        ([name], i) =>
+          `| panel: ${name} → longest gap between frames shown, median of ${2 * r.plan.demo.panelRepeats} / worst (× the frame interval); → shown in full, plots included | ${d.panelLongestGap[i]!.median.toFixed(1)}× / ${d.panelLongestGap[i]!.max.toFixed(1)}×; ${d.panelChangeFullMs[i]!.toFixed(0)} ms |`,
+      ),
+    );
+  return lines.join('\n');
+}
+
+function materialsMarkdown(r: BenchResults): string {
+  const m = r.materials;
+  if (!m) return '';
+  return `| ${MATERIALS_ROW} | value |
+|---|---|
+| example scene (materials.html, ${m.width}×${m.height}), median of ${m.frames} frames: three.js iridescence / spectral (\`table\`) | ${m.frameMs['three.js'].toFixed(1)} / ${m.frameMs.spectral.toFixed(1)} ms (${(m.frameMs.spectral / m.frameMs['three.js']).toFixed(2)}×) |
+| minimal three.js app with an iridescent MeshPhysicalMaterial, gzipped: as it is / made spectral | ${kb(m.threeAppGzipBytes)} / ${kb(m.spectralAppGzipBytes)} (+${kb(m.spectralAppGzipBytes - m.threeAppGzipBytes)}) |
+${Object.entries(m.gridErrors)
+  .map(
+    ([mode, [fixed, stress]]) =>
+      `| the whole material's pixels, \`${mode}\`: ΔE00 fixed grid / stress grid (max / p99 / mean), films > 0 nm [all, 0 nm included] | ${[fixed!, stress!].map((e) => `${e.films.max.toFixed(3)} / ${e.films.p99.toFixed(3)} / ${e.films.mean.toFixed(3)} [${e.all.max.toFixed(1)} / ${e.all.p99.toFixed(2)} / ${e.all.mean.toFixed(3)}]`).join(' — ')} |`,
+  )
+  .join('\n')}`;
+}
+
+const stagesMarkdown = (r: BenchResults): string =>
+  [
+    '| stage | s |',
+    '|---|---|',
+    ...Object.entries(r.stageSeconds).map(([name, s]) => `| ${name} | ${s.toFixed(1)} |`),
+    `| whole run | ${r.seconds.toFixed(0)} |`,
+  ].join('\n');
+
+export function benchMarkdown(r: BenchResults): string {
+  return [
+    r.reference ? referenceSpeedMarkdown(r.reference, r.machine.node) : '',
+    r.rows.length > 0 ? rowsMarkdown(r.rows, r.plan) : '',
+    builtMarkdown(r),
+    materialsMarkdown(r),
+    stagesMarkdown(r),
+  ]
+    .filter((part) => part !== '')
+    .join('\n\n');
+}

@@ -1,0 +1,64 @@
+/**
+ * How much the benchmark measures: the full run (the figures in docs/benchmarks.md) or the smoke
+ * run (`--smoke`: every row and figure once, at a small size, to show that each one runs and gives
+ * finite figures; its times mean nothing). Its own ports: 5173 is the dev server's, 5180 and 5181
+ * the browser tests' (tests/e2e/servers.ts), so the bench runs beside either.
+ */
+import type { ParityGroup } from '../harness/parityCase.ts';
+
+export interface BenchPlan {
+  readonly smoke: boolean;
+  /** [width, height] of each frame-time column */
+  readonly sizes: readonly (readonly [number, number])[];
+  /** frames timed per size at most; the budget cuts a slow row's frames and changes short */
+  readonly frames: number;
+  readonly frameBudgetMs: number;
+  /** how often each change and its way back is timed, at most (fewer where they outlast the budget); whether the way back is timed */
+  readonly changeRepeats: number;
+  readonly changesBack: boolean;
+  /** every `gridStride`-th film of each error grid */
+  readonly gridStride: number;
+  readonly materials: { readonly width: number; readonly height: number; readonly frames: number };
+  /** the built demo's viewport, and how often each panel change and its way back is made */
+  readonly demo: { readonly width: number; readonly height: number; readonly panelRepeats: number; readonly windowMs: number };
+  readonly devPort: number;
+  readonly previewPort: number;
+  readonly resultsFile: string;
+}
+
+export const FULL_PLAN: BenchPlan = {
+  smoke: false,
+  sizes: [
+    [1280, 720],
+    [1920, 1080],
+  ],
+  frames: 20,
+  frameBudgetMs: 2000,
+  changeRepeats: 2,
+  changesBack: true,
+  gridStride: 1,
+  materials: { width: 1280, height: 720, frames: 20 },
+  demo: { width: 1280, height: 720, panelRepeats: 2, windowMs: 1000 },
+  devPort: 5192,
+  previewPort: 5193,
+  resultsFile: 'bench-results.json',
+};
+
+export const SMOKE_PLAN: BenchPlan = {
+  smoke: true,
+  sizes: [[160, 90]],
+  frames: 1,
+  frameBudgetMs: 3000,
+  changeRepeats: 1,
+  changesBack: false,
+  gridStride: 16,
+  materials: { width: 160, height: 90, frames: 1 },
+  demo: { width: 320, height: 180, panelRepeats: 1, windowMs: 400 },
+  devPort: 5194,
+  previewPort: 5195,
+  resultsFile: '.scratch/bench-smoke-results.json',
+};
+
+/** The plan's share of a grid: every `stride`-th film. */
+export const thinnedGrid = (g: ParityGroup, stride: number): ParityGroup =>
+  stride === 1 ? g : { ...g, inputs: g.inputs.filter((_, i) => i % stride === 0) };

@@ -1,0 +1,63 @@
+/**
+ * The benchmark's progress: its stages (the reference, each row, the material, the builds, the
+ * demo page) with their expected relative cost, and the time left estimated from the stages done.
+ */
+import type { BenchRow } from './rows.ts';
+
+export interface Stage {
+  readonly name: string;
+  /** expected time relative to a fast row's (1) */
+  readonly cost: number;
+}
+
+/**
+ * A row's expected cost against a fast row's, from what its frame computes per fragment (the
+ * full run on SwiftShader: a row whose frame outlasts the budget is trimmed to one frame, so
+ * even the slowest stays within a few fast rows).
+ */
+export function rowCost(row: BenchRow): number {
+  const dispersive = typeof row.settings.nFilm !== 'number';
+  switch (row.settings.mode) {
+    case 'exact':
+      return dispersive ? 2.5 : 1.5;
+    case 'fourier':
+      return dispersive ? 2.5 : 2;
+    case 'table':
+      return row.kind === 'bubble' && (row.quality.table.fill === 'binned' || dispersive) ? 2 : 1;
+    default:
+      return 1;
+  }
+}
+
+/** Seconds left: the seconds per unit of cost of the stages done, times the cost of those left. */
+export function secondsLeft(done: readonly { readonly cost: number; readonly seconds: number }[], costLeft: number): number | null {
+  const cost = done.reduce((sum, d) => sum + d.cost, 0);
+  if (cost === 0) return null;
+  return (done.reduce((sum, d) => sum + d.seconds, 0) / cost) * costLeft;
+}
+
+/** Tracks the stages as they end and prints a line per stage (stderr): its time and the time left. */
+export class Progress {
+  private readonly done: { cost: number; seconds: number }[] = [];
+  private readonly started = performance.now();
+
+  constructor(private readonly stages: readonly Stage[]) {}
+
+  /** Runs a stage, then prints how long it took and about how long the rest will. */
+  async run<T>(index: number, work: () => Promise<T> | T): Promise<T> {
+    const stage = this.stages[index]!;
+    const t0 = performance.now();
+    try {
+      return await work();
+    } finally {
+      const seconds = (performance.now() - t0) / 1000;
+      this.done.push({ cost: stage.cost, seconds });
+      const costLeft = this.stages.slice(index + 1).reduce((sum, s) => sum + s.cost, 0);
+      const left = secondsLeft(this.done, costLeft);
+      const elapsed = (performance.now() - this.started) / 1000;
+      console.error(
+        `[bench ${elapsed.toFixed(0)} s] ${index + 1}/${this.stages.length} ${stage.name}: ${seconds.toFixed(1)} s; about ${left === null ? '?' : left.toFixed(0)} s left`,
+      );
+    }
+  }
+}

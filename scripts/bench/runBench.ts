@@ -1,0 +1,155 @@
+/**
+ * One benchmark run: the reference's speed in Node, the picked rows in headless Chromium (a Vite
+ * dev server), the material's figures, the builds' sizes and the built demo page (vite preview).
+ * A stage that throws is recorded and the run goes on; the caller reports it.
+ */
+import { cpus, loadavg } from 'node:os';
+import { chromium } from '@playwright/test';
+import { createServer, preview } from 'vite';
+import type { FilmIndex } from '../../src/physics/filmIndex.ts';
+import type { Xyz } from '../../src/physics/spectralWeights.ts';
+import { chromiumLaunchOptions } from '../chromium.ts';
+import type { ParityGroup } from '../harness/parityCase.ts';
+import { type BenchPlan, thinnedGrid } from './benchPlan.ts';
+import type { BenchResults } from './benchResults.ts';
+import { runRow, warmUp } from './browserRows.ts';
+import { buildAndMeasure } from './bundleSize.ts';
+import { demoPageFigures } from './demoPage.ts';
+import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './errorGrids.ts';
+import { materialFigures } from './materialFigures.ts';
+import { packageSize } from './packageSize.ts';
+import { Progress, type Stage, rowCost } from './progress.ts';
+import { referenceSpeed } from './referenceSpeed.ts';
+import { type BenchRow, MATERIALS_ROW } from './rows.ts';
+import type { MeasuredRow } from './rowsMarkdown.ts';
+
+/** Expected costs of the stages other than the rows, against a fast row's (the full run). */
+const STAGE_COSTS = { reference: 0.5, materials: 3, bundle: 1.5, package: 1.5, demo: 5 };
+
+/** The error grids of a film (the soap film, or a row's own index) and their reference colours, computed once per film. */
+class ErrorGrids {
+  private readonly byFilm = new Map<string, { grids: ParityGroup[]; reference: Xyz[][] | null }>();
+  constructor(private readonly stride: number) {}
+
+  private entry(nFilm: FilmIndex) {
+    const key = JSON.stringify(nFilm);
+    const entry = this.byFilm.get(key) ?? {
+      grids: [FIXED_GRID, STRESS_GRID].map((g) => thinnedGrid({ ...g, nFilm }, this.stride)),
+      reference: null,
+    };
+    this.byFilm.set(key, entry);
+    return entry;
+  }
+
+  grids(nFilm: FilmIndex): ParityGroup[] {
+    return this.entry(nFilm).grids;
+  }
+
+  reference(nFilm: FilmIndex): Xyz[][] {
+    const entry = this.entry(nFilm);
+    entry.reference ??= entry.grids.map(referenceXyz);
+    return entry.reference;
+  }
+}
+
+/** A row measured: its figures, and its error columns exactly when it measures error. */
+async function measureRow(
+  browser: Parameters<typeof runRow>[0],
+  baseUrl: string,
+  plan: BenchPlan,
+  row: BenchRow,
+  grids: ErrorGrids,
+): Promise<MeasuredRow> {
+  const t0 = performance.now();
+  const rowGrids = row.measuresError ? grids.grids(row.settings.nFilm) : [];
+  const { xyz, ...result } = await runRow(browser, baseUrl, plan, row, rowGrids);
+  if (xyz.length !== rowGrids.length) throw new Error(`the page drew ${xyz.length} error grids, not ${rowGrids.length}`);
+  const reference = row.measuresError ? grids.reference(row.settings.nFilm) : [];
+  const errors = row.measuresError ? rowGrids.map((g, i) => gridError(g, reference[i]!, xyz[i]!)) : null;
+  return { name: row.name, settings: row.settings, quality: row.quality, ...result, errors, seconds: (performance.now() - t0) / 1000 };
+}
+
+export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withMaterials: boolean): Promise<BenchResults> {
+  const started = performance.now();
+  const load = [loadavg()[0]!];
+  const stages: Stage[] = [
+    { name: 'reference speed', cost: STAGE_COSTS.reference },
+    ...rows.map((r) => ({ name: r.name, cost: rowCost(r) })),
+    ...(withMaterials ? [{ name: MATERIALS_ROW, cost: STAGE_COSTS.materials }] : []),
+    { name: 'demo and element builds', cost: STAGE_COSTS.bundle },
+    { name: 'package (npm pack)', cost: STAGE_COSTS.package },
+    { name: 'built demo page', cost: STAGE_COSTS.demo },
+  ];
+  const progress = new Progress(stages);
+  const failures: { stage: string; message: string }[] = [];
+  const stageSeconds: Record<string, number> = {};
+  let next = 0;
+  /** Runs the next stage; what it throws is recorded (null returned) and the run goes on. */
+  const stage = async <T>(work: () => Promise<T> | T): Promise<T | null> => {
+    const index = next++;
+    const t0 = performance.now();
+    try {
+      return await progress.run(index, work);
+    } catch (error) {
+      const message = error instanceof Error ? (error.stack ?? error.message) : String(error);
+      console.error(`${stages[index]!.name} threw: ${message}`);
+      failures.push({ stage: stages[index]!.name, message });
+      return null;
+    } finally {
+      stageSeconds[stages[index]!.name] = (performance.now() - t0) / 1000;
+    }
+  };
+
+  const reference = await stage(referenceSpeed);
+  const grids = new ErrorGrids(plan.gridStride);
+  const devUrl = `http://127.0.0.1:${plan.devPort}`;
+  const browser = await chromium.launch(chromiumLaunchOptions());
+  try {
+    const server = await createServer({
+      logLevel: 'silent',
+      server: { port: plan.devPort, strictPort: true, host: '127.0.0.1', hmr: false, watch: null },
+    });
+    await server.listen();
+    const measured: MeasuredRow[] = [];
+    let materials = null;
+    try {
+      await warmUp(browser, devUrl);
+      for (const row of rows) {
+        const m = await stage(() => measureRow(browser, devUrl, plan, row, grids));
+        if (m) measured.push(m);
+      }
+      if (withMaterials)
+        // The material's film is three's iridescenceIOR, one number: the soap film's grids.
+        materials = await stage(() =>
+          materialFigures(browser, devUrl, plan.materials, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
+        );
+    } finally {
+      await server.close();
+    }
+    const bundle = await stage(buildAndMeasure);
+    const pack = await stage(packageSize);
+    const previewServer = await preview({ logLevel: 'silent', preview: { port: plan.previewPort, strictPort: true, host: '127.0.0.1' } });
+    let demo;
+    try {
+      demo = await stage(() => demoPageFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.demo));
+    } finally {
+      await new Promise((resolve) => previewServer.httpServer.close(resolve));
+    }
+    load.push(loadavg()[0]!);
+    return {
+      plan,
+      machine: { node: process.version, cpus: cpus().length, cpuModel: cpus()[0]?.model ?? 'unknown', load },
+      reference,
+      rows: measured,
+      materials,
+      bundle,
+      package: pack,
+      demo,
+      stageSeconds,
+      seconds: (performance.now() - started) / 1000,
+      failures,
+    };
+  } finally {
+    await browser.close();
+  }
+}

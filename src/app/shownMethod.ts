@@ -1,0 +1,18 @@
+import { filmIndexText, isDispersive } from '../physics/filmIndex.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
+
+/**
+ * The settings the app draws, and the line saying why they differ from those asked for (null when
+ * they do not). `fourier` has no Airy series for a dispersive film (docs/physics.md#a-dispersive-film):
+ * its shader sums the dispersive bins per fragment, hundreds of times the cost of a plain textured
+ * sphere on a software rasteriser; the table is filled from the same bins, once per change rather
+ * than once per pixel per frame, so the app draws the table instead and says so. The asked-for
+ * mode stays in the settings (URL, panel); only the view is given the table.
+ */
+export function shownMethod(s: FilmSettings): { readonly settings: FilmSettings; readonly notice: string | null } {
+  if (s.mode !== 'fourier' || !isDispersive(s.nFilm)) return { settings: s, notice: null };
+  return {
+    settings: { ...s, mode: 'table' },
+    notice: `mode=fourier has no Airy series for a dispersive film (nFilm=${filmIndexText(s.nFilm)}): drawing with mode=table, filled from the same spectral bins.`,
+  };
+}

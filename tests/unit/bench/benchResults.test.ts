@@ -1,0 +1,100 @@
+/** The check a benchmark run ends with: a stage that threw, a figure missing or not finite. */
+import { describe, expect, it } from 'vitest';
+import { FULL_PLAN, SMOKE_PLAN } from '../../../scripts/bench/benchPlan.ts';
+import type { BenchResults } from '../../../scripts/bench/benchResults.ts';
+import { resultProblems } from '../../../scripts/bench/benchResults.ts';
+import type { MeasuredRow } from '../../../scripts/bench/rowsMarkdown.ts';
+import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
+import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
+
+const stats = { cases: 100, max: 0.1, p99: 0.08, mean: 0.02, worst: { thicknessNm: 10, angleDeg: 5 } };
+const row = (name: string, more: Partial<MeasuredRow> = {}): MeasuredRow => ({
+  // the floor shows no film: its changes are not timed
+  name,
+  settings: DEFAULT_SETTINGS,
+  quality: DEFAULT_FILM_QUALITY,
+  firstFrameMs: 900,
+  tableBuildMs: 300,
+  rebuildsWhileAnimating: 0,
+  frames: [{ medianMs: 60, count: 30 }],
+  changeToFrameMs: name === 'floor' ? [null, null, null, null] : [300, 310, 320, 330],
+  errors: null,
+  seconds: 12,
+  ...more,
+});
+const results = (rows: MeasuredRow[], more: Partial<BenchResults> = {}): BenchResults => ({
+  plan: FULL_PLAN,
+  machine: { node: 'v20', cpus: 2, cpuModel: 'cpu', load: [1, 1] },
+  reference: {
+    reflectancePerSecondSharedOptics: 1e7,
+    reflectancePerSecondFullCall: 5e5,
+    table0to2000nmAt1nmMs: 99,
+    thickestFilmColorMs: 1,
+    sink: 3,
+  },
+  rows,
+  materials: null,
+  bundle: { files: {}, demoGzipBytes: 1000, elementGzipBytes: 900, environmentGzipBytes: [100] },
+  package: { tarballBytes: 100, unpackedBytes: 300, files: 5 },
+  demo: null,
+  stageSeconds: {},
+  seconds: 600,
+  failures: [],
+  ...more,
+});
+const measures = (name: string) => ({
+  kind: name === 'floor' ? ('textured' as const) : ('bubble' as const),
+  measuresError: name !== 'floor',
+});
+
+describe('bench results check', () => {
+  const good = [row('floor'), row('table', { errors: [stats, stats] })];
+
+  it('a complete run has no problems but the figures it lacks', () => {
+    expect(resultProblems(results(good), measures, false)).toEqual(['no demo figures']);
+  });
+
+  it('names a figure that is not finite, by its path', () => {
+    const bad = [good[0]!, row('table', { errors: [stats, stats], frames: [{ medianMs: NaN, count: 30 }] })];
+    expect(resultProblems(results(bad), measures, false)).toContain('results.rows.1.frames.0.medianMs is NaN');
+  });
+
+  it('finds it again in the results read back from JSON (where NaN is null), and accepts the nulls that mean not measured', () => {
+    const bad = [good[0]!, row('table', { errors: [stats, stats], frames: [{ medianMs: NaN, count: 30 }] })];
+    const readBack = JSON.parse(JSON.stringify(results(bad))) as BenchResults;
+    expect(resultProblems(readBack, measures, false)).toEqual(['results.rows.1.frames.0.medianMs is null', 'no demo figures']);
+    expect(resultProblems(JSON.parse(JSON.stringify(results(good))) as BenchResults, measures, false)).toEqual(['no demo figures']);
+  });
+
+  it('error columns exist exactly where a row measures error', () => {
+    const problems = resultProblems(results([row('floor', { errors: [stats, stats] }), row('table')]), measures, false);
+    expect(problems).toContain('floor: error columns, though the row measures no error');
+    expect(problems).toContain('table: no error columns, though the row measures error');
+  });
+
+  it('a stage that threw, missing materials, a size or a change not timed where the budget does not trim them', () => {
+    const untimed = row('table', {
+      errors: [stats, stats],
+      frames: [{ medianMs: 60, count: 20 }, null],
+      changeToFrameMs: [300, null, 320, 330],
+    });
+    const r = results([good[0]!, untimed], { plan: SMOKE_PLAN, failures: [{ stage: 'exact, 90 bins', message: 'lost context' }] });
+    expect(resultProblems(r, measures, true)).toEqual(
+      expect.arrayContaining([
+        'exact, 90 bins threw: lost context',
+        'no materials figures',
+        'table: size 2 not timed',
+        'table: a change not timed',
+      ]),
+    );
+  });
+
+  it('a row whose frame outlasts the budget is trimmed (its larger sizes and its changes), not incomplete', () => {
+    const slow = row('exact', {
+      errors: [stats, stats],
+      frames: [{ medianMs: FULL_PLAN.frameBudgetMs + 1, count: 1 }, null],
+      changeToFrameMs: [null, null, null, null],
+    });
+    expect(resultProblems(results([good[0]!, slow]), measures, false)).toEqual(['no demo figures']);
+  });
+});
