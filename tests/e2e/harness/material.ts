@@ -30,7 +30,8 @@ import {
 } from 'three';
 import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
-import { type SpectralIridescenceOptions, spectralIridescence, useSpectralIridescence } from '../../../src/material/spectralIridescence.ts';
+import { spectralIridescence, useSpectralIridescence } from '../../../src/material/spectralIridescence.ts';
+import { type SpectralIridescenceOptions } from '../../../src/material/spectralIridescenceOptions.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');
 if (!canvas) throw new Error('material.html must hold #gl');
