@@ -155,6 +155,28 @@ describe('the constructor and the API boundary', () => {
   });
 });
 
+describe('a parameter out of range when drawn', () => {
+  it('is clamped to its range with one warning naming it and the range, not thrown', () => {
+    // fourier mode: bringing the film up to date makes only CPU-side textures, no GPU needed.
+    const m = new ThinFilmMaterial({ iridescenceIOR: 1.33, mode: 'fourier' });
+    const shader = shaderObject();
+    m.onBeforeCompile(shader as never, null as never);
+    const uniforms = shader.uniforms as Record<string, { value: unknown }>;
+    m.iridescenceIOR = 5;
+    m.iridescenceThicknessMaximum = 30_000;
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
+    const draw = () => m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    expect(draw).not.toThrow();
+    draw();
+    const messages = warn.mock.calls.map((c) => String(c[0]));
+    warn.mockRestore();
+    expect(messages).toHaveLength(2); // once per parameter, not per frame
+    expect(messages[0]).toMatch(/iridescenceIOR 5 .*\[1, 4\]/);
+    expect(messages[1]).toMatch(/iridescenceThicknessMaximum 30000 .*\[0, 20000\] nm/);
+    expect(uniforms.uNFilm!.value).toBe(4); // the domain's upper end
+  });
+});
+
 describe('the quality knobs', () => {
   it('merges what is given over the defaults, the table knob by knob', () => {
     const q = filmQualityFrom({ exactSpectralBins: 45, table: { rows: 64 } });
