@@ -22,7 +22,7 @@ const referenceOf = (c: FilmCase) =>
 test('the spectral iridescence on three.js meshes: reference colour, glTF, the physical material kept, programs, context restore', async ({
   page,
 }) => {
-  // ~50 s here (SwiftShader compiles each mode's program, the soak's among them): room for a slower machine.
+  // ~1.6 min here (SwiftShader compiles each mode's program, the soak's, and again after the context restore): room for a slower machine.
   test.setTimeout(300_000);
   const problems = watchProblems(page);
   await page.goto('/tests/e2e/harness/material.html');
