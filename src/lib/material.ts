@@ -3,11 +3,14 @@
  * three.js's MeshPhysicalMaterial (three.js is a peer dependency). See README, "Use it in your
  * three.js scene".
  */
+export { isSpectralIridescence, spectralIridescence, useSpectralIridescence } from '../material/spectralIridescence.ts';
 export {
+  type FilmMode,
   type SpectralIridescenceOptions,
-  ThinFilmMaterial,
-  isSpectralIridescence,
-  spectralIridescence,
-  useSpectralIridescence,
-} from '../material/spectralIridescence.ts';
+  type SpectralIridescenceProperties,
+} from '../material/spectralIridescenceOptions.ts';
+export { ThinFilmMaterial, type ThinFilmMaterialParameters } from '../material/thinFilmMaterial.ts';
+export { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions } from '../settings/filmQuality.ts';
+export type { FilmTableLayout } from '../settings/filmTableLayout.ts';
+export type { IlluminantSpec } from '../physics/illuminants.ts';
 export { ParameterError } from '../physics/validate.ts';

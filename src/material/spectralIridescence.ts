@@ -1,46 +1,28 @@
 import {
-  MeshPhysicalMaterial,
-  type MeshPhysicalMaterialParameters,
+  Material,
+  type MeshPhysicalMaterial,
   type Object3D,
   ShaderChunk,
   type WebGLProgramParametersWithUniforms,
   type WebGLRenderer,
 } from 'three';
-import { FILM_STACK_DOMAIN, POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
-import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
-import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
-import { assertInRange, oneOf } from '../physics/validate.ts';
+import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
+import { type NumberDomain, assertInRange, expectedNumber, isInDomain } from '../physics/validate.ts';
 import { filmColorDefines, filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } from '../film/filmColor.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
-import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../settings/filmQuality.ts';
-import { type FilmSettings, MODES } from '../settings/filmSettings.ts';
+import { type FilmQuality } from '../settings/filmQuality.ts';
+import { type FilmSettings } from '../settings/filmSettings.ts';
 import { FilmTable, tableKey } from '../film/filmTable.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
-
-/** How the film is computed and seen: the demo's `mode`, `illuminant`, `polarization`, `normalization`. */
-export interface SpectralIridescenceOptions {
-  /** `table` (default: one lookup in a table the GPU builds), `fourier` (the Airy series per fragment) or `exact` (binned integral) */
-  readonly mode?: (typeof MODES)[number];
-  readonly illuminant?: IlluminantSpec;
-  readonly polarization?: Polarization;
-  readonly normalization?: Normalization;
-  /** the table's layout and bins (the demo's defaults) */
-  readonly quality?: FilmQuality;
-}
-
-type Options = Required<SpectralIridescenceOptions>;
-
-/** The options with their defaults, each checked (a ParameterError names the first bad one). */
-export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): Options {
-  return {
-    mode: oneOf('mode', o.mode ?? 'table', MODES),
-    illuminant: illuminantFromJson(o.illuminant ?? DEFAULT_SETTINGS.illuminant),
-    polarization: oneOf('polarization', o.polarization ?? DEFAULT_SETTINGS.polarization, POLARIZATIONS),
-    normalization: oneOf('normalization', o.normalization ?? DEFAULT_SETTINGS.normalization, NORMALIZATIONS),
-    quality: o.quality ?? DEFAULT_FILM_QUALITY,
-  };
-}
+import {
+  type CheckedOptions,
+  OPTION_NAMES,
+  type SpectralIridescenceOptions,
+  type SpectralIridescenceProperties,
+  spectralIridescenceOptions,
+} from './spectralIridescenceOptions.ts';
+import { restoresOf } from './contextRestores.ts';
 
 /** The call in three's lights_fragment_begin chunk that gives the film over the dielectric base. */
 const DIELECTRIC_FILM = 'evalIridescence( 1.0, material.iridescenceIOR, dotNVi, material.iridescenceThickness, material.specularColor )';
@@ -53,6 +35,8 @@ const SPECTRAL_FILM = 'tfcSpectralIridescence( material.iridescenceThickness, do
 const DIELECTRIC_F0 = 'material.iridescenceF0Dielectric = Schlick_to_F0( iridescenceFresnelDielectric, 1.0, dotNVi );';
 const SPECTRAL_F0 =
   'material.iridescenceF0Dielectric = tfcSpectralIridescenceF0( iridescenceFresnelDielectric, texture2D( dfgLUT, vec2( material.roughness, dotNVi ) ).rg, material.specularF90 );';
+/** The includes of three's physical fragment shader the film is written into. */
+const FILM_INCLUDES = ['#include <iridescence_fragment>', '#include <lights_fragment_begin>'] as const;
 
 /** three's lights_fragment_begin with the two replacements, or an error naming what a three.js release no longer has. */
 function lightsFragmentBegin(): string {
@@ -64,45 +48,72 @@ function lightsFragmentBegin(): string {
 
 /** Film tables shared by the materials whose film, light and thickness range are the same. */
 const tables = new SharedTextures((key) => new FilmTable((JSON.parse(key) as { quality: FilmQuality }).quality));
+/** The context restore each table was last drawn after (contextRestores.ts): a restore empties it. */
+const tableRestores = new WeakMap<FilmTable, number>();
 
-/**
- * The film as the demo's settings describe it, from a physical material's glTF parameters: the
- * film (iridescenceIOR) in air over the base (ior), up to the thickness range's larger end.
- * Each index is checked against the film stack's domain; a ParameterError names three's property.
- */
-function filmSettingsOf(m: MeshPhysicalMaterial, o: Options): FilmSettings {
-  const { iridescenceThicknessMinimum: minNm, iridescenceThicknessMaximum: maxNm } = m;
-  assertInRange('iridescenceIOR', m.iridescenceIOR, FILM_STACK_DOMAIN.nFilm.min, FILM_STACK_DOMAIN.nFilm.max);
-  assertInRange('ior', m.ior, FILM_STACK_DOMAIN.nInside.min, FILM_STACK_DOMAIN.nInside.max);
-  const { min, max, unit } = FILM_STACK_DOMAIN.thicknessNm;
-  assertInRange('iridescenceThicknessMinimum', minNm, min, max, unit);
-  assertInRange('iridescenceThicknessMaximum', maxNm, min, max, unit);
-  return {
-    ...DEFAULT_SETTINGS,
-    ...o,
-    field: 'uniform',
-    thicknessNm: Math.max(minNm, maxNm),
-    nOutside: 1,
-    nFilm: m.iridescenceIOR,
-    nInside: m.ior,
-  };
+/** The material's hooks three calls, as the user set them: ours call them first. */
+interface UserHooks {
+  onBeforeCompile: Material['onBeforeCompile'];
+  customProgramCacheKey: Material['customProgramCacheKey'];
+  onBeforeRender: Material['onBeforeRender'];
 }
 
-/** What a material upgraded by `spectralIridescence` holds: its options, its uniforms, its table. */
+/** What a material upgraded by `spectralIridescence` holds: its options, its uniforms, its table, the user's hooks. */
 interface SpectralFilm {
-  options: Options;
+  options: CheckedOptions;
   readonly uniforms: ReturnType<typeof filmColorUniforms>;
   table: FilmTable | null;
+  readonly user: UserHooks;
+  /** the parameters already warned about (once each) */
+  readonly warned: Set<string>;
 }
 
 const films = new WeakMap<MeshPhysicalMaterial, SpectralFilm>();
 
-/** Brings the film's uniforms, light textures and table (built with `renderer` if it changed) up to the material. */
+/** A parameter's value within its domain: as given, or (drawing) clamped to it after a warning. */
+type Limit = (name: string, value: number, d: NumberDomain) => number;
+const refuse: Limit = (name, value, d) => {
+  assertInRange(name, value, d.min, d.max, d.unit);
+  return value;
+};
+const clampWarningOnce =
+  (film: SpectralFilm): Limit =>
+  (name, value, d) => {
+    if (isInDomain(value, d)) return value;
+    const clamped = Number.isNaN(value) ? d.min : Math.min(d.max, Math.max(d.min, value));
+    if (!film.warned.has(name)) {
+      film.warned.add(name);
+      console.warn(`spectralIridescence: ${name} ${String(value)} is not allowed; expected ${expectedNumber(d)}; drawn with ${clamped}`);
+    }
+    return clamped;
+  };
+
+/**
+ * The film as the demo's settings describe it, from a physical material's glTF parameters: the
+ * film (iridescenceIOR) in air over the base (ior), up to the thickness range's larger end.
+ * Each is held to the film stack's domain by `limit`, which names three's property.
+ */
+function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit: Limit): FilmSettings {
+  const d = FILM_STACK_DOMAIN;
+  const nFilm = limit('iridescenceIOR', m.iridescenceIOR, d.nFilm);
+  const nInside = limit('ior', m.ior, d.nInside);
+  const minNm = limit('iridescenceThicknessMinimum', m.iridescenceThicknessMinimum, d.thicknessNm);
+  const maxNm = limit('iridescenceThicknessMaximum', m.iridescenceThicknessMaximum, d.thicknessNm);
+  return { ...DEFAULT_SETTINGS, ...o, field: 'uniform', thicknessNm: Math.max(minNm, maxNm), nOutside: 1, nFilm, nInside };
+}
+
+/**
+ * Brings the film's uniforms, light textures and table (built with `renderer` if it changed, or
+ * if the renderer's context was restored since) up to the material.
+ */
 function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRenderer): void {
   const o = film.options;
-  const s = filmSettingsOf(m, o);
+  const s = filmSettingsOf(m, o, clampWarningOnce(film));
   if (o.mode === 'table') {
     const table = tables.hold(JSON.stringify({ quality: o.quality, table: tableKey(s) }), film);
+    const restores = restoresOf(renderer);
+    if (tableRestores.get(table) !== restores) table.invalidate();
+    tableRestores.set(table, restores);
     table.update(renderer, s);
     film.table = table;
   } else if (film.table) {
@@ -114,7 +125,122 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
 
 /** The GLSL defines of the film (filmColor.glsl's, for the mode). */
 // The material's film index is three's iridescenceIOR, one number: a constant film's defines.
-const definesOf = (o: Options) => filmColorDefines({ ...o, nFilm: DEFAULT_SETTINGS.nFilm }, o.quality);
+const definesOf = (o: CheckedOptions) => filmColorDefines({ ...o, nFilm: DEFAULT_SETTINGS.nFilm }, o.quality);
+
+/** Gives the film new options; a new program only if the defines differ (the old one freed, as setDefines does). */
+function setOptions(m: MeshPhysicalMaterial, film: SpectralFilm, options: CheckedOptions): void {
+  if (JSON.stringify(definesOf(film.options)) !== JSON.stringify(definesOf(options))) {
+    m.dispose();
+    m.needsUpdate = true;
+  }
+  film.options = options;
+}
+
+/** The user's program key: theirs, or three's default for their onBeforeCompile (its text). */
+const userKey = (m: Material, user: UserHooks): string =>
+  user.customProgramCacheKey === Material.prototype.customProgramCacheKey
+    ? user.onBeforeCompile.toString()
+    : user.customProgramCacheKey.call(m);
+
+/**
+ * Puts the film in three's hooks, each as an accessor: reading it gives ours, setting it sets the
+ * user's, which ours call first (their onBeforeCompile edits three's shader as written, then ours
+ * writes the film in; their onBeforeRender runs before the film is brought up to date).
+ */
+function hook(m: MeshPhysicalMaterial, film: SpectralFilm): void {
+  let warnedIncludes = false;
+  const ours: UserHooks = {
+    onBeforeCompile: (shader: WebGLProgramParametersWithUniforms, renderer: WebGLRenderer) => {
+      film.user.onBeforeCompile.call(m, shader, renderer);
+      if (!FILM_INCLUDES.every((line) => shader.fragmentShader.includes(line))) {
+        if (!warnedIncludes)
+          console.warn(`spectralIridescence: onBeforeCompile removed ${FILM_INCLUDES.join(' or ')}; three's film is drawn`);
+        warnedIncludes = true;
+        return;
+      }
+      shader.defines = { ...shader.defines, ...definesOf(film.options) };
+      Object.assign(shader.uniforms, film.uniforms);
+      shader.fragmentShader = shader.fragmentShader
+        .replace(FILM_INCLUDES[0], `${FILM_INCLUDES[0]}\n#ifdef USE_IRIDESCENCE\n${shaderSource('spectralIridescence.glsl')}\n#endif`)
+        .replace(FILM_INCLUDES[1], lightsFragmentBegin());
+    },
+    // One program per distinct film configuration and user edit (three would otherwise key it by onBeforeCompile's text alone).
+    customProgramCacheKey: () => `spectral-iridescence ${JSON.stringify(definesOf(film.options))} ${userKey(m, film.user)}`,
+    onBeforeRender: (renderer, scene, camera, geometry, object, group) => {
+      film.user.onBeforeRender.call(m, renderer, scene, camera, geometry, object, group);
+      if (m.iridescence > 0) update(film, m, renderer);
+    },
+  };
+  for (const name of ['onBeforeCompile', 'customProgramCacheKey', 'onBeforeRender'] as const)
+    Object.defineProperty(m, name, {
+      configurable: true,
+      get: () => ours[name],
+      set: (f: UserHooks[typeof name]) => Object.assign(film.user, { [name]: f }),
+    });
+}
+
+/** The options as properties of a patched MeshPhysicalMaterial, and its clone and copy carrying them (ThinFilmMaterial has its own). */
+function addProperties(m: MeshPhysicalMaterial): void {
+  const prototype = Object.getPrototypeOf(m) as MeshPhysicalMaterial;
+  for (const name of OPTION_NAMES)
+    Object.defineProperty(m, name, {
+      configurable: true,
+      enumerable: true,
+      get: () => spectralOption(m, name),
+      set: (value: unknown) => setSpectralOption(m, name, value),
+    });
+  Object.defineProperties(m, {
+    clone: { configurable: true, writable: true, value: () => patch(prototype.clone.call(m), films.get(m)!.options) },
+    copy: {
+      configurable: true,
+      writable: true,
+      value: (source: Material) => {
+        prototype.copy.call(m, source);
+        copySpectralFilm(m, source);
+        return m;
+      },
+    },
+  });
+}
+
+/** Makes `m` spectral with `options` (already checked), or gives it those options if it is. */
+function patch<M extends MeshPhysicalMaterial>(m: M, options: CheckedOptions): M & SpectralIridescenceProperties {
+  const known = films.get(m);
+  if (known) {
+    setOptions(m, known, options);
+    return m as M & SpectralIridescenceProperties;
+  }
+  // Kept unbound: each is called on `m`, and three's default program key is onBeforeCompile's own text.
+  // eslint-disable-next-line @typescript-eslint/unbound-method
+  const user = { onBeforeCompile: m.onBeforeCompile, customProgramCacheKey: m.customProgramCacheKey, onBeforeRender: m.onBeforeRender };
+  const film: SpectralFilm = { options, uniforms: filmColorUniforms(), table: null, user, warned: new Set() };
+  films.set(m, film);
+  hook(m, film);
+  if (!(m as { isThinFilmMaterial?: boolean }).isThinFilmMaterial) addProperties(m);
+  m.addEventListener('dispose', () => {
+    releaseFilmColorTextures(film);
+    tables.release(film);
+    film.table = null;
+  });
+  return m as M & SpectralIridescenceProperties;
+}
+
+/** An option of a spectral material. */
+export const spectralOption = <K extends keyof CheckedOptions>(m: MeshPhysicalMaterial, name: K): CheckedOptions[K] =>
+  films.get(m)!.options[name];
+
+/** Sets one option of a spectral material, checked as `spectralIridescence` checks it (a ParameterError names it). */
+export function setSpectralOption(m: MeshPhysicalMaterial, name: keyof SpectralIridescenceOptions, value: unknown): void {
+  const film = films.get(m)!;
+  setOptions(m, film, spectralIridescenceOptions({ ...film.options, [name]: value }));
+}
+
+/** Gives `target` the film options of `source` when both are spectral (a material's copy). */
+export function copySpectralFilm(target: MeshPhysicalMaterial, source: Material): void {
+  const from = films.get(source as MeshPhysicalMaterial);
+  const to = films.get(target);
+  if (from && to) setOptions(target, to, from.options);
+}
 
 /**
  * Makes a MeshPhysicalMaterial's iridescence spectral: wherever three.js would evaluate its
@@ -122,57 +248,27 @@ const definesOf = (o: Options) => filmColorDefines({ ...o, nFilm: DEFAULT_SETTIN
  * Fresnel, two orders of the Airy sum, a Gaussian fit of the colour-matching functions, no
  * illuminant), the material computes the film's reflectance as the demo does (every order,
  * Fresnel per polarisation, the CIE observer under the chosen light; see docs/material.md).
- * Everything else of the physical material is three's own: base colour, metalness, roughness,
- * maps, transmission, lights, environment, shadows, tone mapping. The glTF parameters are read
- * where three keeps them: `iridescence`, `iridescenceIOR`, `iridescenceThicknessMinimum`, `iridescenceThicknessMaximum`,
- * `iridescenceMap`, `iridescenceThicknessMap`; the base's index is `ior`. The metallic lobe (a
- * metal's F0 under the film) stays three's. Calling it again changes the options; materials with
- * equal options share one program, and materials with equal films share one table and the
- * light's textures, freed when the last holder's material is disposed.
+ * Everything else of the physical material is three's own. The glTF parameters are read where
+ * three keeps them; the base's index is `ior`. The options and the film's parameters are checked
+ * here (a ParameterError names the first bad one); a parameter set out of range later is clamped
+ * when drawn, with a warning. The options become properties of the material (`material.mode =
+ * 'fourier'`); the user's `onBeforeCompile`, `customProgramCacheKey` and `onBeforeRender` are
+ * called before the film's; `clone()` and `copy()` carry the options. Calling it again changes
+ * the options; materials with equal options share one program, and materials with equal films
+ * share one table and the light's textures, freed when the last holder's material is disposed.
  */
-export function spectralIridescence<M extends MeshPhysicalMaterial>(material: M, options: SpectralIridescenceOptions = {}): M {
+export function spectralIridescence<M extends MeshPhysicalMaterial>(
+  material: M,
+  options: SpectralIridescenceOptions = {},
+): M & SpectralIridescenceProperties {
   const checked = spectralIridescenceOptions(options);
-  filmSettingsOf(material, checked);
-  const known = films.get(material);
-  if (known) {
-    if (JSON.stringify(definesOf(known.options)) !== JSON.stringify(definesOf(checked))) {
-      material.dispose(); // frees the old program (and, below, the old textures), as setDefines does
-      material.needsUpdate = true;
-    }
-    known.options = checked;
-    return material;
-  }
-  const film: SpectralFilm = {
-    options: checked,
-    uniforms: filmColorUniforms(),
-    table: null,
-  };
-  films.set(material, film);
-  material.onBeforeCompile = (shader: WebGLProgramParametersWithUniforms) => {
-    shader.defines = { ...shader.defines, ...definesOf(film.options) };
-    Object.assign(shader.uniforms, film.uniforms);
-    shader.fragmentShader = shader.fragmentShader
-      .replace(
-        '#include <iridescence_fragment>',
-        `#include <iridescence_fragment>\n#ifdef USE_IRIDESCENCE\n${shaderSource('spectralIridescence.glsl')}\n#endif`,
-      )
-      .replace('#include <lights_fragment_begin>', lightsFragmentBegin());
-  };
-  // One program per distinct film configuration (three would otherwise key it by onBeforeCompile's text alone).
-  material.customProgramCacheKey = () => `spectral-iridescence ${JSON.stringify(definesOf(film.options))}`;
-  material.onBeforeRender = (renderer) => {
-    if (material.iridescence > 0) update(film, material, renderer);
-  };
-  material.addEventListener('dispose', () => {
-    releaseFilmColorTextures(film);
-    tables.release(film);
-    film.table = null;
-  });
-  return material;
+  filmSettingsOf(material, checked, refuse);
+  return patch(material, checked);
 }
 
-/** Whether `material` has been upgraded by `spectralIridescence`. */
-export const isSpectralIridescence = (material: MeshPhysicalMaterial): boolean => films.has(material);
+/** Whether `material` has been upgraded by `spectralIridescence` (a ThinFilmMaterial always is). */
+export const isSpectralIridescence = (material: Material): material is MeshPhysicalMaterial & SpectralIridescenceProperties =>
+  films.has(material as MeshPhysicalMaterial);
 
 /**
  * Upgrades every MeshPhysicalMaterial with iridescence under `root` (a glTF's scene, say) to the
@@ -189,16 +285,4 @@ export function useSpectralIridescence(root: Object3D, options: SpectralIridesce
   });
   for (const m of found) spectralIridescence(m, options);
   return [...found];
-}
-
-/**
- * A MeshPhysicalMaterial whose iridescence is the spectral film from the start (iridescence 1
- * unless `parameters` say otherwise): `new ThinFilmMaterial({ iridescenceIOR: 1.33,
- * iridescenceThicknessMinimum: 0, iridescenceThicknessMaximum: 450 }, { illuminant: 'D65' })`.
- */
-export class ThinFilmMaterial extends MeshPhysicalMaterial {
-  constructor(parameters: MeshPhysicalMaterialParameters = {}, film: SpectralIridescenceOptions = {}) {
-    super({ iridescence: 1, ...parameters });
-    spectralIridescence(this, film);
-  }
 }

@@ -8,7 +8,7 @@ import type { FilmCase } from './harness/material.ts';
  * The spectral iridescence (src/material/spectralIridescence.ts) in three.js scenes, one harness
  * page (tests/e2e/harness/material.ts) for every check: the film's pixel against the float64
  * reference on a box, through a glTF round trip, the rest of the physical material untouched, and
- * the programs and textures as materials come and go.
+ * the programs and textures as materials come and go, and a table rebuilt after a lost context.
  */
 
 /** A soap film on glass, and a higher-index film on a lower-index base (a minimum at normal incidence). */
@@ -19,8 +19,10 @@ const CASES: readonly FilmCase[] = [
 const referenceOf = (c: FilmCase) =>
   reference8({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm: c.nFilm, nInside: c.ior });
 
-test('the spectral iridescence on three.js meshes: reference colour, glTF, the physical material kept, programs', async ({ page }) => {
-  // ~50 s here (SwiftShader compiles each mode's program, the soak's among them): room for a slower machine.
+test('the spectral iridescence on three.js meshes: reference colour, glTF, the physical material kept, programs, context restore', async ({
+  page,
+}) => {
+  // ~1.6 min here (SwiftShader compiles each mode's program, the soak's, and again after the context restore): room for a slower machine.
   test.setTimeout(300_000);
   const problems = watchProblems(page);
   await page.goto('/tests/e2e/harness/material.html');
@@ -60,6 +62,14 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
   expect(counts.disposed).toEqual(counts.before);
   expect(counts.most - counts.before.programs).toBeLessThanOrEqual(4);
   expect(counts.after).toEqual(counts.before);
+
+  // After a lost and restored context, a table-mode material draws its film again (its table
+  // rebuilt; left empty it would draw black), with no change to the film.
+  const restored = await page.evaluate((c) => window.materialHarness!.contextRestorePixels(c), CASES[0]!);
+  expect(worstCodeDifference(restored.before, referenceOf(CASES[0]!))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  expect(worstCodeDifference(restored.after, referenceOf(CASES[0]!)), `after restore: ${restored.after}`).toBeLessThanOrEqual(
+    MAX_CODE_DIFFERENCE,
+  );
 
   // The example page draws both materials under its HDR environment and reports their ΔE00 at the probe.
   await page.goto('/materials.html');

@@ -89,6 +89,11 @@ describe('the packed library in a fresh project', () => {
       expect(out.rgb).toEqual(applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz({ ...stack, thicknessNm: 450 })));
       // The packed material replaces three's film and brings its uniforms; bad options name the parameter.
       expect(out.spectral).toBe(true);
+      // A three.js material: its options as properties, the user's onBeforeCompile called, a clone still spectral.
+      expect(out.thinFilm).toBe(true);
+      expect(out.userCompiled).toBe(true);
+      expect(out.options).toEqual(['fourier', 'D65', 45]);
+      expect(out.clone).toEqual(['exact', 'D55']);
       expect(out.replaced).toBe(true);
       expect(out.uniforms).toEqual(expect.arrayContaining(['uNFilm', 'uSpectralTransform', 'uXyzToLinearWorking']));
       expect(out.upgraded).toBe(1);

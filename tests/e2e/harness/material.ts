@@ -30,7 +30,8 @@ import {
 } from 'three';
 import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
-import { type SpectralIridescenceOptions, spectralIridescence, useSpectralIridescence } from '../../../src/material/spectralIridescence.ts';
+import { spectralIridescence, useSpectralIridescence } from '../../../src/material/spectralIridescence.ts';
+import { type SpectralIridescenceOptions } from '../../../src/material/spectralIridescenceOptions.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');
 if (!canvas) throw new Error('material.html must hold #gl');
@@ -254,7 +255,33 @@ function programCounts(count: number, rounds: number) {
   return { before, sameFilm, threeModes, disposed, most, after: memory() };
 }
 
-window.materialHarness = { filmPixel, gltfPixel, againstPhysical, programCounts };
+/** Waits for `event` on the canvas after `act()`. */
+function canvasEvent(event: 'webglcontextlost' | 'webglcontextrestored', act: () => void): Promise<void> {
+  const happened = new Promise<void>((resolve) => renderer.domElement.addEventListener(event, () => resolve(), { once: true }));
+  act();
+  return happened;
+}
+
+/**
+ * The centre pixel of a table-mode film case before the WebGL context is lost (WEBGL_lose_context)
+ * and after it is restored, with the same material and film throughout: the table, drawn on the
+ * GPU, is gone with the context and must be drawn again. The page's last check: its scene is not disposed.
+ */
+async function contextRestorePixels(c: FilmCase): Promise<{ before: number[]; after: number[] }> {
+  const { scene, camera } = filmScene(c, spectralIridescence(filmMaterial(c), { mode: 'table' }));
+  const before = centre(draw(scene, camera));
+  const extension = renderer.getContext().getExtension('WEBGL_lose_context');
+  if (!extension) throw new Error('WEBGL_lose_context is not offered');
+  await canvasEvent('webglcontextlost', () => extension.loseContext());
+  // The browser allows a restore only once the lost event's dispatch is over: a task later.
+  await new Promise((resolve) => setTimeout(resolve, 0));
+  await canvasEvent('webglcontextrestored', () => extension.restoreContext());
+  const after = centre(draw(scene, camera));
+  // Left as it is: three would delete objects of the lost context (browser warnings); the spec leaves the page next.
+  return { before, after };
+}
+
+window.materialHarness = { filmPixel, gltfPixel, againstPhysical, programCounts, contextRestorePixels };
 document.body.dataset.ready = 'yes';
 
 declare global {
@@ -264,6 +291,7 @@ declare global {
       gltfPixel: typeof gltfPixel;
       againstPhysical: typeof againstPhysical;
       programCounts: typeof programCounts;
+      contextRestorePixels: typeof contextRestorePixels;
     };
   }
 }

@@ -1,0 +1,63 @@
+import { POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
+import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
+import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
+import { oneOf } from '../physics/validate.ts';
+import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
+import { type FilmQuality, type FilmQualityOptions, filmQualityFrom } from '../settings/filmQuality.ts';
+import { MODES } from '../settings/filmSettings.ts';
+
+/** How the film is computed: `table` (one lookup in a table the GPU builds), `fourier` (the Airy series per fragment) or `exact` (binned integral). */
+export type FilmMode = (typeof MODES)[number];
+
+/** How the film is computed and seen: the demo's `mode`, `illuminant`, `polarization`, `normalization`, and the quality knobs. */
+export interface SpectralIridescenceOptions {
+  /** `table` by default */
+  readonly mode?: FilmMode;
+  readonly illuminant?: IlluminantSpec;
+  readonly polarization?: Polarization;
+  readonly normalization?: Normalization;
+  /** the table's layout and bins: any of the knobs, over the demo's defaults */
+  readonly quality?: FilmQualityOptions;
+}
+
+/** The options as a spectral material holds them, readable and settable (each set checked as the constructor checks it). */
+export interface SpectralIridescenceProperties {
+  mode: FilmMode;
+  illuminant: IlluminantSpec;
+  polarization: Polarization;
+  normalization: Normalization;
+  get quality(): FilmQuality;
+  /** any of the knobs, over the defaults (not over the current ones) */
+  set quality(q: FilmQualityOptions);
+}
+
+/** Every option, checked, with its default. */
+export type CheckedOptions = Required<Omit<SpectralIridescenceOptions, 'quality'>> & { readonly quality: FilmQuality };
+
+/** The option names, as the properties of a spectral material are named. */
+export const OPTION_NAMES = ['mode', 'illuminant', 'polarization', 'normalization', 'quality'] as const;
+
+/** The options with their defaults, each checked (a ParameterError names the first bad one). */
+export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): CheckedOptions {
+  return {
+    mode: oneOf('mode', o.mode ?? 'table', MODES),
+    illuminant: illuminantFromJson(o.illuminant ?? DEFAULT_SETTINGS.illuminant),
+    polarization: oneOf('polarization', o.polarization ?? DEFAULT_SETTINGS.polarization, POLARIZATIONS),
+    normalization: oneOf('normalization', o.normalization ?? DEFAULT_SETTINGS.normalization, NORMALIZATIONS),
+    quality: filmQualityFrom(o.quality),
+  };
+}
+
+/** `options` without the film options' keys, and those keys apart: a one-object constructor's split. */
+export function splitFilmOptions<P extends object>(
+  parameters: P & SpectralIridescenceOptions,
+): [Omit<P, keyof SpectralIridescenceOptions>, SpectralIridescenceOptions] {
+  const rest: Record<string, unknown> = { ...(parameters as Record<string, unknown>) };
+  const film: Record<string, unknown> = {};
+  for (const name of OPTION_NAMES)
+    if (name in rest) {
+      film[name] = rest[name];
+      delete rest[name];
+    }
+  return [rest as Omit<P, keyof SpectralIridescenceOptions>, film];
+}

@@ -1,0 +1,214 @@
+/**
+ * The spectral material as a three.js user meets it, in Node (three's materials need no GPU to be
+ * made, copied, or to have onBeforeCompile run on a shader object): hooks chained, program keys,
+ * clone and copy, options as properties, the one-object constructor, and the quality's checks.
+ */
+import { MeshPhysicalMaterial, ShaderLib } from 'three';
+import { describe, expect, it, vi } from 'vitest';
+import { isSpectralIridescence, spectralIridescence } from '../../../src/material/spectralIridescence.ts';
+import { ThinFilmMaterial } from '../../../src/material/thinFilmMaterial.ts';
+import { ParameterError } from '../../../src/physics/validate.ts';
+import { DEFAULT_FILM_QUALITY, filmQualityFrom } from '../../../src/settings/filmQuality.ts';
+
+/** What three hands onBeforeCompile: the physical material's shaders, uniforms and defines. */
+const shaderObject = () => ({ fragmentShader: ShaderLib.physical.fragmentShader, vertexShader: '', uniforms: {}, defines: {} });
+/** Whether a compiled fragment shader holds the spectral film in place of three's. */
+const isSpectral = (fragment: string) => fragment.includes('tfcSpectralIridescence( material.iridescenceThickness');
+
+const parameterOf = (f: () => unknown): string => {
+  try {
+    f();
+  } catch (e) {
+    if (e instanceof ParameterError) return e.parameter;
+    throw e;
+  }
+  return 'accepted';
+};
+
+describe("the user's hooks", () => {
+  it("calls the user's onBeforeCompile first, set before or after the upgrade, and keys the program by it", () => {
+    const seen: string[] = [];
+    const before = new MeshPhysicalMaterial({ iridescence: 1 });
+    before.onBeforeCompile = (shader) => {
+      seen.push(isSpectral(shader.fragmentShader) ? 'spectral already' : 'three');
+      shader.fragmentShader = `// user\n${shader.fragmentShader}`;
+    };
+    spectralIridescence(before);
+    const shader = shaderObject();
+    before.onBeforeCompile(shader as never, null as never);
+    expect(seen).toEqual(['three']);
+    expect(shader.fragmentShader.startsWith('// user\n')).toBe(true);
+    expect(isSpectral(shader.fragmentShader)).toBe(true);
+
+    const after = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }));
+    const plainKey = after.customProgramCacheKey();
+    after.onBeforeCompile = (s) => void (s.defines = { ...s.defines, USER_EDIT: 1 });
+    const later = shaderObject();
+    after.onBeforeCompile(later as never, null as never);
+    expect(later.defines).toHaveProperty('USER_EDIT', 1);
+    expect(isSpectral(later.fragmentShader)).toBe(true);
+    // three's default key is onBeforeCompile's text: a different user edit is a different program.
+    expect(after.customProgramCacheKey()).not.toBe(plainKey);
+    after.customProgramCacheKey = () => 'user-key-7';
+    expect(after.customProgramCacheKey()).toContain('user-key-7');
+    expect(after.customProgramCacheKey()).toContain('spectral-iridescence');
+  });
+
+  it("keeps three's film, with a warning, where the user's onBeforeCompile took the chunks away", () => {
+    const m = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }));
+    m.onBeforeCompile = (s) => void (s.fragmentShader = s.fragmentShader.replace('#include <lights_fragment_begin>', '// gone'));
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
+    const shader = shaderObject();
+    m.onBeforeCompile(shader as never, null as never);
+    expect(isSpectral(shader.fragmentShader)).toBe(false);
+    expect(warn).toHaveBeenCalledTimes(1);
+    warn.mockRestore();
+  });
+
+  it("calls the user's onBeforeRender", () => {
+    const m = new MeshPhysicalMaterial({ iridescence: 0 });
+    const calls: unknown[] = [];
+    m.onBeforeRender = (renderer) => void calls.push(renderer);
+    spectralIridescence(m);
+    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    expect(calls).toEqual([null]);
+  });
+});
+
+describe('clone and copy', () => {
+  it("a patched MeshPhysicalMaterial's clone is spectral with its options; copy carries them", () => {
+    const m = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1, iridescenceIOR: 1.5 }), {
+      mode: 'fourier',
+      illuminant: 'D55',
+    });
+    const c = m.clone();
+    expect(c).not.toBe(m);
+    expect(isSpectralIridescence(c)).toBe(true);
+    expect(c.iridescenceIOR).toBe(1.5);
+    if (!isSpectralIridescence(c)) return;
+    expect([c.mode, c.illuminant]).toEqual(['fourier', 'D55']);
+    const shader = shaderObject();
+    c.onBeforeCompile(shader as never, null as never);
+    expect(isSpectral(shader.fragmentShader)).toBe(true);
+    // The clone's options are its own.
+    c.mode = 'exact';
+    expect(m.mode).toBe('fourier');
+    const target = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }));
+    target.copy(c);
+    expect(target.mode).toBe('exact');
+  });
+
+  it('a ThinFilmMaterial clones as a ThinFilmMaterial with its options, and copies options from another', () => {
+    const m = new ThinFilmMaterial({ iridescenceIOR: 1.33, mode: 'exact', polarization: 's', quality: { exactSpectralBins: 45 } });
+    const c = m.clone();
+    expect(c).toBeInstanceOf(ThinFilmMaterial);
+    expect(c.isThinFilmMaterial).toBe(true);
+    expect([c.mode, c.polarization, c.quality.exactSpectralBins, c.iridescenceIOR]).toEqual(['exact', 's', 45, 1.33]);
+    expect(new ThinFilmMaterial().copy(m).mode).toBe('exact');
+  });
+});
+
+describe('options as properties', () => {
+  it('reads and sets each option, checked as the constructor checks it', () => {
+    const m = new ThinFilmMaterial({ iridescenceIOR: 1.33, mode: 'table', illuminant: 'D65' });
+    expect([m.mode, m.illuminant, m.iridescence]).toEqual(['table', 'D65', 1]);
+    m.illuminant = { daylightCct: 7500 };
+    expect(m.illuminant).toEqual({ daylightCct: 7500 });
+    expect(parameterOf(() => (m.mode = 'bogus' as 'table'))).toBe('mode');
+    expect(parameterOf(() => (m.illuminant = { daylightCct: 1000 }))).toBe('illuminant');
+    expect(parameterOf(() => (m.polarization = 'circular' as 's'))).toBe('polarization');
+    expect(parameterOf(() => (m.normalization = 'peak' as 'white'))).toBe('normalization');
+    expect(parameterOf(() => (m.quality = { exactSpectralBins: 7 }))).toBe('quality.exactSpectralBins');
+    expect(m.mode).toBe('table'); // a refused value leaves the option as it was
+    const patched = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }));
+    expect(parameterOf(() => (patched.mode = 'bogus' as 'table'))).toBe('mode');
+    patched.mode = 'fourier';
+    expect(patched.mode).toBe('fourier');
+  });
+
+  it('recompiles only when the defines change: a light or polarisation in table mode keeps the program', () => {
+    const m = new ThinFilmMaterial({ mode: 'table' });
+    const key = m.customProgramCacheKey();
+    const version = m.version;
+    m.illuminant = 'D55';
+    m.polarization = 's';
+    expect([m.customProgramCacheKey(), m.version]).toEqual([key, version]);
+    m.mode = 'exact';
+    expect(m.customProgramCacheKey()).not.toBe(key);
+    expect(m.version).toBeGreaterThan(version);
+  });
+
+  it("three's setValues sets them too", () => {
+    const m = new ThinFilmMaterial();
+    m.setValues({ mode: 'fourier' } as never);
+    expect(m.mode).toBe('fourier');
+  });
+});
+
+describe('the constructor and the API boundary', () => {
+  it('takes the physical parameters and the options in one object, checking both', () => {
+    const m = new ThinFilmMaterial({ iridescenceIOR: 1.4, roughness: 0.2, iridescence: 0.5, normalization: 'white' });
+    expect([m.iridescenceIOR, m.roughness, m.iridescence, m.normalization]).toEqual([1.4, 0.2, 0.5, 'white']);
+    expect(parameterOf(() => new ThinFilmMaterial({ iridescenceThicknessMaximum: 30_000 }))).toBe('iridescenceThicknessMaximum');
+    expect(parameterOf(() => new ThinFilmMaterial({ iridescenceIOR: 5 }))).toBe('iridescenceIOR');
+    expect(parameterOf(() => new ThinFilmMaterial({ mode: 'bogus' as 'table' }))).toBe('mode');
+  });
+});
+
+describe('a parameter out of range when drawn', () => {
+  it('is clamped to its range with one warning naming it and the range, not thrown', () => {
+    // fourier mode: bringing the film up to date makes only CPU-side textures, no GPU needed.
+    const m = new ThinFilmMaterial({ iridescenceIOR: 1.33, mode: 'fourier' });
+    const shader = shaderObject();
+    m.onBeforeCompile(shader as never, null as never);
+    const uniforms = shader.uniforms as Record<string, { value: unknown }>;
+    m.iridescenceIOR = 5;
+    m.iridescenceThicknessMaximum = 30_000;
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
+    const draw = () => m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    expect(draw).not.toThrow();
+    draw();
+    const messages = warn.mock.calls.map((c) => String(c[0]));
+    warn.mockRestore();
+    expect(messages).toHaveLength(2); // once per parameter, not per frame
+    expect(messages[0]).toMatch(/iridescenceIOR 5 .*\[1, 4\]/);
+    expect(messages[1]).toMatch(/iridescenceThicknessMaximum 30000 .*\[0, 20000\] nm/);
+    expect(uniforms.uNFilm!.value).toBe(4); // the domain's upper end
+  });
+});
+
+describe('the quality knobs', () => {
+  it('merges what is given over the defaults, the table knob by knob', () => {
+    const q = filmQualityFrom({ exactSpectralBins: 45, table: { rows: 64 } });
+    expect(q).toEqual({ ...DEFAULT_FILM_QUALITY, exactSpectralBins: 45, table: { ...DEFAULT_FILM_QUALITY.table, rows: 64 } });
+    expect(filmQualityFrom()).toEqual(DEFAULT_FILM_QUALITY);
+  });
+
+  it.each([
+    ['exactSpectralBins', { exactSpectralBins: 7 }], // 450 / 7 is not whole
+    ['exactSpectralBins', { exactSpectralBins: 0 }],
+    ['exactSpectralBins', { exactSpectralBins: 900 }],
+    ['dispersiveSpectralBins', { dispersiveSpectralBins: 2.5 }],
+    ['table.spectralBins', { table: { spectralBins: 100 } }],
+    ['table.width', { table: { width: 100.5 } }],
+    ['table.width', { table: { width: 32 } }],
+    ['table.rows', { table: { rows: 1 } }],
+    ['table.thickEndCellNm', { table: { thickEndCellNm: 0 } }],
+    ['table.thicknessPower', { table: { thicknessPower: Number.NaN } }],
+    ['table.cosPower', { table: { cosPower: 0.5 } }],
+    ['table.fill', { table: { fill: 'spline' } }],
+    ['tablePrecision', { tablePrecision: 'double' }],
+    ['spectralTailTolerance', { spectralTailTolerance: -1e-6 }],
+    ['airySeriesMaxOrders', { airySeriesMaxOrders: 0 }],
+  ])('refuses quality.%s %j by name', (name, value) => {
+    expect(() => filmQualityFrom(value as never)).toThrow(
+      new RegExp(`^quality\\.${name.replace('.', '\\.')}: .* is not allowed; expected `),
+    );
+    expect(parameterOf(() => new ThinFilmMaterial({ quality: value as never }))).toBe(`quality.${name}`);
+  });
+
+  it('takes every whole divisor of 450 as a bin count', () => {
+    for (const bins of [1, 2, 3, 5, 9, 10, 15, 18, 25, 30, 45, 50, 75, 90, 150, 225, 450])
+      expect(filmQualityFrom({ exactSpectralBins: bins }).exactSpectralBins).toBe(bins);
+  });
+});
