@@ -5,6 +5,7 @@
  * the browser tests' (tests/e2e/servers.ts), so the bench runs beside either.
  */
 import type { ParityGroup } from '../harness/parityCase.ts';
+import type { FilmQuality } from '../../src/settings/filmQuality.ts';
 
 export interface BenchPlan {
   readonly smoke: boolean;
@@ -62,3 +63,13 @@ export const SMOKE_PLAN: BenchPlan = {
 /** The plan's share of a grid: every `stride`-th film. */
 export const thinnedGrid = (g: ParityGroup, stride: number): ParityGroup =>
   stride === 1 ? g : { ...g, inputs: g.inputs.filter((_, i) => i % stride === 0) };
+
+/**
+ * A row's quality in the smoke run: its table at most 128 texels wide and 16 rows per half, so a
+ * table row builds in a moment and still runs every step of its kind (fill, precision, layout
+ * powers); the smoke checks that each row runs and gives finite figures, not their values.
+ */
+export const smokeQuality = (q: FilmQuality): FilmQuality => ({
+  ...q,
+  table: { ...q.table, width: Math.min(q.table.width, 128), rows: Math.min(q.table.rows, 16) },
+});

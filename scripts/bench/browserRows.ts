@@ -1,4 +1,5 @@
 /** Runs the benchmark rows in headless Chromium, one fresh page (and WebGL context) per row. */
+import { smokeQuality } from './benchPlan.ts';
 import type { Browser } from '@playwright/test';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import type { BenchPlan } from './benchPlan.ts';
@@ -22,7 +23,7 @@ export async function runRow(
       kind: row.kind,
       reflections: row.reflections ?? true,
       settings: row.settings,
-      quality: row.quality,
+      quality: plan.smoke ? smokeQuality(row.quality) : row.quality,
       sizes: plan.sizes,
       frames: plan.frames,
       frameBudgetMs: plan.frameBudgetMs,
