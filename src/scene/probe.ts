@@ -27,6 +27,47 @@ export interface ProbeReading {
 export type ProbedFilm = Pick<ProbeReading, 'thicknessNm' | 'angleDeg'>;
 
 const UNIT_SPHERE = new Sphere(new Vector3(), 1);
+/** How often a probe's fence is polled (ms): a few times a frame. */
+const FENCE_POLL_MS = 4;
+
+/**
+ * The RGBA float pixel at (0, 0) of the render target bound: copied into a pixel-pack buffer
+ * behind a fence (gl.fenceSync), which is polled with clientWaitSync and timeout 0 until it is
+ * signalled; then the buffer is read (getBufferSubData). Rejects if the context is lost
+ * meanwhile, touching none of the lost context's objects (three's readRenderTargetPixelsAsync
+ * would delete them in the restored context, which WebGL warns about).
+ */
+function readPixelAsync(renderer: WebGLRenderer): Promise<Float32Array> {
+  const gl = renderer.getContext() as WebGL2RenderingContext;
+  const buffer = gl.createBuffer();
+  gl.bindBuffer(gl.PIXEL_PACK_BUFFER, buffer);
+  gl.bufferData(gl.PIXEL_PACK_BUFFER, 4 * Float32Array.BYTES_PER_ELEMENT, gl.STREAM_READ);
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.FLOAT, 0);
+  gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
+  const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+  gl.flush();
+  const canvas = renderer.domElement;
+  let lost = gl.isContextLost() || sync === null;
+  const onLost = () => (lost = true);
+  canvas.addEventListener('webglcontextlost', onLost);
+  return new Promise((resolve, reject) => {
+    const poll = () => {
+      const status = lost ? gl.WAIT_FAILED : gl.clientWaitSync(sync!, 0, 0);
+      if (status === gl.TIMEOUT_EXPIRED) return void setTimeout(poll, FENCE_POLL_MS);
+      canvas.removeEventListener('webglcontextlost', onLost);
+      if (lost) return reject(new Error('the WebGL context was lost before the probe’s pixel came back'));
+      const pixel = new Float32Array(4);
+      gl.bindBuffer(gl.PIXEL_PACK_BUFFER, buffer);
+      gl.getBufferSubData(gl.PIXEL_PACK_BUFFER, 0, pixel);
+      gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
+      gl.deleteSync(sync);
+      gl.deleteBuffer(buffer);
+      if (status === gl.WAIT_FAILED) reject(new Error('the probe’s fence failed'));
+      else resolve(pixel);
+    };
+    setTimeout(poll, FENCE_POLL_MS);
+  });
+}
 
 /**
  * θ_i where the view ray through (fx, fy) (fractions of the view, from the top left) meets the
@@ -46,10 +87,8 @@ export function incidenceAngleDeg(camera: PerspectiveCamera, fx: number, fy: num
 /**
  * Reads the film at one pixel back from the GPU: the bubble is drawn once more through a
  * 1-pixel window of the camera (setViewOffset) with the material's TFC_PROBE output — the near
- * wall's film XYZ and thickness — into a 1×1 float target, read back without waiting for the GPU:
- * three's readRenderTargetPixelsAsync copies the pixel into a pixel-pack buffer, puts a fence
- * after it and polls the fence (clientWaitSync with timeout 0) until it is signalled, then reads
- * the buffer, so the frames go on meanwhile.
+ * wall's film XYZ and thickness — into a 1×1 float target, read back without waiting for the GPU
+ * (readPixelAsync), so the frames go on meanwhile.
  */
 export class FilmProbe {
   private readonly target = new WebGLRenderTarget(1, 1, { type: FloatType, format: RGBAFormat });
@@ -80,12 +119,11 @@ export class FilmProbe {
     renderer.setRenderTarget(this.target);
     renderer.clear();
     renderer.render(bubble, camera);
-    const pixel = new Float32Array(4);
-    const read = renderer.readRenderTargetPixelsAsync(this.target, 0, 0, 1, 1, pixel);
+    const read = readPixelAsync(renderer);
     renderer.setRenderTarget(previous);
     bubble.material = shown;
     camera.clearViewOffset();
-    await read;
+    const pixel = await read;
     return { thicknessNm: pixel[3]!, angleDeg, renderedXyz: [pixel[0]!, pixel[1]!, pixel[2]!] };
   }
 
