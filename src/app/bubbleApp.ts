@@ -38,10 +38,10 @@ export interface BubbleAppParts {
   /** Called after each frame is drawn (e.g. to copy a shared renderer's canvas to the page). */
   readonly present?: () => void;
   /**
-   * Where the lil-gui panel goes, if any ('page': lil-gui's own place, the page's top right). It
-   * starts closed where the page's CSS says so (startsClosed, read from this element or `surface`).
+   * Where the lil-gui panel goes, if any. It starts closed where the page's CSS says so
+   * (startsClosed, read from this element).
    */
-  readonly controls?: HTMLElement | 'page';
+  readonly controls?: HTMLElement;
   /** Where the plots go, if any; they are redrawn when this element's box changes (e.g. a drawer opens). */
   readonly plots?: HTMLElement;
   /**
@@ -148,7 +148,7 @@ export class BubbleApp {
       const probe = [(e.clientX - box.left) / box.width, (e.clientY - box.top) / box.height] as const;
       if (probe.every((v) => v >= 0 && v <= 1)) this.change({ ...this.settings, probe });
     };
-    const controls = parts.controls instanceof HTMLElement ? parts.controls : null;
+    const controls = parts.controls ?? null;
     const onPress = (e: PointerEvent) => {
       if (!e.isPrimary || e.button !== 0 || (e.target instanceof Node && controls?.contains(e.target))) return;
       parts.surface.setPointerCapture(e.pointerId);
@@ -326,11 +326,10 @@ export class BubbleApp {
 
   /** Builds the panel anew: closed if the one it replaces was, else as the page's CSS says for its size. */
   private buildControls(): void {
-    const { controls, surface } = this.parts;
-    const closed = this.gui ? this.gui._closed : controls !== undefined && startsClosed(controls === 'page' ? surface : controls, 'panel');
+    const { controls } = this.parts;
+    const closed = this.gui ? this.gui._closed : controls !== undefined && startsClosed(controls, 'panel');
     this.gui?.destroy();
-    const container = controls === 'page' ? undefined : controls;
-    this.gui = controls ? createControlPanel(this.settings, (s) => this.change(s), container, this.cat) : null;
+    this.gui = controls ? createControlPanel(this.settings, (s) => this.change(s), controls, this.cat) : null;
     if (closed) this.gui?.close();
   }
 

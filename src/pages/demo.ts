@@ -10,12 +10,16 @@ import { BubbleView, createBubbleRenderer } from '../scene/bubbleView.ts';
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 const messages = document.querySelector<HTMLElement>('#messages');
 const plots = document.querySelector<HTMLElement>('#plots');
-if (!canvas || !messages || !plots) throw new Error('index.html must hold #bubble, #messages and #plots');
+const panel = document.querySelector<HTMLElement>('#panel');
+const heading = document.querySelector<HTMLElement>('#heading');
+if (!canvas || !messages || !plots || !panel || !heading)
+  throw new Error('index.html must hold #bubble, #messages, #plots, #panel and #heading');
 
 const query = new URLSearchParams(location.search);
 const { lang, cat, error: langError } = pageLanguage(query, document.documentElement.lang);
 document.documentElement.lang = lang;
 document.title = cat['app.title'];
+heading.textContent = cat['app.heading'];
 const parsed = parseSettings(location.search);
 // Less motion asked for: the swirl stands still unless the URL says animate=1.
 const settings = prefersReducedMotion() && !query.has('animate') ? { ...parsed.settings, animate: false } : parsed.settings;
@@ -43,7 +47,7 @@ function followInUrl(s: ViewSettings) {
 }
 
 /** The live bubble with its panel and plots. */
-function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: HTMLElement): void {
+function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: HTMLElement, panel: HTMLElement): void {
   const drawer = plots.closest('details');
   if (drawer) drawer.open = !startsClosed(drawer, 'plots'); // a small view starts with the drawer closed (index.html's CSS)
   const view = new BubbleView(createBubbleRenderer(canvas), settings);
@@ -57,7 +61,7 @@ function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: 
       view,
       surface: canvas,
       catalogue: cat,
-      controls: 'page',
+      controls: panel,
       plots,
       messages,
       onChange: followInUrl,
@@ -75,7 +79,7 @@ function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: 
   Object.assign(window, { bubbleView: view, bubbleApp: app });
 }
 
-if (hasWebGL2()) startLiveView(canvas, plots, messages);
+if (hasWebGL2()) startLiveView(canvas, plots, messages, panel);
 else {
   // Without WebGL2 the page still teaches: a still image computed on the CPU, no plots.
   plots.closest('details')?.remove();
