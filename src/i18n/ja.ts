@@ -106,7 +106,7 @@ export const JA: Catalogue = {
   'panel.notTaken': '採用しない：屈折率が範囲外か、数値でない',
   'app.title': '分光積分で求めた薄膜干渉の色のシャボン玉',
   'app.fourierAsTable':
-    '分散のある薄膜（nFilm={nFilm}）にはエアリー級数がないため、mode=fourier の代わりに mode=table で描いている（表は同じスペクトルのビンから作る）。',
+    '分散のある薄膜（屈折率 {nFilm}）にはエアリー級数がないため、計算方法「フーリエ級数」の代わりに「表」で描いている（表は同じスペクトルのビンから作る）。',
   'app.heading': '薄膜干渉：シャボン玉',
   'app.noDisplayP3': 'このブラウザには P3 のキャンバスがないため、sRGB で表示している。',
   'app.environmentLoading': '環境 {env} を読み込み中…',
