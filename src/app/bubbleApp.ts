@@ -1,7 +1,11 @@
 import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import type GUI from 'lil-gui';
 import type { WebGLRenderer } from 'three';
+import { type Catalogue, EN } from '../i18n/en.ts';
 import { PlotPanel } from '../plots/plotPanel.ts';
+import { probeDescription } from '../plots/probeDescription.ts';
+import { addAccessStyles } from './accessStyles.ts';
+import { latestThrottle } from './latestThrottle.ts';
 import type { BubbleView } from '../scene/bubbleView.ts';
 import { createControlPanel } from './controlPanel.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
@@ -12,6 +16,17 @@ import type { AppSettings, ViewSettings } from '../settings/viewParameters.ts';
 
 /** While the swirl animates, the plots follow the probed film this often. */
 const PLOT_INTERVAL_MS = 250;
+/** The live description says the film at the probe at most this often (the latest state wins). */
+const DESCRIPTION_INTERVAL_MS = 1000;
+/** An arrow key moves the probe this far (a fraction of the view); with Shift, PROBE_BIG_STEP. */
+const PROBE_STEP = 0.01;
+const PROBE_BIG_STEP = 0.05;
+const ARROWS: Readonly<Record<string, readonly [number, number]>> = {
+  ArrowLeft: [-1, 0],
+  ArrowRight: [1, 0],
+  ArrowUp: [0, -1],
+  ArrowDown: [0, 1],
+};
 
 export interface BubbleAppParts {
   readonly view: BubbleView;
@@ -23,10 +38,10 @@ export interface BubbleAppParts {
   /** Called after each frame is drawn (e.g. to copy a shared renderer's canvas to the page). */
   readonly present?: () => void;
   /**
-   * Where the lil-gui panel goes, if any ('page': lil-gui's own place, the page's top right). It
-   * starts closed where the page's CSS says so (startsClosed, read from this element or `surface`).
+   * Where the lil-gui panel goes, if any. It starts closed where the page's CSS says so
+   * (startsClosed, read from this element).
    */
-  readonly controls?: HTMLElement | 'page';
+  readonly controls?: HTMLElement;
   /** Where the plots go, if any; they are redrawn when this element's box changes (e.g. a drawer opens). */
   readonly plots?: HTMLElement;
   /**
@@ -38,6 +53,13 @@ export interface BubbleAppParts {
   readonly onChange?: (s: ViewSettings) => void;
   /** Called after every frame; `complete` is false for a frame drawn from a coarse table (another follows). */
   readonly onFrame?: (complete: boolean) => void;
+  /**
+   * The element that shows the bubble to the user (default `surface`): it takes focus, is labelled
+   * (role application), and its arrow keys move the probe.
+   */
+  readonly focusable?: HTMLElement;
+  /** The language of every text the app shows (default English). */
+  readonly catalogue?: Catalogue;
 }
 
 /**
@@ -72,6 +94,12 @@ export class BubbleApp {
 
   /** The line saying that the HDR environment is loading or failed (in `parts.messages`). */
   private readonly environmentLine: HTMLElement;
+  /** The live description of the film at the probe (aria-live polite, visually hidden), and its throttle. */
+  private readonly live: HTMLElement;
+  private readonly say: ReturnType<typeof latestThrottle<string>>;
+  /** Whether the user has changed the view (the live description speaks only after that). */
+  private describing = false;
+  private readonly cat: Catalogue;
 
   /** The line saying that the view draws with another method than the one asked for (shownMethod). */
   private readonly methodLine: HTMLElement;
@@ -86,18 +114,30 @@ export class BubbleApp {
   ) {
     this.app = { animate: initial.animate, probe: initial.probe };
     this.askedMode = parts.view.current.mode;
-    this.panel = parts.plots ? new PlotPanel(parts.surface.ownerDocument) : null;
+    const doc = parts.surface.ownerDocument;
+    this.cat = parts.catalogue ?? EN;
+    addAccessStyles(doc);
+    this.panel = parts.plots ? new PlotPanel(doc, this.cat) : null;
     if (this.panel) parts.plots!.append(this.panel.element);
     this.marker = this.panel ? parts.surface.ownerDocument.createElement('div') : null;
     if (this.marker) {
       this.marker.className = 'tfb-probe-marker';
       parts.surface.after(this.marker);
     }
-    this.environmentLine = parts.surface.ownerDocument.createElement('p');
+    this.environmentLine = doc.createElement('p');
     this.environmentLine.className = 'environment-status';
-    this.methodLine = parts.surface.ownerDocument.createElement('p');
+    this.methodLine = doc.createElement('p');
     this.methodLine.className = 'method-notice';
     this.showMethod(parts.view.current);
+    this.live = Object.assign(doc.createElement('p'), { className: 'tfb-live' });
+    this.live.setAttribute('aria-live', 'polite');
+    parts.surface.after(this.live);
+    this.say = latestThrottle((text: string) => (this.live.textContent = text), DESCRIPTION_INTERVAL_MS);
+    const focusable = parts.focusable ?? parts.surface;
+    focusable.tabIndex = 0;
+    focusable.classList.add('tfb-focusable');
+    focusable.setAttribute('role', 'application');
+    focusable.setAttribute('aria-label', this.cat['bubble.label']);
     parts.view.onEnvironmentChange = () => {
       this.plotsDue = true;
       this.requestFrame();
@@ -108,7 +148,7 @@ export class BubbleApp {
       const probe = [(e.clientX - box.left) / box.width, (e.clientY - box.top) / box.height] as const;
       if (probe.every((v) => v >= 0 && v <= 1)) this.change({ ...this.settings, probe });
     };
-    const controls = parts.controls instanceof HTMLElement ? parts.controls : null;
+    const controls = parts.controls ?? null;
     const onPress = (e: PointerEvent) => {
       if (!e.isPrimary || e.button !== 0 || (e.target instanceof Node && controls?.contains(e.target))) return;
       parts.surface.setPointerCapture(e.pointerId);
@@ -116,6 +156,15 @@ export class BubbleApp {
     };
     const onDrag = (e: PointerEvent) => {
       if (parts.surface.hasPointerCapture(e.pointerId)) probeAt(e);
+    };
+    const onKey = (e: KeyboardEvent) => {
+      const arrow = ARROWS[e.key];
+      if (!arrow || e.altKey || e.ctrlKey || e.metaKey) return;
+      e.preventDefault(); // the arrows move the probe, not the page
+      const step = e.shiftKey ? PROBE_BIG_STEP : PROBE_STEP;
+      const [x, y] = this.settings.probe;
+      const clamp = (v: number) => Math.min(1, Math.max(0, +v.toFixed(4)));
+      this.change({ ...this.settings, probe: [clamp(x + arrow[0] * step), clamp(y + arrow[1] * step)] });
     };
     const onVisibility = () => this.wake();
     const onRestored = () => {
@@ -133,6 +182,7 @@ export class BubbleApp {
     const onScreen = new IntersectionObserver((entries) => this.setOnScreen(entries.some((e) => e.isIntersecting)));
     parts.surface.addEventListener('pointerdown', onPress);
     parts.surface.addEventListener('pointermove', onDrag);
+    focusable.addEventListener('keydown', onKey);
     document.addEventListener('visibilitychange', onVisibility);
     resize.observe(parts.surface);
     onScreen.observe(parts.surface);
@@ -140,6 +190,7 @@ export class BubbleApp {
     this.disconnect = () => {
       parts.surface.removeEventListener('pointerdown', onPress);
       parts.surface.removeEventListener('pointermove', onDrag);
+      focusable.removeEventListener('keydown', onKey);
       document.removeEventListener('visibilitychange', onVisibility);
       glCanvas.removeEventListener('webglcontextrestored', onRestored);
       resize.disconnect();
@@ -221,13 +272,15 @@ export class BubbleApp {
     this.marker?.remove();
     this.environmentLine.remove();
     this.methodLine.remove();
+    this.say.cancel();
+    this.live.remove();
     this.parts.view.onEnvironmentChange = null;
     this.parts.view.dispose();
   }
 
   /** Gives the view the film settings asked for, or those it draws instead, saying why (as text, never HTML). */
   private showMethod(film: FilmSettings): void {
-    const { settings, notice } = shownMethod(film);
+    const { settings, notice } = shownMethod(film, this.cat);
     this.askedMode = film.mode;
     this.parts.view.apply(settings);
     const line = this.methodLine;
@@ -248,7 +301,7 @@ export class BubbleApp {
       return;
     }
     line.dataset.state = status.state;
-    line.textContent = environmentStatusText(status);
+    line.textContent = environmentStatusText(status, this.cat);
     if (line.parentElement !== this.parts.messages) this.parts.messages.append(line);
   }
 
@@ -266,16 +319,17 @@ export class BubbleApp {
   }
 
   private change(s: ViewSettings): void {
+    this.describing = true;
     this.set({ ...s, timeSeconds: this.settings.timeSeconds });
     this.parts.onChange?.(this.settings);
   }
 
   /** Builds the panel anew: closed if the one it replaces was, else as the page's CSS says for its size. */
   private buildControls(): void {
-    const { controls, surface } = this.parts;
-    const closed = this.gui ? this.gui._closed : controls !== undefined && startsClosed(controls === 'page' ? surface : controls, 'panel');
+    const { controls } = this.parts;
+    const closed = this.gui ? this.gui._closed : controls !== undefined && startsClosed(controls, 'panel');
     this.gui?.destroy();
-    this.gui = controls ? createControlPanel(this.settings, (s) => this.change(s), controls === 'page' ? undefined : controls) : null;
+    this.gui = controls ? createControlPanel(this.settings, (s) => this.change(s), controls, this.cat) : null;
     if (closed) this.gui?.close();
   }
 
@@ -321,17 +375,21 @@ export class BubbleApp {
 
   /**
    * Probes the frame shown and, when its pixel is back (a frame or two later), redraws the plots
-   * for it, unless the settings changed meanwhile; one probe at a time.
+   * for it, unless the settings changed meanwhile; one probe at a time. Once the user has changed
+   * the view, the live description follows the same reading.
    */
   private updatePlots(now: number): void {
     const panel = this.panel;
-    const due = this.plotsDue || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS);
-    if (!panel || this.probing || this.parts.view.contextLost || !due) return;
+    const changed = this.plotsDue;
+    const due = changed || (this.looping && now - this.lastPlotMs > PLOT_INTERVAL_MS);
+    if ((!panel && !this.describing) || this.probing || this.parts.view.contextLost || !due) return;
     const s = this.settings;
     const set = this.settingsSet;
     const [fx, fy] = s.probe;
-    const { offsetLeft, offsetTop, clientWidth, clientHeight } = this.parts.surface;
-    Object.assign(this.marker!.style, { left: `${offsetLeft + fx * clientWidth}px`, top: `${offsetTop + fy * clientHeight}px` });
+    if (this.marker) {
+      const { offsetLeft, offsetTop, clientWidth, clientHeight } = this.parts.surface;
+      Object.assign(this.marker.style, { left: `${offsetLeft + fx * clientWidth}px`, top: `${offsetTop + fy * clientHeight}px` });
+    }
     this.plotsDue = false;
     this.lastPlotMs = now;
     this.probing = true;
@@ -339,7 +397,10 @@ export class BubbleApp {
       .probe(fx, fy)
       .then(
         (reading) => {
-          if (!this.disposed && set === this.settingsSet) panel.update(s, s.probe, reading, this.parts.view.displayIsP3);
+          if (this.disposed || set !== this.settingsSet) return;
+          panel?.update(s, s.probe, reading, this.parts.view.displayIsP3);
+          // Said after the user's changes only, not on each animation step (a screen reader would never rest).
+          if (this.describing && changed) this.say.push(probeDescription(s, s.probe, reading, this.cat));
         },
         // The context was lost before the pixel came back: the plots follow the restored view.
         () => (this.plotsDue = true),

@@ -2,6 +2,7 @@ import { type EnvironmentPixels, loadEnvironmentPixels } from '../bubble/environ
 import { type FilmSettings, isHdrEnvironment } from '../settings/filmSettings.ts';
 import { cpuBubbleImage } from '../twins/cpuBubbleImage.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
+import { type Catalogue, EN } from '../i18n/en.ts';
 
 /** The still image's size in pixels (square; shown scaled to fit). */
 export const FALLBACK_IMAGE_PX = 240;
@@ -19,14 +20,18 @@ export function hasWebGL2(): boolean {
 }
 
 /** The settings and HDR map a still image shows: an HDR environment that fails to load gives way to the sky, and says so. */
-async function withEnvironment(settings: FilmSettings, say: (text: string) => void): Promise<[FilmSettings, EnvironmentPixels | null]> {
+async function withEnvironment(
+  settings: FilmSettings,
+  say: (text: string) => void,
+  cat: Catalogue,
+): Promise<[FilmSettings, EnvironmentPixels | null]> {
   const env = settings.env;
   if (!isHdrEnvironment(env)) return [settings, null];
-  say(environmentStatusText({ state: 'loading', env }));
+  say(environmentStatusText({ state: 'loading', env }, cat));
   try {
     return [settings, await loadEnvironmentPixels(env)];
   } catch (error) {
-    say(environmentStatusText({ state: 'failed', env, reason: error instanceof Error ? error.message : String(error) }));
+    say(environmentStatusText({ state: 'failed', env, reason: error instanceof Error ? error.message : String(error) }, cat));
     return [{ ...settings, env: 'sky' }, null];
   }
 }
@@ -36,17 +41,22 @@ async function withEnvironment(settings: FilmSettings, say: (text: string) => vo
  * src/physics (cpuBubbleImage), where the WebGL canvas was; `done` is called once it is drawn.
  * Text goes in as textContent only.
  */
-export function showCpuFallback(webglCanvas: HTMLCanvasElement, settings: FilmSettings, done: () => void = () => {}): HTMLElement {
+export function showCpuFallback(
+  webglCanvas: HTMLCanvasElement,
+  settings: FilmSettings,
+  done: () => void = () => {},
+  cat: Catalogue = EN,
+): HTMLElement {
   const document = webglCanvas.ownerDocument;
   const figure = document.createElement('figure');
   figure.className = 'cpu-fallback';
   const caption = document.createElement('figcaption');
   caption.setAttribute('role', 'alert');
-  caption.textContent =
-    'This browser has no WebGL2, so the live bubble cannot run. Below is a still image of the same film, ' +
-    'computed on the CPU from the same physics (no animation, sRGB).';
+  caption.textContent = cat['app.cpuFallback'];
   const image = document.createElement('canvas');
   image.width = image.height = FALLBACK_IMAGE_PX;
+  image.setAttribute('role', 'img');
+  image.setAttribute('aria-label', cat['app.cpuImage']);
   const status = document.createElement('p');
   status.className = 'environment-status';
   figure.append(caption, image);
@@ -56,7 +66,7 @@ export function showCpuFallback(webglCanvas: HTMLCanvasElement, settings: FilmSe
     if (!status.isConnected) caption.after(status);
   };
   // The image takes about a second: let the message show first.
-  void withEnvironment(settings, say).then(([shown, map]) =>
+  void withEnvironment(settings, say, cat).then(([shown, map]) =>
     setTimeout(() => {
       const pixels = cpuBubbleImage(shown, FALLBACK_IMAGE_PX, FALLBACK_IMAGE_PX, map);
       image.getContext('2d')?.putImageData(new ImageData(pixels, FALLBACK_IMAGE_PX, FALLBACK_IMAGE_PX), 0, 0);

@@ -1,5 +1,7 @@
 import { filmIndexText, isDispersive } from '../physics/filmIndex.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
+import { type Catalogue, EN } from '../i18n/en.ts';
+import { message } from '../i18n/messages.ts';
 
 /**
  * The settings the app draws, and the line saying why they differ from those asked for (null when
@@ -9,10 +11,10 @@ import type { FilmSettings } from '../settings/filmSettings.ts';
  * than once per pixel per frame, so the app draws the table instead and says so. The asked-for
  * mode stays in the settings (URL, panel); only the view is given the table.
  */
-export function shownMethod(s: FilmSettings): { readonly settings: FilmSettings; readonly notice: string | null } {
+export function shownMethod(s: FilmSettings, cat: Catalogue = EN): { readonly settings: FilmSettings; readonly notice: string | null } {
   if (s.mode !== 'fourier' || !isDispersive(s.nFilm)) return { settings: s, notice: null };
   return {
     settings: { ...s, mode: 'table' },
-    notice: `mode=fourier has no Airy series for a dispersive film (nFilm=${filmIndexText(s.nFilm)}): drawing with mode=table, filled from the same spectral bins.`,
+    notice: message(cat, 'app.fourierAsTable', { nFilm: filmIndexText(s.nFilm) }),
   };
 }

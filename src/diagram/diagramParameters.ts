@@ -50,16 +50,11 @@ function filmRow(key: Shared, accepts: Accepts): DiagramRow {
 export const DIAGRAM_ROWS: readonly DiagramRow[] = [
   filmRow('thicknessNm', { kind: 'number', domain: FILM_STACK_DOMAIN.thicknessNm }),
   {
-    row: numberRow<DiagramSettings, 'angleDeg'>({ key: 'angleDeg', url: 'angle', label: 'angle' }, FILM_STACK_DOMAIN.angleDeg, 30, null),
+    row: numberRow<DiagramSettings, 'angleDeg'>({ key: 'angleDeg', url: 'angle' }, FILM_STACK_DOMAIN.angleDeg, 30, null),
     accepts: { kind: 'number', domain: FILM_STACK_DOMAIN.angleDeg },
   },
   {
-    row: numberRow<DiagramSettings, 'wavelengthNm'>(
-      { key: 'wavelengthNm', url: 'wavelength', label: 'wavelength' },
-      WAVELENGTH_DOMAIN,
-      550,
-      null,
-    ),
+    row: numberRow<DiagramSettings, 'wavelengthNm'>({ key: 'wavelengthNm', url: 'wavelength' }, WAVELENGTH_DOMAIN, 550, null),
     accepts: { kind: 'number', domain: WAVELENGTH_DOMAIN },
   },
   filmRow('nFilm', { kind: 'filmIndex' }),

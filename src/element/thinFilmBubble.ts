@@ -1,7 +1,10 @@
 import { addPlotStyles } from '../plots/plotStyles.ts';
 import { BubbleApp } from '../app/bubbleApp.ts';
 import { hasWebGL2, showCpuFallback } from '../app/cpuFallback.ts';
-import { parseSettings, settingsToQuery } from '../settings/settingsQuery.ts';
+import { parseSettings, refusalText, settingsToQuery } from '../settings/settingsQuery.ts';
+import { prefersReducedMotion } from '../app/pagePreferences.ts';
+import type { Catalogue } from '../i18n/en.ts';
+import { catalogueFor, catalogueLang } from '../i18n/messages.ts';
 import { startsClosed } from '../app/startsClosed.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
@@ -62,7 +65,7 @@ function addElementStyles(doc: Document): void {
  * complete frame; while the swirl animates, at most every PROBE_INTERVAL_MS), also read as `probeReading`.
  */
 export class ThinFilmBubble extends HTMLElement {
-  static readonly observedAttributes = [...VIEW_PARAMETERS.map((row) => row.attribute), 'controls', 'plots'];
+  static readonly observedAttributes = [...VIEW_PARAMETERS.map((row) => row.attribute), 'controls', 'plots', 'lang'];
   private app: BubbleApp | null = null;
   private canvas: HTMLCanvasElement | null = null;
   private messages: HTMLElement | null = null;
@@ -92,8 +95,14 @@ export class ThinFilmBubble extends HTMLElement {
     return this.app?.current ?? null;
   }
 
+  /** The language asked for: the element's own `lang`, an ancestor's, or the page's. */
+  private get catalogue(): Catalogue {
+    return catalogueFor(this.closest('[lang]')?.getAttribute('lang') ?? this.ownerDocument.documentElement.lang);
+  }
+
   connectedCallback(): void {
     if (this.built) return;
+    const cat = this.catalogue;
     this.built = true;
     addElementStyles(this.ownerDocument);
     addPlotStyles(this.ownerDocument);
@@ -103,22 +112,27 @@ export class ThinFilmBubble extends HTMLElement {
     this.canvas = el('canvas', '') as HTMLCanvasElement;
     this.messages = el('div', 'tfb-messages');
     this.messages.setAttribute('role', 'status');
+    this.messages.setAttribute('aria-label', cat['app.messages']);
+    layout.lang = catalogueLang(this.closest('[lang]')?.getAttribute('lang') ?? this.ownerDocument.documentElement.lang);
     stage.append(this.canvas, this.messages);
     layout.append(stage);
     const controls = this.hasAttribute('controls') ? el('div', 'tfb-controls') : undefined;
     if (controls) stage.append(controls);
     const plots = this.hasAttribute('plots') ? (el('details', 'tfb-side') as HTMLDetailsElement) : undefined;
     if (plots) {
-      plots.append(Object.assign(el('summary', ''), { textContent: 'the film at the probe' }));
+      plots.append(Object.assign(el('summary', ''), { textContent: cat['bubble.plotsSummary'] }));
       layout.append(plots);
     }
     this.replaceChildren(layout);
     if (plots) plots.open = !startsClosed(plots, 'plots'); // a narrow element starts with the drawer closed (STYLE)
 
-    const settings = this.readAttributes(DEFAULT_VIEW_SETTINGS);
+    const read = this.readAttributes(DEFAULT_VIEW_SETTINGS);
+    // Less motion asked for: the swirl stands still unless the element says animate="1".
+    const settings =
+      prefersReducedMotion(this.ownerDocument.defaultView ?? window) && !this.hasAttribute('animate') ? { ...read, animate: false } : read;
     if (!hasWebGL2()) {
       // The page still teaches: a message and a still image computed on the CPU.
-      showCpuFallback(this.canvas, settings, () => (this.dataset.frames = 'fallback'));
+      showCpuFallback(this.canvas, settings, () => (this.dataset.frames = 'fallback'), cat);
       return;
     }
     const renderer = acquireSharedRenderer();
@@ -128,6 +142,8 @@ export class ThinFilmBubble extends HTMLElement {
       {
         view,
         surface: stage,
+        focusable: canvas,
+        catalogue: cat,
         controls,
         plots,
         messages: this.messages ?? undefined,
@@ -185,7 +201,7 @@ export class ThinFilmBubble extends HTMLElement {
 
   attributeChangedCallback(name: string, _old: string | null, value: string | null): void {
     if (!this.built) return;
-    if (name === 'controls' || name === 'plots' || !this.app) {
+    if (name === 'controls' || name === 'plots' || name === 'lang' || !this.app) {
       // The layout changes (or the still image must be recomputed): build the element anew.
       this.disconnectedCallback();
       this.connectedCallback();
@@ -202,9 +218,10 @@ export class ThinFilmBubble extends HTMLElement {
       const value = this.getAttribute(row.attribute);
       if (value !== null) query.set(row.url, value);
     }
-    const { settings, errors } = parseSettings(query.toString(), base);
+    const { settings, refusals } = parseSettings(query.toString(), base);
+    const cat = this.catalogue;
     this.messages?.replaceChildren(
-      ...errors.map((e) => Object.assign(this.ownerDocument.createElement('p'), { textContent: e })), // never innerHTML
+      ...refusals.map((r) => Object.assign(this.ownerDocument.createElement('p'), { textContent: refusalText(r, cat) })), // never innerHTML
     );
     return settings;
   }

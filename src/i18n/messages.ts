@@ -4,6 +4,9 @@ import { JA } from './ja.ts';
 /** The languages with a catalogue, by their BCP 47 primary subtag. */
 const CATALOGUES: Readonly<Record<string, Catalogue>> = { en: EN, ja: JA };
 
+/** The languages a page can be shown in (`lang=` in the demo's URL). */
+export const LANGUAGES: readonly string[] = Object.keys(CATALOGUES);
+
 /** The catalogue for a `lang` value (`ja`, `ja-JP`, …); English for any language without one. */
 export function catalogueFor(lang: string): Catalogue {
   const primary = lang.trim().toLowerCase().split('-')[0] ?? '';

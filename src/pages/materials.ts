@@ -90,6 +90,20 @@ function swatch(p: readonly number[]): HTMLSpanElement {
   return s;
 }
 
+/** An arrow key moves the probe this many CSS pixels (with Shift, five times as far). */
+const PROBE_STEP_PX = 10;
+canvas.addEventListener('keydown', (e) => {
+  const arrow = ({ ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] } as Record<string, [number, number]>)[
+    e.key
+  ];
+  if (!arrow || !probe) return;
+  e.preventDefault();
+  const step = PROBE_STEP_PX * (e.shiftKey ? 5 : 1);
+  const clamp = (v: number, max: number) => Math.min(max, Math.max(0, v));
+  probe = { x: clamp(probe.x + arrow[0] * step, canvas.clientWidth - 1), y: clamp(probe.y + arrow[1] * step, canvas.clientHeight - 1) };
+  update();
+});
+
 select.addEventListener('change', () => {
   view = select.value as View;
   draw();

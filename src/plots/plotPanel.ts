@@ -1,4 +1,6 @@
-import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
+import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB, xyzToXy } from '../physics/colorConversions.ts';
+import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
+import { message } from '../i18n/messages.ts';
 import { type FilmSettings } from '../settings/filmSettings.ts';
 import { maxFieldThicknessNm } from '../fields/fields.ts';
 import type { ProbeReading } from '../scene/probe.ts';
@@ -18,20 +20,16 @@ const MIN_SCALE_NM = 1000;
 const SCALE_SAMPLES = 160;
 
 const FIELDS = ['thickness', 'angle', 'hex', 'xyz', 'linearRgb', 'deltaE00'] as const;
-const LABELS: Record<(typeof FIELDS)[number], string> = {
-  thickness: 'thickness',
-  angle: 'θ_i',
-  hex: 'colour',
-  xyz: 'XYZ',
-  linearRgb: 'linear RGB',
-  deltaE00: 'ΔE00 rendered vs reference',
-};
+/** The spectrum's table (on demand) lists every this many nanometres of the plot's 1 nm samples. */
+const TABLE_STEP_NM = 10;
 
 /**
  * The live plots under a bubble, all computed by the float64 reference (src/physics): the
  * probed point's numbers, its spectra, the xy diagram with the thickness path, and the
  * interference colour strip. Each plot can be saved (PNG; the spectrum also as CSV), named
- * after the probed view. Text goes in with textContent only.
+ * after the probed view. Each plot is an image with a text alternative that says what it shows
+ * and its values now; the spectrum is also a table, shown on demand. Texts come from a catalogue
+ * and go in with textContent only.
  */
 export class PlotPanel {
   readonly element: HTMLElement;
@@ -45,37 +43,59 @@ export class PlotPanel {
   /** What the plots show now (null: the probe is off the bubble), for the downloads. */
   private shown: { readonly view: ProbedView; readonly spectrum: FilmSpectrum } | null = null;
   private readonly saveButtons: HTMLButtonElement[];
+  private readonly tableButton: HTMLButtonElement;
+  private readonly table: HTMLTableElement;
 
-  constructor(doc: Document = document) {
+  constructor(
+    doc: Document = document,
+    private readonly cat: Catalogue = EN,
+  ) {
     addPlotStyles(doc);
     const el = (tag: string, className: string) => Object.assign(doc.createElement(tag), { className });
     this.element = el('section', 'tfb-plots');
-    this.element.setAttribute('aria-label', 'film at the probe');
+    this.element.setAttribute('aria-label', cat['plots.label']);
     const readout = el('dl', 'tfb-readout');
     for (const f of FIELDS) {
       const value = el('dd', '');
       value.dataset.field = f;
-      readout.append(Object.assign(el('dt', ''), { textContent: LABELS[f] }), value);
+      readout.append(Object.assign(el('dt', ''), { textContent: cat[`plots.${f}`] }), value);
       this.values.set(f, value);
     }
     this.swatch = el('span', 'tfb-swatch');
-    this.spectrum = el('canvas', 'tfb-spectrum') as HTMLCanvasElement;
-    this.chromaticity = el('canvas', 'tfb-chromaticity') as HTMLCanvasElement;
-    this.strip = el('canvas', 'tfb-strip') as HTMLCanvasElement;
+    const image = (className: string) => {
+      const canvas = el('canvas', className) as HTMLCanvasElement;
+      canvas.setAttribute('role', 'img');
+      canvas.setAttribute('aria-label', cat['plots.noReading']);
+      return canvas;
+    };
+    this.spectrum = image('tfb-spectrum');
+    this.chromaticity = image('tfb-chromaticity');
+    this.strip = image('tfb-strip');
     const legend = el('div', 'tfb-legend');
-    for (const [text, color] of SPECTRUM_LEGEND)
-      legend.append(Object.assign(el('span', ''), { textContent: text, style: `color: ${color}` }));
+    legend.setAttribute('aria-hidden', 'true'); // the spectrum's text alternative names its curves
+    for (const [key, color] of SPECTRUM_LEGEND)
+      legend.append(Object.assign(el('span', ''), { textContent: cat[key], style: `color: ${color}` }));
+    this.table = el('table', 'tfb-spectrum-table') as HTMLTableElement;
+    this.table.id = `tfb-spectrum-table-${++tableCount}`;
+    this.table.hidden = true;
+    this.tableButton = Object.assign(el('button', 'tfb-table-toggle'), {
+      type: 'button',
+      textContent: cat['plots.showTable'],
+    }) as HTMLButtonElement;
+    this.tableButton.setAttribute('aria-expanded', 'false');
+    this.tableButton.setAttribute('aria-controls', this.table.id);
+    this.tableButton.addEventListener('click', () => this.showTable(this.table.hidden));
     const saves = el('div', 'tfb-downloads');
-    saves.append(Object.assign(el('span', ''), { textContent: 'save' }));
+    saves.append(Object.assign(el('span', ''), { textContent: cat['plots.save'] }));
     const png = (canvas: HTMLCanvasElement) => () => opaquePngUrl(canvas, PLOT_BACKGROUND);
-    const downloads: [string, string, string, (spectrum: FilmSpectrum) => string][] = [
-      ['spectrum', 'png', 'spectrum PNG', png(this.spectrum)],
-      ['spectrum', 'csv', 'spectrum CSV', (spectrum) => textUrl(spectrumCsv(spectrum), 'text/csv')],
-      ['xy', 'png', 'xy PNG', png(this.chromaticity)],
-      ['scale', 'png', 'scale PNG', png(this.strip)],
+    const downloads: [string, string, MessageKey, (spectrum: FilmSpectrum) => string][] = [
+      ['spectrum', 'png', 'plots.save.spectrumPng', png(this.spectrum)],
+      ['spectrum', 'csv', 'plots.save.spectrumCsv', (spectrum) => textUrl(spectrumCsv(spectrum), 'text/csv')],
+      ['xy', 'png', 'plots.save.xyPng', png(this.chromaticity)],
+      ['scale', 'png', 'plots.save.scalePng', png(this.strip)],
     ];
     this.saveButtons = downloads.map(([what, extension, text, url]) => {
-      const button = Object.assign(el('button', ''), { type: 'button', textContent: text, disabled: true }) as HTMLButtonElement;
+      const button = Object.assign(el('button', ''), { type: 'button', textContent: cat[text], disabled: true }) as HTMLButtonElement;
       button.dataset.download = `${what}.${extension}`;
       button.addEventListener('click', () => {
         if (this.shown) saveUrl(doc, url(this.shown.spectrum), downloadName(this.shown.view, what, extension));
@@ -83,7 +103,43 @@ export class PlotPanel {
       return button;
     });
     saves.append(...this.saveButtons);
-    this.element.append(readout, this.spectrum, legend, this.chromaticity, this.strip, saves);
+    this.element.append(readout, this.spectrum, legend, this.tableButton, this.table, this.chromaticity, this.strip, saves);
+  }
+
+  /** Shows or hides the spectrum's table (built anew from the spectrum shown). */
+  private showTable(show: boolean): void {
+    this.table.hidden = !show;
+    this.tableButton.textContent = this.cat[show ? 'plots.hideTable' : 'plots.showTable'];
+    this.tableButton.setAttribute('aria-expanded', String(show));
+    this.fillTable();
+  }
+
+  /** The spectrum shown as rows of λ, R, I_in and I_out every TABLE_STEP_NM, while the table is shown (textContent only). */
+  private fillTable(): void {
+    if (this.table.hidden) return;
+    const doc = this.table.ownerDocument;
+    const row = (tag: 'th' | 'td', texts: readonly string[]) => {
+      const tr = doc.createElement('tr');
+      tr.append(...texts.map((text, i) => Object.assign(doc.createElement(i === 0 && tag === 'td' ? 'th' : tag), { textContent: text })));
+      if (tag === 'td') tr.firstElementChild!.setAttribute('scope', 'row');
+      else for (const th of tr.children) th.setAttribute('scope', 'col');
+      return tr;
+    };
+    const c = this.cat;
+    const caption = Object.assign(doc.createElement('caption'), {
+      textContent: message(c, 'plots.tableCaption', { stepNm: TABLE_STEP_NM }),
+    });
+    const head = doc.createElement('thead');
+    head.append(row('th', [c['plots.tableWavelength'], c['plots.tableReflectance'], c['plots.tableIncident'], c['plots.tableReflected']]));
+    const body = doc.createElement('tbody');
+    const s = this.shown?.spectrum;
+    if (s)
+      s.lambdasNm.forEach((l, i) => {
+        if (i % TABLE_STEP_NM !== 0) return;
+        body.append(row('td', [String(l), s.reflectance[i]!.toFixed(4), s.incident[i]!.toFixed(4), s.reflected[i]!.toFixed(4)]));
+      });
+    else body.append(row('td', [c['plots.noReading']]));
+    this.table.replaceChildren(caption, head, body);
   }
 
   /**
@@ -97,7 +153,9 @@ export class PlotPanel {
     this.saveButtons.forEach((b) => (b.disabled = !reading));
     if (!reading) {
       for (const f of FIELDS) show(f, '—');
-      show('thickness', 'off the bubble');
+      show('thickness', this.cat['plots.offBubble']);
+      for (const canvas of [this.spectrum, this.chromaticity, this.strip]) canvas.setAttribute('aria-label', this.cat['plots.noReading']);
+      this.fillTable();
       return;
     }
     const stack = { nOutside: s.nOutside, nFilm: s.nFilm, nInside: s.nInside, angleDeg: reading.angleDeg };
@@ -114,8 +172,10 @@ export class PlotPanel {
     this.swatch.style.background = c.hex;
 
     const spectrum = filmSpectrum({ ...stack, thicknessNm: reading.thicknessNm }, s.illuminant, s.polarization);
-    drawSpectrumPlot(this.spectrum, spectrum);
+    drawSpectrumPlot(this.spectrum, spectrum, this.cat['common.wavelength']);
     this.shown = { view: { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg, illuminant: s.illuminant }, spectrum };
+    this.spectrum.setAttribute('aria-label', spectrumLabel(spectrum, this.cat));
+    this.fillTable();
     const maxNm = Math.max(MIN_SCALE_NM, maxFieldThicknessNm(s));
     const key = JSON.stringify([stack, maxNm, s.illuminant, s.polarization, s.normalization, displayIsP3]);
     if (key !== this.scaleKey) {
@@ -124,5 +184,25 @@ export class PlotPanel {
     }
     drawChromaticityPlot(this.chromaticity, this.scale, { thicknessNm: reading.thicknessNm, xyz: c.xyz, rgb8: c.rgb8 });
     drawScaleStrip(this.strip, this.scale, reading.thicknessNm);
+    const [x, y] = xyzToXy(c.xyz).map((v) => v.toFixed(4));
+    this.chromaticity.setAttribute('aria-label', message(this.cat, 'plots.xyLabel', { x: x!, y: y!, maxNm }));
+    const thickness = reading.thicknessNm.toFixed(0);
+    this.strip.setAttribute('aria-label', message(this.cat, 'plots.scaleLabel', { maxNm, thickness }));
   }
+}
+
+/** Instances so far, for each spectrum table's own id. */
+let tableCount = 0;
+
+/** What the spectrum plot shows, in words: R's range and where it peaks and dips. */
+function spectrumLabel(s: FilmSpectrum, cat: Catalogue): string {
+  let lo = 0;
+  let hi = 0;
+  s.reflectance.forEach((r, i) => {
+    if (r < s.reflectance[lo]!) lo = i;
+    if (r > s.reflectance[hi]!) hi = i;
+  });
+  const at = (i: number) => ({ r: s.reflectance[i]!.toFixed(4), nm: s.lambdasNm[i]! });
+  const [min, max] = [at(lo), at(hi)];
+  return message(cat, 'plots.spectrumLabel', { min: min.r, minNm: min.nm, max: max.r, maxNm: max.nm });
 }

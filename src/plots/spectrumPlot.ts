@@ -1,3 +1,4 @@
+import type { MessageKey } from '../i18n/en.ts';
 import type { FilmSpectrum } from './filmSpectrum.ts';
 import { drawAxes, drawLine, prepareCanvas } from './plotCanvas.ts';
 
@@ -11,13 +12,13 @@ function niceCeiling(v: number): number {
  * The spectra behind the probed colour over 380–830 nm: R(λ) and I_out(λ) = R·I_in on the
  * reflectance axis (I_in's peak = 1, so I_out ≤ R), and I_in's shape, scaled to the axis, dashed.
  */
-export function drawSpectrumPlot(canvas: HTMLCanvasElement, s: FilmSpectrum): void {
+export function drawSpectrumPlot(canvas: HTMLCanvasElement, s: FilmSpectrum, wavelengthLabel: string): void {
   const { ctx, width, height } = prepareCanvas(canvas);
   const top = niceCeiling(Math.max(1e-3, ...s.reflectance));
   const { px, py } = drawAxes(
     ctx,
     { width, height },
-    { min: 380, max: 830, ticks: [400, 500, 600, 700, 800], label: 'wavelength (nm)' },
+    { min: 380, max: 830, ticks: [400, 500, 600, 700, 800], label: wavelengthLabel },
     { min: 0, max: top, ticks: [0, top / 2, top], label: 'R' },
   );
   const series = (values: Float64Array, k = 1) => Array.from(values, (v, i) => [px(s.lambdasNm[i]!), py(k * v)] as const);
@@ -58,10 +59,10 @@ function drawIndexAxis(
   ctx.fillText(`n ${low.toFixed(4)}`, right, bottom - 3);
 }
 
-/** The plot's series and their colours, for a legend beside it. */
-export const SPECTRUM_LEGEND: readonly (readonly [string, string])[] = [
-  ['R(λ)', '#7fb2ff'],
-  ['I_out = R·I_in', '#ff7f9f'],
-  ['I_in (shape, peak at top)', '#c9b458'],
-  ['n_b(λ) (dispersive film; its range, right)', '#9fdf9f'],
+/** The plot's series (their catalogue keys) and their colours, for a legend beside it. */
+export const SPECTRUM_LEGEND: readonly (readonly [MessageKey, string])[] = [
+  ['plots.legend.reflectance', '#7fb2ff'],
+  ['plots.legend.reflected', '#ff7f9f'],
+  ['plots.legend.incident', '#c9b458'],
+  ['plots.legend.filmIndex', '#9fdf9f'],
 ];

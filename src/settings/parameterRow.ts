@@ -1,6 +1,23 @@
-import { ILLUMINANT_EXPECTED, type IlluminantSpec, illuminantText, parseIlluminant } from '../physics/illuminants.ts';
-import { FILM_INDEX_EXPECTED, type FilmIndex, filmIndexText, readFilmIndex } from '../physics/filmIndex.ts';
+import {
+  DAYLIGHT_CCT_DOMAIN_K,
+  ILLUMINANT_EXPECTED,
+  type IlluminantSpec,
+  NAMED_ILLUMINANTS,
+  illuminantText,
+  parseIlluminant,
+} from '../physics/illuminants.ts';
+import {
+  DISPERSION_CHECK_NM,
+  FILM_INDEX_EXPECTED,
+  FILM_MATERIALS,
+  type FilmIndex,
+  filmIndexText,
+  readFilmIndex,
+} from '../physics/filmIndex.ts';
+import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { type NumberDomain, expectedNumber, isInDomain, parseDecimal } from '../physics/validate.ts';
+import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
+import { message } from '../i18n/messages.ts';
 
 /** Where a parameter sits in the control panel, and how it is shown there. */
 export type PanelControl =
@@ -29,10 +46,12 @@ export interface ParameterRow<S> {
   readonly attribute: string;
   /** Its flag in the colour tool (`--name`), where the tool takes it. */
   readonly cli: string | null;
-  /** Its label in the panel and usage texts, unit included. */
+  /** Its label in the panel and usage texts, unit included (the English catalogue's `param.<key>`). */
   readonly label: string;
-  /** What it accepts, as every refusal states it. */
+  /** What it accepts, as every refusal states it (in English; `expects` says it in any language). */
   readonly expected: string;
+  /** What it accepts as a catalogue text and its values, for a refusal in the page's language. */
+  readonly expects: Expectation;
   /** The default. */
   readonly defaultValue: S[keyof S];
   /** The default, as the URL writes it. */
@@ -47,12 +66,32 @@ export interface ParameterRow<S> {
   readonly control: PanelControl | null;
 }
 
-/** What every builder takes: the field, its names and label, and where the panel shows it. */
+/** What a row accepts as one catalogue text (`expected.*`) and the values it is filled in with; `unit` a `unit.*` key's suffix. */
+export interface Expectation {
+  readonly key: MessageKey;
+  readonly values?: Readonly<Record<string, string | number>>;
+  readonly unit?: string;
+}
+
+/** An expectation in a catalogue's language. */
+export const expectationText = (e: Expectation, cat: Catalogue): string =>
+  message(cat, e.key, { ...e.values, unit: e.unit === undefined ? '' : cat[`unit.${e.unit}` as MessageKey] });
+
+/** A catalogue's key for a row's label: `param.<settings key>`. */
+export const labelKey = (key: string): MessageKey => {
+  const k = `param.${key}`;
+  if (!Object.hasOwn(EN, k)) throw new Error(`the catalogue has no label ${k} for the schema's row ${key}`);
+  return k as MessageKey;
+};
+
+/** A catalogue's key for a choice's label in the panel: `choice.<settings key>.<value>`. */
+export const choiceKey = (key: string, value: string): MessageKey => `choice.${key}.${value}` as MessageKey;
+
+/** What every builder takes: the field and its names (its label is the catalogue's), and where the panel shows it. */
 interface RowNames<S, K extends keyof S & string> {
   readonly key: K;
   readonly url: string;
   readonly cli?: string;
-  readonly label: string;
 }
 
 /** The fields common to every row. */
@@ -61,7 +100,7 @@ const named = <S, K extends keyof S & string>(n: RowNames<S, K>, defaultValue: S
   url: n.url,
   attribute: n.url.toLowerCase(),
   cli: n.cli ?? null,
-  label: n.label,
+  label: EN[labelKey(n.key)],
   defaultValue,
   defaultText: write({ [n.key]: defaultValue } as S),
   write,
@@ -71,9 +110,9 @@ const named = <S, K extends keyof S & string>(n: RowNames<S, K>, defaultValue: S
 export function customRow<S, K extends keyof S & string>(
   n: RowNames<S, K>,
   defaultValue: S[K],
-  kind: Pick<ParameterRow<S>, 'expected' | 'read' | 'write' | 'control'>,
+  kind: Pick<ParameterRow<S>, 'expects' | 'read' | 'write' | 'control'>,
 ): ParameterRow<S> {
-  return { ...named(n, defaultValue, kind.write), ...kind };
+  return { ...named(n, defaultValue, kind.write), ...kind, expected: expectationText(kind.expects, EN) };
 }
 
 /** A number in a closed domain; the panel's slider spans the whole domain in steps of `step`. */
@@ -87,6 +126,7 @@ export function numberRow<S, K extends keyof S & string>(
   return {
     ...named(n, defaultValue, (s) => String(s[n.key])),
     expected: expectedNumber(domain),
+    expects: { key: 'expected.number', values: { min: domain.min, max: domain.max }, unit: domain.unit },
     read: (raw) => {
       const v = parseDecimal(raw);
       return isInDomain(v, domain) ? ({ [n.key]: v } as Partial<S>) : null;
@@ -105,6 +145,7 @@ export function choiceRow<S, K extends keyof S & string>(
   return {
     ...named(n, defaultValue, (s) => String(s[n.key])),
     expected: `one of ${choices.join(', ')}`,
+    expects: { key: 'expected.choice', values: { choices: choices.join(', ') } },
     read: (raw) => (choices.includes(raw) ? ({ [n.key]: raw } as Partial<S>) : null),
     control: folder && { folder, kind: 'choice', choices },
   };
@@ -115,6 +156,7 @@ export function flagRow<S, K extends keyof S & string>(n: RowNames<S, K>, defaul
   return {
     ...named(n, defaultValue, (s) => (s[n.key] ? '1' : '0')),
     expected: '0 or 1',
+    expects: { key: 'expected.flag' },
     read: (raw) => (raw === '0' || raw === '1' ? ({ [n.key]: raw === '1' } as Partial<S>) : null),
     control: folder && { folder, kind: 'toggle' },
   };
@@ -123,6 +165,7 @@ export function flagRow<S, K extends keyof S & string>(n: RowNames<S, K>, defaul
 /** A value of a kind of its own written as text: how it reads (a value, or why not) and writes. */
 interface TextKind<V> {
   readonly expected: string;
+  readonly expects: Expectation;
   readonly parse: (raw: string) => { readonly value: V } | { readonly problem: string | null };
   readonly text: (value: V) => string;
   readonly kind: 'illuminant' | 'filmIndex';
@@ -137,6 +180,7 @@ function textRow<S, K extends keyof S & string, V>(
   return {
     ...named(n, defaultValue, (s) => k.text(s[n.key] as V)),
     expected: k.expected,
+    expects: k.expects,
     read: (raw) => {
       const reading = k.parse(raw);
       return 'value' in reading ? ({ [n.key]: reading.value } as Partial<S>) : null;
@@ -157,6 +201,10 @@ export const illuminantRow = <S, K extends keyof S & string>(
 ) =>
   textRow<S, K, IlluminantSpec>(n, defaultValue, folder, {
     expected: ILLUMINANT_EXPECTED,
+    expects: {
+      key: 'expected.illuminant',
+      values: { names: NAMED_ILLUMINANTS.join(', '), min: DAYLIGHT_CCT_DOMAIN_K.min, max: DAYLIGHT_CCT_DOMAIN_K.max },
+    },
     parse: (raw) => {
       const value = parseIlluminant(raw);
       return value === null ? { problem: null } : { value };
@@ -173,6 +221,15 @@ export const filmIndexRow = <S, K extends keyof S & string>(
 ) =>
   textRow<S, K, FilmIndex>(n, defaultValue, folder, {
     expected: FILM_INDEX_EXPECTED,
+    expects: {
+      key: 'expected.filmIndex',
+      values: {
+        ...FILM_STACK_DOMAIN.nFilm,
+        materials: FILM_MATERIALS.join(', '),
+        from: DISPERSION_CHECK_NM.min,
+        to: DISPERSION_CHECK_NM.max,
+      },
+    },
     parse: (raw) => {
       const reading = readFilmIndex(raw);
       return 'index' in reading ? { value: reading.index } : reading;

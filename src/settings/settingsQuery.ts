@@ -1,6 +1,8 @@
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from './viewParameters.ts';
 import { quoted } from '../physics/validate.ts';
-import type { ParameterRow } from './parameterRow.ts';
+import { type ParameterRow, expectationText } from './parameterRow.ts';
+import { type Catalogue, EN } from '../i18n/en.ts';
+import { message } from '../i18n/messages.ts';
 
 /** Longer values are refused outright (a mangled link, not a number). */
 export const MAX_VALUE_LENGTH = 64;
@@ -26,10 +28,38 @@ export function readParameter(
   return { expected: problem ? `${row.expected} (here ${problem})` : row.expected };
 }
 
+/** A refused value: the parameter's row, the value as given, and what was wrong beyond the row's range (if the row says). */
+export interface Refusal {
+  readonly row: ParameterRow<ViewSettings>;
+  readonly raw: string;
+  readonly tooLong: boolean;
+  readonly problem: string | null;
+}
+
+/**
+ * A refusal as one line in a catalogue's language, naming the parameter, the value (quoted, cut
+ * short) and what it accepts. The row's own detail on what was wrong is English (src/physics), so
+ * a catalogue without `{problem}` in `refusal.ignoredProblem` leaves it out.
+ */
+export function refusalText(r: Refusal, cat: Catalogue = EN): string {
+  const accepts = expectationText(r.row.expects, cat);
+  const expected = r.tooLong ? message(cat, 'expected.tooLong', { expected: accepts, max: MAX_VALUE_LENGTH }) : accepts;
+  const values = { name: r.row.url, value: quoted(r.raw), expected, problem: r.problem ?? '' };
+  return message(cat, r.problem ? 'refusal.ignoredProblem' : 'refusal.ignored', values);
+}
+
+/** The refusal of `raw` by `row`, or null when the row reads it. */
+function refusalOf(row: ParameterRow<ViewSettings>, raw: string): Refusal | null {
+  if (raw.length > MAX_VALUE_LENGTH) return { row, raw, tooLong: true, problem: null };
+  return row.read(raw) ? null : { row, raw, tooLong: false, problem: row.problem?.(raw) ?? null };
+}
+
 export interface ParsedSettings {
   readonly settings: ViewSettings;
   /** One line per refused parameter, naming it and its allowed range; its default was kept. */
   readonly errors: readonly string[];
+  /** The same refusals, for a message in another language (refusalText). */
+  readonly refusals: readonly Refusal[];
 }
 
 /**
@@ -39,15 +69,15 @@ export interface ParsedSettings {
  */
 export function parseSettings(query: string, base: ViewSettings = DEFAULT_VIEW_SETTINGS): ParsedSettings {
   let settings = base;
-  const errors: string[] = [];
+  const refusals: Refusal[] = [];
   for (const [name, raw] of new URLSearchParams(query)) {
     const row = parameterNamed(name);
     if (!row) continue;
-    const reading = readParameter(row, raw);
-    if ('read' in reading) settings = { ...settings, ...reading.read };
-    else errors.push(`${name}=${quoted(raw)} ignored: expected ${reading.expected}`);
+    const refusal = refusalOf(row, raw);
+    if (refusal) refusals.push(refusal);
+    else settings = { ...settings, ...row.read(raw) };
   }
-  return { settings, errors };
+  return { settings, errors: refusals.map((r) => refusalText(r)), refusals };
 }
 
 /** The query string that `parseSettings` turns back into these settings (defaults left out). */

@@ -17,8 +17,8 @@ export type ViewSettings = FilmSettings & AppSettings;
 const FRACTION: NumberDomain = { min: 0, max: 1, unit: '' };
 
 /** The probe: `x,y`, each a fraction of the view. */
-const probeRow = customRow<ViewSettings, 'probe'>({ key: 'probe', url: 'probe', label: 'probe (x, y)' }, [0.5, 0.5], {
-  expected: 'x,y with both in [0, 1] (fractions of the view from the top left)',
+const probeRow = customRow<ViewSettings, 'probe'>({ key: 'probe', url: 'probe' }, [0.5, 0.5], {
+  expects: { key: 'expected.probe' },
   read: (raw) => {
     const parts = raw.split(',').map(parseDecimal);
     const [x, y] = parts;
@@ -32,7 +32,7 @@ const probeRow = customRow<ViewSettings, 'probe'>({ key: 'probe', url: 'probe', 
 export const VIEW_PARAMETERS: readonly ParameterRow<ViewSettings>[] = [
   // Each film row, checked field by field as a row of the wider settings.
   ...FILM_PARAMETERS.map((row): ParameterRow<ViewSettings> => ({ ...row })),
-  flagRow<ViewSettings, 'animate'>({ key: 'animate', url: 'animate', label: 'animate' }, true, 'view'),
+  flagRow<ViewSettings, 'animate'>({ key: 'animate', url: 'animate' }, true, 'view'),
   probeRow,
 ];
 

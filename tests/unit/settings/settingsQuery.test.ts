@@ -37,7 +37,7 @@ describe('URL parameters', () => {
 
   it('reads a dispersive film, writes it back, and says what is wrong with one outside the index domain', () => {
     const water = parseSettings('?nFilm=water');
-    expect(water).toEqual({ settings: { ...DEFAULT_SETTINGS, nFilm: 'water' }, errors: [] });
+    expect(water).toEqual({ settings: { ...DEFAULT_SETTINGS, nFilm: 'water' }, errors: [], refusals: [] });
     const cauchy = parseSettings('?nFilm=cauchy:1.45,6000');
     expect(cauchy.settings.nFilm).toEqual({ cauchy: [1.45, 6000, 0] });
     expect(settingsToQuery(cauchy.settings)).toBe('nFilm=cauchy%3A1.45%2C6000');
@@ -116,6 +116,7 @@ describe('URL parameters', () => {
     expect(parseSettings('?lesson=3&constructor=1&toString=x&__proto__=y&hasOwnProperty=1')).toEqual({
       settings: DEFAULT_SETTINGS,
       errors: [],
+      refusals: [],
     });
   });
 
@@ -129,7 +130,7 @@ describe('settingsToQuery', () => {
   it('round-trips through parseSettings, defaults left out', () => {
     const { settings } = parseSettings('?thickness=420&illuminant=7500&mode=exact&animate=0&time=3&nInside=1.2');
     const query = settingsToQuery(settings);
-    expect(parseSettings(`?${query}`)).toEqual({ settings, errors: [] });
+    expect(parseSettings(`?${query}`)).toEqual({ settings, errors: [], refusals: [] });
     expect(settingsToQuery(DEFAULT_SETTINGS)).toBe('');
   });
 });
