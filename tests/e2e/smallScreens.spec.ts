@@ -39,7 +39,7 @@ for (const [size, plots] of [
   }) => {
     await openDemo(page, size);
     const canvas = page.locator('#bubble');
-    expect(await atCentre(canvas)).toEqual({ isCanvas: true, found: 'canvas.' });
+    expect(await atCentre(canvas)).toEqual({ isCanvas: true, found: 'canvas.tfb-focusable' });
     await expect(panelTitle(page)).toHaveAttribute('aria-expanded', 'false');
     const drawer = page.locator('#plots-box');
     if (plots === 'below') {
@@ -60,7 +60,7 @@ for (const [size, plots] of [
 
 test('demo at 1100×720: the panel and the plots start open beside the bubble, the canvas at its centre', async ({ page }) => {
   await openDemo(page, WIDE);
-  expect(await atCentre(page.locator('#bubble'))).toEqual({ isCanvas: true, found: 'canvas.' });
+  expect(await atCentre(page.locator('#bubble'))).toEqual({ isCanvas: true, found: 'canvas.tfb-focusable' });
   await expect(panelTitle(page)).toHaveAttribute('aria-expanded', 'true');
   await expect(page.locator('#plots-box')).toHaveJSProperty('open', true);
 });
@@ -87,7 +87,7 @@ for (const size of [PHONE, SMALL]) {
     page,
   }) => {
     const el = await openElement(page, size);
-    expect(await atCentre(el.locator('.tfb-stage > canvas'))).toEqual({ isCanvas: true, found: 'canvas.' });
+    expect(await atCentre(el.locator('.tfb-stage > canvas'))).toEqual({ isCanvas: true, found: 'canvas.tfb-focusable' });
     await expect(el.locator('.lil-gui.lil-root > .lil-title')).toHaveAttribute('aria-expanded', 'false');
     await expect(el.locator('details.tfb-side')).toHaveJSProperty('open', false);
   });
@@ -95,7 +95,7 @@ for (const size of [PHONE, SMALL]) {
 
 test('element with controls and plots at 1280×720: the panel and the plots start open', async ({ page }) => {
   const el = await openElement(page, WIDE_ELEMENT);
-  expect(await atCentre(el.locator('.tfb-stage > canvas'))).toEqual({ isCanvas: true, found: 'canvas.' });
+  expect(await atCentre(el.locator('.tfb-stage > canvas'))).toEqual({ isCanvas: true, found: 'canvas.tfb-focusable' });
   await expect(el.locator('.lil-gui.lil-root > .lil-title')).toHaveAttribute('aria-expanded', 'true');
   await expect(el.locator('details.tfb-side')).toHaveJSProperty('open', true);
 });
