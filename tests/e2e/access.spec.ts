@@ -154,7 +154,9 @@ test('the teaching page in both languages and the materials page have no axe vio
   await noAxeViolations(page);
 });
 
-test('reduced motion leaves the swirl still on the demo and in the element, unless animate is asked for', async ({ page }) => {
+test("reduced motion leaves the swirl still on the demo and in the element unless animate is asked for; arrow keys move the element's probe", async ({
+  page,
+}) => {
   await page.emulateMedia({ reducedMotion: 'reduce' });
   await page.goto('/?mode=table&env=none');
   await ready(page);
