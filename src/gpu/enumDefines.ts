@@ -13,14 +13,14 @@ export function enumConstants(name: string, values: readonly string[]): Record<s
   return Object.fromEntries(values.map((v, code) => [constantName(name, v), code]));
 }
 
-/** The constants and `NAME` = the code of `value`. */
-export function enumDefines<T extends string>(name: string, values: readonly T[], value: T): Record<string, number> {
-  const code = values.indexOf(value);
-  if (code < 0) throw new Error(`${name}: ${JSON.stringify(value)} is not one of ${values.join(', ')}`);
-  return { ...enumConstants(name, values), [name]: code };
-}
-
 /** The code of `value`, for a uniform compared with enumConstants' names. */
 export function enumCode<T extends string>(name: string, values: readonly T[], value: T): number {
-  return enumDefines(name, values, value)[name]!;
+  const code = values.indexOf(value);
+  if (code < 0) throw new Error(`${name}: ${JSON.stringify(value)} is not one of ${values.join(', ')}`);
+  return code;
+}
+
+/** The constants and `NAME` = the code of `value`. */
+export function enumDefines<T extends string>(name: string, values: readonly T[], value: T): Record<string, number> {
+  return { ...enumConstants(name, values), [name]: enumCode(name, values, value) };
 }
