@@ -5,6 +5,7 @@ import { type Catalogue, EN } from '../i18n/en.ts';
 import { PlotPanel } from '../plots/plotPanel.ts';
 import { probeDescription } from '../plots/probeDescription.ts';
 import { addAccessStyles } from './accessStyles.ts';
+import { arrowKeyStep } from './arrowKeyStep.ts';
 import { latestThrottle } from './latestThrottle.ts';
 import type { BubbleView } from '../scene/bubbleView.ts';
 import { createControlPanel } from './controlPanel.ts';
@@ -18,15 +19,8 @@ import type { AppSettings, ViewSettings } from '../settings/viewParameters.ts';
 const PLOT_INTERVAL_MS = 250;
 /** The live description says the film at the probe at most this often (the latest state wins). */
 const DESCRIPTION_INTERVAL_MS = 1000;
-/** An arrow key moves the probe this far (a fraction of the view); with Shift, PROBE_BIG_STEP. */
+/** An arrow key moves the probe this far (a fraction of the view; with Shift, five times as far). */
 const PROBE_STEP = 0.01;
-const PROBE_BIG_STEP = 0.05;
-const ARROWS: Readonly<Record<string, readonly [number, number]>> = {
-  ArrowLeft: [-1, 0],
-  ArrowRight: [1, 0],
-  ArrowUp: [0, -1],
-  ArrowDown: [0, 1],
-};
 
 export interface BubbleAppParts {
   readonly view: BubbleView;
@@ -158,13 +152,12 @@ export class BubbleApp {
       if (parts.surface.hasPointerCapture(e.pointerId)) probeAt(e);
     };
     const onKey = (e: KeyboardEvent) => {
-      const arrow = ARROWS[e.key];
-      if (!arrow || e.altKey || e.ctrlKey || e.metaKey) return;
+      const move = arrowKeyStep(e, PROBE_STEP);
+      if (!move || e.altKey || e.ctrlKey || e.metaKey) return;
       e.preventDefault(); // the arrows move the probe, not the page
-      const step = e.shiftKey ? PROBE_BIG_STEP : PROBE_STEP;
       const [x, y] = this.settings.probe;
       const clamp = (v: number) => Math.min(1, Math.max(0, +v.toFixed(4)));
-      this.change({ ...this.settings, probe: [clamp(x + arrow[0] * step), clamp(y + arrow[1] * step)] });
+      this.change({ ...this.settings, probe: [clamp(x + move[0]), clamp(y + move[1])] });
     };
     const onVisibility = () => this.wake();
     const onRestored = () => {

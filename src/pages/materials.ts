@@ -3,6 +3,7 @@
  * meshes that are not spheres, under an HDR environment; a view toggle; the ΔE00 between the two
  * at the probed pixel (the scene drawn once with each material, the pixel read back from each).
  */
+import { arrowKeyStep } from '../app/arrowKeyStep.ts';
 import { AgXToneMapping, EquirectangularReflectionMapping, type Mesh, Vector3, WebGLRenderer } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { environmentTexture, loadEnvironmentPixels } from '../bubble/environmentMaps.ts';
@@ -93,14 +94,11 @@ function swatch(p: readonly number[]): HTMLSpanElement {
 /** An arrow key moves the probe this many CSS pixels (with Shift, five times as far). */
 const PROBE_STEP_PX = 10;
 canvas.addEventListener('keydown', (e) => {
-  const arrow = ({ ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] } as Record<string, [number, number]>)[
-    e.key
-  ];
-  if (!arrow || !probe) return;
+  const move = arrowKeyStep(e, PROBE_STEP_PX);
+  if (!move || !probe) return;
   e.preventDefault();
-  const step = PROBE_STEP_PX * (e.shiftKey ? 5 : 1);
   const clamp = (v: number, max: number) => Math.min(max, Math.max(0, v));
-  probe = { x: clamp(probe.x + arrow[0] * step, canvas.clientWidth - 1), y: clamp(probe.y + arrow[1] * step, canvas.clientHeight - 1) };
+  probe = { x: clamp(probe.x + move[0], canvas.clientWidth - 1), y: clamp(probe.y + move[1], canvas.clientHeight - 1) };
   update();
 });
 
