@@ -69,8 +69,8 @@ interface Grid {
  * timed builds) the full grid is built at once.
  */
 export class FilmTable {
-  private readonly target: WebGLRenderTarget;
-  private readonly coarseTarget: WebGLRenderTarget;
+  private target: WebGLRenderTarget;
+  private coarseTarget: WebGLRenderTarget;
   /** What is shown: the settings' tableKey ('' for nothing) and whether from the coarse texture. */
   private shown = { key: '', coarse: false };
   /** The full grid being built behind a coarse one: its settings and the columns done. */
@@ -79,7 +79,7 @@ export class FilmTable {
   private waiting = false;
   private readonly budget = new TableBandBudget();
   private shownGrid: Grid = { width: 1, rows: 1 };
-  private readonly fullscreen = new FullscreenPass();
+  private fullscreen = new FullscreenPass();
   /** The table pass: one program for every polarisation (a uniform), so changing it compiles nothing. */
   private readonly pass = new ShaderMaterial({
     uniforms: {
@@ -111,9 +111,12 @@ export class FilmTable {
 
   constructor(private readonly quality: FilmQuality) {
     this.rows = { texture: airySeriesRowsTexture(quality.table), dispersive: false };
-    const options = { format: RGBAFormat, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false } as const;
-    this.target = new WebGLRenderTarget(1, 2 * quality.table.rows, options);
-    this.coarseTarget = new WebGLRenderTarget(1, 2, options);
+    this.target = this.newTarget(2 * quality.table.rows);
+    this.coarseTarget = this.newTarget(2);
+  }
+
+  private newTarget(height: number): WebGLRenderTarget {
+    return new WebGLRenderTarget(1, height, { format: RGBAFormat, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
   }
 
   /**
@@ -290,8 +293,17 @@ export class FilmTable {
     await compiled;
   }
 
-  /** Forces a rebuild on the next update (after a lost context). */
+  /**
+   * Forces a rebuild on the next update, in GPU objects of its own (after a lost context). The
+   * lost context's targets, quad and row texture are let go, not disposed: three still listens
+   * for their disposal with the lost context's state, and would delete objects the new context
+   * does not own (a WebGL warning), for instance when a coarse grid of another size resizes a target.
+   */
   invalidate(): void {
+    this.target = this.newTarget(2 * this.quality.table.rows);
+    this.coarseTarget = this.newTarget(2);
+    this.fullscreen = new FullscreenPass();
+    this.rows = { texture: airySeriesRowsTexture(this.quality.table), dispersive: false };
     this.shown = { key: '', coarse: false };
     this.building = null;
     this.waiting = false;
