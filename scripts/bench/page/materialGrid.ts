@@ -51,29 +51,30 @@ function materialGridXyz(g: ParityGroup, mode: Exclude<ParityMode, 'three-irides
   const byCos = new Map<number, number[]>();
   g.inputs.forEach(([, c], i) => byCos.set(c, [...(byCos.get(c) ?? []), i]));
   const out: number[][] = new Array<number[]>(g.inputs.length);
+  // One material for the group (one program, one film table); each angle swaps its thickness map.
+  const material = spectralIridescence(
+    new MeshPhysicalMaterial({
+      color: 0x000000,
+      roughness: 0,
+      metalness: 0,
+      ior: g.nInside,
+      iridescence: 1,
+      iridescenceIOR: constantIndex(g.nFilm),
+      iridescenceThicknessMinimum: 0,
+      iridescenceThicknessMaximum: maxNm,
+    }),
+    { mode, illuminant: g.illuminant, polarization: g.polarization, normalization: g.normalization },
+  );
+  const plane = new Mesh(new PlaneGeometry(2, 4), material);
+  const scene = new Scene();
+  scene.environment = white;
+  scene.add(plane);
+  const camera = new OrthographicCamera(-1, 1, 1e-3, -1e-3, -10, 10);
   for (const [cos, cases] of byCos) {
     const w = cases.length;
     const map = floatTexture(w, (i) => [0, g.inputs[cases[i]!]![0] / maxNm, 0, 1]);
-    const material = spectralIridescence(
-      new MeshPhysicalMaterial({
-        color: 0x000000,
-        roughness: 0,
-        metalness: 0,
-        ior: g.nInside,
-        iridescence: 1,
-        iridescenceIOR: constantIndex(g.nFilm),
-        iridescenceThicknessMinimum: 0,
-        iridescenceThicknessMaximum: maxNm,
-        iridescenceThicknessMap: map,
-      }),
-      { mode, illuminant: g.illuminant, polarization: g.polarization, normalization: g.normalization },
-    );
-    const plane = new Mesh(new PlaneGeometry(2, 4), material);
+    material.iridescenceThicknessMap = map;
     plane.rotation.x = Math.acos(Math.min(1, cos));
-    const scene = new Scene();
-    scene.environment = white;
-    scene.add(plane);
-    const camera = new OrthographicCamera(-1, 1, 1e-3, -1e-3, -10, 10);
     const target = new WebGLRenderTarget(w, 1, { type: FloatType, depthBuffer: true });
     renderer.setRenderTarget(target);
     renderer.render(scene, camera);
@@ -82,10 +83,10 @@ function materialGridXyz(g: ParityGroup, mode: Exclude<ParityMode, 'three-irides
     renderer.setRenderTarget(null);
     cases.forEach((c, i) => (out[c] = [...applyMatrix3(LINEAR_SRGB_TO_XYZ, [rgba[4 * i]!, rgba[4 * i + 1]!, rgba[4 * i + 2]!])]));
     target.dispose();
-    plane.geometry.dispose();
-    material.dispose();
     map.dispose();
   }
+  plane.geometry.dispose();
+  material.dispose();
   white.dispose();
   return out;
 }
