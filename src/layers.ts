@@ -4,7 +4,7 @@
  * of one layer know nothing of each other. docs/architecture.md draws the same order.
  */
 export const SOURCE_LAYERS: readonly (readonly string[])[] = [
-  ['physics', 'i18n'], // the float64 reference and its data: no DOM, no three.js; the texts of every language
+  ['physics', 'i18n', 'threads'], // the float64 reference and its data: no DOM, no three.js; the texts of every language; Web Worker requests
   ['fields'], // the film's thickness over the bubble: one module per field, registered in fields.ts
   ['settings'], // the schema of every user-facing parameter, and the film's quality knobs
   ['gpu'], // three.js plumbing: shader source, defines, shared resources, the fullscreen pass

@@ -1,14 +1,11 @@
 /**
  * `npm run --silent color -- [flags]`: the colour of thin films as JSON (or a CSV table) on
  * stdout; bad input gives exit status 2 and one line on stderr. See usage.ts or `--help`.
- * This file is the only one that touches the process; it reads and writes files with commandFiles.ts.
+ * This file is the only one that touches the process; colorCommand.ts reads and writes the files.
  */
-import { readCasesFile, writeFileAtomically } from './commandFiles.ts';
-import { runColorCommand } from './runColorCommand.ts';
+import { colorCommand } from './colorCommand.ts';
 
-const computed = runColorCommand(process.argv.slice(2), readCasesFile);
-const writeError = computed.file ? writeFileAtomically(computed.file.path, computed.file.data) : null;
-const result = writeError === null ? computed : { stdout: '', stderr: `color: ${writeError}\n`, exitCode: 2 };
+const result = colorCommand(process.argv.slice(2));
 // A reader that stops early (`| head`) is not an error of ours.
 process.stdout.on('error', (error: NodeJS.ErrnoException) => {
   if (error.code !== 'EPIPE') throw error;

@@ -1,3 +1,4 @@
+import { WorkerRequests } from '../threads/workerRequests.ts';
 import { type SpectralLight, spectralTransformTexels } from './spectralTransformTexels.ts';
 import type { SpectralTransformReply, SpectralTransformRequest } from './spectralTransformWorker.ts';
 
@@ -7,36 +8,11 @@ import type { SpectralTransformReply, SpectralTransformRequest } from './spectra
  * changed) then uploads them again instead of computing them again.
  */
 let last: { readonly key: string; readonly data: Float32Array } | null = null;
-/** The worker, made when first needed; null where there are no Workers (Node) or it failed. */
-let worker: Worker | null | undefined;
-/** The lights the worker is computing, by key. */
-const computing = new Set<string>();
-
-function theWorker(): Worker | null {
-  if (worker !== undefined) return worker;
-  worker = null;
-  if (typeof Worker === 'undefined') return null;
-  try {
-    const w = new Worker(new URL('./spectralTransformWorker.ts', import.meta.url), { type: 'module' });
-    w.addEventListener('message', (e: MessageEvent<SpectralTransformReply>) => {
-      computing.delete(e.data.key);
-      last = { key: e.data.key, data: e.data.texels };
-    });
-    // A worker that cannot load or run (its file not served beside the module, a page's CSP):
-    // the lights asked of it are computed on this thread when next asked for.
-    const fail = () => {
-      w.terminate();
-      worker = null;
-      computing.clear();
-    };
-    w.addEventListener('error', fail);
-    w.addEventListener('messageerror', fail);
-    worker = w;
-  } catch {
-    // The constructor refused (a SecurityError): no worker.
-  }
-  return worker;
-}
+const requests = new WorkerRequests<SpectralTransformReply>(
+  () => new Worker(new URL('./spectralTransformWorker.ts', import.meta.url), { type: 'module' }),
+  (reply) => (last = { key: reply.key, data: reply.texels }),
+  // The lights asked of a worker that failed are computed on this thread when next asked for.
+);
 
 /** The texels of the light with this key (spectralLightKey), computed on this thread unless at hand. */
 export function spectralTransformTexelsOf(key: string): Float32Array {
@@ -53,14 +29,7 @@ export function spectralTransformTexelsOf(key: string): Float32Array {
  */
 export function spectralTransformTexelsReady(key: string): boolean {
   if (last?.key === key) return true;
-  const w = theWorker();
-  if (!w) {
-    spectralTransformTexelsOf(key);
-    return true;
-  }
-  if (!computing.has(key)) {
-    computing.add(key);
-    w.postMessage({ key } satisfies SpectralTransformRequest);
-  }
-  return false;
+  if (requests.ask(key, { key } satisfies SpectralTransformRequest)) return false;
+  spectralTransformTexelsOf(key);
+  return true;
 }

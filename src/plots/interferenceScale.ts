@@ -41,3 +41,13 @@ export function interferenceScale(
   }
   return colors;
 }
+
+/** A scale's arguments as one object (what the scale's worker is sent). */
+export interface ScaleRequest {
+  readonly stack: Omit<DispersiveFilmStack, 'thicknessNm'>;
+  readonly maxThicknessNm: number;
+  readonly count: number;
+  readonly options: ScaleOptions;
+}
+
+export const interferenceScaleOf = (r: ScaleRequest): ScaleColor[] => interferenceScale(r.stack, r.maxThicknessNm, r.count, r.options);

@@ -7,7 +7,8 @@ import type { ProbeReading } from '../scene/probe.ts';
 import { drawChromaticityPlot } from './chromaticityPlot.ts';
 import { type ProbedView, downloadName } from './downloadName.ts';
 import { type FilmSpectrum, filmSpectrum } from './filmSpectrum.ts';
-import { type ScaleColor, interferenceScale } from './interferenceScale.ts';
+import type { ScaleColor } from './interferenceScale.ts';
+import { interferenceScaleFor } from './interferenceScaleStore.ts';
 import { probeColor } from './probeColor.ts';
 import { PLOT_BACKGROUND, addPlotStyles } from './plotStyles.ts';
 import { opaquePngUrl, saveUrl, textUrl } from './saveDownload.ts';
@@ -38,8 +39,11 @@ export class PlotPanel {
   private readonly spectrum: HTMLCanvasElement;
   private readonly chromaticity: HTMLCanvasElement;
   private readonly strip: HTMLCanvasElement;
+  /** The scale wanted (its settings), and the one drawn: the last to arrive, until the wanted one does. */
   private scaleKey = '';
-  private scale: ScaleColor[] = [];
+  private scale: { readonly key: string; readonly colors: ScaleColor[] } | null = null;
+  /** The probed colour on the scale's plots, and their labels' numbers. */
+  private scalePoint: (ScaleColor & { readonly maxNm: number }) | null = null;
   /** What the plots show now (null: the probe is off the bubble), for the downloads. */
   private shown: { readonly view: ProbedView; readonly spectrum: FilmSpectrum } | null = null;
   private readonly saveButtons: HTMLButtonElement[];
@@ -177,17 +181,40 @@ export class PlotPanel {
     this.spectrum.setAttribute('aria-label', spectrumLabel(spectrum, this.cat));
     this.fillTable();
     const maxNm = Math.max(MIN_SCALE_NM, maxFieldThicknessNm(s));
-    const key = JSON.stringify([stack, maxNm, s.illuminant, s.polarization, s.normalization, displayIsP3]);
+    this.scalePoint = { thicknessNm: reading.thicknessNm, xyz: c.xyz, rgb8: c.rgb8, maxNm };
+    const request = {
+      stack,
+      maxThicknessNm: maxNm,
+      count: SCALE_SAMPLES,
+      options: { illuminant: s.illuminant, polarization: s.polarization, normalization: s.normalization, xyzToLinearRgb: toRgb },
+    };
+    const key = JSON.stringify(request);
     if (key !== this.scaleKey) {
-      this.scale = interferenceScale(stack, maxNm, SCALE_SAMPLES, { ...s, xyzToLinearRgb: toRgb });
       this.scaleKey = key;
+      const colors = interferenceScaleFor(request, (arrived) => {
+        this.scale = { key, colors: arrived };
+        if (this.scaleKey === key && this.shown) this.drawScale();
+      });
+      if (colors) this.scale = { key, colors };
     }
-    drawChromaticityPlot(this.chromaticity, this.scale, { thicknessNm: reading.thicknessNm, xyz: c.xyz, rgb8: c.rgb8 });
-    drawScaleStrip(this.strip, this.scale, reading.thicknessNm);
-    const [x, y] = xyzToXy(c.xyz).map((v) => v.toFixed(4));
-    this.chromaticity.setAttribute('aria-label', message(this.cat, 'plots.xyLabel', { x: x!, y: y!, maxNm }));
-    const thickness = reading.thicknessNm.toFixed(0);
-    this.strip.setAttribute('aria-label', message(this.cat, 'plots.scaleLabel', { maxNm, thickness }));
+    this.drawScale();
+  }
+
+  /**
+   * The xy diagram and the strip: the scale wanted, or until it arrives the last one (marked
+   * `data-scale="pending"` on the plots, `ready` once the wanted one is drawn).
+   */
+  private drawScale(): void {
+    const p = this.scalePoint!;
+    this.element.dataset.scale = this.scale?.key === this.scaleKey ? 'ready' : 'pending';
+    if (this.scale) {
+      drawChromaticityPlot(this.chromaticity, this.scale.colors, p);
+      drawScaleStrip(this.strip, this.scale.colors, p.thicknessNm);
+    }
+    const [x, y] = xyzToXy(p.xyz).map((v) => v.toFixed(4));
+    this.chromaticity.setAttribute('aria-label', message(this.cat, 'plots.xyLabel', { x: x!, y: y!, maxNm: p.maxNm }));
+    const thickness = p.thicknessNm.toFixed(0);
+    this.strip.setAttribute('aria-label', message(this.cat, 'plots.scaleLabel', { maxNm: p.maxNm, thickness }));
   }
 }
 

@@ -38,6 +38,8 @@ test('each plot saves as a PNG of its pixels, the spectrum as the reference CSV,
   console.log(`downloads: probed ${thicknessNm} nm at ${angleDeg}°`);
   expect(angleDeg).toBeGreaterThan(5);
   const base = `film-450nm-D65-${Math.round(angleDeg)}deg`;
+  // The colour scale (the xy path and the strip) comes from its worker after the rest of the plots.
+  await expect(page.locator('.tfb-plots')).toHaveAttribute('data-scale', 'ready');
 
   for (const [file, canvas] of [
     ['spectrum.png', '.tfb-spectrum'],

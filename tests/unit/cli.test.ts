@@ -2,8 +2,8 @@
  * The command-line tool (src/cli). Expected values come from outside the code under test: the
  * golden film reflectance (docs/physics.md#golden-value), the normal-incidence Fresnel formula, the sRGB transfer
  * function as IEC 61966-2-1 defines it, and the definition of the CIE 1931 observer (equal-energy
- * white has x = y = z). Most bad-input rows run the whole command in-process (`runColorCommand`);
- * a few spawn the real CLI to prove the process glue: exit status, stderr, empty stdout.
+ * white has x = y = z). The rows run the whole command in-process, files included (`colorCommand`);
+ * two spawn the real CLI to prove the process glue: exit status, stdout, stderr.
  */
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, writeFileSync } from 'node:fs';
@@ -14,6 +14,7 @@ import { describe, expect, it } from 'vitest';
 import { ParameterError, describeValue } from '../../src/physics/validate.ts';
 import { parseStrictNumber } from '../../src/cli/parseStrictNumber.ts';
 import { runColorCommand } from '../../src/cli/runColorCommand.ts';
+import { colorCommand } from '../../src/cli/colorCommand.ts';
 import { jsonNestingDepth } from '../../src/cli/jsonNestingDepth.ts';
 import { MAX_TABLE_ROWS, evenlySpaced } from '../../src/cli/tableValues.ts';
 import { ABSURDLY_LONG, DEEPLY_NESTED, NOT_NUMBERS, notNames, outsideRange } from './fixtures/badValues.ts';
@@ -30,7 +31,14 @@ interface Spawned {
   readonly stderr: string;
 }
 
+/** The command in-process, as the process would run it (color.ts only prints this). */
 function cli(...args: string[]): Spawned {
+  const r = colorCommand(args);
+  return { status: r.exitCode, stdout: r.stdout, stderr: r.stderr };
+}
+
+/** The real CLI in a process of its own. */
+function spawned(...args: string[]): Spawned {
   const r = spawnSync('node_modules/.bin/tsx', ['src/cli/color.ts', ...args], { cwd: ROOT, encoding: 'utf8' });
   return { status: r.status, stdout: r.stdout, stderr: r.stderr };
 }
@@ -85,7 +93,7 @@ describe('color CLI, dispersive films', () => {
       const [flag] = cliJson('--n-film', 'cauchy:1.45,6000', '--thickness', '700', '--angle', '30');
       const [file] = cliJson('--cases', 'tests/unit/fixtures/cli-dispersive-cases.json');
       expect(file!.xyz).toEqual(flag!.xyz);
-      const bad = cli('--n-film', 'cauchy:3.9,20000');
+      const bad = spawned('--n-film', 'cauchy:3.9,20000');
       expect(bad.status).toBe(2);
       expect(bad.stdout).toBe('');
       expect(bad.stderr).toMatch(/^color: --n-film: "cauchy:3.9,20000" is not allowed; .* \(here n at 380 nm is 4.0385, above 4\)\n$/);
@@ -125,7 +133,7 @@ describe('color CLI, one case from flags', () => {
   });
 
   it('prints usage for --help', { timeout: SPAWN_TIMEOUT_MS }, () => {
-    const r = cli('--help');
+    const r = spawned('--help');
     expect(r.status).toBe(0);
     expect(r.stdout).toContain('Usage: npm run --silent color');
     expect(r.stderr).toBe('');

@@ -13,13 +13,21 @@ import { DOMParser } from '@xmldom/xmldom';
 import { PNG } from 'pngjs';
 import { describe, expect, it } from 'vitest';
 import { runColorCommand } from '../../src/cli/runColorCommand.ts';
+import { colorCommand } from '../../src/cli/colorCommand.ts';
 import { ABSURDLY_LONG, NOT_NUMBERS } from './fixtures/badValues.ts';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 /** Each spawn starts tsx (~0.5 s); allow for a loaded machine. */
 const SPAWN_TIMEOUT_MS = 60_000;
 
+/** The command in-process, files written as the process writes them (color.ts only prints this). */
 function cli(...args: string[]) {
+  const r = colorCommand(args);
+  return { status: r.exitCode, stdout: r.stdout, stderr: r.stderr };
+}
+
+/** The real CLI in a process of its own. */
+function spawned(...args: string[]) {
   const r = spawnSync('node_modules/.bin/tsx', ['src/cli/color.ts', ...args], { cwd: ROOT, encoding: 'utf8' });
   return { status: r.status, stdout: r.stdout, stderr: r.stderr };
 }
@@ -139,11 +147,11 @@ describe('color chart, bad input', () => {
 
   it('through the process: exit 2 and nothing written, also when the folder is missing', { timeout: SPAWN_TIMEOUT_MS }, () => {
     const dir = newDir();
-    const bad = cli(...range, '--format', 'png', '--out', join(dir, 'x.png'), '--height', '0');
+    const bad = spawned(...range, '--format', 'png', '--out', join(dir, 'x.png'), '--height', '0');
     expect(bad.status).toBe(2);
     expect(bad.stdout).toBe('');
     expect(bad.stderr).toContain('--height: ');
-    const missing = cli(...range, '--format', 'png', '--out', join(dir, 'no-such-folder', 'x.png'));
+    const missing = spawned(...range, '--format', 'png', '--out', join(dir, 'no-such-folder', 'x.png'));
     expect(missing.status).toBe(2);
     expect(missing.stdout).toBe('');
     expect(missing.stderr.trimEnd().split('\n')).toHaveLength(1);

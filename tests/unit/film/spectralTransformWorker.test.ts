@@ -8,6 +8,7 @@ import { fileURLToPath } from 'node:url';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { type SpectralLight, spectralLightKey, spectralTransformTexels } from '../../../src/film/spectralTransformTexels.ts';
 import type { SpectralTransformReply, SpectralTransformRequest } from '../../../src/film/spectralTransformWorker.ts';
+import { fakeWorkerClass, loadWorkerScope, nextTask } from '../fakeWorker.ts';
 
 const LIGHT: SpectralLight = { illuminant: 'D93', normalization: 'paper' };
 const KEY = spectralLightKey(LIGHT);
@@ -15,50 +16,7 @@ const KEY = spectralLightKey(LIGHT);
 let inline: Float32Array | null = null;
 const inlineTexels = () => (inline ??= spectralTransformTexels(LIGHT));
 
-type Handler = (e: MessageEvent<SpectralTransformRequest>) => void;
-
-/** The worker module loaded into a stand-in of a worker's global scope: its message handler, and what it posts (as structured clones, the buffers transferred). */
-async function loadWorkerScope(): Promise<{ handler: Handler; posted: SpectralTransformReply[] }> {
-  let handler: Handler | null = null;
-  const posted: SpectralTransformReply[] = [];
-  vi.stubGlobal('addEventListener', (type: string, h: Handler) => {
-    if (type === 'message') handler = h;
-  });
-  vi.stubGlobal('postMessage', (message: SpectralTransformReply, options: StructuredSerializeOptions) =>
-    posted.push(structuredClone(message, options)),
-  );
-  vi.resetModules();
-  await import('../../../src/film/spectralTransformWorker.ts');
-  expect(handler, 'the worker listens for messages').not.toBeNull();
-  return { handler: handler!, posted };
-}
-
-/** A Worker standing in for the browser's, running the worker module's handler a task after each message. */
-async function fakeWorkerClass(fail = false) {
-  const scope = await loadWorkerScope();
-  return class FakeWorker extends EventTarget {
-    static made: FakeWorker[] = [];
-    readonly requests: SpectralTransformRequest[] = [];
-    constructor(
-      readonly url: URL,
-      readonly options: WorkerOptions,
-    ) {
-      super();
-      FakeWorker.made.push(this);
-    }
-    postMessage(request: SpectralTransformRequest): void {
-      this.requests.push(request);
-      setTimeout(() => {
-        if (fail) return void this.dispatchEvent(new Event('error'));
-        scope.handler(new MessageEvent('message', { data: structuredClone(request) }));
-        this.dispatchEvent(new MessageEvent('message', { data: scope.posted.shift() }));
-      });
-    }
-    terminate(): void {}
-  };
-}
-
-const nextTask = () => new Promise((resolve) => setTimeout(resolve));
+const WORKER = '../../src/film/spectralTransformWorker.ts';
 
 afterEach(() => {
   vi.unstubAllGlobals();
@@ -67,15 +25,16 @@ afterEach(() => {
 
 describe('the spectral transform off the main thread', () => {
   it("the worker's answer is the main thread's texels, bit for bit", async () => {
-    const { handler, posted } = await loadWorkerScope();
-    handler(new MessageEvent('message', { data: { key: KEY } }));
+    const { handler, posted } = await loadWorkerScope<SpectralTransformReply>(WORKER);
+    expect(handler, 'the worker listens for messages').not.toBeNull();
+    handler!(new MessageEvent('message', { data: { key: KEY } }));
     expect(posted).toHaveLength(1);
     expect(posted[0]!.key).toBe(KEY);
     expect(posted[0]!.texels).toStrictEqual(inlineTexels());
   });
 
   it('the store asks its module worker once, and has the texels when the answer arrives', async () => {
-    const FakeWorker = await fakeWorkerClass();
+    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest, SpectralTransformReply>(WORKER);
     vi.stubGlobal('Worker', FakeWorker);
     const store = await import('../../../src/film/spectralTransformStore.ts');
     expect(store.spectralTransformTexelsReady(KEY)).toBe(false);
@@ -99,7 +58,7 @@ describe('the spectral transform off the main thread', () => {
   });
 
   it('after its worker fails, the store computes the texels itself', async () => {
-    const FakeWorker = await fakeWorkerClass(true);
+    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest, SpectralTransformReply>(WORKER, true);
     vi.stubGlobal('Worker', FakeWorker);
     const store = await import('../../../src/film/spectralTransformStore.ts');
     expect(store.spectralTransformTexelsReady(KEY)).toBe(false);
