@@ -20,6 +20,7 @@ import { createBackgroundMaterial, updateBackgroundMaterial } from '../bubble/en
 import { environmentTexture, loadEnvironmentPixels, releaseEnvironmentTexture } from '../bubble/environmentMaps.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../settings/filmQuality.ts';
 import { FilmTable } from '../film/filmTable.ts';
+import { spectralTransformReady } from '../film/spectralTransformTexture.ts';
 import { type FilmSettings, type HdrEnvironment, type ToneMapping, isHdrEnvironment, toneMappingOf } from '../settings/filmSettings.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
 
@@ -67,6 +68,12 @@ export class BubbleView {
   /** Whether the canvas really shows Display P3 (false where the browser cannot). */
   displayIsP3 = false;
   private settings: FilmSettings;
+  /**
+   * The light the film is drawn in (null before the first frame). In `fourier` mode a new light's
+   * spectral transform comes from a worker; until it arrives the frames keep the light shown.
+   */
+  private lightShown: Pick<FilmSettings, 'illuminant' | 'normalization'> | null = null;
+  private lightWaiting = false;
 
   constructor(
     readonly renderer: WebGLRenderer,
@@ -114,7 +121,29 @@ export class BubbleView {
     }
     this.background.visible = shown.env !== 'none';
     updateBackgroundMaterial(this.background.material, shown, map);
-    updateBubbleUniforms(this.bubble.material, shown, this.quality, s.mode === 'table' ? this.table : null, this.displayIsP3, map);
+    const light = this.filmLight(s);
+    updateBubbleUniforms(
+      this.bubble.material,
+      { ...shown, ...light },
+      this.quality,
+      s.mode === 'table' ? this.table : null,
+      this.displayIsP3,
+      map,
+    );
+  }
+
+  /** The light to draw `s`'s film in: its own, or in `fourier` mode the one shown while its transform is computed. */
+  private filmLight(s: FilmSettings): Pick<FilmSettings, 'illuminant' | 'normalization'> {
+    const wanted = { illuminant: s.illuminant, normalization: s.normalization };
+    const shown = this.lightShown;
+    this.lightWaiting =
+      s.mode === 'fourier' &&
+      shown !== null &&
+      JSON.stringify(wanted) !== JSON.stringify(shown) &&
+      !spectralTransformReady(s.illuminant, s.normalization);
+    if (this.lightWaiting) return shown!;
+    this.lightShown = wanted;
+    return wanted;
   }
 
   /** Fetches an HDR environment; when it arrives (or fails) the view shows it (or says why not). */
@@ -166,11 +195,11 @@ export class BubbleView {
   }
 
   /**
-   * Whether the last frame was drawn from a coarse table, or from the previous light's while the
-   * new light's transform is computed (FilmTable): more frames follow until one is full.
+   * Whether the last frame was drawn from a coarse table, or in the previous light while the new
+   * light's transform is computed (FilmTable; `fourier` mode): more frames follow until one is full.
    */
   get coarse(): boolean {
-    return this.settings.mode === 'table' && this.table.coarse;
+    return (this.settings.mode === 'table' && this.table.coarse) || this.lightWaiting;
   }
 
   /** Whether the renderer's WebGL context is lost (nothing can be drawn or read until it is restored). */
@@ -197,6 +226,11 @@ export class BubbleView {
     const drawn = r.getSize(SIZE);
     if (drawn.x !== width || drawn.y !== height) r.setSize(width, height, false);
     if (this.contextLost) return;
+    // The new light's transform has arrived, or a frame that does not wait (tests, screenshots) computes it here.
+    if (this.lightWaiting && (!quick || spectralTransformReady(this.settings.illuminant, this.settings.normalization))) {
+      this.lightShown = null;
+      this.apply(this.settings);
+    }
     this.syncTable(quick);
     // Per frame, as views may share the renderer (each view's materials are compiled for its own).
     r.toneMapping = this.toneMapping;
