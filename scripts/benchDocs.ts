@@ -1,16 +1,20 @@
 /**
- * `npm run bench:docs [-- <results.json>]`: writes docs/benchmarks.md from a benchmark run's
- * results (bench-results.json by default), so the tables there are the run's, never typed in.
+ * `npm run bench:docs [-- <results.json>]`: writes docs/benchmarks.md, and from a full run the
+ * README's table of accuracy against cost, from a benchmark run's results (bench-results.json by
+ * default), so the tables there are the run's, never typed in.
  * Only a complete run (every row and figure, each there and finite) is written up; a smoke run's
  * results are labelled as such.
  */
 import { readFileSync, writeFileSync } from 'node:fs';
+import { accuracyTableMarkdown } from './bench/accuracyTable.ts';
 import { benchMarkdown } from './bench/benchMarkdown.ts';
 import { FULL_PLAN, SMOKE_PLAN } from './bench/benchPlan.ts';
 import { type BenchResults, resultProblems } from './bench/benchResults.ts';
 import { ROWS } from './bench/rows.ts';
+import { withBlock } from './docs/urlTable.ts';
 
 const DOC = 'docs/benchmarks.md';
+const README = 'README.md';
 const source = process.argv[2] ?? 'bench-results.json';
 let results: BenchResults;
 try {
@@ -52,3 +56,8 @@ ${benchMarkdown(results)}
 `;
 writeFileSync(DOC, text);
 console.error(`${DOC} written from ${source}`);
+// The README quotes a full run only.
+if (!results.plan.smoke) {
+  writeFileSync(README, withBlock(readFileSync(README, 'utf8'), 'accuracy-table', accuracyTableMarkdown(results)));
+  console.error(`${README}'s accuracy table written from ${source}`);
+}

@@ -56,6 +56,18 @@ const sceneStep = (name: string, more: Partial<FilmSettings>): BenchRow => ({
   measuresError: false,
 });
 
+/** The rows the README's table of accuracy against cost quotes: each method at its default, and three.js's. */
+export const THREE_IRIDESCENCE_ROW: BenchRow = {
+  name: 'three.js iridescence (evalIridescence, soap film)',
+  kind: 'bubble',
+  settings: view('three-iridescence'),
+  quality: q,
+  measuresError: true,
+};
+export const DEFAULT_TABLE_ROW = table({}, ' (default)');
+export const FOURIER_ROW = fourier();
+export const EXACT_ROW = exact(90);
+
 export const ROWS: readonly BenchRow[] = [
   { name: 'plain textured sphere (the floor)', kind: 'textured', settings: view('table'), quality: q, measuresError: false },
   // The floor without the sky behind it: the background's own cost, to tell it from the walls' reflections.
@@ -66,20 +78,14 @@ export const ROWS: readonly BenchRow[] = [
     quality: q,
     measuresError: false,
   },
-  {
-    name: 'three.js iridescence (evalIridescence, soap film)',
-    kind: 'bubble',
-    settings: view('three-iridescence'),
-    quality: q,
-    measuresError: true,
-  },
-  fourier(),
+  THREE_IRIDESCENCE_ROW,
+  FOURIER_ROW,
   fourier(2, ' (three.js/glTF keep m ≤ 2)'),
   fourier(3, ' (Blender Cycles keeps m ≤ 3)'),
   exact(45),
-  exact(90),
+  EXACT_ROW,
   table({ fill: 'binned', thickEndCellNm: 0 }, ' (before: the previous default)'),
-  table({}, ' (default)'),
+  DEFAULT_TABLE_ROW,
   table({ thickEndCellNm: 0 }),
   table({ width: 1024, rows: 64 }),
   table({ cosPower: 1.5 }),
