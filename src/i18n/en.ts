@@ -106,7 +106,7 @@ export const EN = {
   'panel.notTaken': 'not taken: {problem}',
   'app.title': 'thin-film-color — a soap bubble from the spectral thin-film integral',
   'app.fourierAsTable':
-    'mode=fourier has no Airy series for a dispersive film (nFilm={nFilm}): drawing with mode=table, filled from the same spectral bins.',
+    'mode=fourier has no Airy series where the film or the inside is dispersive ({medium}): drawing with mode=table, filled from the same spectral bins.',
   'app.heading': 'thin-film interference: a soap bubble',
   'app.noDisplayP3': 'This browser has no Display P3 canvas: showing sRGB.',
   'app.environmentLoading': 'Loading the environment {env}…',

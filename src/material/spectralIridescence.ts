@@ -124,8 +124,8 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
 }
 
 /** The GLSL defines of the film (filmColor.glsl's, for the mode). */
-// The material's film index is three's iridescenceIOR, one number: a constant film's defines.
-const definesOf = (o: CheckedOptions) => filmColorDefines({ ...o, nFilm: DEFAULT_SETTINGS.nFilm }, o.quality);
+// The material's indices are three's iridescenceIOR and ior, numbers: constant real media's defines.
+const definesOf = (o: CheckedOptions) => filmColorDefines({ ...o, nFilm: DEFAULT_SETTINGS.nFilm, nInside: DEFAULT_SETTINGS.nInside }, o.quality);
 
 /** Gives the film new options; a new program only if the defines differ (the old one freed, as setDefines does). */
 function setOptions(m: MeshPhysicalMaterial, film: SpectralFilm, options: CheckedOptions): void {

@@ -7,8 +7,8 @@ const declared = (file: string): string[] =>
   [...readFileSync(new URL(`../../../shaders/${file}`, import.meta.url), 'utf8').matchAll(/^uniform \w+ (\w+)/gm)].map((m) => m[1]!);
 
 describe('film media uniforms', () => {
-  it('filmMedia.ts sets what filmMedia.glsl and filmIndex.glsl declare, no more and no less', () => {
-    const glsl = [...declared('film/filmMedia.glsl'), ...declared('physics/filmIndex.glsl')].sort();
+  it('filmMedia.ts sets what filmMedia.glsl and medium.glsl declare, no more and no less', () => {
+    const glsl = [...declared('film/filmMedia.glsl'), ...declared('physics/medium.glsl')].sort();
     expect(Object.keys(filmMediaUniforms()).sort()).toEqual(glsl);
   });
 });
