@@ -16,6 +16,10 @@ export function shownMethod(s: FilmSettings, cat: Catalogue = EN): { readonly se
   if (s.mode !== 'fourier' || !isDispersiveFilm(s)) return { settings: s, notice: null };
   return {
     settings: { ...s, mode: 'table' },
-    notice: message(cat, 'app.fourierAsTable', { medium: mediumText(isDispersiveMedium(s.nFilm) ? s.nFilm : s.nInside) }),
+    notice: message(
+      cat,
+      'app.fourierAsTable',
+      isDispersiveMedium(s.nFilm) ? { name: 'nFilm', medium: mediumText(s.nFilm) } : { name: 'nInside', medium: mediumText(s.nInside) },
+    ),
   };
 }
