@@ -87,13 +87,27 @@ function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<
     case 'filmIndex':
       return addMediumControls(folder, row, state[row.key] as Medium, cat, FILM_INDEX_KINDS, 'film');
     case 'medium':
-      return addMediumControls(folder, row, state[row.key] as Medium, cat, MEDIUM_KINDS, control.role);
+      return addMediumControls(
+        folder,
+        row,
+        state[row.key] as Medium,
+        cat,
+        control.role === 'film' ? FILM_MEDIUM_KINDS : INSIDE_MEDIUM_KINDS,
+        control.role,
+      );
   }
 }
 
-/** The list's kinds of a film index, and of any medium (the named media and a complex constant as well). */
+/**
+ * The list's kinds: of a film index; of a film medium (the named media too: an oxide, an absorbing
+ * film); of the inside (the named media and a complex constant n,k: a metal). Each text field is
+ * then in one list only. What a list leaves out (a Cauchy inside, a complex film) is still read
+ * from the URL, and the panel keeps it until another kind is chosen.
+ */
 const FILM_INDEX_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, CAUCHY_INDEX];
-const MEDIUM_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, ...NAMED_MEDIA, CAUCHY_INDEX, COMPLEX_INDEX];
+const FILM_MEDIUM_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, ...NAMED_MEDIA, CAUCHY_INDEX];
+const INSIDE_MEDIUM_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, ...NAMED_MEDIA, COMPLEX_INDEX];
+const TEXT_KINDS: readonly string[] = [CAUCHY_INDEX, COMPLEX_INDEX];
 
 /** The kind of the list a medium is shown as. */
 function mediumKind(m: Medium): string {
@@ -128,17 +142,15 @@ function addMediumControls(
   let good = initial;
   folder.add(controls, 'kind', options(cat, row.key, kinds)).name(cat[role === 'inside' ? 'panel.insideMedium' : 'panel.filmMaterial']);
   folder.add(controls, 'n', min, max, INDEX_STEP).name(cat[labelKey(row.key)]);
-  const texts = [CAUCHY_INDEX, COMPLEX_INDEX]
-    .filter((k) => kinds.includes(k))
-    .map((k) => ({
-      kind: k,
-      field: folder.add(controls, k as typeof CAUCHY_INDEX).name(cat[k === CAUCHY_INDEX ? 'panel.cauchy' : 'panel.complex']),
-    }));
+  const texts = TEXT_KINDS.filter((k) => kinds.includes(k)).map((k) => ({
+    kind: k,
+    field: folder.add(controls, k as typeof CAUCHY_INDEX).name(cat[k === CAUCHY_INDEX ? 'panel.cauchy' : 'panel.complex']),
+  }));
   return () => {
     const text = texts.find((t) => t.kind === controls.kind);
     if (controls.kind === CONSTANT_INDEX) good = controls.n;
-    else if (!text) good = controls.kind as Medium;
-    else {
+    else if (!TEXT_KINDS.includes(controls.kind)) good = controls.kind as Medium;
+    else if (text) {
       const reading = readMedium(`${text.kind}:${controls[text.kind as typeof CAUCHY_INDEX]}`, role);
       if ('medium' in reading) good = reading.medium;
       const problem = 'problem' in reading ? (reading.problem ?? mediumExpected(role)) : null;

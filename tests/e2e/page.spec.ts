@@ -94,4 +94,15 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   await expect(page.getByRole('combobox', { name: 'film material' })).toHaveValue('cauchy');
   const expected = reference8({ thicknessNm: 300, nFilm: cauchy });
   expect(worstCodeDifference(await centrePixel(page), expected)).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+
+  // The inside's medium: a named metal from the list, then a complex constant typed as n,k.
+  const inside = page.getByRole('combobox', { name: 'inside medium' });
+  await inside.selectOption('Au');
+  await expect(page).toHaveURL(/nInside=Au/);
+  const complexText = page.locator('.lil-controller', { hasText: 'complex n,k' }).locator('input');
+  await complexText.fill('2.6,3.4');
+  await complexText.press('Enter');
+  await inside.selectOption('complex');
+  await expect(page).toHaveURL(/nInside=complex%3A2.6%2C3.4/);
+  expect(await current()).toMatchObject({ nInside: { complex: [2.6, 3.4] } });
 });
