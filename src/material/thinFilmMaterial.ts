@@ -1,5 +1,6 @@
 import { type Material, MeshPhysicalMaterial, type MeshPhysicalMaterialParameters } from 'three';
 import { type Polarization } from '../physics/filmReflectance.ts';
+import { type Medium } from '../physics/medium.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
 import { type FilmQuality, type FilmQualityOptions } from '../settings/filmQuality.ts';
@@ -47,6 +48,13 @@ export class ThinFilmMaterial extends MeshPhysicalMaterial {
   }
   set normalization(value: Normalization) {
     setSpectralOption(this, 'normalization', value);
+  }
+  get base(): Medium | null {
+    return spectralOption(this, 'base');
+  }
+  /** a medium or its text (`'Ti'`, `'complex:2.6,3.4'`), or null for three's `ior` */
+  set base(value: Medium | string | null) {
+    setSpectralOption(this, 'base', value);
   }
   get quality(): FilmQuality {
     return spectralOption(this, 'quality');

@@ -183,20 +183,22 @@ for (const mode of MODES) {
  * at 548.6 nm; its series and table rows carry the complex r_bc), tabulated metals under a real film,
  * and absorbing films on metals (Fe3O4 on Fe, TiO2 on Ti), each in one polarisation. The fixed grid
  * covers 0–1000 nm at 0–85°; the stress grid reaches 90° and 10 µm, and a glass outside puts the
- * film's critical angle (62.5°) inside its range. The table's rows interpolate across the kink R
- * has there (R jumps to 1 within a fraction of a row: ΔE00 4.7 at 0.3° from it, docs/physics.md#absorbing-media),
- * so `table` is held to its bound on the stress grid without that stack (`tirEdge`).
+ * film's critical angle (62.5°) inside its range, with a case 0.3° short of it. The table's rows
+ * interpolate across the kink R has there (R jumps to 1 within a fraction of a row,
+ * docs/physics.md#absorbing-media-on-the-gpu), so `table` is held to its bound on the stress grid
+ * without that stack (`tirEdge`), whose figures it records.
  */
 function metalDomain(): { fixed: Group[]; stress: Group[]; tirEdge: Group[] } {
   const next = mulberry32(3);
   const gold548: Medium = { complex: [0.43, 2.455] };
-  const fixedStacks: readonly (Pick<Group, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'> & { readonly illuminant: IlluminantSpec })[] = [
-    { nOutside: 1, nFilm: 1.38, nInside: gold548, polarization: 'unpolarized', illuminant: 'D65' },
-    { nOutside: 1, nFilm: 1.5, nInside: gold548, polarization: 's', illuminant: 'E' },
-    { nOutside: 1, nFilm: 1.33, nInside: 'Au', polarization: 'unpolarized', illuminant: 'D65' },
-    { nOutside: 1, nFilm: 'Fe3O4', nInside: 'Fe', polarization: 'p', illuminant: 'D55' },
-    { nOutside: 1, nFilm: 'TiO2', nInside: 'Ti', polarization: 'unpolarized', illuminant: { daylightCct: 4000 } },
-  ];
+  const fixedStacks: readonly (Pick<Group, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'> & { readonly illuminant: IlluminantSpec })[] =
+    [
+      { nOutside: 1, nFilm: 1.38, nInside: gold548, polarization: 'unpolarized', illuminant: 'D65' },
+      { nOutside: 1, nFilm: 1.5, nInside: gold548, polarization: 's', illuminant: 'E' },
+      { nOutside: 1, nFilm: 1.33, nInside: 'Au', polarization: 'unpolarized', illuminant: 'D65' },
+      { nOutside: 1, nFilm: 'Fe3O4', nInside: 'Fe', polarization: 'p', illuminant: 'D55' },
+      { nOutside: 1, nFilm: 'TiO2', nInside: 'Ti', polarization: 'unpolarized', illuminant: { daylightCct: 4000 } },
+    ];
   const fixed = fixedStacks.map((stack) => {
     const cases: Case[] = [
       { thicknessNm: 0, angleDeg: 0 },
@@ -217,6 +219,8 @@ function metalDomain(): { fixed: Group[]; stress: Group[]; tirEdge: Group[] } {
       { thicknessNm: maxNm, angleDeg: 89.9 },
       { thicknessNm: maxNm, angleDeg: 90 },
       { thicknessNm: 5, angleDeg: 89 },
+      // 0.3° short of the film's critical angle under glass (62.5°), where R has its kink.
+      ...(stack.nOutside > 1 ? [{ thicknessNm: 1570, angleDeg: 62.2 }] : []),
     ];
     while (cases.length < 16) cases.push({ thicknessNm: maxNm * next(), angleDeg: 60 + 30 * next() });
     return { ...stack, illuminant: 'D65' as const, normalization: 'white' as const, cases };
