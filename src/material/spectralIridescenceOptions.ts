@@ -10,6 +10,9 @@ import { MODES } from '../settings/filmSettings.ts';
 /** How the film is computed: `table` (one lookup in a table the GPU builds), `fourier` (the Airy series per fragment) or `exact` (binned integral). */
 export type FilmMode = (typeof MODES)[number];
 
+/** A base as given: a medium, or its text (a name is one: `'Ti'`, `'complex:2.6,3.4'`). */
+export type BaseInput = Exclude<Medium, string> | string;
+
 /** How the film is computed and seen: the demo's `mode`, `illuminant`, `polarization`, `normalization`, and the quality knobs. */
 export interface SpectralIridescenceOptions {
   /** `table` by default */
@@ -23,7 +26,7 @@ export interface SpectralIridescenceOptions {
    * An absorbing base (a metal) is opaque: give the material `color` black and `metalness` 0, so the
    * film over it is all the surface reflects.
    */
-  readonly base?: Medium | string | null;
+  readonly base?: BaseInput | null;
   /** the table's layout and bins: any of the knobs, over the demo's defaults */
   readonly quality?: FilmQualityOptions;
 }
@@ -62,7 +65,7 @@ export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): 
 }
 
 /** The base checked as the demo's nInside is (a ParameterError naming `base` when it is not a medium or leaves its domain). */
-function baseOf(base: Medium | string | null): Medium | null {
+function baseOf(base: BaseInput | null): Medium | null {
   if (base === null) return null;
   const medium = typeof base === 'string' ? parseMediumText(base) : mediumFromJson(base);
   if (medium === null) throw new ParameterError('base', `base: ${JSON.stringify(base)} is not a medium (a number, a name or complex:n,k)`);

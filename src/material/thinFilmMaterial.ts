@@ -5,7 +5,7 @@ import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
 import { type FilmQuality, type FilmQualityOptions } from '../settings/filmQuality.ts';
 import { copySpectralFilm, setSpectralOption, spectralIridescence, spectralOption } from './spectralIridescence.ts';
-import { type FilmMode, type SpectralIridescenceOptions, splitFilmOptions } from './spectralIridescenceOptions.ts';
+import { type BaseInput, type FilmMode, type SpectralIridescenceOptions, splitFilmOptions } from './spectralIridescenceOptions.ts';
 
 /** A physical material's parameters and the film's options, in one object. */
 export type ThinFilmMaterialParameters = MeshPhysicalMaterialParameters & SpectralIridescenceOptions;
@@ -53,7 +53,7 @@ export class ThinFilmMaterial extends MeshPhysicalMaterial {
     return spectralOption(this, 'base');
   }
   /** a medium or its text (`'Ti'`, `'complex:2.6,3.4'`), or null for three's `ior` */
-  set base(value: Medium | string | null) {
+  set base(value: BaseInput | null) {
     setSpectralOption(this, 'base', value);
   }
   get quality(): FilmQuality {
