@@ -17,7 +17,11 @@ export const AIRY_ROW_TEXELS = 3;
  * ~1 ms for 256 rows, instead of the Fresnel terms per texel. The media are constant (real or
  * complex: an absorbing film's complex path is marked as having no series).
  */
-export function airySeriesRows(s: Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'>, layout: FilmTableLayout, data: Float32Array): void {
+export function airySeriesRows(
+  s: Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'>,
+  layout: FilmTableLayout,
+  data: Float32Array,
+): void {
   const halves = absorbsInBand(s.nInside) ? 1 : 2;
   for (let half = 0; half < halves; half++) {
     // From inside the light comes from the (transparent) inside: its n.
@@ -26,7 +30,10 @@ export function airySeriesRows(s: Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nIn
       const cos = filmTableCosIncidence(layout, row);
       const angleDeg = (Math.acos(Math.min(1, cos)) * 180) / Math.PI;
       // Thickness 1 nm: any d > 0 has the same terms, and the path per nm is then Δ itself.
-      const optics = filmOptics(mediumStackAt({ nOutside, nFilm: s.nFilm, nInside, thicknessNm: 1, angleDeg }, SODIUM_D_NM), s.polarization);
+      const optics = filmOptics(
+        mediumStackAt({ nOutside, nFilm: s.nFilm, nInside, thicknessNm: 1, angleDeg }, SODIUM_D_NM),
+        s.polarization,
+      );
       const [t0, t1 = t0] = optics.channels.map(airySeriesTerms);
       const path = optics.opticalPathNm;
       data.set(

@@ -63,8 +63,7 @@ function updateFilmColorTextures(
 ): void {
   const u = m.uniforms;
   const binned = s.mode === 'exact' || s.mode === 'fourier';
-  if (binned)
-    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s, q, q.exactSpectralBins), m);
+  if (binned) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s, q, q.exactSpectralBins), m);
   else {
     releaseSpectralBinsTexture(m);
     u.uSpectralBins!.value = null;

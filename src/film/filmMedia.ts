@@ -14,14 +14,17 @@ const KNOTS = LAMBDA_SPAN_NM / STEP_NM + 1;
 export const SODIUM_D_NM = 589.29;
 
 /** Whether the film's or the inside's index depends on λ: the shaders then take both per spectral bin. */
-export const isDispersiveFilm = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): boolean => isDispersiveMedium(s.nFilm) || isDispersiveMedium(s.nInside);
+export const isDispersiveFilm = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): boolean =>
+  isDispersiveMedium(s.nFilm) || isDispersiveMedium(s.nInside);
 
 /**
  * The defines of a film-colour shader for these media: TFC_DISPERSIVE and its knots where the film
  * or the inside depends on λ, TFC_OPAQUE_INSIDE where the inside absorbs (no light from inside).
  */
 export const filmMediaDefines = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): Record<string, number> => ({
-  ...(isDispersiveFilm(s) ? { TFC_DISPERSIVE: 1, TFC_MEDIA_KNOTS: KNOTS, TFC_MEDIA_FIRST_NM: LAMBDA_MIN_NM, TFC_MEDIA_STEP_NM: STEP_NM } : {}),
+  ...(isDispersiveFilm(s)
+    ? { TFC_DISPERSIVE: 1, TFC_MEDIA_KNOTS: KNOTS, TFC_MEDIA_FIRST_NM: LAMBDA_MIN_NM, TFC_MEDIA_STEP_NM: STEP_NM }
+    : {}),
   ...(absorbsInBand(s.nInside) ? { TFC_OPAQUE_INSIDE: 1 } : {}),
 });
 
@@ -49,5 +52,6 @@ export function updateFilmMediaUniforms(u: Record<string, { value: unknown }>, s
   u.uNInside!.value = nk(s.nInside, SODIUM_D_NM);
   if (!isDispersiveFilm(s)) return;
   const knots = u.uMediaKnots!.value as Float32Array;
-  for (let i = 0; i < KNOTS; i++) knots.set([...nk(s.nFilm, LAMBDA_MIN_NM + i * STEP_NM), ...nk(s.nInside, LAMBDA_MIN_NM + i * STEP_NM)], 4 * i);
+  for (let i = 0; i < KNOTS; i++)
+    knots.set([...nk(s.nFilm, LAMBDA_MIN_NM + i * STEP_NM), ...nk(s.nInside, LAMBDA_MIN_NM + i * STEP_NM)], 4 * i);
 }

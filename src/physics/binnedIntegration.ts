@@ -1,5 +1,12 @@
 import { cScale, cTimesIndex } from './complex.ts';
-import { type AiryTerms, type FilmOptics, type Polarization, filmOptics, meanChannelReflectance, reflectanceAt } from './filmReflectance.ts';
+import {
+  type AiryTerms,
+  type FilmOptics,
+  type Polarization,
+  filmOptics,
+  meanChannelReflectance,
+  reflectanceAt,
+} from './filmReflectance.ts';
 import { type Medium, type MediumStack, isDispersiveMedium, mediumIndexAt, mediumStackAt, transparentIndexAt } from './medium.ts';
 import { cosDeg, refractedCos } from './snell.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type SpectralWeights, type Xyz } from './spectralWeights.ts';
