@@ -19,6 +19,7 @@ export const LATIN_IN_JAPANESE: ReadonlySet<string> = new Set([
   'CSV',
   'Shift', // the key's label
   'cauchy', // the URL's and attribute's keyword for a Cauchy film
+  'complex', // the URL's and attribute's keyword for a complex index n,k
 ]);
 
 /** The Latin words of `text` that are neither symbols (one or two letters) nor in LATIN_IN_JAPANESE. */

@@ -6,7 +6,7 @@
 import { cpus, loadavg } from 'node:os';
 import { chromium } from '@playwright/test';
 import { createServer, preview } from 'vite';
-import type { FilmIndex } from '../../src/physics/filmIndex.ts';
+import type { Medium } from '../../src/physics/medium.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import { chromiumLaunchOptions } from '../chromium.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
@@ -31,7 +31,7 @@ class ErrorGrids {
   private readonly byFilm = new Map<string, { grids: ParityGroup[]; reference: Xyz[][] | null }>();
   constructor(private readonly stride: number) {}
 
-  private entry(nFilm: FilmIndex) {
+  private entry(nFilm: Medium) {
     const key = JSON.stringify(nFilm);
     const entry = this.byFilm.get(key) ?? {
       grids: [FIXED_GRID, STRESS_GRID].map((g) => thinnedGrid({ ...g, nFilm }, this.stride)),
@@ -41,11 +41,11 @@ class ErrorGrids {
     return entry;
   }
 
-  grids(nFilm: FilmIndex): ParityGroup[] {
+  grids(nFilm: Medium): ParityGroup[] {
     return this.entry(nFilm).grids;
   }
 
-  reference(nFilm: FilmIndex): Xyz[][] {
+  reference(nFilm: Medium): Xyz[][] {
     const entry = this.entry(nFilm);
     entry.reference ??= entry.grids.map(referenceXyz);
     return entry.reference;

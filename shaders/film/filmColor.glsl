@@ -3,9 +3,10 @@
 //   fourier: the Airy series per fragment (airySeries.glsl; by bins where it has no real path or
 //     needs more than TFC_AIRY_SERIES_MAX_ORDERS terms);
 //   three-iridescence: three.js's iridescence (Belcour–Barla, `evalIridescence`), the benchmark's peer.
-// TFC_DISPERSIVE: the film's index depends on λ (filmIndex.glsl); exact and fourier then take the
-// dispersive bins, the table is filled from them, and uNFilm is n_b at the sodium D line (the peer's).
-// fromInside swaps the outer and inner media (the far wall seen through the bubble).
+// TFC_DISPERSIVE: the film's or the inside's index depends on λ (medium.glsl); exact and fourier then
+// take the dispersive bins, the table is filled from them, and uNFilm is ñ_b at the sodium D line (the peer's).
+// fromInside swaps the outer and inner media (the far wall seen through the bubble); an opaque
+// inside (TFC_OPAQUE_INSIDE) sends no light that way, so the film's XYZ from inside is 0.
 #ifndef THIN_FILM_COLOR
 #define THIN_FILM_COLOR
 
@@ -14,12 +15,13 @@
 #if TFC_FILM_MODE == TFC_FILM_MODE_EXACT
 #include "binnedIntegration.glsl"
 
-vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
-  float na = fromInside ? uNInside : uNOutside;
-  float nc = fromInside ? uNOutside : uNInside;
+vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
 #ifdef TFC_DISPERSIVE
-  return tfcDispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
+  return tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, 0);
 #else
+  float na;
+  vec2 nc;
+  tfcFilmSides(fromInside, na, nc);
   return tfcBinnedXyz(tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence), 0.0);
 #endif
 }
@@ -28,7 +30,7 @@ vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
 uniform sampler2D uFilmTable;
 uniform float uTableMaxThicknessNm;
 
-vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
+vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
   // Texel centres sit at the ends of the ranges (docs/gpu.md#texel-centres: otherwise visibly off).
   vec2 uv = tfcFilmTableUv(thicknessNm, cosIncidence, uTableMaxThicknessNm);
   // The grid may fill only the texture's lower left corner (a coarse table, FilmTable).
@@ -41,13 +43,14 @@ vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
 #include "airySeries.glsl"
 #include "binnedIntegration.glsl"
 
-vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
-  float na = fromInside ? uNInside : uNOutside;
-  float nc = fromInside ? uNOutside : uNInside;
+vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
 #ifdef TFC_DISPERSIVE
-  // A dispersive film has no series in x alone (docs/physics.md#a-dispersive-film): the bins take it.
-  return tfcDispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, 0);
+  // A dispersive film or inside has no series in x alone (docs/physics.md#a-dispersive-film): the bins take it.
+  return tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, 0);
 #else
+  float na;
+  vec2 nc;
+  tfcFilmSides(fromInside, na, nc);
   FilmOptics o = tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   AirySeriesTerms t[TFC_FILM_CHANNELS];
   tfcAirySeriesTermsOf(o, t);
@@ -62,12 +65,20 @@ vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
 
 // Its Rec.709 reflectance back to XYZ with the chunk's own matrix; the medium behind enters as
 // baseF0 (0 for air: a soap bubble), as MeshPhysicalMaterial would pass it.
-vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
-  float na = fromInside ? uNInside : uNOutside;
-  float nc = fromInside ? uNOutside : uNInside;
-  vec3 baseF0 = vec3(IorToFresnel0(nc, 1.0));
-  return inverse(XYZ_TO_REC709) * evalIridescence(na, uNFilm, cosIncidence, thicknessNm, baseF0);
+vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
+  float na;
+  vec2 nc;
+  tfcFilmSides(fromInside, na, nc);
+  vec3 baseF0 = vec3(IorToFresnel0(nc.x, 1.0));
+  return inverse(XYZ_TO_REC709) * evalIridescence(na, uNFilm.x, cosIncidence, thicknessNm, baseF0);
 }
 #endif
+
+vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {
+#ifdef TFC_OPAQUE_INSIDE
+  if (fromInside) return vec3(0.0);
+#endif
+  return tfcFilmXyzOf(thicknessNm, cosIncidence, fromInside);
+}
 
 #endif

@@ -52,6 +52,13 @@ void main() {
   float thicknessNm = tfcFilmTableThicknessNm(u, uTableMaxThicknessNm);
   float cellNm = tfcFilmTableThicknessSlopeNm(u, uTableMaxThicknessNm) / (uFilmTableWidth - 1.0);
   float cosIncidence = tfcFilmTableCosIncidence(float(row) / (uFilmTableRows - 1.0));
+#ifdef TFC_OPAQUE_INSIDE
+  // No light reaches the film from an opaque inside: the upper half stays black (never looked up).
+  if (fromInside) {
+    gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
+#endif
 #if TFC_TABLE_FILL == TFC_TABLE_FILL_SERIES && !defined(TFC_DISPERSIVE)
   AirySeriesTerms terms[TFC_FILM_CHANNELS];
   float pathPerNm;
@@ -61,16 +68,15 @@ void main() {
     return;
   }
 #endif
-  float na = fromInside ? uNInside : uNOutside;
-  float nc = fromInside ? uNOutside : uNInside;
 #ifdef TFC_DISPERSIVE
-  // At thickness 0 filmOptics decides (the bare interface): the rows hold a film's terms.
-  gl_FragColor = vec4(thicknessNm > 0.0 ? tfcDispersiveBinnedXyz(na, nc, thicknessNm, cosIncidence, texel.y)
-                                        : tfcBinnedXyz(tfcFilmOptics(na, uNFilm, nc, 0.0, cosIncidence), 0.0), 1.0);
+  gl_FragColor = vec4(tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, texel.y), 1.0);
 #else
+  float na;
+  vec2 nc;
+  tfcFilmSides(fromInside, na, nc);
   FilmOptics o = tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
-  // Phase half-width of a cell at λ: 2π · 2 n_b cos θ_r · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).
-  float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : 2.0 * uNFilm * tfcRefractedCos(uNFilm, na, cosIncidence).x;
+  // Phase half-width of a cell at λ: 2π · Re(2 ñ_b cos θ_r) · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).
+  float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : tfcFilmPathPerNm(uNFilm, na, cosIncidence);
   gl_FragColor = vec4(tfcBinnedXyz(o, 3.141592653589793 * perNmPath * cellNm), 1.0);
 #endif
 }

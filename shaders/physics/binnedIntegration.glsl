@@ -20,17 +20,24 @@
 
 uniform sampler2D uSpectralBins;
 
-// extraHalfWidthPerInvNm widens each bin's phase window (in quadrature) by that × (nm / λ):
-// the table pass averages over a cell's thickness range with it.
-// R of one bin: the closed-form mean over its phase window [phase - halfWidth, phase + halfWidth], or
-// R at its centre for an evanescent film (no fringes to average).
+// R of one bin (binReflectance in the TypeScript): the closed-form mean over its phase window
+// [phase - halfWidth, phase + halfWidth] of the real phase, an absorbing film's attenuation
+// a = e^{-Im φ} at the bin's centre folded into t_ab t_ba r_bc and r_ba r_bc; R at its centre for an
+// evanescent film (Re Δ = 0: no fringes to average).
 float tfcBinReflectance(FilmOptics o, float centerNm, float phase, float halfWidth) {
-  if (o.opticalPathNm.y != 0.0) return tfcReflectanceAt(o, centerNm);
+  vec2 path = o.opticalPathNm;
+  if (path.x == 0.0 && path.y != 0.0) return tfcReflectanceAt(o, centerNm);
+  float a = exp(-6.283185307179586 * path.y / centerNm);
   float r = 0.0;
-  for (int i = 0; i < TFC_FILM_CHANNELS; i++) r += tfcMeanChannelReflectance(o.channels[i], phase, halfWidth);
+  for (int i = 0; i < TFC_FILM_CHANNELS; i++) {
+    AiryTerms c = o.channels[i];
+    r += tfcMeanChannelReflectance(AiryTerms(c.rab, a * c.multiple, a * c.roundTrip), phase, halfWidth);
+  }
   return r / float(TFC_FILM_CHANNELS);
 }
 
+// extraHalfWidthPerInvNm widens each bin's phase window (in quadrature) by that × (nm / λ):
+// the table pass averages over a cell's thickness range with it.
 vec3 tfcBinnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
   const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
   vec2 path = o.opticalPathNm;
@@ -47,12 +54,37 @@ vec3 tfcBinnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
 }
 
 #ifdef TFC_DISPERSIVE
-#include "filmIndex.glsl"
+#include "filmMedia.glsl"
+#include "medium.glsl"
 
-// What a dispersive film's bin needs: the optics at n_b of its centre, and Re Δ per nm of
-// thickness at its two ends. Per fragment from the index (dispersiveBinnedXyz), or
-// per table row from float64 terms (filmTable.glsl, which defines TFC_DISPERSIVE_ROWS).
+// What a bin of a film whose media depend on λ needs: the optics at ñ of its centre, and Re Δ per
+// nm of thickness at its two ends. Per fragment from the media's knots, or per table row from
+// float64 terms (filmTable.glsl, which defines TFC_DISPERSIVE_ROWS).
 struct DispersiveBin { FilmOptics optics; float pathPerNmLow; float pathPerNmHigh; };
+
+// The media at λ for light arriving from outside, or from inside (the far wall: the inside is then
+// transparent, and its n the light's n_a): n_a, ñ_b, ñ_c.
+void tfcBinMedia(float lambdaNm, bool fromInside, out float na, out vec2 nb, out vec2 nc) {
+  vec4 m = tfcMediaAt(lambdaNm);
+  na = fromInside ? m.z : uNOutside;
+  nb = m.xy;
+  nc = fromInside ? vec2(uNOutside, 0.0) : m.zw;
+}
+
+float tfcBinPathPerNm(float lambdaNm, bool fromInside, float cosIncidence) {
+  float na;
+  vec2 nb, nc;
+  tfcBinMedia(lambdaNm, fromInside, na, nb, nc);
+  return tfcFilmPathPerNm(nb, na, cosIncidence);
+}
+
+// The optics at a bin's centre from the knots (per fragment; in the table pass the bare interface at d = 0).
+FilmOptics tfcBinOptics(float centerNm, float thicknessNm, bool fromInside, float cosIncidence) {
+  float na;
+  vec2 nb, nc;
+  tfcBinMedia(centerNm, fromInside, na, nb, nc);
+  return tfcFilmOptics(na, nb, nc, thicknessNm, cosIncidence);
+}
 
 #ifdef TFC_DISPERSIVE_ROWS
 uniform sampler2D uDispersiveRows;
@@ -62,7 +94,7 @@ uniform sampler2D uDispersiveRows;
 #if TFC_DISPERSIVE_BIN_TEXELS != TFC_DISPERSIVE_BIN_TEXELS_READ
 #error "the dispersive rows' texels per bin differ from what dispersiveBin reads"
 #endif
-DispersiveBin tfcDispersiveBin(int y, int b, float thicknessNm, float nOutside, float nInside, float cosIncidence) {
+DispersiveBin tfcDispersiveBin(int y, int b, float thicknessNm, bool fromInside, float cosIncidence) {
   vec4 t0 = texelFetch(uDispersiveRows, ivec2(TFC_DISPERSIVE_BIN_TEXELS * b + 0, y), 0);
   vec4 t1 = texelFetch(uDispersiveRows, ivec2(TFC_DISPERSIVE_BIN_TEXELS * b + 1, y), 0);
   vec4 t2 = texelFetch(uDispersiveRows, ivec2(TFC_DISPERSIVE_BIN_TEXELS * b + 2, y), 0);
@@ -73,35 +105,39 @@ DispersiveBin tfcDispersiveBin(int y, int b, float thicknessNm, float nOutside, 
   d.optics.channels[1] = AiryTerms(t1.zw, t2.xy, t2.zw);
 #endif
   d.optics.opticalPathNm = t3.xy * thicknessNm;
+  // The rows hold a film's terms (d > 0); at d = 0 filmOptics decides (the bare interface), as in the reference.
+  if (thicknessNm == 0.0) {
+    const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
+    d.optics = tfcBinOptics(float(TFC_LAMBDA_MIN_NM) + (float(b) + 0.5) * width, 0.0, fromInside, cosIncidence);
+  }
   d.pathPerNmLow = t3.z;
   d.pathPerNmHigh = t3.w;
   return d;
 }
 #else
-DispersiveBin tfcDispersiveBin(int y, int b, float thicknessNm, float nOutside, float nInside, float cosIncidence) {
+DispersiveBin tfcDispersiveBin(int y, int b, float thicknessNm, bool fromInside, float cosIncidence) {
   const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
   float l1 = float(TFC_LAMBDA_MIN_NM) + float(b) * width;
-  float center = l1 + 0.5 * width;
   DispersiveBin d;
-  d.optics = tfcFilmOptics(nOutside, tfcFilmIndexAt(center), nInside, thicknessNm, cosIncidence);
-  d.pathPerNmLow = tfcFilmPathPerNm(l1, nOutside, cosIncidence);
-  d.pathPerNmHigh = tfcFilmPathPerNm(l1 + width, nOutside, cosIncidence);
+  d.optics = tfcBinOptics(l1 + 0.5 * width, thicknessNm, fromInside, cosIncidence);
+  d.pathPerNmLow = tfcBinPathPerNm(l1, fromInside, cosIncidence);
+  d.pathPerNmHigh = tfcBinPathPerNm(l1 + width, fromInside, cosIncidence);
   return d;
 }
 #endif
 
-// The bins of a film whose index depends on λ (mirrors dispersiveBinnedXyz in
-// src/physics/binnedIntegration.ts): each bin's Fresnel terms at n_b of its centre, its phase window
-// from the optical path at its two ends, [2π Δ(λ2)/λ2, 2π Δ(λ1)/λ1]. `row`: the table row of
+// The bins of a film whose media depend on λ (mirrors dispersiveBinnedXyz in
+// src/physics/binnedIntegration.ts): each bin's Fresnel terms at ñ of its centre, its phase window
+// from the optical path at its two ends, [2π Re Δ(λ2)/λ2, 2π Re Δ(λ1)/λ1]. `row`: the table row of
 // TFC_DISPERSIVE_ROWS (unused per fragment).
-vec3 tfcDispersiveBinnedXyz(float nOutside, float nInside, float thicknessNm, float cosIncidence, int row) {
+vec3 tfcDispersiveBinnedXyz(bool fromInside, float thicknessNm, float cosIncidence, int row) {
   const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
   vec3 xyz = vec3(0.0);
   for (int b = TFC_SPECTRAL_BIN_FIRST; b < TFC_SPECTRAL_BIN_END; b++) {
     float l1 = float(TFC_LAMBDA_MIN_NM) + float(b) * width;
     float l2 = l1 + width;
     float center = 0.5 * (l1 + l2);
-    DispersiveBin d = tfcDispersiveBin(row, b, thicknessNm, nOutside, nInside, cosIncidence);
+    DispersiveBin d = tfcDispersiveBin(row, b, thicknessNm, fromInside, cosIncidence);
     float low = d.pathPerNmLow * thicknessNm / l1;
     float high = d.pathPerNmHigh * thicknessNm / l2;
     xyz += tfcBinReflectance(d.optics, center, 3.141592653589793 * (low + high), 3.141592653589793 * (low - high)) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;

@@ -22,4 +22,11 @@ float tfcCAbs2(vec2 a) { return dot(a, a); }
 // e^{i z} = e^{-Im z} (cos Re z + i sin Re z)
 vec2 tfcCExpI(vec2 z) { return exp(-z.y) * vec2(cos(z.x), sin(z.x)); }
 
+// The principal square root (Re >= 0), formed without cancellation.
+vec2 tfcCSqrt(vec2 z) {
+  if (z == vec2(0.0)) return vec2(0.0);
+  float m = sqrt(0.5 * (abs(z.x) + length(z)));
+  return z.x >= 0.0 ? vec2(m, z.y / (2.0 * m)) : vec2(abs(z.y) / (2.0 * m), z.y >= 0.0 ? m : -m);
+}
+
 #endif

@@ -30,7 +30,7 @@ struct AiryTerms { vec2 rab; vec2 multiple; vec2 roundTrip; };
 
 struct FilmOptics {
   AiryTerms channels[TFC_FILM_CHANNELS];
-  // Δ = 2 n_b d cos θ_r (eq 12 reduced), complex past the critical angle
+  // Δ = 2 ñ_b d cos θ_r (eq 12 reduced), complex past the critical angle or in an absorbing film
   vec2 opticalPathNm;
 };
 
@@ -59,21 +59,28 @@ int tfcChannelKind(int i) {
   return polarization == TFC_POLARIZATION_S ? 0 : 1;
 }
 
-FilmOptics tfcFilmOptics(float nOutside, float nFilm, float nInside, float thicknessNm, float cosIncidence) {
+// Re Δ per nm of thickness for light from n_a: Re(2 ñ_b cos θ_r) (eq 12 reduced), 0 for an evanescent film.
+float tfcFilmPathPerNm(vec2 nFilm, float nOutside, float cosIncidence) {
+  return 2.0 * tfcCMul(nFilm, tfcRefractedCos(nFilm, nOutside, cosIncidence)).x;
+}
+
+// The outside is transparent (a real n_a); the film and the inside are ñ = vec2(n, k).
+FilmOptics tfcFilmOptics(float nOutside, vec2 nFilm, vec2 nInside, float thicknessNm, float cosIncidence) {
+  vec2 na = vec2(nOutside, 0.0);
   vec2 cosI = tfcRefractedCos(nOutside, nOutside, cosIncidence);
   vec2 cosR = tfcRefractedCos(nFilm, nOutside, cosIncidence);
   vec2 cosT = tfcRefractedCos(nInside, nOutside, cosIncidence);
   FilmOptics o;
-  o.opticalPathNm = 2.0 * nFilm * thicknessNm * cosR;
-  InterfaceCoefficients ab = tfcFresnelCoefficients(nOutside, cosI, nFilm, cosR);
-  InterfaceCoefficients ba = tfcFresnelCoefficients(nFilm, cosR, nOutside, cosI);
+  o.opticalPathNm = 2.0 * thicknessNm * tfcCMul(nFilm, cosR);
+  InterfaceCoefficients ab = tfcFresnelCoefficients(na, cosI, nFilm, cosR);
+  InterfaceCoefficients ba = tfcFresnelCoefficients(nFilm, cosR, na, cosI);
   InterfaceCoefficients bc = tfcFresnelCoefficients(nFilm, cosR, nInside, cosT);
   for (int i = 0; i < TFC_FILM_CHANNELS; i++) o.channels[i] = tfcAiryTerms(ab, ba, bc, tfcChannelKind(i));
   if (thicknessNm == 0.0) {
     // At d = 0 the physical channels (s, p) are the bare a|c interface, eq (13)'s own value there
     // (the Stokes relations) and its limit at grazing; the paper's channel keeps eq (13). See
     // bareInterface in the TypeScript twin.
-    InterfaceCoefficients ac = tfcFresnelCoefficients(nOutside, cosI, nInside, cosT);
+    InterfaceCoefficients ac = tfcFresnelCoefficients(na, cosI, nInside, cosT);
     for (int i = 0; i < TFC_FILM_CHANNELS; i++) {
       int kind = tfcChannelKind(i);
       if (kind != 2) o.channels[i] = AiryTerms(tfcChannelOf(ac, kind).xy, vec2(0.0), vec2(0.0));

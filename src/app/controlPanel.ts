@@ -1,6 +1,8 @@
 import GUI from 'lil-gui';
 import { message } from '../i18n/messages.ts';
-import { FILM_MATERIALS, type FilmIndex, filmIndexText, readFilmIndex } from '../physics/filmIndex.ts';
+import { FILM_MATERIALS } from '../physics/filmIndex.ts';
+import { type Medium, type MediumRole, mediumExpected, mediumText, readMedium } from '../physics/medium.ts';
+import { NAMED_MEDIA } from '../physics/namedMedia.ts';
 import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS, daylightCctOf } from '../physics/illuminants.ts';
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
@@ -11,12 +13,15 @@ import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.t
 const DAYLIGHT_CCT = 'daylight';
 /** The CCT slider's step. */
 const CCT_STEP_K = 10;
-/** The film index's kinds in the panel: a constant (the slider), a material, or a Cauchy film (a text A,B[,C]). */
+/** A medium's kinds in the panel besides the names: a constant (the slider), a Cauchy film (a text A,B[,C]), a complex constant (a text n,k). */
 const CONSTANT_INDEX = 'constant';
 const CAUCHY_INDEX = 'cauchy';
+const COMPLEX_INDEX = 'complex';
 const INDEX_STEP = 0.01;
 /** The Cauchy text a constant or a material starts with: a glass-like film (n 1.49 at 400 nm, 1.46 at 700 nm). */
 const CAUCHY_START = '1.45,6000';
+/** The complex text the others start with: gold at 548.6 nm (Johnson & Christy), ñ = 0.43 + 2.455i. */
+const COMPLEX_START = '0.43,2.455';
 
 /** A parameter whose panel controls are several: they write their own object, and `join` reads the setting off it. */
 type Joined = () => Partial<ViewSettings>;
@@ -80,33 +85,76 @@ function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<
       return () => ({ [row.key]: pair.name === DAYLIGHT_CCT ? { daylightCct: pair.cct } : (pair.name as IlluminantSpec) });
     }
     case 'filmIndex':
-      return addFilmIndexControls(folder, row, state[row.key] as FilmIndex, cat);
+      return addMediumControls(folder, row, state[row.key] as Medium, cat, FILM_INDEX_KINDS, 'film');
+    case 'medium':
+      return addMediumControls(
+        folder,
+        row,
+        state[row.key] as Medium,
+        cat,
+        control.role === 'film' ? FILM_MEDIUM_KINDS : INSIDE_MEDIUM_KINDS,
+        control.role,
+      );
   }
 }
 
 /**
- * A film index: a list (constant, the materials, cauchy), the constant's slider, and the Cauchy
- * film's A,B[,C] as text. A Cauchy text that is not one, or leaves the index domain, is not taken:
- * the last good index stays (and the text field says why in its title).
+ * The list's kinds: of a film index; of a film medium (the named media too: an oxide, an absorbing
+ * film); of the inside (the named media and a complex constant n,k: a metal). Each text field is
+ * then in one list only. What a list leaves out (a Cauchy inside, a complex film) is still read
+ * from the URL, and the panel keeps it until another kind is chosen.
  */
-function addFilmIndexControls(folder: GUI, row: ParameterRow<ViewSettings>, initial: FilmIndex, cat: Catalogue): Joined {
+const FILM_INDEX_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, CAUCHY_INDEX];
+const FILM_MEDIUM_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, ...NAMED_MEDIA, CAUCHY_INDEX];
+const INSIDE_MEDIUM_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, ...NAMED_MEDIA, COMPLEX_INDEX];
+const TEXT_KINDS: readonly string[] = [CAUCHY_INDEX, COMPLEX_INDEX];
+
+/** The kind of the list a medium is shown as. */
+function mediumKind(m: Medium): string {
+  if (typeof m === 'number') return CONSTANT_INDEX;
+  if (typeof m === 'string') return m;
+  return 'cauchy' in m ? CAUCHY_INDEX : COMPLEX_INDEX;
+}
+
+/**
+ * A medium: a list (constant, the materials, the named media, cauchy, complex: those of `kinds`),
+ * the constant's slider, and the Cauchy film's A,B[,C] and the complex constant's n,k as text. A
+ * text that is not one, or leaves its domain, is not taken: the last good medium stays (and the
+ * text field says why in its title).
+ */
+function addMediumControls(
+  folder: GUI,
+  row: ParameterRow<ViewSettings>,
+  initial: Medium,
+  cat: Catalogue,
+  kinds: readonly string[],
+  role: MediumRole,
+): Joined {
   const { min, max } = FILM_STACK_DOMAIN.nFilm;
+  const kind = mediumKind(initial);
+  const tail = (prefix: string, start: string) => (kind === prefix ? mediumText(initial).slice(`${prefix}:`.length) : start);
   const controls = {
-    kind: typeof initial === 'number' ? CONSTANT_INDEX : typeof initial === 'string' ? initial : CAUCHY_INDEX,
+    kind,
     n: typeof initial === 'number' ? initial : SOAP_FILM_IN_AIR.nFilm,
-    cauchy: typeof initial === 'object' ? filmIndexText(initial).slice(`${CAUCHY_INDEX}:`.length) : CAUCHY_START,
+    [CAUCHY_INDEX]: tail(CAUCHY_INDEX, CAUCHY_START),
+    [COMPLEX_INDEX]: tail(COMPLEX_INDEX, COMPLEX_START),
   };
   let good = initial;
-  folder.add(controls, 'kind', options(cat, row.key, [CONSTANT_INDEX, ...FILM_MATERIALS, CAUCHY_INDEX])).name(cat['panel.filmMaterial']);
+  folder.add(controls, 'kind', options(cat, row.key, kinds)).name(cat[role === 'inside' ? 'panel.insideMedium' : 'panel.filmMaterial']);
   folder.add(controls, 'n', min, max, INDEX_STEP).name(cat[labelKey(row.key)]);
-  const text = folder.add(controls, 'cauchy').name(cat['panel.cauchy']);
+  const texts = TEXT_KINDS.filter((k) => kinds.includes(k)).map((k) => ({
+    kind: k,
+    field: folder.add(controls, k as typeof CAUCHY_INDEX).name(cat[k === CAUCHY_INDEX ? 'panel.cauchy' : 'panel.complex']),
+  }));
   return () => {
+    const text = texts.find((t) => t.kind === controls.kind);
     if (controls.kind === CONSTANT_INDEX) good = controls.n;
-    else if (controls.kind !== CAUCHY_INDEX) good = controls.kind as FilmIndex;
-    else {
-      const reading = readFilmIndex(`${CAUCHY_INDEX}:${controls.cauchy}`);
-      if ('index' in reading) good = reading.index;
-      text.domElement.title = 'problem' in reading ? message(cat, 'panel.notTaken', { problem: reading.problem }) : '';
+    else if (!TEXT_KINDS.includes(controls.kind)) good = controls.kind as Medium;
+    else if (text) {
+      const reading = readMedium(`${text.kind}:${controls[text.kind as typeof CAUCHY_INDEX]}`, role);
+      if ('medium' in reading) good = reading.medium;
+      const problem = 'problem' in reading ? (reading.problem ?? mediumExpected(role)) : null;
+      text.field.domElement.title = problem ? message(cat, 'panel.notTaken', { problem }) : '';
     }
     return { [row.key]: good };
   };

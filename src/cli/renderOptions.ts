@@ -2,6 +2,7 @@ import { parseArgs } from 'node:util';
 import { parameterNamed, readParameter, settingsToQuery } from '../settings/settingsQuery.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 import { parseDecimal, describeValue, isInDomain, ParameterError, rejectValue } from '../physics/validate.ts';
+import { mediumFromJson, mediumText } from '../physics/medium.ts';
 import { parseJsonArray } from './parseJsonArray.ts';
 
 /** One picture to render: the demo at `query`, in a `widthPx` × `heightPx` CSS-pixel window. */
@@ -125,6 +126,13 @@ export function parseRenderCases(text: string, fileName: string, defaults: RawVi
   });
 }
 
+/** A medium written as a cases file's object (`{ "complex": [n, k] }`, `{ "cauchy": [A, B] }`) in the URL's words, or null. */
+function jsonMediumText(value: unknown): string | null {
+  if (typeof value !== 'object' || value === null) return null;
+  const medium = mediumFromJson(value);
+  return medium === null ? null : mediumText(medium);
+}
+
 /** A view from its fields (`field` names one in messages), checked; `needsOut`: a missing out is refused. */
 function readView(fields: RawView, field: (name: string) => string, needsOut: true): RenderView;
 function readView(fields: RawView, field: (name: string) => string, needsOut: false): null;
@@ -133,7 +141,7 @@ function readView(fields: RawView, field: (name: string) => string, needsOut: bo
   for (const row of VIEW_PARAMETERS) {
     if (!fields.has(row.url)) continue;
     const value = fields.get(row.url);
-    const raw = typeof value === 'string' ? value : typeof value === 'number' ? String(value) : null;
+    const raw = typeof value === 'string' ? value : typeof value === 'number' ? String(value) : jsonMediumText(value);
     const reading = raw === null ? null : readParameter(row, raw);
     if (reading === null || !('read' in reading)) {
       return rejectValue(field(row.url), value, reading?.expected ?? `${row.expected}, as a string or a number`);

@@ -1,12 +1,12 @@
 import { FILM_MATERIALS, type FilmIndex } from '../physics/filmIndex.ts';
-import { FILM_STACK_DOMAIN, POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
+import { FILM_STACK_DOMAIN, POLARIZATIONS, type Polarization, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
 import { type NumberDomain, quoted } from '../physics/validate.ts';
 import type { Catalogue, MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 import { FILM_PARAMETERS } from '../settings/filmParameters.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import { type ParameterRow, defaultsOf, numberRow } from '../settings/parameterRow.ts';
+import { type ParameterRow, defaultsOf, filmIndexRow, numberRow } from '../settings/parameterRow.ts';
 
 /** What <thin-film-diagram> shows: one film at one wavelength. */
 export interface DiagramSettings {
@@ -57,9 +57,21 @@ export const DIAGRAM_ROWS: readonly DiagramRow[] = [
     row: numberRow<DiagramSettings, 'wavelengthNm'>({ key: 'wavelengthNm', url: 'wavelength' }, WAVELENGTH_DOMAIN, 550, null),
     accepts: { kind: 'number', domain: WAVELENGTH_DOMAIN },
   },
-  filmRow('nFilm', { kind: 'filmIndex' }),
+  // The diagram's beams are of transparent media: its film and inside take a film index and a real number.
+  {
+    row: filmIndexRow<DiagramSettings, 'nFilm'>({ key: 'nFilm', url: 'nFilm' }, SOAP_FILM_IN_AIR.nFilm, null),
+    accepts: { kind: 'filmIndex' },
+  },
   filmRow('nOutside', { kind: 'number', domain: FILM_STACK_DOMAIN.nOutside }),
-  filmRow('nInside', { kind: 'number', domain: FILM_STACK_DOMAIN.nInside }),
+  {
+    row: numberRow<DiagramSettings, 'nInside'>(
+      { key: 'nInside', url: 'nInside' },
+      FILM_STACK_DOMAIN.nInside,
+      SOAP_FILM_IN_AIR.nInside,
+      null,
+    ),
+    accepts: { kind: 'number', domain: FILM_STACK_DOMAIN.nInside },
+  },
   filmRow('polarization', { kind: 'choice', choices: POLARIZATIONS }),
 ];
 

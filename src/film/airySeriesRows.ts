@@ -1,6 +1,8 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { airySeriesTerms } from '../physics/airySeries.ts';
 import { filmOptics } from '../physics/filmReflectance.ts';
+import { absorbsInBand, mediumStackAt, transparentIndexAt } from '../physics/medium.ts';
+import { SODIUM_D_NM } from './filmMedia.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import { type FilmTableLayout, filmTableCosIncidence } from '../settings/filmTableLayout.ts';
 
@@ -11,20 +13,27 @@ export const AIRY_ROW_TEXELS = 3;
  * The Airy series' C₀, B, q of every row of the film table (they depend on cos θ_i and the
  * indices, not on the thickness), computed in float64 by src/physics for the table pass
  * (shaders/film/filmTable.glsl, `rowSeries`): 3 texels per row, the outside half's rows first, then the
- * inside half's (media swapped). ~1 ms for 256 rows, instead of the Fresnel terms per texel.
+ * inside half's (media swapped; none for an opaque inside, whose half the pass leaves black).
+ * ~1 ms for 256 rows, instead of the Fresnel terms per texel. The media are constant (real or
+ * complex: an absorbing film's complex path is marked as having no series).
  */
 export function airySeriesRows(
-  s: Pick<FilmSettings, 'nOutside' | 'nInside' | 'polarization'> & { readonly nFilm: number },
+  s: Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'>,
   layout: FilmTableLayout,
   data: Float32Array,
 ): void {
-  for (let half = 0; half < 2; half++) {
-    const [nOutside, nInside] = half === 0 ? [s.nOutside, s.nInside] : [s.nInside, s.nOutside];
+  const halves = absorbsInBand(s.nInside) ? 1 : 2;
+  for (let half = 0; half < halves; half++) {
+    // From inside the light comes from the (transparent) inside: its n.
+    const [nOutside, nInside] = half === 0 ? [s.nOutside, s.nInside] : [transparentIndexAt(s.nInside, SODIUM_D_NM), s.nOutside];
     for (let row = 0; row < layout.rows; row++) {
       const cos = filmTableCosIncidence(layout, row);
       const angleDeg = (Math.acos(Math.min(1, cos)) * 180) / Math.PI;
       // Thickness 1 nm: any d > 0 has the same terms, and the path per nm is then Δ itself.
-      const optics = filmOptics({ nOutside, nFilm: s.nFilm, nInside, thicknessNm: 1, angleDeg }, s.polarization);
+      const optics = filmOptics(
+        mediumStackAt({ nOutside, nFilm: s.nFilm, nInside, thicknessNm: 1, angleDeg }, SODIUM_D_NM),
+        s.polarization,
+      );
       const [t0, t1 = t0] = optics.channels.map(airySeriesTerms);
       const path = optics.opticalPathNm;
       data.set(

@@ -1,7 +1,7 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
-import { type FilmIndex, filmIndexAt } from '../physics/filmIndex.ts';
+import { type BinnedStack, pathPerNmAt } from '../physics/binnedIntegration.ts';
 import { type Polarization, filmOptics } from '../physics/filmReflectance.ts';
-import { refractedCos } from '../physics/snell.ts';
+import { type Medium, absorbsInBand, mediumStackAt, transparentIndexAt } from '../physics/medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 import { type FilmTableLayout, filmTableCosIncidence } from '../settings/filmTableLayout.ts';
 
@@ -10,37 +10,37 @@ export const DISPERSIVE_BIN_TEXELS = 4;
 
 interface DispersiveFilm {
   readonly nOutside: number;
-  readonly nFilm: FilmIndex;
-  readonly nInside: number;
+  readonly nFilm: Medium;
+  readonly nInside: Medium;
   readonly polarization: Polarization;
 }
 
 /**
- * What a dispersive film's table pass needs per row (cos θ_i, medium) and spectral bin, none of it
- * depending on the thickness: the Fresnel terms of eq (13) at n_b of the bin's centre (both channels),
- * and the optical path per nm of thickness, 2 n_b(λ) cos θ_r(λ), at the bin's centre (complex) and
- * its two ends — computed in float64 by src/physics for shaders/film/filmTable.glsl (`dispersiveRowXyz`),
- * instead of the Fresnel terms per texel and bin. Texels per (row, bin): [rab, multiple] and
- * [roundTrip, rab] and [multiple, roundTrip] of channels 0 and 1, then [path at the centre (re, im),
- * path at the low end, path at the high end]. The outside half's rows first, then the inside half's.
+ * What the table pass of a film whose media depend on λ needs per row (cos θ_i, medium) and spectral
+ * bin, none of it depending on the thickness: the Fresnel terms of eq (13) at ñ_b, ñ_c of the bin's
+ * centre (both channels), and the optical path per nm of thickness, 2 ñ_b(λ) cos θ_r(λ), at the bin's
+ * centre (complex) and its two ends (real part) — computed in float64 by src/physics for
+ * shaders/film/filmTable.glsl (`dispersiveRowXyz`), instead of the Fresnel terms per texel and bin.
+ * Texels per (row, bin): [rab, multiple] and [roundTrip, rab] and [multiple, roundTrip] of channels 0
+ * and 1, then [path at the centre (re, im), path at the low end, path at the high end]. The outside
+ * half's rows first, then the inside half's (none for an opaque inside, whose half the pass leaves black).
  */
 export function dispersiveRows(s: DispersiveFilm, layout: FilmTableLayout, data: Float32Array): void {
   const bins = layout.spectralBins;
   const width = LAMBDA_SPAN_NM / bins;
-  for (let half = 0; half < 2; half++) {
-    const [nOutside, nInside] = half === 0 ? [s.nOutside, s.nInside] : [s.nInside, s.nOutside];
+  const halves = absorbsInBand(s.nInside) ? 1 : 2;
+  for (let half = 0; half < halves; half++) {
+    const [nOutside, nInside]: [Medium, Medium] = half === 0 ? [s.nOutside, s.nInside] : [s.nInside, s.nOutside];
     for (let row = 0; row < layout.rows; row++) {
       const cos = filmTableCosIncidence(layout, row);
       const angleDeg = (Math.acos(Math.min(1, cos)) * 180) / Math.PI;
-      const pathPerNm = (l: number) => {
-        const nb = filmIndexAt(s.nFilm, l);
-        return 2 * nb * refractedCos(nb, nOutside, cos).re;
-      };
+      const stack: Omit<BinnedStack, 'thicknessNm'> = { nOutside, nFilm: s.nFilm, nInside, angleDeg };
       for (let b = 0; b < bins; b++) {
         const l1 = LAMBDA_MIN_NM + b * width;
         const center = l1 + width / 2;
         // Thickness 1 nm: any d > 0 has the same terms, and the path per nm is then Δ itself.
-        const optics = filmOptics({ nOutside, nFilm: filmIndexAt(s.nFilm, center), nInside, thicknessNm: 1, angleDeg }, s.polarization);
+        const at = { ...stack, nOutside: transparentIndexAt(nOutside, center), thicknessNm: 1 };
+        const optics = filmOptics(mediumStackAt(at, center), s.polarization);
         const [c0, c1 = c0] = optics.channels;
         const p = optics.opticalPathNm;
         data.set(
@@ -48,8 +48,8 @@ export function dispersiveRows(s: DispersiveFilm, layout: FilmTableLayout, data:
             ...[c0!.rab, c0!.multiple, c0!.roundTrip, c1!.rab, c1!.multiple, c1!.roundTrip].flatMap((z) => [z.re, z.im]),
             p.re,
             p.im,
-            pathPerNm(l1),
-            pathPerNm(l1 + width),
+            pathPerNmAt(stack, l1),
+            pathPerNmAt(stack, l1 + width),
           ],
           4 * DISPERSIVE_BIN_TEXELS * ((half * layout.rows + row) * bins + b),
         );

@@ -4,8 +4,7 @@ import { type Matrix3 as Rows3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConve
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
 import { FILM_METHODS, type FilmSettings } from '../settings/filmSettings.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
-import { filmIndexDefines } from './filmIndexUniforms.ts';
-import { type FilmMedia, filmMediaUniforms, updateFilmMediaUniforms } from './filmMedia.ts';
+import { type FilmMedia, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from './filmMedia.ts';
 import { filmTableLayoutDefines } from './filmTableDefines.ts';
 import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
@@ -18,7 +17,13 @@ import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } f
 
 export const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
-export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm'>;
+export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm' | 'nInside'>;
+
+/** TFC_OPAQUE_INSIDE alone, for the methods that read no knots (the table's lookup, three's iridescence). */
+const opaqueInsideDefine = (s: FilmColorSettings): Record<string, number> => {
+  const { TFC_OPAQUE_INSIDE } = filmMediaDefines(s);
+  return TFC_OPAQUE_INSIDE === undefined ? {} : { TFC_OPAQUE_INSIDE };
+};
 
 /**
  * The defines shaders/film/filmColor.glsl needs: the method and polarisation in use, and only the
@@ -30,20 +35,20 @@ export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<s
   if (s.mode === 'exact')
     return {
       ...method,
-      ...spectralBinDefines(spectralBinsFor(s.nFilm, q, q.exactSpectralBins), q.spectralTailTolerance),
-      ...filmIndexDefines(s.nFilm),
+      ...spectralBinDefines(spectralBinsFor(s, q, q.exactSpectralBins), q.spectralTailTolerance),
+      ...filmMediaDefines(s),
     };
   // The lookup does not depend on the polarisation (the table pass does), so changing it compiles no bubble.
-  if (s.mode === 'table') return { ...filmMode, ...filmTableLayoutDefines(q.table) };
+  if (s.mode === 'table') return { ...filmMode, ...filmTableLayoutDefines(q.table), ...opaqueInsideDefine(s) };
   // The series, and the binned integral for evanescent films (which have no real optical path).
   if (s.mode === 'fourier')
     return {
       ...method,
       ...airySeriesDefines(q.airySeriesMaxOrders),
-      ...spectralBinDefines(spectralBinsFor(s.nFilm, q, q.exactSpectralBins), q.spectralTailTolerance),
-      ...filmIndexDefines(s.nFilm),
+      ...spectralBinDefines(spectralBinsFor(s, q, q.exactSpectralBins), q.spectralTailTolerance),
+      ...filmMediaDefines(s),
     };
-  return method;
+  return { ...method, ...opaqueInsideDefine(s) };
 }
 
 /**
@@ -58,8 +63,7 @@ function updateFilmColorTextures(
 ): void {
   const u = m.uniforms;
   const binned = s.mode === 'exact' || s.mode === 'fourier';
-  if (binned)
-    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s.nFilm, q, q.exactSpectralBins), m);
+  if (binned) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s, q, q.exactSpectralBins), m);
   else {
     releaseSpectralBinsTexture(m);
     u.uSpectralBins!.value = null;

@@ -1,23 +1,57 @@
+import { asComplex } from '../physics/complex.ts';
+import { type Medium, absorbsInBand, isDispersiveMedium, mediumIndexAt } from '../physics/medium.ts';
+import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import { filmIndexUniforms, updateFilmIndexUniforms } from './filmIndexUniforms.ts';
 
 /** The three media of the film: outside (a), the film (b), inside (c). */
 export type FilmMedia = Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside'>;
 
+/** The spacing of shaders/physics/medium.glsl's knots: linear between them, n_b is within 3e-6 of water's (docs/physics.md#a-dispersive-film). */
+const STEP_NM = 5;
+const KNOTS = LAMBDA_SPAN_NM / STEP_NM + 1;
+
+/** The sodium D line: the wavelength of the one index that consumers without dispersion take (uNFilm; three.js's iridescence). */
+export const SODIUM_D_NM = 589.29;
+
+/** Whether the film's or the inside's index depends on λ: the shaders then take both per spectral bin. */
+export const isDispersiveFilm = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): boolean =>
+  isDispersiveMedium(s.nFilm) || isDispersiveMedium(s.nInside);
+
 /**
- * The media's uniforms, declared once in GLSL by shaders/film/filmMedia.glsl (and the film's
- * knots by filmIndex.glsl): every film-colour shader (the bubble, the table pass, the material,
- * the parity probe) takes them from here.
+ * The defines of a film-colour shader for these media: TFC_DISPERSIVE and its knots where the film
+ * or the inside depends on λ, TFC_OPAQUE_INSIDE where the inside absorbs (no light from inside).
+ */
+export const filmMediaDefines = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): Record<string, number> => ({
+  ...(isDispersiveFilm(s)
+    ? { TFC_DISPERSIVE: 1, TFC_MEDIA_KNOTS: KNOTS, TFC_MEDIA_FIRST_NM: LAMBDA_MIN_NM, TFC_MEDIA_STEP_NM: STEP_NM }
+    : {}),
+  ...(absorbsInBand(s.nInside) ? { TFC_OPAQUE_INSIDE: 1 } : {}),
+});
+
+/**
+ * The media's uniforms, declared once in GLSL by shaders/film/filmMedia.glsl (and the knots by
+ * medium.glsl): every film-colour shader (the bubble, the table pass, the material, the parity
+ * probe) takes them from here. ñ as [n, k].
  */
 export const filmMediaUniforms = () => ({
   uNOutside: { value: 1 },
-  ...filmIndexUniforms(),
-  uNInside: { value: 1 },
+  uNFilm: { value: [1.33, 0] },
+  uNInside: { value: [1, 0] },
+  uMediaKnots: { value: new Float32Array(4 * KNOTS) },
 });
 
-/** Sets the media's uniforms to `s`. */
+const nk = (m: Medium, lambdaNm: number): [number, number] => {
+  const z = asComplex(mediumIndexAt(m, lambdaNm));
+  return [z.re, z.im];
+};
+
+/** Sets them to `s`: ñ_b and ñ_c at the D line where they vary, and every STEP_NM in the knots (mediumIndexAt in float64). */
 export function updateFilmMediaUniforms(u: Record<string, { value: unknown }>, s: FilmMedia): void {
   u.uNOutside!.value = s.nOutside;
-  updateFilmIndexUniforms(u, s.nFilm);
-  u.uNInside!.value = s.nInside;
+  u.uNFilm!.value = nk(s.nFilm, SODIUM_D_NM);
+  u.uNInside!.value = nk(s.nInside, SODIUM_D_NM);
+  if (!isDispersiveFilm(s)) return;
+  const knots = u.uMediaKnots!.value as Float32Array;
+  for (let i = 0; i < KNOTS; i++)
+    knots.set([...nk(s.nFilm, LAMBDA_MIN_NM + i * STEP_NM), ...nk(s.nInside, LAMBDA_MIN_NM + i * STEP_NM)], 4 * i);
 }

@@ -8,11 +8,9 @@ import {
   type WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
-import { type FilmIndex, isDispersive } from '../physics/filmIndex.ts';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { dispersiveRows, dispersiveRowsTexture } from './dispersiveRows.ts';
-import { filmIndexDefines } from './filmIndexUniforms.ts';
-import { filmMediaUniforms, updateFilmMediaUniforms } from './filmMedia.ts';
+import { type FilmMedia, filmMediaDefines, filmMediaUniforms, isDispersiveFilm, updateFilmMediaUniforms } from './filmMedia.ts';
 import { enumCode, enumConstants } from '../gpu/enumDefines.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
@@ -47,7 +45,7 @@ export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['
   return precision === 'auto' && e.has('EXT_color_buffer_float') && e.has('OES_texture_float_linear') ? FloatType : HalfFloatType;
 }
 
-const passKind = (s: FilmSettings): PassKind => (isDispersive(s.nFilm) ? 'dispersive' : 'constant');
+const passKind = (s: FilmSettings): PassKind => (isDispersiveFilm(s) ? 'dispersive' : 'constant');
 
 interface Grid {
   readonly width: number;
@@ -225,8 +223,8 @@ export class FilmTable {
     target.scissor.set(from, 0, to - from, 2 * grid.rows);
     target.scissorTest = true;
     this.maxThicknessNm = maxFieldThicknessNm(s);
-    const bins = spectralBinsFor(s.nFilm, this.quality, this.quality.table.spectralBins);
-    const material = this.material(s.nFilm, bins);
+    const bins = spectralBinsFor(s, this.quality, this.quality.table.spectralBins);
+    const material = this.material(s, bins);
     const u = material.uniforms;
     u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, bins, this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
@@ -263,7 +261,7 @@ export class FilmTable {
     if (rowsFor === this.rowsFor) return;
     this.rowsFor = rowsFor;
     const rowLayout = { ...this.quality.table, rows: grid.rows, spectralBins: bins };
-    const dispersive = typeof s.nFilm !== 'number';
+    const dispersive = isDispersiveFilm(s);
     if (this.rows.dispersive !== dispersive) {
       this.rows.texture.dispose();
       const texture = dispersive
@@ -272,8 +270,8 @@ export class FilmTable {
       this.rows = { texture, dispersive };
     }
     const data = this.rows.texture.image.data as Float32Array;
-    if (typeof s.nFilm === 'number') airySeriesRows({ ...s, nFilm: s.nFilm }, rowLayout, data);
-    else dispersiveRows(s, rowLayout, data);
+    if (dispersive) dispersiveRows(s, rowLayout, data);
+    else airySeriesRows(s, rowLayout, data);
     this.rows.texture.needsUpdate = true;
   }
 
@@ -283,10 +281,10 @@ export class FilmTable {
    * this thread (the series' transform is an FFT): before a first frame, the two overlap.
    */
   async prepare(renderer: WebGLRenderer, s: FilmSettings): Promise<void> {
-    const bins = spectralBinsFor(s.nFilm, this.quality, this.quality.table.spectralBins);
+    const bins = spectralBinsFor(s, this.quality, this.quality.table.spectralBins);
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(this.coarseTarget); // three picks a program by its target (no tone mapping into a texture)
-    const compiled = this.fullscreen.compileAsync(renderer, this.material(s.nFilm, bins));
+    const compiled = this.fullscreen.compileAsync(renderer, this.material(s, bins));
     renderer.setRenderTarget(previous);
     spectralBinsTexture(s.illuminant, s.normalization, bins, this);
     spectralTransformTexture(s.illuminant, s.normalization, this);
@@ -310,9 +308,9 @@ export class FilmTable {
     this.rowsFor = ''; // its row terms too, with the rest of the table
   }
 
-  private material(index: FilmIndex, bins: number): ShaderMaterial {
+  private material(media: Pick<FilmMedia, 'nFilm' | 'nInside'>, bins: number): ShaderMaterial {
     setDefines(this.pass, {
-      ...filmIndexDefines(index),
+      ...filmMediaDefines(media),
       TFC_POLARIZATION_UNIFORM: 1,
       ...enumConstants('TFC_POLARIZATION', POLARIZATIONS),
       ...spectralBinDefines(bins, this.quality.spectralTailTolerance),

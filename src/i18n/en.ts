@@ -81,6 +81,9 @@ export const EN = {
   'choice.nFilm.constant': 'constant',
   'choice.nFilm.water': 'water',
   'choice.nFilm.cauchy': 'cauchy',
+  'choice.nInside.constant': 'constant',
+  'choice.nInside.water': 'water',
+  'choice.nInside.complex': 'complex',
   'unit.': '',
   'unit.nm': ' nm',
   'unit.degrees': ' degrees',
@@ -92,6 +95,8 @@ export const EN = {
   'expected.illuminant': 'one of {names} or a daylight CCT in [{min}, {max}] K',
   'expected.filmIndex':
     'a number in [{min}, {max}], {materials}, or cauchy:A,B[,C] (n = A + B/λ² + C/λ⁴, λ in nm) within [{min}, {max}] over {from}–{to} nm',
+  'expected.medium':
+    'a number in [{min}, {max}], {materials}, cauchy:A,B[,C], {names} or complex:n,k (n in [{nMin}, {nMax}], k in [{kMin}, {kMax}])',
   'expected.probe': 'x,y with both in [0, 1] (fractions of the view from the top left)',
   'expected.tooLong': '{expected} of at most {max} characters',
   'refusal.ignored': '{name}={value} ignored: expected {expected}',
@@ -103,10 +108,12 @@ export const EN = {
   'panel.daylightCct': 'daylight CCT (K)',
   'panel.filmMaterial': 'film material',
   'panel.cauchy': 'Cauchy A,B[,C] (λ in nm)',
+  'panel.insideMedium': 'inside medium',
+  'panel.complex': 'complex n,k (ñ = n + ik)',
   'panel.notTaken': 'not taken: {problem}',
   'app.title': 'thin-film-color — a soap bubble from the spectral thin-film integral',
   'app.fourierAsTable':
-    'mode=fourier has no Airy series for a dispersive film (nFilm={nFilm}): drawing with mode=table, filled from the same spectral bins.',
+    'mode=fourier has no Airy series where the film or the inside is dispersive ({name}={medium}): drawing with mode=table, filled from the same spectral bins.',
   'app.heading': 'thin-film interference: a soap bubble',
   'app.noDisplayP3': 'This browser has no Display P3 canvas: showing sRGB.',
   'app.environmentLoading': 'Loading the environment {env}…',

@@ -81,6 +81,9 @@ export const JA: Catalogue = {
   'choice.nFilm.constant': '一定',
   'choice.nFilm.water': '水',
   'choice.nFilm.cauchy': 'コーシーの式',
+  'choice.nInside.constant': '一定',
+  'choice.nInside.water': '水',
+  'choice.nInside.complex': '複素屈折率',
   'unit.': '',
   'unit.nm': ' nm',
   'unit.degrees': '°',
@@ -92,6 +95,8 @@ export const JA: Catalogue = {
   'expected.illuminant': '{names} のいずれか、または [{min}, {max}] K の昼光の相関色温度',
   'expected.filmIndex':
     '[{min}, {max}] の数値、{materials}、または {from}–{to} nm で [{min}, {max}] に収まるコーシーの式 cauchy:A,B[,C]（n = A + B/λ² + C/λ⁴、λ は nm）',
+  'expected.medium':
+    '[{min}, {max}] の数値、{materials}、cauchy:A,B[,C]、{names}、または complex:n,k（n は [{nMin}, {nMax}]、k は [{kMin}, {kMax}]）',
   'expected.probe': 'x,y（どちらも [0, 1]、画面の左上からの割合）',
   'expected.tooLong': '{max} 文字以内の{expected}',
   'refusal.ignored': '{name}={value} は使えない（無視した）：{expected}を指定すること。',
@@ -103,10 +108,12 @@ export const JA: Catalogue = {
   'panel.daylightCct': '昼光の相関色温度 (K)',
   'panel.filmMaterial': '薄膜の物質',
   'panel.cauchy': 'コーシーの式 A,B[,C]（λ は nm）',
+  'panel.insideMedium': '内側の媒質',
+  'panel.complex': '複素屈折率 n,k（ñ = n + ik）',
   'panel.notTaken': '採用しない：屈折率が範囲外か、数値でない',
   'app.title': '分光積分で求めた薄膜干渉の色のシャボン玉',
   'app.fourierAsTable':
-    '分散のある薄膜（屈折率 {nFilm}）にはエアリー級数がないため、計算方法「フーリエ級数」の代わりに「表」で描いている（表は同じスペクトルのビンから作る）。',
+    '分散のある薄膜または内側の媒質（{name} = {medium}）にはエアリー級数がないため、計算方法「フーリエ級数」の代わりに「表」で描いている（表は同じスペクトルのビンから作る）。',
   'app.heading': '薄膜干渉：シャボン玉',
   'app.noDisplayP3': 'このブラウザには P3 のキャンバスがないため、sRGB で表示している。',
   'app.environmentLoading': '環境 {env} を読み込み中…',

@@ -5,6 +5,7 @@
  */
 export { isSpectralIridescence, spectralIridescence, useSpectralIridescence } from '../material/spectralIridescence.ts';
 export {
+  type BaseInput,
   type FilmMode,
   type SpectralIridescenceOptions,
   type SpectralIridescenceProperties,
@@ -13,4 +14,5 @@ export { ThinFilmMaterial, type ThinFilmMaterialParameters } from '../material/t
 export { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions } from '../settings/filmQuality.ts';
 export type { FilmTableLayout } from '../settings/filmTableLayout.ts';
 export type { IlluminantSpec } from '../physics/illuminants.ts';
+export type { Medium } from '../physics/medium.ts';
 export { ParameterError } from '../physics/validate.ts';

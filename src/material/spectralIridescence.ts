@@ -96,7 +96,7 @@ const clampWarningOnce =
 function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit: Limit): FilmSettings {
   const d = FILM_STACK_DOMAIN;
   const nFilm = limit('iridescenceIOR', m.iridescenceIOR, d.nFilm);
-  const nInside = limit('ior', m.ior, d.nInside);
+  const nInside = o.base ?? limit('ior', m.ior, d.nInside);
   const minNm = limit('iridescenceThicknessMinimum', m.iridescenceThicknessMinimum, d.thicknessNm);
   const maxNm = limit('iridescenceThicknessMaximum', m.iridescenceThicknessMaximum, d.thicknessNm);
   return { ...DEFAULT_SETTINGS, ...o, field: 'uniform', thicknessNm: Math.max(minNm, maxNm), nOutside: 1, nFilm, nInside };
@@ -124,8 +124,9 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
 }
 
 /** The GLSL defines of the film (filmColor.glsl's, for the mode). */
-// The material's film index is three's iridescenceIOR, one number: a constant film's defines.
-const definesOf = (o: CheckedOptions) => filmColorDefines({ ...o, nFilm: DEFAULT_SETTINGS.nFilm }, o.quality);
+// The film's index is three's iridescenceIOR, a number; the base is `base` (a medium) or three's ior, a number.
+const definesOf = (o: CheckedOptions) =>
+  filmColorDefines({ ...o, nFilm: DEFAULT_SETTINGS.nFilm, nInside: o.base ?? DEFAULT_SETTINGS.nInside }, o.quality);
 
 /** Gives the film new options; a new program only if the defines differ (the old one freed, as setDefines does). */
 function setOptions(m: MeshPhysicalMaterial, film: SpectralFilm, options: CheckedOptions): void {

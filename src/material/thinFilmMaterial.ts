@@ -1,10 +1,11 @@
 import { type Material, MeshPhysicalMaterial, type MeshPhysicalMaterialParameters } from 'three';
 import { type Polarization } from '../physics/filmReflectance.ts';
+import { type Medium } from '../physics/medium.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
 import { type FilmQuality, type FilmQualityOptions } from '../settings/filmQuality.ts';
 import { copySpectralFilm, setSpectralOption, spectralIridescence, spectralOption } from './spectralIridescence.ts';
-import { type FilmMode, type SpectralIridescenceOptions, splitFilmOptions } from './spectralIridescenceOptions.ts';
+import { type BaseInput, type FilmMode, type SpectralIridescenceOptions, splitFilmOptions } from './spectralIridescenceOptions.ts';
 
 /** A physical material's parameters and the film's options, in one object. */
 export type ThinFilmMaterialParameters = MeshPhysicalMaterialParameters & SpectralIridescenceOptions;
@@ -47,6 +48,13 @@ export class ThinFilmMaterial extends MeshPhysicalMaterial {
   }
   set normalization(value: Normalization) {
     setSpectralOption(this, 'normalization', value);
+  }
+  get base(): Medium | null {
+    return spectralOption(this, 'base');
+  }
+  /** a medium or its text (`'Ti'`, `'complex:2.6,3.4'`), or null for three's `ior` */
+  set base(value: BaseInput | null) {
+    setSpectralOption(this, 'base', value);
   }
   get quality(): FilmQuality {
     return spectralOption(this, 'quality');

@@ -1,5 +1,13 @@
-import { type DispersiveFilmStack, filmIndexAt, stackAt } from './filmIndex.ts';
-import { type FilmOptics, type Polarization, filmOptics, meanChannelReflectance, reflectanceAt } from './filmReflectance.ts';
+import { cScale, cTimesIndex } from './complex.ts';
+import {
+  type AiryTerms,
+  type FilmOptics,
+  type Polarization,
+  filmOptics,
+  meanChannelReflectance,
+  reflectanceAt,
+} from './filmReflectance.ts';
+import { type Medium, type MediumStack, isDispersiveMedium, mediumIndexAt, mediumStackAt, transparentIndexAt } from './medium.ts';
 import { cosDeg, refractedCos } from './snell.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type SpectralWeights, type Xyz } from './spectralWeights.ts';
 
@@ -78,9 +86,28 @@ interface BinFilm {
 }
 
 /**
- * X = Σ W_bin R̄_bin: R̄ the closed-form mean over the bin's phase window [2πΔ(λ2)/λ2, 2πΔ(λ1)/λ1]
- * widened in quadrature by the extra half-width, or R at the centre for an evanescent film.
+ * A channel at a bin's centre λ with the film's absorption folded in: an absorbing film's phase
+ * φ = 2πΔ/λ has Im φ > 0, so e^{iφ} = a e^{i Re φ} with a = e^{−Im φ}, and eq (13) reads the same
+ * with t_ab t_ba r_bc and r_ba r_bc scaled by a (docs/physics.md#absorbing-media). a is taken at the
+ * centre; over a bin it changes by a fraction of Im φ's change, and the closed-form mean covers Re φ.
  */
+const attenuated = (c: AiryTerms, a: number): AiryTerms => ({ ...c, multiple: cScale(c.multiple, a), roundTrip: cScale(c.roundTrip, a) });
+
+/**
+ * R̄ of one bin: the closed-form mean over its phase window [center − half, center + half] of the
+ * real phase, the film's absorption at the bin's centre folded in (`attenuated`); R at the centre
+ * for an evanescent film (a real film past the critical angle: Re Δ = 0, no fringes to average).
+ */
+export function binReflectance(optics: FilmOptics, centerNm: number, phaseCenter: number, halfWidth: number): number {
+  const path = optics.opticalPathNm;
+  if (path.re === 0 && path.im !== 0) return reflectanceAt(optics, centerNm);
+  const a = path.im === 0 ? 1 : Math.exp((-2 * Math.PI * path.im) / centerNm);
+  let r = 0;
+  for (const c of optics.channels) r += meanChannelReflectance(a === 1 ? c : attenuated(c, a), phaseCenter, halfWidth);
+  return r / optics.channels.length;
+}
+
+/** X = Σ W_bin R̄_bin (binReflectance), each bin's phase window widened in quadrature by its extra half-width. */
 function binsXyz(bins: SpectralBins, binFilm: (l1: number, l2: number) => BinFilm): Xyz {
   const width = LAMBDA_SPAN_NM / bins.count;
   const xyz = [0, 0, 0];
@@ -88,16 +115,9 @@ function binsXyz(bins: SpectralBins, binFilm: (l1: number, l2: number) => BinFil
     const l1 = LAMBDA_MIN_NM + b * width;
     const l2 = l1 + width;
     const { optics, pathLowNm, pathHighNm, extraHalfWidth } = binFilm(l1, l2);
-    let r = 0;
-    if (optics.opticalPathNm.im !== 0) {
-      r = reflectanceAt(optics, (l1 + l2) / 2); // evanescent film: no fringes to average
-    } else {
-      const center = Math.PI * (pathLowNm / l1 + pathHighNm / l2);
-      const binHalf = Math.PI * (pathLowNm / l1 - pathHighNm / l2);
-      const half = Math.hypot(binHalf, extraHalfWidth);
-      for (const c of optics.channels) r += meanChannelReflectance(c, center, half);
-      r /= optics.channels.length;
-    }
+    const center = Math.PI * (pathLowNm / l1 + pathHighNm / l2);
+    const binHalf = Math.PI * (pathLowNm / l1 - pathHighNm / l2);
+    const r = binReflectance(optics, (l1 + l2) / 2, center, Math.hypot(binHalf, extraHalfWidth));
     for (let k = 0; k < 3; k++) xyz[k] = (xyz[k] as number) + r * (bins.weights[3 * b + k] as number);
   }
   return [xyz[0] as number, xyz[1] as number, xyz[2] as number];
@@ -119,29 +139,44 @@ export function binnedXyz(optics: FilmOptics, bins: SpectralBins, extraHalfWidth
 }
 
 /**
- * XYZ by bins of a film whose index depends on λ (shaders/physics/binnedIntegration.glsl, dispersiveBinnedXyz):
- * each bin's Fresnel terms at n_b of its centre, its phase window from the optical path at its two
- * ends, 2π Δ(λ)/λ with Δ(λ) = 2 n_b(λ) d cos θ_r(λ).
+ * A stack as the bins take it: like MediumStack, but the light may arrive from a transparent medium
+ * whose index depends on λ (the far wall seen from inside a glass sphere): its n at each λ.
  */
-export function dispersiveBinnedXyz(stack: DispersiveFilmStack, polarization: Polarization, bins: SpectralBins): Xyz {
-  const cos = cosDeg(stack.angleDeg);
-  const pathPerNm = (l: number) => {
-    const nb = filmIndexAt(stack.nFilm, l);
-    return 2 * nb * refractedCos(nb, stack.nOutside, cos).re;
-  };
-  return binsXyz(bins, (l1, l2) => {
-    const center = (l1 + l2) / 2;
-    return {
-      optics: filmOptics(stackAt(stack, center), polarization),
-      pathLowNm: pathPerNm(l1) * stack.thicknessNm,
-      pathHighNm: pathPerNm(l2) * stack.thicknessNm,
-      extraHalfWidth: 0,
-    };
-  });
+export interface BinnedStack extends Omit<MediumStack, 'nOutside'> {
+  readonly nOutside: Medium;
 }
 
-/** XYZ by bins of any film: binnedXyz of its optics for a constant index, dispersiveBinnedXyz otherwise. */
-export const stackBinnedXyz = (stack: DispersiveFilmStack, polarization: Polarization, bins: SpectralBins): Xyz =>
-  typeof stack.nFilm === 'number'
-    ? binnedXyz(filmOptics({ ...stack, nFilm: stack.nFilm }, polarization), bins)
-    : dispersiveBinnedXyz(stack, polarization, bins);
+/** The stack at λ. */
+const binnedStackAt = (stack: BinnedStack, lambdaNm: number) =>
+  mediumStackAt({ ...stack, nOutside: transparentIndexAt(stack.nOutside, lambdaNm) }, lambdaNm);
+
+/** Re Δ per nm of thickness at λ: Re(2 ñ_b cos θ_r), eq (12) reduced (filmOptics' Δ of a 1 nm film). */
+export function pathPerNmAt(stack: Omit<BinnedStack, 'thicknessNm'>, lambdaNm: number): number {
+  const nb = mediumIndexAt(stack.nFilm, lambdaNm);
+  const na = transparentIndexAt(stack.nOutside, lambdaNm);
+  return 2 * cTimesIndex(refractedCos(nb, na, cosDeg(stack.angleDeg)), nb).re;
+}
+
+/**
+ * XYZ by bins of a film whose media depend on λ (shaders/physics/binnedIntegration.glsl, dispersiveBinnedXyz):
+ * each bin's Fresnel terms at ñ of its centre, its phase window from the optical path at its two
+ * ends, 2π Re Δ(λ)/λ with Δ(λ) = 2 ñ_b(λ) d cos θ_r(λ), the film's absorption as binReflectance folds it.
+ */
+export function dispersiveBinnedXyz(stack: BinnedStack, polarization: Polarization, bins: SpectralBins): Xyz {
+  return binsXyz(bins, (l1, l2) => ({
+    optics: filmOptics(binnedStackAt(stack, (l1 + l2) / 2), polarization),
+    pathLowNm: pathPerNmAt(stack, l1) * stack.thicknessNm,
+    pathHighNm: pathPerNmAt(stack, l2) * stack.thicknessNm,
+    extraHalfWidth: 0,
+  }));
+}
+
+/** Whether a stack's bins need ñ per bin (a medium that depends on λ), not one set of optics. */
+export const isDispersiveStack = (stack: Pick<BinnedStack, 'nOutside' | 'nFilm' | 'nInside'>): boolean =>
+  [stack.nOutside, stack.nFilm, stack.nInside].some(isDispersiveMedium);
+
+/** XYZ by bins of any film: binnedXyz of its optics for constant media (real or complex), dispersiveBinnedXyz otherwise. */
+export const stackBinnedXyz = (stack: BinnedStack, polarization: Polarization, bins: SpectralBins): Xyz =>
+  isDispersiveStack(stack)
+    ? dispersiveBinnedXyz(stack, polarization, bins)
+    : binnedXyz(filmOptics(binnedStackAt(stack, LAMBDA_MIN_NM), polarization), bins);

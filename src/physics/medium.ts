@@ -1,5 +1,6 @@
-import { type RefractiveIndex, realIndex } from './complex.ts';
+import { type RefractiveIndex, asComplex, realIndex } from './complex.ts';
 import {
+  DISPERSION_CHECK_NM,
   type DispersiveFilmStack,
   FILM_INDEX_EXPECTED,
   type FilmIndex,
@@ -46,8 +47,26 @@ export function mediumIndexAt(m: Medium, lambdaNm: number): RefractiveIndex {
   return filmIndexAt(m, lambdaNm);
 }
 
+/** n at λ of a medium used where light arrives from it (transparent there: its k is 0). */
+export const transparentIndexAt = (m: Medium, lambdaNm: number): number => asComplex(mediumIndexAt(m, lambdaNm)).re;
+
 /** Whether ñ depends on λ. */
 export const isDispersiveMedium = (m: Medium): boolean => isNamedMedium(m) || (!isComplexConstant(m) && isDispersive(m));
+
+/** Where `absorbsInBand` looks at k: every 5 nm of the colour band. */
+const ABSORPTION_CHECK_STEP_NM = 5;
+
+/**
+ * Whether the medium absorbs (k > 0) anywhere in the colour band (DISPERSION_CHECK_NM, every 5 nm):
+ * as an inside it is then opaque, T = 0 (docs/physics.md#absorbing-media).
+ */
+export function absorbsInBand(m: Medium): boolean {
+  if (isComplexConstant(m)) return m.complex[1] > 0;
+  if (!isNamedMedium(m)) return false;
+  for (let l = DISPERSION_CHECK_NM.min; l <= DISPERSION_CHECK_NM.max; l += ABSORPTION_CHECK_STEP_NM)
+    if (NAMED_MEDIUM_INDEX[m].indexAt(l).im > 0) return true;
+  return false;
+}
 
 /** Where the medium's source gives values (null: at every λ). */
 export const mediumRangeNm = (m: Medium): { readonly min: number; readonly max: number } | null =>

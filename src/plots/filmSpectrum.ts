@@ -1,6 +1,7 @@
-import { type DispersiveFilmStack, filmIndexAt, isDispersive, stackAt } from '../physics/filmIndex.ts';
+import { asComplex } from '../physics/complex.ts';
 import { type Polarization, filmOptics, reflectanceAt } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantSpd } from '../physics/illuminants.ts';
+import { type MediumStack, isDispersiveMedium, mediumIndexAt, mediumStackAt } from '../physics/medium.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
 
 /** The spectra behind a film's colour, sampled over the integration range (eqs 15–18's integrand). */
@@ -12,16 +13,16 @@ export interface FilmSpectrum {
   readonly incident: Float64Array;
   /** I_out(λ) = R(λ)·I_in(λ), on the same scale as `incident`. */
   readonly reflected: Float64Array;
-  /** n_b(λ) of a dispersive film; null when the index is the same at every wavelength. */
+  /** n_b(λ) (Re ñ_b) of a dispersive film; null when the film's index is the same at every wavelength. */
   readonly filmIndex: Float64Array | null;
 }
 
 /** Samples R, I_in and I_out every `stepNm` from 380 to 830 nm. */
-export function filmSpectrum(stack: DispersiveFilmStack, illuminant: IlluminantSpec, polarization: Polarization, stepNm = 1): FilmSpectrum {
+export function filmSpectrum(stack: MediumStack, illuminant: IlluminantSpec, polarization: Polarization, stepNm = 1): FilmSpectrum {
   const count = Math.floor((LAMBDA_MAX_NM - LAMBDA_MIN_NM) / stepNm) + 1;
-  const dispersive = isDispersive(stack.nFilm);
-  const constantOptics = dispersive ? null : filmOptics(stackAt(stack, LAMBDA_MIN_NM), polarization);
-  const filmIndex = dispersive ? new Float64Array(count) : null;
+  const dispersive = isDispersiveMedium(stack.nFilm) || isDispersiveMedium(stack.nInside);
+  const constantOptics = dispersive ? null : filmOptics(mediumStackAt(stack, LAMBDA_MIN_NM), polarization);
+  const filmIndex = isDispersiveMedium(stack.nFilm) ? new Float64Array(count) : null;
   const spd = illuminantSpd(illuminant);
   const lambdasNm = new Float64Array(count);
   const reflectance = new Float64Array(count);
@@ -29,8 +30,8 @@ export function filmSpectrum(stack: DispersiveFilmStack, illuminant: IlluminantS
   for (let i = 0; i < count; i++) {
     const l = LAMBDA_MIN_NM + i * stepNm;
     lambdasNm[i] = l;
-    reflectance[i] = reflectanceAt(constantOptics ?? filmOptics(stackAt(stack, l), polarization), l);
-    if (filmIndex) filmIndex[i] = filmIndexAt(stack.nFilm, l);
+    reflectance[i] = reflectanceAt(constantOptics ?? filmOptics(mediumStackAt(stack, l), polarization), l);
+    if (filmIndex) filmIndex[i] = asComplex(mediumIndexAt(stack.nFilm, l)).re;
     incident[i] = spd(l);
   }
   const peak = Math.max(...incident);

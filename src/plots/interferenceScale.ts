@@ -1,5 +1,5 @@
 import { type Matrix3, type Rgb, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
-import { type DispersiveFilmStack } from '../physics/filmIndex.ts';
+import { type MediumStack } from '../physics/medium.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { filmXyz } from '../physics/spectralIntegration.ts';
@@ -27,7 +27,7 @@ export interface ScaleOptions {
  * the chromaticity diagram.
  */
 export function interferenceScale(
-  stack: Omit<DispersiveFilmStack, 'thicknessNm'>,
+  stack: Omit<MediumStack, 'thicknessNm'>,
   maxThicknessNm: number,
   count: number,
   o: ScaleOptions,
@@ -44,7 +44,7 @@ export function interferenceScale(
 
 /** A scale's arguments as one object (what the scale's worker is sent). */
 export interface ScaleRequest {
-  readonly stack: Omit<DispersiveFilmStack, 'thicknessNm'>;
+  readonly stack: Omit<MediumStack, 'thicknessNm'>;
   readonly maxThicknessNm: number;
   readonly count: number;
   readonly options: ScaleOptions;

@@ -1,6 +1,6 @@
 import { type Matrix3, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
 import { deltaE00 } from '../physics/colorDifference.ts';
-import { type DispersiveFilmStack } from '../physics/filmIndex.ts';
+import { type MediumStack } from '../physics/medium.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { filmXyz, whiteXyz } from '../physics/spectralIntegration.ts';
@@ -24,7 +24,7 @@ export interface ProbeLight {
 }
 
 /** The reference colour (eqs 15–19) of the probed film, compared with what the shader rendered there. */
-export function probeColor(stack: DispersiveFilmStack, light: ProbeLight, xyzToLinearRgb: Matrix3, renderedXyz: Xyz): ProbeColor {
+export function probeColor(stack: MediumStack, light: ProbeLight, xyzToLinearRgb: Matrix3, renderedXyz: Xyz): ProbeColor {
   const xyz = filmXyz(stack, light);
   const linearRgb = applyMatrix3(xyzToLinearRgb, xyz);
   const [r, g, b] = mapToGamut(linearRgb, xyz[1]).map(encode8) as [number, number, number];

@@ -1,7 +1,7 @@
 import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
-import { type ParameterRow, choiceRow, defaultsOf, filmIndexRow, illuminantRow, numberRow } from './parameterRow.ts';
+import { type ParameterRow, choiceRow, defaultsOf, illuminantRow, mediumRow, numberRow } from './parameterRow.ts';
 
 type Row = ParameterRow<FilmSettings>;
 
@@ -15,9 +15,9 @@ export const FILM_PARAMETERS: readonly Row[] = [
   numberRow({ key: 'thicknessNm', url: 'thickness', cli: 'thickness' }, FILM_STACK_DOMAIN.thicknessNm, 550, 'film', 1),
   numberRow({ key: 'thicknessRangeNm', url: 'thicknessRange' }, FILM_STACK_DOMAIN.thicknessNm, 800, 'film', 1),
   numberRow({ key: 'swirlSpeed', url: 'speed' }, { min: 0, max: 10, unit: '' }, 0.4, 'film', 0.05),
-  filmIndexRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film' }, SOAP_FILM_IN_AIR.nFilm, 'film'),
+  mediumRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film' }, SOAP_FILM_IN_AIR.nFilm, 'film', 'film'),
   numberRow({ key: 'nOutside', url: 'nOutside', cli: 'n-outside' }, FILM_STACK_DOMAIN.nOutside, SOAP_FILM_IN_AIR.nOutside, 'film', 0.01),
-  numberRow({ key: 'nInside', url: 'nInside', cli: 'n-inside' }, FILM_STACK_DOMAIN.nInside, SOAP_FILM_IN_AIR.nInside, 'film', 0.01),
+  mediumRow({ key: 'nInside', url: 'nInside', cli: 'n-inside' }, SOAP_FILM_IN_AIR.nInside, 'film', 'inside'),
   illuminantRow({ key: 'illuminant', url: 'illuminant', cli: 'illuminant' }, 'D65', 'light and colour'),
   choiceRow({ key: 'polarization', url: 'polarization', cli: 'polarization' }, POLARIZATIONS, 'unpolarized', 'light and colour'),
   choiceRow({ key: 'normalization', url: 'normalization', cli: 'normalization' }, NORMALIZATIONS, 'white', 'light and colour'),

@@ -1,5 +1,6 @@
 import { AIRY_SERIES_MAX_ORDERS } from '../physics/airySeries.ts';
-import { type FilmIndex, isDispersive } from '../physics/filmIndex.ts';
+import { isDispersiveMedium } from '../physics/medium.ts';
+import type { FilmSettings } from './filmSettings.ts';
 import { LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 import { type NumberDomain, expectedNumber, isInDomain, oneOf, rejectValue } from '../physics/validate.ts';
 import { type FilmTableLayout, TABLE_FILLS } from './filmTableLayout.ts';
@@ -35,8 +36,8 @@ export const DEFAULT_FILM_QUALITY: FilmQuality = {
 };
 
 /** The spectral bins a film's binned integral takes: a dispersive film's own count, else `constant`'s. */
-export const spectralBinsFor = (index: FilmIndex, q: FilmQuality, constant: number): number =>
-  isDispersive(index) ? q.dispersiveSpectralBins : constant;
+export const spectralBinsFor = (media: Pick<FilmSettings, 'nFilm' | 'nInside'>, q: FilmQuality, constant: number): number =>
+  isDispersiveMedium(media.nFilm) || isDispersiveMedium(media.nInside) ? q.dispersiveSpectralBins : constant;
 
 /** Quality knobs as a caller gives them: any of them, the table's one by one; the rest are the defaults. */
 export type FilmQualityOptions = Partial<Omit<FilmQuality, 'table'>> & { readonly table?: Partial<FilmTableLayout> };

@@ -1,4 +1,4 @@
-import { type FilmIndex } from '../physics/filmIndex.ts';
+import { type Medium } from '../physics/medium.ts';
 import { FIELDS, type FieldName } from '../fields/fields.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
@@ -37,9 +37,10 @@ export const toneMappingOf = (s: Pick<FilmSettings, 'tonemap' | 'env'>): ToneMap
 /** Everything a rendered bubble depends on. Ranges and defaults: `filmParameters.ts`. */
 export interface FilmSettings {
   readonly nOutside: number;
-  /** n_b: a number, a material or a Cauchy film (filmIndex.ts) */
-  readonly nFilm: FilmIndex;
-  readonly nInside: number;
+  /** ñ_b: a number, a material, a Cauchy film, a named medium or a complex constant (medium.ts) */
+  readonly nFilm: Medium;
+  /** ñ_c, the same kinds: an absorbing one (a metal) is opaque */
+  readonly nInside: Medium;
   readonly illuminant: IlluminantSpec;
   readonly polarization: Polarization;
   readonly normalization: Normalization;

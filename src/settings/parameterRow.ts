@@ -14,7 +14,9 @@ import {
   filmIndexText,
   readFilmIndex,
 } from '../physics/filmIndex.ts';
-import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
+import { COMPLEX_INDEX_DOMAIN, FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
+import { type Medium, type MediumRole, mediumText, readMedium } from '../physics/medium.ts';
+import { NAMED_MEDIA } from '../physics/namedMedia.ts';
 import { type NumberDomain, expectedNumber, isInDomain, parseDecimal } from '../physics/validate.ts';
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
@@ -27,7 +29,9 @@ export type PanelControl =
   /** A named illuminant or a daylight CCT: a list of names plus a CCT slider. */
   | { readonly folder: PanelFolder; readonly kind: 'illuminant' }
   /** A film index: a constant (slider), a named material, or a Cauchy film (text A,B[,C]). */
-  | { readonly folder: PanelFolder; readonly kind: 'filmIndex' };
+  | { readonly folder: PanelFolder; readonly kind: 'filmIndex' }
+  /** A medium (medium.ts): a film index's controls, a named medium (a metal, an oxide) or a complex constant (text n,k). */
+  | { readonly folder: PanelFolder; readonly kind: 'medium'; readonly role: Exclude<MediumRole, 'outside'> };
 
 export const PANEL_FOLDERS = ['film', 'light and colour', 'view'] as const;
 export type PanelFolder = (typeof PANEL_FOLDERS)[number];
@@ -168,7 +172,7 @@ interface TextKind<V> {
   readonly expects: Expectation;
   readonly parse: (raw: string) => { readonly value: V } | { readonly problem: string | null };
   readonly text: (value: V) => string;
-  readonly kind: 'illuminant' | 'filmIndex';
+  readonly control: (folder: PanelFolder) => PanelControl;
 }
 
 function textRow<S, K extends keyof S & string, V>(
@@ -189,7 +193,7 @@ function textRow<S, K extends keyof S & string, V>(
       const reading = k.parse(raw);
       return 'problem' in reading ? reading.problem : null;
     },
-    control: folder && { folder, kind: k.kind },
+    control: folder && k.control(folder),
   };
 }
 
@@ -210,7 +214,7 @@ export const illuminantRow = <S, K extends keyof S & string>(
       return value === null ? { problem: null } : { value };
     },
     text: illuminantText,
-    kind: 'illuminant',
+    control: (folder) => ({ folder, kind: 'illuminant' }),
   });
 
 /** A film index (filmIndex.ts): a number, a material's name or `cauchy:A,B[,C]`, within its domain over the band. */
@@ -221,22 +225,57 @@ export const filmIndexRow = <S, K extends keyof S & string>(
 ) =>
   textRow<S, K, FilmIndex>(n, defaultValue, folder, {
     expected: FILM_INDEX_EXPECTED,
-    expects: {
-      key: 'expected.filmIndex',
-      values: {
-        ...FILM_STACK_DOMAIN.nFilm,
-        materials: FILM_MATERIALS.join(', '),
-        from: DISPERSION_CHECK_NM.min,
-        to: DISPERSION_CHECK_NM.max,
-      },
-    },
+    expects: { key: 'expected.filmIndex', values: FILM_INDEX_VALUES },
     parse: (raw) => {
       const reading = readFilmIndex(raw);
       return 'index' in reading ? { value: reading.index } : reading;
     },
     text: filmIndexText,
-    kind: 'filmIndex',
+    control: (folder) => ({ folder, kind: 'filmIndex' }),
   });
+
+/** What a film index accepts, as a catalogue's values (expected.filmIndex, expected.medium). */
+const FILM_INDEX_VALUES = {
+  ...FILM_STACK_DOMAIN.nFilm,
+  materials: FILM_MATERIALS.join(', '),
+  from: DISPERSION_CHECK_NM.min,
+  to: DISPERSION_CHECK_NM.max,
+};
+
+/**
+ * A medium (medium.ts) for the film or the inside: what a film index accepts, a named medium
+ * (NAMED_MEDIA), or `complex:n,k` (ñ = n + ik within COMPLEX_INDEX_DOMAIN: n > 0, k ≥ 0).
+ */
+export function mediumRow<S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  defaultValue: S[K] & Medium,
+  folder: PanelFolder | null,
+  role: Exclude<MediumRole, 'outside'>,
+): ParameterRow<S> {
+  const { n: nDomain, k: kDomain } = COMPLEX_INDEX_DOMAIN;
+  const expects: Expectation = {
+    key: 'expected.medium',
+    values: {
+      ...FILM_STACK_DOMAIN.nFilm,
+      materials: FILM_MATERIALS.join(', '),
+      names: NAMED_MEDIA.join(', '),
+      nMin: nDomain.min,
+      nMax: nDomain.max,
+      kMin: kDomain.min,
+      kMax: kDomain.max,
+    },
+  };
+  return textRow<S, K, Medium>(n, defaultValue, folder, {
+    expected: expectationText(expects, EN),
+    expects,
+    parse: (raw) => {
+      const reading = readMedium(raw, role);
+      return 'medium' in reading ? { value: reading.medium } : reading;
+    },
+    text: mediumText,
+    control: (folder) => ({ folder, kind: 'medium', role }),
+  });
+}
 
 /** The settings that every row's default makes. */
 export const defaultsOf = <S>(rows: readonly ParameterRow<S>[]): S =>

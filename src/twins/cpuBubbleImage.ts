@@ -1,6 +1,7 @@
 import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../physics/colorConversions.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { spectralBins, stackBinnedXyz } from '../physics/binnedIntegration.ts';
+import { absorbsInBand } from '../physics/medium.ts';
 import { spectralWeights } from '../physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../settings/filmQuality.ts';
 import { type ShownEnvironment, environmentRadiance, reflectedRadiance } from './environment.ts';
@@ -128,9 +129,11 @@ function bubbleRadiance(s: FilmSettings, env: ShownEnvironment, film: FilmColor,
   const p = normalize([eye[0] + t * dir[0], eye[1] + t * dir[1], eye[2] + t * dir[2]]);
   const cos = clamp01(Math.abs(dot(p, dir)));
   const nearR = film(thicknessAt(p, s), cos, false);
-  let behind = environmentRadiance(dir, env);
   const nearLight = reflectedRadiance(reflect(dir, p), env);
-  if (s.sides === 'both') {
+  // An opaque inside (a metal) transmits nothing: no far wall, nothing behind.
+  const opaque = absorbsInBand(s.nInside);
+  let behind: Rgb = opaque ? [0, 0, 0] : environmentRadiance(dir, env);
+  if (s.sides === 'both' && !opaque) {
     // The chord through a unit sphere at incidence θ has length 2 cos θ (toEye = −dir).
     const far = normalize([p[0] + 2 * cos * dir[0], p[1] + 2 * cos * dir[1], p[2] + 2 * cos * dir[2]]);
     const farR = film(thicknessAt(far, s), cos, true);

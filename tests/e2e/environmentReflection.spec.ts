@@ -1,6 +1,7 @@
 import { expect, test } from '@playwright/test';
 import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../../src/physics/colorConversions.ts';
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
+import { type Medium, mediumText } from '../../src/physics/medium.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
 import { type ShownEnvironment, environmentRadiance } from '../../src/twins/environment.ts';
 import { loadEnvironmentPixels } from '../../src/bubble/environmentMaps.ts';
@@ -16,12 +17,15 @@ import { MAX_CODE_DIFFERENCE, worstCodeDifference } from './referenceColor.ts';
  * on the bubble exposure · (R · L(mirror direction) + (1 − R) · L(straight through)), off it
  * exposure · L(straight through), each through the tone mapping's TypeScript twin. The bubble
  * pixel sits above the centre, where the mirror direction climbs and the straight ray sees the
- * horizon, so the two terms differ; the background pixels sit on a grid across the view.
+ * horizon, so the two terms differ; the background pixels sit on a grid across the view. Over an
+ * opaque inside (a metal, here a constant gold-like ñ) the bubble pixel is exposure · R · L(mirror)
+ * alone: nothing is seen through it.
  */
-const CASES: { env: 'sky' | HdrEnvironment; rotationDeg: number; tonemap: ToneMapping; exposure: number }[] = [
-  { env: 'sky', rotationDeg: 0, tonemap: 'none', exposure: 1 },
-  { env: 'city', rotationDeg: 137, tonemap: 'agx', exposure: 1.5 },
-  { env: 'park', rotationDeg: 300, tonemap: 'neutral', exposure: 0.7 },
+const CASES: { env: 'sky' | HdrEnvironment; rotationDeg: number; tonemap: ToneMapping; exposure: number; nInside: Medium }[] = [
+  { env: 'sky', rotationDeg: 0, tonemap: 'none', exposure: 1, nInside: SOAP_FILM_IN_AIR.nInside },
+  { env: 'city', rotationDeg: 137, tonemap: 'agx', exposure: 1.5, nInside: SOAP_FILM_IN_AIR.nInside },
+  { env: 'park', rotationDeg: 300, tonemap: 'neutral', exposure: 0.7, nInside: SOAP_FILM_IN_AIR.nInside },
+  { env: 'sky', rotationDeg: 0, tonemap: 'none', exposure: 1, nInside: { complex: [0.43, 2.455] } },
 ];
 const THICKNESS_NM = 450;
 /** Points read, as fractions of the view: the bubble pixel first, then background pixels outside the bubble. */
@@ -31,13 +35,15 @@ const POINTS: [number, number][] = [
 ];
 
 for (const c of CASES) {
-  test(`a uniform film in ${c.env} (turned ${c.rotationDeg}°, tone mapping ${c.tonemap}, exposure ${c.exposure}) reflects it in the mirror direction and shows it behind`, async ({
+  const opaque = c.nInside !== SOAP_FILM_IN_AIR.nInside;
+  const over = opaque ? ` over nInside=${mediumText(c.nInside)}, opaque,` : '';
+  test(`a uniform film${over} in ${c.env} (turned ${c.rotationDeg}°, tone mapping ${c.tonemap}, exposure ${c.exposure}) reflects it in the mirror direction${opaque ? '' : ' and shows it behind'}`, async ({
     page,
   }) => {
     const env: ShownEnvironment = c.env === 'sky' ? 'sky' : { pixels: await loadEnvironmentPixels(c.env), rotationDeg: c.rotationDeg };
     await page.goto(
       `/?field=uniform&thickness=${THICKNESS_NM}&env=${c.env}&envRotation=${c.rotationDeg}&tonemap=${c.tonemap}` +
-        `&exposure=${c.exposure}&sides=front&animate=0`,
+        `&exposure=${c.exposure}&sides=front&animate=0&nInside=${encodeURIComponent(mediumText(c.nInside))}`,
     );
     await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
     const read = await page.evaluate((points) => {
@@ -77,10 +83,13 @@ for (const c of CASES) {
         const mirror = p.map((n, k) => d[k]! + 2 * cos * n) as [number, number, number];
         const R = applyMatrix3(
           XYZ_TO_LINEAR_SRGB,
-          filmXyz({ ...SOAP_FILM_IN_AIR, thicknessNm: THICKNESS_NM, angleDeg: (Math.acos(cos) * 180) / Math.PI }, { illuminant: 'D65' }),
+          filmXyz(
+            { ...SOAP_FILM_IN_AIR, nInside: c.nInside, thicknessNm: THICKNESS_NM, angleDeg: (Math.acos(cos) * 180) / Math.PI },
+            { illuminant: 'D65' },
+          ),
         );
         const reflected = environmentRadiance(mirror, env);
-        const behind = environmentRadiance(d, env);
+        const behind = opaque ? [0, 0, 0] : environmentRadiance(d, env);
         expected = shown([0, 1, 2].map((k) => R[k]! * reflected[k]! + Math.min(1, Math.max(0, 1 - R[k]!)) * behind[k]!) as unknown as Rgb);
       } else {
         expected = shown(environmentRadiance(d, env));

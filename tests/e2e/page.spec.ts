@@ -68,15 +68,36 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
   expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 
+  // A medium's list: a name from it, then a kind typed in its text field; each shows in the URL.
+  const pickThenType = async (
+    list: string,
+    name: string,
+    nameInUrl: RegExp,
+    textLabel: string,
+    text: string,
+    kind: string,
+    inUrl: RegExp,
+  ) => {
+    const combobox = page.getByRole('combobox', { name: list });
+    await combobox.selectOption(name);
+    await expect(page).toHaveURL(nameInUrl);
+    const field = page.locator('.lil-controller', { hasText: textLabel }).locator('input');
+    await field.fill(text);
+    await field.press('Enter');
+    await combobox.selectOption(kind);
+    await expect(page).toHaveURL(inUrl);
+    return field;
+  };
   // The film's material: water, then a Cauchy film typed as A,B; one outside the index domain is not taken.
-  const material = page.getByRole('combobox', { name: 'film material' });
-  await material.selectOption('water');
-  await expect(page).toHaveURL(/nFilm=water/);
-  const cauchyText = page.locator('.lil-controller', { hasText: 'Cauchy A,B[,C]' }).locator('input');
-  await cauchyText.fill('1.45,6000');
-  await cauchyText.press('Enter');
-  await material.selectOption('cauchy');
-  await expect(page).toHaveURL(/nFilm=cauchy%3A1.45%2C6000/);
+  const cauchyText = await pickThenType(
+    'film material',
+    'water',
+    /nFilm=water/,
+    'Cauchy A,B[,C]',
+    '1.45,6000',
+    'cauchy',
+    /nFilm=cauchy%3A1.45%2C6000/,
+  );
   await cauchyText.fill('3.9,20000');
   await cauchyText.press('Enter');
   await expect(cauchyText.locator('xpath=ancestor::div[contains(@class, "lil-controller")]')).toHaveAttribute(
@@ -94,4 +115,8 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   await expect(page.getByRole('combobox', { name: 'film material' })).toHaveValue('cauchy');
   const expected = reference8({ thicknessNm: 300, nFilm: cauchy });
   expect(worstCodeDifference(await centrePixel(page), expected)).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+
+  // The inside's medium: a named metal from the list, then a complex constant typed as n,k.
+  await pickThenType('inside medium', 'Au', /nInside=Au/, 'complex n,k', '2.6,3.4', 'complex', /nInside=complex%3A2.6%2C3.4/);
+  expect(await current()).toMatchObject({ nInside: { complex: [2.6, 3.4] } });
 });

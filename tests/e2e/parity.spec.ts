@@ -3,6 +3,7 @@ import { expect, test, type Page } from '@playwright/test';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { POLARIZATIONS, type Polarization } from '../../src/physics/filmReflectance.ts';
 import type { FilmIndex } from '../../src/physics/filmIndex.ts';
+import type { Medium } from '../../src/physics/medium.ts';
 import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
@@ -12,7 +13,13 @@ import { MODES } from '../../src/settings/filmSettings.ts';
 import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
 import type { ParityGroup, ParityMode } from '../../scripts/harness/parityCase.ts';
 import { mulberry32 } from '../seededRandom.ts';
-import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS } from '../tolerances.ts';
+import {
+  MAX_DELTA_E00_FIXED,
+  MAX_DELTA_E00_METAL_FIXED,
+  MAX_DELTA_E00_METAL_STRESS,
+  MAX_DELTA_E00_METAL_TABLE_FIXED,
+  MAX_DELTA_E00_STRESS,
+} from '../tolerances.ts';
 
 /**
  * Shader parity as numbers: the real GLSL (shaders/film/filmColor.glsl, every mode of MODES)
@@ -168,6 +175,76 @@ for (const mode of MODES) {
     console.log(`parity ${mode} stress: ${JSON.stringify(figures)}`);
     expect(nonFinite).toEqual([]);
     expect(figures.max, figures.worst).toBeLessThan(MAX_DELTA_E00_STRESS);
+  });
+}
+
+/**
+ * Films on absorbing insides (docs/physics.md#absorbing-media): a constant complex substrate (gold's ñ
+ * at 548.6 nm; its series and table rows carry the complex r_bc), tabulated metals under a real film,
+ * and absorbing films on metals (Fe3O4 on Fe, TiO2 on Ti), each in one polarisation. The fixed grid
+ * covers 0–1000 nm at 0–85°; the stress grid reaches 90° and 10 µm, and a glass outside puts the
+ * film's critical angle (62.5°) inside its range, with a case 0.3° short of it. The table's rows
+ * interpolate across the kink R has there (R jumps to 1 within a fraction of a row,
+ * docs/physics.md#absorbing-media-on-the-gpu), so `table` is held to its bound on the stress grid
+ * without that stack (`tirEdge`), whose figures it records.
+ */
+function metalDomain(): { fixed: Group[]; stress: Group[]; tirEdge: Group[] } {
+  const next = mulberry32(3);
+  const gold548: Medium = { complex: [0.43, 2.455] };
+  const fixedStacks: readonly (Pick<Group, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'> & { readonly illuminant: IlluminantSpec })[] =
+    [
+      { nOutside: 1, nFilm: 1.38, nInside: gold548, polarization: 'unpolarized', illuminant: 'D65' },
+      { nOutside: 1, nFilm: 1.5, nInside: gold548, polarization: 's', illuminant: 'E' },
+      { nOutside: 1, nFilm: 1.33, nInside: 'Au', polarization: 'unpolarized', illuminant: 'D65' },
+      { nOutside: 1, nFilm: 'Fe3O4', nInside: 'Fe', polarization: 'p', illuminant: 'D55' },
+      { nOutside: 1, nFilm: 'TiO2', nInside: 'Ti', polarization: 'unpolarized', illuminant: { daylightCct: 4000 } },
+    ];
+  const fixed = fixedStacks.map((stack) => {
+    const cases: Case[] = [
+      { thicknessNm: 0, angleDeg: 0 },
+      { thicknessNm: 1000, angleDeg: 85 },
+    ];
+    while (cases.length < 24) cases.push({ thicknessNm: 1000 * next(), angleDeg: 85 * next() });
+    return { ...stack, normalization: 'white' as const, cases };
+  });
+  const stressStacks: readonly (Pick<Group, 'nOutside' | 'nFilm' | 'nInside' | 'polarization'> & { readonly maxNm: number })[] = [
+    { nOutside: 1, nFilm: 2.5, nInside: gold548, polarization: 'unpolarized', maxNm: 10000 },
+    { nOutside: 1, nFilm: 1.38, nInside: 'Al', polarization: 'unpolarized', maxNm: 10000 },
+    { nOutside: 1, nFilm: 'Fe3O4', nInside: 'Fe', polarization: 'unpolarized', maxNm: 2000 },
+    { nOutside: 1.5, nFilm: 1.33, nInside: { complex: [2.6, 3.4] }, polarization: 'p', maxNm: 2000 },
+  ];
+  const stress = stressStacks.map(({ maxNm, ...stack }) => {
+    const cases: Case[] = [
+      { thicknessNm: 0, angleDeg: 90 },
+      { thicknessNm: maxNm, angleDeg: 89.9 },
+      { thicknessNm: maxNm, angleDeg: 90 },
+      { thicknessNm: 5, angleDeg: 89 },
+      // 0.3° short of the film's critical angle under glass (62.5°), where R has its kink.
+      ...(stack.nOutside > 1 ? [{ thicknessNm: 1570, angleDeg: 62.2 }] : []),
+    ];
+    while (cases.length < 16) cases.push({ thicknessNm: maxNm * next(), angleDeg: 60 + 30 * next() });
+    return { ...stack, illuminant: 'D65' as const, normalization: 'white' as const, cases };
+  });
+  return { fixed, stress: stress.slice(0, -1), tirEdge: stress.slice(-1) };
+}
+
+for (const mode of MODES) {
+  const fixedBound = mode === 'table' ? MAX_DELTA_E00_METAL_TABLE_FIXED : MAX_DELTA_E00_METAL_FIXED;
+  test(`${mode} mode on absorbing insides matches the reference within ΔE00 ${fixedBound} (0–1000 nm, 0–85°) and ${MAX_DELTA_E00_METAL_STRESS} (to 90°, 10 µm)`, async ({
+    page,
+  }) => {
+    test.slow(mode !== 'fourier', 'tabulated media by bins');
+    const { fixed, stress, tirEdge } = metalDomain();
+    const fixedResult = compare(fixed, await render(page, fixed, mode));
+    const stressGroups = mode === 'table' ? stress : [...stress, ...tirEdge];
+    const stressResult = compare(stressGroups, await render(page, stressGroups, mode));
+    const tirResult = mode === 'table' ? compare(tirEdge, await render(page, tirEdge, mode)) : null;
+    const figures = { fixed: fixedResult.figures, stress: stressResult.figures, tirEdge: tirResult?.figures };
+    keepFigures(`${mode}-metal`, figures);
+    console.log(`parity ${mode} metal: ${JSON.stringify(figures)}`);
+    expect([...fixedResult.nonFinite, ...stressResult.nonFinite, ...(tirResult?.nonFinite ?? [])]).toEqual([]);
+    expect(fixedResult.figures.max, fixedResult.figures.worst).toBeLessThanOrEqual(fixedBound);
+    expect(stressResult.figures.max, stressResult.figures.worst).toBeLessThanOrEqual(MAX_DELTA_E00_METAL_STRESS);
   });
 }
 

@@ -35,7 +35,7 @@ describe('render command: exit statuses', () => {
         [['--width', '99999', '--out', out], 'render: --width: "99999" is not allowed; expected a whole number in [16, 4096] CSS px\n'],
         [
           ['--cases', join(dir, 'views.json')],
-          'render: case at index 1: nFilm: 5 is not allowed; expected a number in [1, 4], water, or cauchy:A,B[,C] (n = A + B/λ² + C/λ⁴, λ in nm) within [1, 4] over 380–830 nm (here n is 5, above 4)\n',
+          'render: case at index 1: nFilm: 5 is not allowed; expected a number in [1, 4], water, cauchy:A,B[,C], Au, Ag, Cu, Al, Ti, Fe, Cr, Ni, TiO2, Fe3O4, SiO2 or complex:n,k (n in [0.01, 10], k in [0, 100]) (here n is 5, above 4)\n',
         ],
         [['--out', join(dir, 'no-such-folder', 'view.png')], 'render: --out: '],
       ];

@@ -122,6 +122,17 @@ describe('render options: --cases', () => {
     ]);
   });
 
+  it('reads a medium as the URL writes it or as { "complex": [n, k] }, and refuses a gain medium naming the field', () => {
+    const views = cases([
+      { out: 'a.png', nInside: { complex: [2.6, 3.4] } },
+      { out: 'b.png', nInside: 'Au', nFilm: 'TiO2' },
+    ]);
+    expect(views.map((v) => v.query)).toEqual(['nInside=complex%3A2.6%2C3.4', 'nFilm=TiO2&nInside=Au']);
+    expect(() => cases([{ out: 'a.png', nInside: { complex: [2.6, -1] } }])).toThrow(
+      /^case at index 0: nInside: .* \(here k is -1, below 0/,
+    );
+  });
+
   const refusals: [unknown, string][] = [
     [
       [{ out: 'a.png' }, { out: 'b.png', thickness: 30000 }],

@@ -21,13 +21,13 @@ import {
   WebGLRenderer,
 } from 'three';
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3, invert3 } from '../../../src/physics/colorConversions.ts';
-import type { FilmIndex } from '../../../src/physics/filmIndex.ts';
+import type { Medium } from '../../../src/physics/medium.ts';
 import type { ParityGroup, ParityMode } from '../../harness/parityCase.ts';
 import { spectralIridescence } from '../../../src/material/spectralIridescence.ts';
 
-/** The material's film index is three's iridescenceIOR, one number: the grids must be of a constant film. */
-function constantIndex(index: FilmIndex): number {
-  if (typeof index !== 'number') throw new Error(`the material's grids take a constant film index, not ${JSON.stringify(index)}`);
+/** The material's indices are three's iridescenceIOR and ior, numbers: the grids must be of constant real media. */
+function constantIndex(index: Medium): number {
+  if (typeof index !== 'number') throw new Error(`the material's grids take a constant real index, not ${JSON.stringify(index)}`);
   return index;
 }
 
@@ -57,7 +57,7 @@ function materialGridXyz(g: ParityGroup, mode: Exclude<ParityMode, 'three-irides
       color: 0x000000,
       roughness: 0,
       metalness: 0,
-      ior: g.nInside,
+      ior: constantIndex(g.nInside),
       iridescence: 1,
       iridescenceIOR: constantIndex(g.nFilm),
       iridescenceThicknessMinimum: 0,

@@ -14,6 +14,15 @@ describe('the method the app draws', () => {
     }
   });
 
+  it('fourier over a tabulated metal draws with the table too, the notice naming the inside; a constant complex inside keeps its series', () => {
+    const metal = { ...DEFAULT_SETTINGS, mode: 'fourier' as const, nInside: 'Au' as const };
+    const { settings, notice } = shownMethod(metal);
+    expect(settings).toEqual({ ...metal, mode: 'table' });
+    expect(notice).toContain('nInside=Au');
+    const constant = { ...DEFAULT_SETTINGS, mode: 'fourier' as const, nInside: { complex: [0.43, 2.455] as const } };
+    expect(shownMethod(constant)).toEqual({ settings: constant, notice: null });
+  });
+
   it('every other pair of mode and film is drawn as asked, without a notice', () => {
     for (const mode of ['exact', 'table', 'fourier', 'three-iridescence'] as const)
       for (const nFilm of [1.33, 'water'] as const) {

@@ -1,14 +1,44 @@
 /** The film's media: the uniforms TypeScript sets are exactly those the GLSL declares. */
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { filmMediaUniforms } from '../../../src/film/filmMedia.ts';
+import { filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from '../../../src/film/filmMedia.ts';
+import type { Medium } from '../../../src/physics/medium.ts';
 
 const declared = (file: string): string[] =>
   [...readFileSync(new URL(`../../../shaders/${file}`, import.meta.url), 'utf8').matchAll(/^uniform \w+ (\w+)/gm)].map((m) => m[1]!);
 
 describe('film media uniforms', () => {
-  it('filmMedia.ts sets what filmMedia.glsl and filmIndex.glsl declare, no more and no less', () => {
-    const glsl = [...declared('film/filmMedia.glsl'), ...declared('physics/filmIndex.glsl')].sort();
+  it('filmMedia.ts sets what filmMedia.glsl and medium.glsl declare, no more and no less', () => {
+    const glsl = [...declared('film/filmMedia.glsl'), ...declared('physics/medium.glsl')].sort();
     expect(Object.keys(filmMediaUniforms()).sort()).toEqual(glsl);
+  });
+
+  it('a tabulated medium takes the knots, an absorbing inside is opaque; constant media (real or complex) take neither the knots nor a wrong opacity', () => {
+    const cases: readonly [Medium, Medium, boolean, boolean][] = [
+      [1.33, 1, false, false],
+      [1.33, 'Au', true, true],
+      [1.38, { complex: [0.43, 2.455] }, false, true],
+      [1.38, { complex: [1.5, 0] }, false, false],
+      ['TiO2', 'SiO2', true, false], // both tabulated; silica is transparent over the band
+      ['Fe3O4', 1.5, true, false], // an absorbing film on glass lets light through
+      ['water', 1, true, false],
+    ];
+    for (const [nFilm, nInside, dispersive, opaque] of cases) {
+      const d = filmMediaDefines({ nFilm, nInside });
+      expect('TFC_DISPERSIVE' in d, JSON.stringify([nFilm, nInside])).toBe(dispersive);
+      expect('TFC_OPAQUE_INSIDE' in d, JSON.stringify([nFilm, nInside])).toBe(opaque);
+    }
+  });
+
+  it('sets ñ as [n, k]: gold’s knot at 550 nm is its Johnson & Christy value there, within the interpolation', () => {
+    const u = filmMediaUniforms();
+    updateFilmMediaUniforms(u, { nOutside: 1, nFilm: 1.38, nInside: 'Au' });
+    expect(u.uNFilm.value).toEqual([1.38, 0]);
+    const knots = u.uMediaKnots.value;
+    const i = (550 - 380) / 5; // knots every 5 nm from 380 nm
+    // A knot is (film n, k, inside n, k). Johnson & Christy 1972 list gold at 548.6 nm as 0.43 + 2.455i and at 582.1 nm as 0.29 + 2.863i.
+    expect([knots[4 * i], knots[4 * i + 1]]).toEqual([Math.fround(1.38), 0]);
+    expect(knots[4 * i + 2]! < 0.43 && knots[4 * i + 2]! > 0.29).toBe(true);
+    expect(knots[4 * i + 3]! > 2.455 && knots[4 * i + 3]! < 2.863).toBe(true);
   });
 });

@@ -155,6 +155,36 @@ describe('the constructor and the API boundary', () => {
   });
 });
 
+describe('a base under the film', () => {
+  it('takes a medium (a name, complex:n,k, a number, { complex }) in place of ior, refusing a bad one by name', () => {
+    const m = new ThinFilmMaterial({ mode: 'fourier', base: 'Ti' });
+    expect(m.base).toBe('Ti');
+    m.base = 'complex:2.6,3.4';
+    expect(m.base).toEqual({ complex: [2.6, 3.4] });
+    m.base = { complex: [0.43, 2.455] };
+    expect(m.base).toEqual({ complex: [0.43, 2.455] });
+    m.base = null;
+    expect(m.base).toBe(null);
+    for (const bad of ['complex:2.6,-1', 'Unobtainium', 'complex:0,1'])
+      expect(
+        parameterOf(() => (m.base = bad)),
+        bad,
+      ).toBe('base');
+  });
+
+  it('draws the film over the base: a metal makes the shader opaque and tabulated, its uniforms the metal’s ñ', () => {
+    const m = new ThinFilmMaterial({ iridescenceIOR: 1.38, mode: 'fourier', base: 'Au' });
+    const shader = shaderObject();
+    m.onBeforeCompile(shader as never, null as never);
+    expect(shader.defines).toMatchObject({ TFC_OPAQUE_INSIDE: 1, TFC_DISPERSIVE: 1 });
+    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    const uniforms = shader.uniforms as Record<string, { value: number[] }>;
+    // Gold at the sodium D line (589.3 nm) lies between Johnson & Christy's 548.6 nm (0.43 + 2.455i) and 582.1 nm (0.29 + 2.863i) rows… and the next, 616.8 nm (0.21 + 3.272i).
+    const [n, k] = uniforms.uNInside!.value;
+    expect(n! < 0.29 && n! > 0.21 && k! > 2.863 && k! < 3.272).toBe(true);
+  });
+});
+
 describe('a parameter out of range when drawn', () => {
   it('is clamped to its range with one warning naming it and the range, not thrown', () => {
     // fourier mode: bringing the film up to date makes only CPU-side textures, no GPU needed.
@@ -173,7 +203,7 @@ describe('a parameter out of range when drawn', () => {
     expect(messages).toHaveLength(2); // once per parameter, not per frame
     expect(messages[0]).toMatch(/iridescenceIOR 5 .*\[1, 4\]/);
     expect(messages[1]).toMatch(/iridescenceThicknessMaximum 30000 .*\[0, 20000\] nm/);
-    expect(uniforms.uNFilm!.value).toBe(4); // the domain's upper end
+    expect(uniforms.uNFilm!.value).toEqual([4, 0]); // the domain's upper end (ñ = n + 0i)
   });
 });
 

@@ -35,6 +35,36 @@ describe('URL parameters', () => {
     });
   });
 
+  it('reads a named metal, a complex constant and a named film, and writes them back', () => {
+    for (const [query, media] of [
+      ['?nInside=Au', { nInside: 'Au' }],
+      ['?nInside=complex:2.6,3.4', { nInside: { complex: [2.6, 3.4] } }],
+      ['?nFilm=TiO2&nInside=Ti', { nFilm: 'TiO2', nInside: 'Ti' }],
+      ['?nFilm=Fe3O4&nInside=Fe', { nFilm: 'Fe3O4', nInside: 'Fe' }],
+    ] as const) {
+      const read = parseSettings(query);
+      expect(read, query).toEqual({ settings: { ...DEFAULT_SETTINGS, ...media }, errors: [], refusals: [] });
+      expect(parseSettings(`?${settingsToQuery(read.settings)}`).settings, query).toEqual(read.settings);
+    }
+  });
+
+  it('refuses k < 0, n ≤ 0, an unknown name and a complex outside, naming the parameter and what is wrong', () => {
+    for (const [query, name, why] of [
+      ['?nInside=complex:2.6,-1', 'nInside', 'k < 0 would be a medium with gain'],
+      ['?nInside=complex:0,3', 'nInside', 'n is 0, below 0.01'],
+      ['?nFilm=complex:-1,0', 'nFilm', 'n is -1, below 0.01'],
+      ['?nInside=Unobtainium', 'nInside', 'Au, Ag, Cu'],
+      ['?nOutside=complex:1.5,0.1', 'nOutside', '[1, 4]'],
+      ['?nOutside=Au', 'nOutside', '[1, 4]'],
+    ] as const) {
+      const { settings, errors } = parseSettings(query);
+      expect(settings, query).toEqual(DEFAULT_SETTINGS);
+      expect(errors, query).toHaveLength(1);
+      expect(errors[0]!.startsWith(`${name}=`), errors[0]).toBe(true);
+      expect(errors[0], query).toContain(why);
+    }
+  });
+
   it('reads a dispersive film, writes it back, and says what is wrong with one outside the index domain', () => {
     const water = parseSettings('?nFilm=water');
     expect(water).toEqual({ settings: { ...DEFAULT_SETTINGS, nFilm: 'water' }, errors: [], refusals: [] });
@@ -102,8 +132,8 @@ describe('URL parameters', () => {
     expect(errors).toHaveLength(1);
     expect(errors[0]!.startsWith(`${name}=`)).toBe(true);
     expect(errors[0]).toContain(range);
-    // A long value is cut short: the message stays one readable line.
-    expect(errors[0]!.length).toBeLessThan(MAX_ECHOED_CHARS + 200);
+    // A long value is cut short: the message stays one readable line (a medium's row lists eleven names).
+    expect(errors[0]!.length).toBeLessThan(MAX_ECHOED_CHARS + 240);
   });
 
   it('keeps the last good value of a repeated parameter, and reports each bad one', () => {
