@@ -229,15 +229,17 @@ export class BubbleApp {
 
   /**
    * One frame, from a coarse table while the table is being rebuilt (FilmTable: the frames after
-   * a change complete it). A frame drawn while the HDR environment is on its way is not complete
-   * either. The plots follow a complete frame in a task of their own, so the frame is shown first.
+   * a change complete it). A frame drawn while the HDR environment is on its way, or with a flowing
+   * film short of its frozen time, is not complete either. The plots follow a complete frame in a task of their own, so the frame is shown first.
    */
   private draw(): void {
     const view = this.parts.view;
     view.render(true);
     this.parts.present?.();
     this.showEnvironmentStatus();
-    const complete = !view.coarse && view.environmentStatus.state !== 'loading';
+    // A flowing film short of a frozen time is not complete (the frames after bring it there); while
+    // the film animates, every frame shows its film time and is.
+    const complete = !view.coarse && (!view.filmBehind || this.looping) && view.environmentStatus.state !== 'loading';
     this.completeShown = complete;
     if (complete) this.schedulePlots();
     this.parts.onFrame?.(complete);
@@ -363,7 +365,7 @@ export class BubbleApp {
       this.looping = false;
     }
     this.draw();
-    if (this.looping || this.parts.view.coarse) this.requestFrame();
+    if (this.looping || this.parts.view.coarse || this.parts.view.filmBehind) this.requestFrame();
   }
 
   /**

@@ -9,6 +9,14 @@ export interface FieldSettings {
   readonly thicknessRangeNm: number;
   readonly swirlSpeed: number;
   readonly timeSeconds: number;
+  /** The flowing film's own (src/physics/flow/flowParameters.ts names them and holds their ranges). */
+  readonly radiusMm: number;
+  readonly surfactantMolM2: number;
+  readonly evaporationNmS: number;
+  readonly windMps: number;
+  readonly seed: number;
+  readonly simSpeed: number;
+  readonly gridN: number;
 }
 
 /** A uniform of a field's shader, as three.js holds it. */
@@ -27,10 +35,28 @@ export interface ThicknessField {
   readonly uniforms: () => FieldUniforms;
   /** Sets its uniforms to the settings (each frame). */
   readonly update: (u: FieldUniforms, s: FieldSettings) => void;
-  /** The thickness in nm at `p` (the twin of its GLSL `tfcThicknessAt`). */
+  /** The thickness in nm at `p` (the twin of its GLSL `tfcThicknessAt`; an evolving field's film at its start). */
   readonly thicknessAt: (p: Vec3, s: FieldSettings) => number;
   /** The largest thickness it reaches, in nm, at least 1 (the field is clamped to the domain's 20 µm). */
   readonly maxThicknessNm: (s: FieldSettings) => number;
   /** Whether it changes with time (the view animates only such a field). */
   readonly animates: boolean;
+  /**
+   * Whether its film evolves in a simulation the view holds (a FieldState, made for it in
+   * src/bubble/fieldStates.ts) and advances to the settings' time before each frame.
+   */
+  readonly evolves?: true;
+}
+
+/** The simulation an evolving field's film lives in, kept by the view while it shows the field. */
+export interface FieldState {
+  /**
+   * Brings the film to the settings' time by at most `maxSteps` fixed steps (from its start if its
+   * parameters changed or the time went back) and points the uniforms at it; returns whether it
+   * reached that time. Nothing runs when it is there already.
+   */
+  advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean;
+  /** Makes its GPU objects anew after a lost context; the film starts again from its start. */
+  invalidate(): void;
+  dispose(): void;
 }

@@ -15,6 +15,9 @@ import {
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
 import { createBubbleMaterial, updateBubbleUniforms } from '../bubble/bubbleMaterial.ts';
+import { createFieldState } from '../bubble/fieldStates.ts';
+import type { FieldName } from '../fields/fields.ts';
+import type { FieldState } from '../fields/thicknessField.ts';
 import { releaseFilmColorTextures } from '../film/filmColor.ts';
 import { createBackgroundMaterial, updateBackgroundMaterial } from '../bubble/environmentMaterial.ts';
 import { environmentTexture, loadEnvironmentPixels, releaseEnvironmentTexture } from '../bubble/environmentMaps.ts';
@@ -67,6 +70,10 @@ export class BubbleView {
   /** Whether the canvas really shows Display P3 (false where the browser cannot). */
   displayIsP3 = false;
   private settings: FilmSettings;
+  /** The simulation of an evolving field's film (null for another field): made when the field is shown, dropped when it is left. */
+  private fieldState: { readonly field: FieldName; readonly state: FieldState } | null = null;
+  /** Whether the last frame drew an evolving film short of the settings' time (more frames bring it there). */
+  filmBehind = false;
 
   constructor(
     readonly renderer: WebGLRenderer,
@@ -80,12 +87,20 @@ export class BubbleView {
     this.background = new Mesh(new SphereGeometry(50, 64, 32), createBackgroundMaterial());
     this.scene.add(this.background, this.bubble);
     // After a lost context comes back, three re-creates programs and re-uploads textures by
-    // itself; the table, drawn on the GPU, is gone and must be drawn again.
+    // itself; the table and an evolving film, drawn on the GPU, are gone and must be drawn again.
     renderer.domElement.addEventListener('webglcontextrestored', this.rebuildTable);
     this.apply(settings);
   }
 
-  private readonly rebuildTable = () => this.table.invalidate();
+  private readonly rebuildTable = () => {
+    this.table.invalidate();
+    this.fieldState?.state.invalidate();
+  };
+
+  /** The evolving field's simulation, if the field shown evolves (for tests and the benchmark). */
+  get evolvingFilm(): FieldState | null {
+    return this.fieldState?.state ?? null;
+  }
 
   get current(): FilmSettings {
     return this.settings;
@@ -94,6 +109,12 @@ export class BubbleView {
   /** Takes new settings (already validated). Cheap: the table is brought up to date when drawn. */
   apply(s: FilmSettings): void {
     this.settings = s;
+    if (this.fieldState?.field !== s.field) {
+      this.fieldState?.state.dispose();
+      const state = createFieldState(s.field, this.renderer);
+      this.fieldState = state && { field: s.field, state };
+      this.filmBehind = false;
+    }
     const wantP3 = s.space === 'display-p3' || s.space === 'wide-gamut';
     this.renderer.outputColorSpace = wantP3 ? DisplayP3ColorSpace : SRGBColorSpace;
     const gl = this.renderer.getContext();
@@ -198,6 +219,9 @@ export class BubbleView {
     if (drawn.x !== width || drawn.y !== height) r.setSize(width, height, false);
     if (this.contextLost) return;
     this.syncTable(quick);
+    const film = this.fieldState?.state;
+    if (film)
+      this.filmBehind = !film.advance(this.bubble.material.uniforms, this.settings, quick ? this.quality.flowStepsPerFrame : Infinity);
     // Per frame, as views may share the renderer (each view's materials are compiled for its own).
     r.toneMapping = this.toneMapping;
     r.render(this.scene, this.camera);
@@ -221,6 +245,7 @@ export class BubbleView {
     this.renderer.domElement.removeEventListener('webglcontextrestored', this.rebuildTable);
     this.filmProbe.dispose();
     this.table.dispose();
+    this.fieldState?.state.dispose();
     this.bubble.geometry.dispose();
     releaseFilmColorTextures(this.bubble.material);
     this.bubble.material.dispose();

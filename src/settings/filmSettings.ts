@@ -56,4 +56,12 @@ export interface FilmSettings {
   readonly tonemap: (typeof TONE_MAPPINGS)[number];
   readonly exposure: number;
   readonly timeSeconds: number;
+  /** The flowing film's (field `flow`): bubble radius, Γ0, evaporation, wind, seed, simulated seconds per second, grid. */
+  readonly radiusMm: number;
+  readonly surfactantMolM2: number;
+  readonly evaporationNmS: number;
+  readonly windMps: number;
+  readonly seed: number;
+  readonly simSpeed: number;
+  readonly gridN: number;
 }
