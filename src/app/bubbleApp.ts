@@ -365,7 +365,15 @@ export class BubbleApp {
       this.looping = false;
     }
     this.draw();
-    if (this.looping || this.parts.view.coarse || this.parts.view.filmBehind) this.requestFrame();
+    const view = this.parts.view;
+    const filmTime = view.filmTimeSeconds;
+    if (this.looping && view.filmBehind && filmTime !== null) {
+      // A film simulated slower than the clock: the clock waits for it, so the time shown (and a
+      // pause's frozen time) is the film's, with nothing to catch up.
+      this.clockOrigin = now - filmTime * 1000;
+      view.apply({ ...view.current, timeSeconds: filmTime });
+    }
+    if (this.looping || view.coarse || view.filmBehind) this.requestFrame();
   }
 
   /**

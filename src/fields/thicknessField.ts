@@ -56,6 +56,8 @@ export interface FieldState {
    * reached that time. Nothing runs when it is there already.
    */
   advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean;
+  /** The settings' time (s) its film shows: the last advance's, or less while the film is behind it. */
+  readonly timeSeconds: number;
   /** Makes its GPU objects anew after a lost context; the film starts again from its start. */
   invalidate(): void;
   dispose(): void;

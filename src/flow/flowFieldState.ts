@@ -15,6 +15,8 @@ const STEP_SLACK = 1e-9;
 export class FlowFieldState implements FieldState {
   private simulation: GpuFilmSimulation | null = null;
   private key = '';
+  /** The time shown, in the settings' seconds. */
+  timeSeconds = 0;
 
   constructor(private readonly renderer: WebGLRenderer) {}
 
@@ -37,7 +39,10 @@ export class FlowFieldState implements FieldState {
     sim.step(Math.min(wanted - sim.steps, maxSteps));
     u.uFlowFilm!.value = sim.paddedFilm;
     u.uFlowGridN!.value = sim.grid.n;
-    return sim.steps === wanted;
+    const reached = sim.steps === wanted;
+    // Short of the time: the time of the steps taken, which gives back exactly these steps.
+    this.timeSeconds = reached ? s.timeSeconds : (sim.steps * sim.stepSeconds) / s.simSpeed;
+    return reached;
   }
 
   invalidate(): void {

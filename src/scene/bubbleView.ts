@@ -97,6 +97,11 @@ export class BubbleView {
     this.fieldState?.state.invalidate();
   };
 
+  /** The time (s) the evolving film drawn shows (less than the settings' while behind), or null for another field. */
+  get filmTimeSeconds(): number | null {
+    return this.fieldState?.state.timeSeconds ?? null;
+  }
+
   /** The evolving field's simulation, if the field shown evolves (for tests and the benchmark). */
   get evolvingFilm(): FieldState | null {
     return this.fieldState?.state ?? null;
