@@ -1,22 +1,25 @@
+import type { FlowParameters } from '../physics/flow/flowParameters.ts';
+
 /** A point on the unit sphere, y up. */
 export type Vec3 = readonly [number, number, number];
 
+/**
+ * The flowing film's settings (field `flow`): bubble radius, Γ0, evaporation, wind, seed, simulated
+ * seconds per second, grid; src/physics/flow/flowParameters.ts names them and holds their ranges.
+ */
+export type FlowSettings = Pick<
+  FlowParameters,
+  'radiusMm' | 'surfactantMolM2' | 'evaporationNmS' | 'windMps' | 'seed' | 'simSpeed' | 'gridN'
+>;
+
 /** What a field reads of the settings (the schema's rows in src/settings/filmParameters.ts). */
-export interface FieldSettings {
+export interface FieldSettings extends FlowSettings {
   /** the mean thickness, nm */
   readonly thicknessNm: number;
   /** the drained film's top-to-bottom difference, nm */
   readonly thicknessRangeNm: number;
   readonly swirlSpeed: number;
   readonly timeSeconds: number;
-  /** The flowing film's own (src/physics/flow/flowParameters.ts names them and holds their ranges). */
-  readonly radiusMm: number;
-  readonly surfactantMolM2: number;
-  readonly evaporationNmS: number;
-  readonly windMps: number;
-  readonly seed: number;
-  readonly simSpeed: number;
-  readonly gridN: number;
 }
 
 /** A uniform of a field's shader, as three.js holds it. */

@@ -1,4 +1,5 @@
 import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
+import type { FlowSettings } from '../fields/thicknessField.ts';
 import { FLOW_PARAMETERS } from '../physics/flow/flowParameters.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
@@ -6,11 +7,8 @@ import { type ParameterRow, choiceRow, defaultsOf, filmIndexRow, illuminantRow, 
 
 type Row = ParameterRow<FilmSettings>;
 
-/** The flowing film's parameters the view takes, each a settings field named as its FLOW_PARAMETERS row. */
-type FlowSetting = 'radiusMm' | 'surfactantMolM2' | 'evaporationNmS' | 'windMps' | 'seed' | 'simSpeed' | 'gridN';
-
-/** A row of the flowing film's, its domain and default from FLOW_PARAMETERS, in the panel's flow folder. */
-function flowRow(key: FlowSetting, url: string, step: number): Row {
+/** A row of the flowing film's (a settings field named as its FLOW_PARAMETERS row), its domain and default from there, in the panel's flow folder. */
+function flowRow(key: keyof FlowSettings, url: string, step: number): Row {
   const flow = FLOW_PARAMETERS.find((r) => r.key === key)!;
   return numberRow({ key, url }, flow.domain, flow.defaultValue, 'flow', flow.integer ? 'integer' : step);
 }

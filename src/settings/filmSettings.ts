@@ -1,5 +1,6 @@
 import { type FilmIndex } from '../physics/filmIndex.ts';
 import { FIELDS, type FieldName } from '../fields/fields.ts';
+import type { FlowSettings } from '../fields/thicknessField.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
@@ -34,8 +35,8 @@ export type ToneMapping = Exclude<(typeof TONE_MAPPINGS)[number], 'auto'>;
 export const toneMappingOf = (s: Pick<FilmSettings, 'tonemap' | 'env'>): ToneMapping =>
   s.tonemap !== 'auto' ? s.tonemap : isHdrEnvironment(s.env) ? 'agx' : 'none';
 
-/** Everything a rendered bubble depends on. Ranges and defaults: `filmParameters.ts`. */
-export interface FilmSettings {
+/** Everything a rendered bubble depends on (the flowing film's FlowSettings included). Ranges and defaults: `filmParameters.ts`. */
+export interface FilmSettings extends FlowSettings {
   readonly nOutside: number;
   /** n_b: a number, a material or a Cauchy film (filmIndex.ts) */
   readonly nFilm: FilmIndex;
@@ -56,12 +57,4 @@ export interface FilmSettings {
   readonly tonemap: (typeof TONE_MAPPINGS)[number];
   readonly exposure: number;
   readonly timeSeconds: number;
-  /** The flowing film's (field `flow`): bubble radius, Γ0, evaporation, wind, seed, simulated seconds per second, grid. */
-  readonly radiusMm: number;
-  readonly surfactantMolM2: number;
-  readonly evaporationNmS: number;
-  readonly windMps: number;
-  readonly seed: number;
-  readonly simSpeed: number;
-  readonly gridN: number;
 }
