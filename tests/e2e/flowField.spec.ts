@@ -1,6 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { watchProblems } from './pageWatch.ts';
-import { loseContext, restoreContext } from './webglContext.ts';
+import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';
 
 /**
  * field=flow in the demo: a frozen time is simulated in whole fixed steps from the seeded start, so
@@ -61,10 +61,13 @@ test('after a lost context the flowing film is simulated again from its start to
 }) => {
   const problems = watchProblems(page);
   const before = await load(page, FROZEN);
+  const objects = await settledGpuObjects(page);
   await loseContext(page);
   await restoreContext(page);
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
   expect(await drawn(page)).toEqual(before);
+  // The restored film's targets and textures replace the lost ones: nothing leaked.
+  await expect.poll(() => gpuObjects(page)).toEqual(objects);
   // A new film after the restore (its own targets), and the one it replaces disposed: no warning either.
   await page.evaluate(() => {
     const view = (window as unknown as Demo).bubbleView;
