@@ -24,30 +24,31 @@ import { shaderSource } from '../gpu/shaderSource.ts';
 import { type AtlasSize, cellTexelIndex, edgeAtlasSize, faceAtlasSize } from './flowAtlas.ts';
 import { type FlowGridTextures, HALO_TAP_TEXELS, flowGridTextures } from './flowGridTextures.ts';
 
-/** Each pass: the GLSL file of the twin's module it mirrors and the function that computes a texel. */
+/**
+ * Each pass: the GLSL file of the twin's module it mirrors and the call that computes a texel. The
+ * halo pass's function takes its textures as arguments (the bubble's shader samples a padded film
+ * with the same file), so its pass declares them.
+ */
 const PASSES = {
-  reconstruct: ['reconstructCellVelocity.glsl', 'tfcReconstructCellVelocity'],
-  pad: ['cubeSphereSampler.glsl', 'tfcPadField(uHaloTaps, uField)'],
-  predict: ['predictEdgeVelocity.glsl', 'tfcPredictEdgeVelocity'],
-  weights: ['solveSurfactant.glsl', 'tfcSurfactantWeights'],
-  system: ['solveSurfactant.glsl', 'tfcSurfactantSystem'],
-  sweep: ['solveSurfactant.glsl', 'tfcJacobiSweep'],
-  correct: ['solveSurfactant.glsl', 'tfcCorrectEdgeVelocity'],
-  limiter: ['transportFilm.glsl', 'tfcTransportLimiter'],
-  flux: ['transportFilm.glsl', 'tfcTransportFlux'],
-  update: ['transportFilm.glsl', 'tfcTransportUpdate'],
-  start: ['filmSimulation.glsl', 'tfcStartFilm'],
-  evaporate: ['filmSimulation.glsl', 'tfcEvaporate'],
-  rupture: ['ruptureFilm.glsl', 'tfcRuptureFilm'],
-} as const;
+  reconstruct: ['reconstructCellVelocity.glsl', 'tfcReconstructCellVelocity()'],
+  pad: ['cubeSphereSampler.glsl', 'tfcPadField(uHaloTaps, uField)', 'uniform sampler2D uHaloTaps;\nuniform sampler2D uField;'],
+  predict: ['predictEdgeVelocity.glsl', 'tfcPredictEdgeVelocity()'],
+  weights: ['solveSurfactant.glsl', 'tfcSurfactantWeights()'],
+  system: ['solveSurfactant.glsl', 'tfcSurfactantSystem()'],
+  sweep: ['solveSurfactant.glsl', 'tfcJacobiSweep()'],
+  correct: ['solveSurfactant.glsl', 'tfcCorrectEdgeVelocity()'],
+  limiter: ['transportFilm.glsl', 'tfcTransportLimiter()'],
+  flux: ['transportFilm.glsl', 'tfcTransportFlux()'],
+  update: ['transportFilm.glsl', 'tfcTransportUpdate()'],
+  start: ['filmSimulation.glsl', 'tfcStartFilm()'],
+  evaporate: ['filmSimulation.glsl', 'tfcEvaporate()'],
+  rupture: ['ruptureFilm.glsl', 'tfcRuptureFilm()'],
+} as const satisfies Record<string, readonly [string, string] | readonly [string, string, string]>;
 type PassName = keyof typeof PASSES;
 
-/** The fragment shader of a pass: its module's GLSL and a main writing the function's texel. */
-function passShader([file, call]: readonly [string, string]): string {
-  const texel = call.includes('(') ? call : `${call}()`;
-  const inputs = file === 'cubeSphereSampler.glsl' ? 'uniform sampler2D uHaloTaps;\nuniform sampler2D uField;\n' : '';
-  return `${shaderSource(file)}\n${inputs}void main() { gl_FragColor = ${texel}; }\n`;
-}
+/** The fragment shader of a pass: its module's GLSL and a main writing the call's texel. */
+const passShader = ([file, texel, inputs = '']: readonly [string, string, string?]): string =>
+  `${shaderSource(file)}\n${inputs}\nvoid main() { gl_FragColor = ${texel}; }\n`;
 
 /** The channel masks of a Jacobi sweep's guess: the system's Γ (its b channel) or a sweep's result (r). */
 const SYSTEM_GUESS = [0, 0, 1, 0];
