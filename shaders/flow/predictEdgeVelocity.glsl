@@ -2,6 +2,7 @@
 // velocity traced back along the great circle for Δt (semi-Lagrangian, sampled from the padded cell
 // velocity and parallel-transported to the edge), then the semi-implicit force step of eq. (17)
 //   u* = (η_e u_adv/Δt + η_e g_e + Cr u_air) / (η_e/Δt + Cr),   c_e = M/(η_e/Δt + Cr),
+// u_air the wind's air at the surface plus a blow's,
 // η_e the logarithmic mean. Edges beside a ruptured cell are closed. An edge-atlas pass: (u*, c_e).
 #include "cubeSphereGrid.glsl"
 #include "cubeSphereSampler.glsl"
@@ -15,6 +16,12 @@ uniform float uGravity;
 uniform float uMarangoni;
 /** The air at the surface along +x: WIND_SURFACE_FACTOR × the wind (in U). */
 uniform float uSurfaceWind;
+/**
+ * A blow, the app's interaction (the twin has none): air at uBlowVelocity (in U, tangent at
+ * uBlowCenter) in a Gaussian patch exp(−(1 − x·c)/w²), w = TFC_BLOW_WIDTH_RAD; 0 when still.
+ */
+uniform vec3 uBlowCenter;
+uniform vec3 uBlowVelocity;
 
 vec4 tfcPredictEdgeVelocity() {
   int e = tfcEdgeAt(ivec2(gl_FragCoord.xy));
@@ -48,6 +55,8 @@ vec4 tfcPredictEdgeVelocity() {
   float etaEdge = tfcLogarithmicMean(filmA.r, filmB.r);
   float gravityAlongNormal = -uGravity * normal.w;
   float denominator = etaEdge / uDt + uAirFriction;
-  float predicted = (etaEdge * advected / uDt + etaEdge * gravityAlongNormal + uAirFriction * uSurfaceWind * n.x) / denominator;
+  float blow = exp(-(1.0 - dot(m, uBlowCenter)) / (TFC_BLOW_WIDTH_RAD * TFC_BLOW_WIDTH_RAD)) * dot(uBlowVelocity, n);
+  float air = uSurfaceWind * n.x + blow;
+  float predicted = (etaEdge * advected / uDt + etaEdge * gravityAlongNormal + uAirFriction * air) / denominator;
   return vec4(predicted, uMarangoni / denominator, 0.0, 0.0);
 }

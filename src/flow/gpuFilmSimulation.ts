@@ -18,6 +18,7 @@ import { initialFilm } from '../physics/flow/initialFilm.ts';
 import { LOG_MEAN_SERIES_BELOW } from '../physics/flow/logarithmicMean.ts';
 import { SURFACTANT_JACOBI_SWEEPS } from '../physics/flow/solveSurfactant.ts';
 import { WIND_SURFACE_FACTOR, timeStep } from '../physics/flow/timeStep.ts';
+import { VELOCITY_SCALE_M_S } from '../physics/flow/flowConstants.ts';
 import { floatTexture } from '../gpu/floatRow.ts';
 import { FULLSCREEN_VERTEX, FullscreenPass } from '../gpu/fullscreenPass.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
@@ -49,6 +50,9 @@ type PassName = keyof typeof PASSES;
 /** The fragment shader of a pass: its module's GLSL and a main writing the call's texel. */
 const passShader = ([file, texel, inputs = '']: readonly [string, string, string?]): string =>
   `${shaderSource(file)}\n${inputs}\nvoid main() { gl_FragColor = ${texel}; }\n`;
+
+/** The angular width of a blow's patch of air (radians): about a sixth of the bubble across. */
+export const BLOW_WIDTH_RAD = 0.3;
 
 /** The channel masks of a Jacobi sweep's guess: the system's Γ (its b channel) or a sweep's result (r). */
 const SYSTEM_GUESS = [0, 0, 1, 0];
@@ -145,6 +149,8 @@ export class GpuFilmSimulation {
       uRuptureEta: value(ruptureEta),
       uRuptureGamma: value(ruptureGamma),
       uGuessChannel: value(SWEEP_GUESS),
+      uBlowCenter: value([0, 0, 1]),
+      uBlowVelocity: value([0, 0, 0]),
       ...Object.fromEntries(
         [
           'uField',
@@ -163,7 +169,11 @@ export class GpuFilmSimulation {
       ),
     };
     this.bindGrid();
-    const defines = { TFC_HALO_TAP_TEXELS: HALO_TAP_TEXELS, TFC_LOG_MEAN_SERIES_BELOW: LOG_MEAN_SERIES_BELOW };
+    const defines = {
+      TFC_HALO_TAP_TEXELS: HALO_TAP_TEXELS,
+      TFC_LOG_MEAN_SERIES_BELOW: LOG_MEAN_SERIES_BELOW,
+      TFC_BLOW_WIDTH_RAD: BLOW_WIDTH_RAD,
+    };
     this.materials = Object.fromEntries(
       Object.entries(PASSES).map(([name, pass]) => [
         name,
@@ -190,6 +200,17 @@ export class GpuFilmSimulation {
     this.steps = 0;
     this.paddedAt = -1;
     this.residualTargets = null;
+  }
+
+  /**
+   * Air blown at a direction (unit, the simulation's frame) with a velocity in m/s (its part
+   * tangent there counts) for the steps that follow, until `blow` is called again; a zero
+   * velocity is still air (the twin's air).
+   */
+  blow(center: readonly [number, number, number], velocityMps: readonly [number, number, number]): void {
+    const along = velocityMps[0] * center[0] + velocityMps[1] * center[1] + velocityMps[2] * center[2];
+    this.uniforms.uBlowCenter!.value = [...center];
+    this.uniforms.uBlowVelocity!.value = velocityMps.map((v, k) => (v - along * center[k]!) / VELOCITY_SCALE_M_S);
   }
 
   /** Runs `count` whole steps Δt. */

@@ -1,5 +1,7 @@
 import { expect, test } from '@playwright/test';
 import { createFilmSimulation, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
+import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
+import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
 import { FLOW_GPU_FIELD_TOL, FLOW_GPU_RESIDUAL_MAX, FLOW_GPU_VELOCITY_TOL } from '../tolerances.ts';
 
 /** A small seeded film with wind and evaporation, so every pass moves something. */
@@ -36,4 +38,22 @@ test('the GPU film equals its float64 twin after 200 steps from the same seeded 
   expect(gpu.eta.every((v) => v >= 0)).toBe(true);
   expect(gpu.surfactantResidual).toBeGreaterThan(0);
   expect(gpu.surfactantResidual).toBeLessThanOrEqual(FLOW_GPU_RESIDUAL_MAX);
+});
+
+test('air blown along +y at the equator moves the film there downwind: thicker ahead of the patch, thinner behind', async ({ page }) => {
+  await page.goto('/tests/e2e/harness/parity.html');
+  await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
+  const still = { gridN: 16 };
+  const steps = 20;
+  const [calm, blown] = await page.evaluate(
+    ([p, n]) => [window.runFlow!(p, n), window.runFlow!(p, n, { center: [1, 0, 0], velocityMps: [0, 0.5, 0] })],
+    [still, steps] as const,
+  );
+  // 0.3 rad either side of the patch's centre, along the blow.
+  const grid = cubeSphereGrid(still.gridN);
+  const [ahead, behind] = [0.3, -0.3].map((a) => nearestCell(grid, Math.cos(a), Math.sin(a), 0));
+  const change = (c: number) => blown.eta[c]! - calm.eta[c]!;
+  console.log(`blow: η ahead ${change(ahead!).toExponential(2)}, behind ${change(behind!).toExponential(2)}`);
+  expect(change(ahead!)).toBeGreaterThan(1e-3);
+  expect(change(behind!)).toBeLessThan(-1e-3);
 });

@@ -13,8 +13,9 @@ const probe = new FilmXyzProbe(renderer);
 
 window.renderFilmXyz = (groups, mode, quality = DEFAULT_FILM_QUALITY) => probe.render(groups, mode, quality);
 window.renderThickness = (points, s) => renderThickness(renderer, points, s);
-window.runFlow = (parameters, steps) => {
+window.runFlow = (parameters, steps, blow) => {
   const sim = new GpuFilmSimulation(renderer, parameters);
+  if (blow) sim.blow(blow.center, blow.velocityMps);
   sim.step(steps);
   const { eta, gamma, intact } = sim.readFilm();
   const result = {
@@ -34,10 +35,11 @@ declare global {
   interface Window {
     /** XYZ per case of every group, in the groups' order, as the shader computes it. */
     renderFilmXyz?: (groups: readonly ParityGroup[], mode: ParityMode, quality?: FilmQuality) => number[][][];
-    /** The GPU film after `steps` steps from its start: per cell η, Γ, intact; per edge u·n_e; the last solve's residual. */
+    /** The GPU film after `steps` steps from its start (air blown as given): per cell η, Γ, intact; per edge u·n_e; the last solve's residual. */
     runFlow?: (
       parameters: Record<string, number>,
       steps: number,
+      blow?: { center: [number, number, number]; velocityMps: [number, number, number] },
     ) => { eta: number[]; gamma: number[]; intact: number[]; edgeVelocity: number[]; surfactantResidual: number; steps: number };
   }
 }
