@@ -148,10 +148,27 @@ export class BubbleApp {
       parts.surface.setPointerCapture(e.pointerId);
       probeAt(e);
     };
+    /** The last point of a drag (CSS pixels, ms): a drag blows on a flowing film as fast as it moves. */
+    let dragged: { x: number; y: number; t: number } | null = null;
     const onDrag = (e: PointerEvent) => {
-      if (parts.surface.hasPointerCapture(e.pointerId)) probeAt(e);
+      if (!parts.surface.hasPointerCapture(e.pointerId)) return;
+      probeAt(e);
+      const dt = dragged ? (e.timeStamp - dragged.t) / 1000 : 0;
+      if (dragged && dt > 0) {
+        const box = parts.surface.getBoundingClientRect();
+        const [fx, fy] = [(e.clientX - box.left) / box.width, (e.clientY - box.top) / box.height];
+        parts.view.blow(fx, fy, (e.clientX - dragged.x) / dt, (e.clientY - dragged.y) / dt);
+      }
+      dragged = { x: e.clientX, y: e.clientY, t: e.timeStamp };
     };
+    const onRelease = () => (dragged = null);
     const onKey = (e: KeyboardEvent) => {
+      if ((e.key === 'b' || e.key === 'B') && !e.altKey && !e.ctrlKey && !e.metaKey) {
+        // B blows on a flowing film at the probe, to the right, five view heights a second.
+        const [x, y] = this.settings.probe;
+        parts.view.blow(x, y, 5 * parts.surface.clientHeight, 0);
+        return;
+      }
       const move = arrowKeyStep(e, PROBE_STEP);
       if (!move || e.altKey || e.ctrlKey || e.metaKey) return;
       e.preventDefault(); // the arrows move the probe, not the page
@@ -175,6 +192,7 @@ export class BubbleApp {
     const onScreen = new IntersectionObserver((entries) => this.setOnScreen(entries.some((e) => e.isIntersecting)));
     parts.surface.addEventListener('pointerdown', onPress);
     parts.surface.addEventListener('pointermove', onDrag);
+    parts.surface.addEventListener('pointerup', onRelease);
     focusable.addEventListener('keydown', onKey);
     document.addEventListener('visibilitychange', onVisibility);
     resize.observe(parts.surface);
@@ -183,6 +201,7 @@ export class BubbleApp {
     this.disconnect = () => {
       parts.surface.removeEventListener('pointerdown', onPress);
       parts.surface.removeEventListener('pointermove', onDrag);
+      parts.surface.removeEventListener('pointerup', onRelease);
       focusable.removeEventListener('keydown', onKey);
       document.removeEventListener('visibilitychange', onVisibility);
       glCanvas.removeEventListener('webglcontextrestored', onRestored);

@@ -61,6 +61,12 @@ export interface FieldState {
   advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean;
   /** The settings' time (s) its film shows: the last advance's, or less while the film is behind it. */
   readonly timeSeconds: number;
+  /**
+   * Blows air at a point of the bubble (unit, the view's frame, y up) with a velocity in m/s (its
+   * part tangent there counts), over the film's next steps (a moment of film time): the film moves
+   * only while it runs. A user's interaction, so not part of the settings (or of their reproducibility).
+   */
+  blow?(point: Vec3, velocityMps: Vec3): void;
   /** Makes its GPU objects anew after a lost context; the film starts again from its start. */
   invalidate(): void;
   dispose(): void;

@@ -130,7 +130,8 @@ export const EN = {
   'app.cpuImage': 'A still image of the soap bubble, computed on the CPU',
   'app.plotsSummary': 'the film at the probe (click or tap the bubble, or use the arrow keys)',
   'app.messages': 'messages',
-  'bubble.label': 'Soap bubble showing thin-film interference. Arrow keys move the probe, Shift with an arrow moves it further.',
+  'bubble.label':
+    'Soap bubble showing thin-film interference. Arrow keys move the probe, Shift with an arrow moves it further. On a flowing film, a drag or B blows air on it.',
   'bubble.description': 'Probe at {x}% across, {y}% down: film {thickness} nm thick, θi {angle}°, {colour} ({hex}).',
   'bubble.offBubble': 'Probe at {x}% across, {y}% down: off the bubble.',
   'bubble.plotsSummary': 'the film at the probe',

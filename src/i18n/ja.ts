@@ -130,7 +130,8 @@ export const JA: Catalogue = {
   'app.cpuImage': 'CPU で計算したシャボン玉の静止画',
   'app.plotsSummary': 'プローブ位置の薄膜（泡をクリック・タップするか、矢印キーで動かす）',
   'app.messages': 'メッセージ',
-  'bubble.label': '薄膜干渉で色づくシャボン玉。矢印キーでプローブを動かす（Shift を押しながらで大きく動く）。',
+  'bubble.label':
+    '薄膜干渉で色づくシャボン玉。矢印キーでプローブを動かす（Shift を押しながらで大きく動く）。流れる膜では、ドラッグまたは B キーで風を吹きかける。',
   'bubble.description': 'プローブは左から {x}%、上から {y}%：膜厚 {thickness} nm、入射角 θi {angle}°、{colour}（{hex}）。',
   'bubble.offBubble': 'プローブは左から {x}%、上から {y}%：泡の外。',
   'bubble.plotsSummary': 'プローブ位置の薄膜',

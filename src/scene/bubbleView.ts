@@ -5,12 +5,15 @@ import {
   NeutralToneMapping,
   NoToneMapping,
   PerspectiveCamera,
+  Raycaster,
   Scene,
   ShaderMaterial,
+  Sphere,
   SphereGeometry,
   SRGBColorSpace,
   type ToneMapping as ThreeToneMapping,
   Vector2,
+  Vector3,
   WebGLRenderer,
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
@@ -25,6 +28,7 @@ import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../settings/filmQuality.
 import { FilmTable } from '../film/filmTable.ts';
 import { type FilmSettings, type HdrEnvironment, type ToneMapping, isHdrEnvironment, toneMappingOf } from '../settings/filmSettings.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
+import { FLOW_PARAMETERS } from '../physics/flow/flowParameters.ts';
 
 ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
 
@@ -32,6 +36,9 @@ ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
 const CAMERA_DISTANCE = 4;
 const FOV_DEG = 35;
 const SIZE = new Vector2();
+const UNIT_SPHERE = new Sphere(new Vector3(), 1);
+/** The fastest blow: the wind's upper end. */
+const BLOW_MAX_MPS = FLOW_PARAMETERS.find((r) => r.key === 'windMps')!.domain.max;
 const TONE_MAPPINGS: Record<ToneMapping, ThreeToneMapping> = { none: NoToneMapping, agx: AgXToneMapping, neutral: NeutralToneMapping };
 
 /** Where the view's HDR environment stands: shown, on its way (`sky` meanwhile), or failed (`sky` instead). */
@@ -197,6 +204,27 @@ export class BubbleView {
    */
   get coarse(): boolean {
     return this.settings.mode === 'table' && this.table.coarse;
+  }
+
+  /**
+   * Blows air on an evolving film at a point of the view (fractions from the top left) along a
+   * screen velocity (CSS pixels per second, right and down), as fast as that moves over the
+   * bubble's surface (the radius sets the scale), at most BLOW_MAX_MPS. Nothing off the bubble or
+   * for a field whose film does not evolve.
+   */
+  blow(fx: number, fy: number, vxPx: number, vyPx: number): void {
+    const state = this.fieldState?.state;
+    if (!state?.blow) return;
+    const raycaster = new Raycaster();
+    raycaster.setFromCamera(new Vector2(2 * fx - 1, 1 - 2 * fy), this.camera);
+    const hit = raycaster.ray.intersectSphere(UNIT_SPHERE, new Vector3());
+    if (!hit) return;
+    // Metres per CSS pixel at the point's distance (the camera looks along −z: x right, y up).
+    const viewHeight = 2 * hit.distanceTo(this.camera.position) * Math.tan((FOV_DEG * Math.PI) / 360);
+    const metresPerPixel = (viewHeight / this.size.height) * this.settings.radiusMm * 1e-3;
+    const speed = Math.hypot(vxPx, vyPx) * metresPerPixel;
+    const scale = speed > BLOW_MAX_MPS ? BLOW_MAX_MPS / speed : 1;
+    state.blow([hit.x, hit.y, hit.z], [vxPx * metresPerPixel * scale, -vyPx * metresPerPixel * scale, 0]);
   }
 
   /** Whether the renderer's WebGL context is lost (nothing can be drawn or read until it is restored). */

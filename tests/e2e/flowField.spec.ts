@@ -1,4 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
+import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
+import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
 import { watchProblems } from './pageWatch.ts';
 import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';
 
@@ -75,4 +77,31 @@ test('after a lost context the flowing film is simulated again from its start to
     view.render();
   });
   expect(problems).toEqual([]);
+});
+
+test('B on the bubble blows at the probe, to the right: the film there moves right', async ({ page }) => {
+  // Still air, so the blow is the only air.
+  await load(page, FROZEN.replace('wind=0.5', 'wind=0'));
+  await page.getByRole('application').focus();
+  /** η at the front of the bubble 0.3 rad right and left of the centre, 0.03 s of film after the time, blown or not. */
+  const filmAfter = (blown: boolean) =>
+    page.evaluate((withBlow) => {
+      const view = (window as unknown as Demo).bubbleView;
+      const start = view.current.timeSeconds;
+      if (withBlow) document.querySelector<HTMLElement>('[role=application]')!.dispatchEvent(new KeyboardEvent('keydown', { key: 'b' }));
+      view.apply({ ...view.current, timeSeconds: start + 0.03 });
+      view.render();
+      const film = view.evolvingFilm as unknown as { current: { readFilm(): { eta: Float32Array }; grid: { n: number } } };
+      const { eta } = film.current.readFilm();
+      view.apply({ ...view.current, timeSeconds: start });
+      view.render();
+      return [...eta];
+    }, blown);
+  const calm = await filmAfter(false);
+  const blown = await filmAfter(true);
+  const grid = cubeSphereGrid(16);
+  // The view's front (0, 0, 1) is the simulation's (0, −1, 0); the view's right, +x, is its +x.
+  const [right, left] = [0.3, -0.3].map((a) => nearestCell(grid, Math.sin(a), -Math.cos(a), 0));
+  expect(blown[right!]! - calm[right!]!).toBeGreaterThan(1e-3);
+  expect(blown[left!]! - calm[left!]!).toBeLessThan(-1e-3);
 });
