@@ -8,7 +8,7 @@ export const SOURCE_LAYERS: readonly (readonly string[])[] = [
   ['fields'], // the film's thickness over the bubble: one module per field, registered in fields.ts
   ['settings'], // the schema of every user-facing parameter, and the film's quality knobs
   ['gpu'], // three.js plumbing: shader source, defines, shared resources, the fullscreen pass
-  ['film'], // the film's colour on the GPU
+  ['film', 'flow'], // the film's colour on the GPU; the flowing film's simulation on the GPU
   ['bubble'], // the bubble's and the environment's materials
   ['material', 'twins'], // the material for any three.js mesh; the CPU twins of the bubble's shaders
   ['scene'], // the bubble's view: renderer, frame loop, probe

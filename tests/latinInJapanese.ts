@@ -5,6 +5,7 @@
  */
 export const LATIN_IN_JAPANESE: ReadonlySet<string> = new Set([
   'nm', // nanometres
+  'mol', // moles, in the surfactant's mol/m²
   'cos', // the optical path's cosine
   'out', // I_out, the reflected light's symbol
   'sRGB',

@@ -148,10 +148,27 @@ export class BubbleApp {
       parts.surface.setPointerCapture(e.pointerId);
       probeAt(e);
     };
+    /** The last point of a drag (CSS pixels, ms): a drag blows on a flowing film as fast as it moves. */
+    let dragged: { x: number; y: number; t: number } | null = null;
     const onDrag = (e: PointerEvent) => {
-      if (parts.surface.hasPointerCapture(e.pointerId)) probeAt(e);
+      if (!parts.surface.hasPointerCapture(e.pointerId)) return;
+      probeAt(e);
+      const dt = dragged ? (e.timeStamp - dragged.t) / 1000 : 0;
+      if (dragged && dt > 0) {
+        const box = parts.surface.getBoundingClientRect();
+        const [fx, fy] = [(e.clientX - box.left) / box.width, (e.clientY - box.top) / box.height];
+        parts.view.blow(fx, fy, (e.clientX - dragged.x) / dt, (e.clientY - dragged.y) / dt);
+      }
+      dragged = { x: e.clientX, y: e.clientY, t: e.timeStamp };
     };
+    const onRelease = () => (dragged = null);
     const onKey = (e: KeyboardEvent) => {
+      if ((e.key === 'b' || e.key === 'B') && !e.altKey && !e.ctrlKey && !e.metaKey) {
+        // B blows on a flowing film at the probe, to the right, five view heights a second.
+        const [x, y] = this.settings.probe;
+        parts.view.blow(x, y, 5 * parts.surface.clientHeight, 0);
+        return;
+      }
       const move = arrowKeyStep(e, PROBE_STEP);
       if (!move || e.altKey || e.ctrlKey || e.metaKey) return;
       e.preventDefault(); // the arrows move the probe, not the page
@@ -175,6 +192,7 @@ export class BubbleApp {
     const onScreen = new IntersectionObserver((entries) => this.setOnScreen(entries.some((e) => e.isIntersecting)));
     parts.surface.addEventListener('pointerdown', onPress);
     parts.surface.addEventListener('pointermove', onDrag);
+    parts.surface.addEventListener('pointerup', onRelease);
     focusable.addEventListener('keydown', onKey);
     document.addEventListener('visibilitychange', onVisibility);
     resize.observe(parts.surface);
@@ -183,6 +201,7 @@ export class BubbleApp {
     this.disconnect = () => {
       parts.surface.removeEventListener('pointerdown', onPress);
       parts.surface.removeEventListener('pointermove', onDrag);
+      parts.surface.removeEventListener('pointerup', onRelease);
       focusable.removeEventListener('keydown', onKey);
       document.removeEventListener('visibilitychange', onVisibility);
       glCanvas.removeEventListener('webglcontextrestored', onRestored);
@@ -229,15 +248,17 @@ export class BubbleApp {
 
   /**
    * One frame, from a coarse table while the table is being rebuilt (FilmTable: the frames after
-   * a change complete it). A frame drawn while the HDR environment is on its way is not complete
-   * either. The plots follow a complete frame in a task of their own, so the frame is shown first.
+   * a change complete it). A frame drawn while the HDR environment is on its way, or with a flowing
+   * film short of its frozen time, is not complete either. The plots follow a complete frame in a task of their own, so the frame is shown first.
    */
   private draw(): void {
     const view = this.parts.view;
     view.render(true);
     this.parts.present?.();
     this.showEnvironmentStatus();
-    const complete = !view.coarse && view.environmentStatus.state !== 'loading';
+    // A flowing film short of a frozen time is not complete (the frames after bring it there); while
+    // the film animates, every frame shows its film time and is.
+    const complete = !view.coarse && (!view.filmBehind || this.looping) && view.environmentStatus.state !== 'loading';
     this.completeShown = complete;
     if (complete) this.schedulePlots();
     this.parts.onFrame?.(complete);
@@ -363,7 +384,15 @@ export class BubbleApp {
       this.looping = false;
     }
     this.draw();
-    if (this.looping || this.parts.view.coarse) this.requestFrame();
+    const view = this.parts.view;
+    const filmTime = view.filmTimeSeconds;
+    if (this.looping && view.filmBehind && filmTime !== null) {
+      // A film simulated slower than the clock: the clock waits for it, so the time shown (and a
+      // pause's frozen time) is the film's, with nothing to catch up.
+      this.clockOrigin = now - filmTime * 1000;
+      view.apply({ ...view.current, timeSeconds: filmTime });
+    }
+    if (this.looping || view.coarse || view.filmBehind) this.requestFrame();
   }
 
   /**

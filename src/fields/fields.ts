@@ -1,4 +1,5 @@
 import { drainageField } from './drainageField.ts';
+import { flowField } from './flowField.ts';
 import { swirlField } from './swirlField.ts';
 import type { FieldSettings, ThicknessField, Vec3 } from './thicknessField.ts';
 import { uniformField } from './uniformField.ts';
@@ -11,6 +12,7 @@ export const THICKNESS_FIELDS = {
   uniform: uniformField,
   drainage: drainageField,
   swirl: swirlField,
+  flow: flowField,
 } as const satisfies Record<string, ThicknessField>;
 
 export type FieldName = keyof typeof THICKNESS_FIELDS;

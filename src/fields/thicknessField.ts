@@ -1,8 +1,19 @@
+import type { FlowParameters } from '../physics/flow/flowParameters.ts';
+
 /** A point on the unit sphere, y up. */
 export type Vec3 = readonly [number, number, number];
 
+/**
+ * The flowing film's settings (field `flow`): bubble radius, Γ0, evaporation, wind, seed, simulated
+ * seconds per second, grid; src/physics/flow/flowParameters.ts names them and holds their ranges.
+ */
+export type FlowSettings = Pick<
+  FlowParameters,
+  'radiusMm' | 'surfactantMolM2' | 'evaporationNmS' | 'windMps' | 'seed' | 'simSpeed' | 'gridN'
+>;
+
 /** What a field reads of the settings (the schema's rows in src/settings/filmParameters.ts). */
-export interface FieldSettings {
+export interface FieldSettings extends FlowSettings {
   /** the mean thickness, nm */
   readonly thicknessNm: number;
   /** the drained film's top-to-bottom difference, nm */
@@ -27,10 +38,36 @@ export interface ThicknessField {
   readonly uniforms: () => FieldUniforms;
   /** Sets its uniforms to the settings (each frame). */
   readonly update: (u: FieldUniforms, s: FieldSettings) => void;
-  /** The thickness in nm at `p` (the twin of its GLSL `tfcThicknessAt`). */
+  /** The thickness in nm at `p` (the twin of its GLSL `tfcThicknessAt`; an evolving field's film at its start). */
   readonly thicknessAt: (p: Vec3, s: FieldSettings) => number;
   /** The largest thickness it reaches, in nm, at least 1 (the field is clamped to the domain's 20 µm). */
   readonly maxThicknessNm: (s: FieldSettings) => number;
   /** Whether it changes with time (the view animates only such a field). */
   readonly animates: boolean;
+  /**
+   * Whether its film evolves in a simulation the view holds (a FieldState, made for it in
+   * src/bubble/fieldStates.ts) and advances to the settings' time before each frame.
+   */
+  readonly evolves?: true;
+}
+
+/** The simulation an evolving field's film lives in, kept by the view while it shows the field. */
+export interface FieldState {
+  /**
+   * Brings the film to the settings' time by at most `maxSteps` fixed steps (from its start if its
+   * parameters changed or the time went back) and points the uniforms at it; returns whether it
+   * reached that time. Nothing runs when it is there already.
+   */
+  advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean;
+  /** The settings' time (s) its film shows: the last advance's, or less while the film is behind it. */
+  readonly timeSeconds: number;
+  /**
+   * Blows air at a point of the bubble (unit, the view's frame, y up) with a velocity in m/s (its
+   * part tangent there counts), over the film's next steps (a moment of film time): the film moves
+   * only while it runs. A user's interaction, so not part of the settings (or of their reproducibility).
+   */
+  blow?(point: Vec3, velocityMps: Vec3): void;
+  /** Makes its GPU objects anew after a lost context; the film starts again from its start. */
+  invalidate(): void;
+  dispose(): void;
 }

@@ -1,14 +1,19 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat, type ShaderMaterial, WebGLRenderTarget, type WebGLRenderer } from 'three';
 import { FullscreenPass } from './fullscreenPass.ts';
 
-/** One row of RGBA float texels, read by texelFetch (no filtering): a shader's per-case inputs. */
-export function floatRowTexture(rgba: readonly (readonly number[])[]): DataTexture {
-  const data = new Float32Array(4 * rgba.length);
-  rgba.forEach((texel, i) => data.set(texel, 4 * i));
-  const texture = new DataTexture(data, rgba.length, 1, RGBAFormat, FloatType);
+/** RGBA float texels (row-major, 4 floats each), read by texelFetch (no filtering). */
+export function floatTexture(data: Float32Array, width: number, height: number): DataTexture {
+  const texture = new DataTexture(data, width, height, RGBAFormat, FloatType);
   texture.minFilter = texture.magFilter = NearestFilter;
   texture.needsUpdate = true;
   return texture;
+}
+
+/** One row of RGBA float texels: a shader's per-case inputs. */
+export function floatRowTexture(rgba: readonly (readonly number[])[]): DataTexture {
+  const data = new Float32Array(4 * rgba.length);
+  rgba.forEach((texel, i) => data.set(texel, 4 * i));
+  return floatTexture(data, rgba.length, 1);
 }
 
 /**

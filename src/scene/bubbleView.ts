@@ -5,16 +5,22 @@ import {
   NeutralToneMapping,
   NoToneMapping,
   PerspectiveCamera,
+  Raycaster,
   Scene,
   ShaderMaterial,
+  Sphere,
   SphereGeometry,
   SRGBColorSpace,
   type ToneMapping as ThreeToneMapping,
   Vector2,
+  Vector3,
   WebGLRenderer,
 } from 'three';
 import { DisplayP3ColorSpace, DisplayP3ColorSpaceImpl } from 'three/addons/math/ColorSpaces.js';
 import { createBubbleMaterial, updateBubbleUniforms } from '../bubble/bubbleMaterial.ts';
+import { createFieldState } from '../bubble/fieldStates.ts';
+import type { FieldName } from '../fields/fields.ts';
+import type { FieldState } from '../fields/thicknessField.ts';
 import { releaseFilmColorTextures } from '../film/filmColor.ts';
 import { createBackgroundMaterial, updateBackgroundMaterial } from '../bubble/environmentMaterial.ts';
 import { environmentTexture, loadEnvironmentPixels, releaseEnvironmentTexture } from '../bubble/environmentMaps.ts';
@@ -23,6 +29,7 @@ import { FilmTable } from '../film/filmTable.ts';
 import { spectralTransformReady } from '../film/spectralTransformTexture.ts';
 import { type FilmSettings, type HdrEnvironment, type ToneMapping, isHdrEnvironment, toneMappingOf } from '../settings/filmSettings.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
+import { FLOW_PARAMETERS } from '../physics/flow/flowParameters.ts';
 
 ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
 
@@ -30,6 +37,9 @@ ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
 const CAMERA_DISTANCE = 4;
 const FOV_DEG = 35;
 const SIZE = new Vector2();
+const UNIT_SPHERE = new Sphere(new Vector3(), 1);
+/** The fastest blow: the wind's upper end. */
+const BLOW_MAX_MPS = FLOW_PARAMETERS.find((r) => r.key === 'windMps')!.domain.max;
 const TONE_MAPPINGS: Record<ToneMapping, ThreeToneMapping> = { none: NoToneMapping, agx: AgXToneMapping, neutral: NeutralToneMapping };
 
 /** Where the view's HDR environment stands: shown, on its way (`sky` meanwhile), or failed (`sky` instead). */
@@ -74,6 +84,10 @@ export class BubbleView {
    */
   private lightShown: Pick<FilmSettings, 'illuminant' | 'normalization'> | null = null;
   private lightWaiting = false;
+  /** The simulation of an evolving field's film (null for another field): made when the field is shown, dropped when it is left. */
+  private fieldState: { readonly field: FieldName; readonly state: FieldState } | null = null;
+  /** Whether the last frame drew an evolving film short of the settings' time (more frames bring it there). */
+  filmBehind = false;
 
   constructor(
     readonly renderer: WebGLRenderer,
@@ -87,12 +101,25 @@ export class BubbleView {
     this.background = new Mesh(new SphereGeometry(50, 64, 32), createBackgroundMaterial());
     this.scene.add(this.background, this.bubble);
     // After a lost context comes back, three re-creates programs and re-uploads textures by
-    // itself; the table, drawn on the GPU, is gone and must be drawn again.
+    // itself; the table and an evolving film, drawn on the GPU, are gone and must be drawn again.
     renderer.domElement.addEventListener('webglcontextrestored', this.rebuildTable);
     this.apply(settings);
   }
 
-  private readonly rebuildTable = () => this.table.invalidate();
+  private readonly rebuildTable = () => {
+    this.table.invalidate();
+    this.fieldState?.state.invalidate();
+  };
+
+  /** The time (s) the evolving film drawn shows (less than the settings' while behind), or null for another field. */
+  get filmTimeSeconds(): number | null {
+    return this.fieldState?.state.timeSeconds ?? null;
+  }
+
+  /** The evolving field's simulation, if the field shown evolves (for tests and the benchmark). */
+  get evolvingFilm(): FieldState | null {
+    return this.fieldState?.state ?? null;
+  }
 
   get current(): FilmSettings {
     return this.settings;
@@ -101,6 +128,12 @@ export class BubbleView {
   /** Takes new settings (already validated). Cheap: the table is brought up to date when drawn. */
   apply(s: FilmSettings): void {
     this.settings = s;
+    if (this.fieldState?.field !== s.field) {
+      this.fieldState?.state.dispose();
+      const state = createFieldState(s.field, this.renderer);
+      this.fieldState = state && { field: s.field, state };
+      this.filmBehind = false;
+    }
     const wantP3 = s.space === 'display-p3' || s.space === 'wide-gamut';
     this.renderer.outputColorSpace = wantP3 ? DisplayP3ColorSpace : SRGBColorSpace;
     const gl = this.renderer.getContext();
@@ -202,6 +235,27 @@ export class BubbleView {
     return (this.settings.mode === 'table' && this.table.coarse) || this.lightWaiting;
   }
 
+  /**
+   * Blows air on an evolving film at a point of the view (fractions from the top left) along a
+   * screen velocity (CSS pixels per second, right and down), as fast as that moves over the
+   * bubble's surface (the radius sets the scale), at most BLOW_MAX_MPS. Nothing off the bubble or
+   * for a field whose film does not evolve.
+   */
+  blow(fx: number, fy: number, vxPx: number, vyPx: number): void {
+    const state = this.fieldState?.state;
+    if (!state?.blow) return;
+    const raycaster = new Raycaster();
+    raycaster.setFromCamera(new Vector2(2 * fx - 1, 1 - 2 * fy), this.camera);
+    const hit = raycaster.ray.intersectSphere(UNIT_SPHERE, new Vector3());
+    if (!hit) return;
+    // Metres per CSS pixel at the point's distance (the camera looks along −z: x right, y up).
+    const viewHeight = 2 * hit.distanceTo(this.camera.position) * Math.tan((FOV_DEG * Math.PI) / 360);
+    const metresPerPixel = (viewHeight / this.size.height) * this.settings.radiusMm * 1e-3;
+    const speed = Math.hypot(vxPx, vyPx) * metresPerPixel;
+    const scale = speed > BLOW_MAX_MPS ? BLOW_MAX_MPS / speed : 1;
+    state.blow([hit.x, hit.y, hit.z], [vxPx * metresPerPixel * scale, -vyPx * metresPerPixel * scale, 0]);
+  }
+
   /** Whether the renderer's WebGL context is lost (nothing can be drawn or read until it is restored). */
   get contextLost(): boolean {
     return this.renderer.getContext().isContextLost();
@@ -232,6 +286,9 @@ export class BubbleView {
       this.apply(this.settings);
     }
     this.syncTable(quick);
+    const film = this.fieldState?.state;
+    if (film)
+      this.filmBehind = !film.advance(this.bubble.material.uniforms, this.settings, quick ? this.quality.flowStepsPerFrame : Infinity);
     // Per frame, as views may share the renderer (each view's materials are compiled for its own).
     r.toneMapping = this.toneMapping;
     r.render(this.scene, this.camera);
@@ -255,6 +312,7 @@ export class BubbleView {
     this.renderer.domElement.removeEventListener('webglcontextrestored', this.rebuildTable);
     this.filmProbe.dispose();
     this.table.dispose();
+    this.fieldState?.state.dispose();
     this.bubble.geometry.dispose();
     releaseFilmColorTextures(this.bubble.material);
     this.bubble.material.dispose();

@@ -1,9 +1,17 @@
 import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
+import type { FlowSettings } from '../fields/thicknessField.ts';
+import { FLOW_PARAMETERS } from '../physics/flow/flowParameters.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
 import { type ParameterRow, choiceRow, defaultsOf, illuminantRow, mediumRow, numberRow } from './parameterRow.ts';
 
 type Row = ParameterRow<FilmSettings>;
+
+/** A row of the flowing film's (a settings field named as its FLOW_PARAMETERS row), its domain and default from there, in the panel's flow folder. */
+function flowRow(key: keyof FlowSettings, url: string, step: number): Row {
+  const flow = FLOW_PARAMETERS.find((r) => r.key === key)!;
+  return numberRow({ key, url }, flow.domain, flow.defaultValue, 'flow', flow.integer ? 'integer' : step);
+}
 
 /**
  * The schema of what a rendered bubble depends on: one row per parameter, with its names (URL,
@@ -29,6 +37,13 @@ export const FILM_PARAMETERS: readonly Row[] = [
   numberRow({ key: 'envRotationDeg', url: 'envRotation' }, { min: 0, max: 360, unit: 'degrees' }, 0, 'view', 1),
   choiceRow({ key: 'sides', url: 'sides' }, SIDES, 'both', 'view'),
   numberRow({ key: 'timeSeconds', url: 'time' }, { min: 0, max: 1e6, unit: 's' }, 0, null),
+  flowRow('radiusMm', 'radius', 1),
+  flowRow('surfactantMolM2', 'surfactant', 1e-9),
+  flowRow('evaporationNmS', 'evaporation', 1),
+  flowRow('windMps', 'wind', 0.01),
+  flowRow('seed', 'seed', 1),
+  flowRow('simSpeed', 'simSpeed', 0.01),
+  flowRow('gridN', 'grid', 1),
 ];
 
 /** The default view. */

@@ -24,6 +24,11 @@ export interface FilmQuality {
   readonly spectralTailTolerance: number;
   /** the most orders of the Airy series in `fourier` mode (2, 3: the peers' truncations) */
   readonly airySeriesMaxOrders: number;
+  /**
+   * the most fixed steps the flowing film takes per app frame; a film behind its time takes the
+   * frames after (a frame drawn without the app's budget, a test's or the render command's, takes all)
+   */
+  readonly flowStepsPerFrame: number;
 }
 
 export const DEFAULT_FILM_QUALITY: FilmQuality = {
@@ -33,6 +38,7 @@ export const DEFAULT_FILM_QUALITY: FilmQuality = {
   tablePrecision: 'auto',
   spectralTailTolerance: 1e-5,
   airySeriesMaxOrders: AIRY_SERIES_MAX_ORDERS,
+  flowStepsPerFrame: 8,
 };
 
 /** The spectral bins a film's binned integral takes: a dispersive film's own count, else `constant`'s. */
@@ -55,6 +61,8 @@ const THICK_END_CELL_NM = { min: 0.1, max: 1000, unit: 'nm' } as const;
 const TEXEL_POWER = { min: 1, max: 4, unit: '' } as const;
 /** Skipped tails: 0 keeps every bin; above 1% of the white a visible part of the spectrum would go. */
 const TAIL_TOLERANCE = { min: 0, max: 0.01, unit: '' } as const;
+/** Steps per frame: at least one; 1000 steps of ~25 passes are a long frame on any GPU. */
+const FLOW_STEPS_PER_FRAME = { min: 1, max: 1000, unit: 'steps' } as const;
 const PRECISIONS = ['auto', 'half'] as const satisfies readonly FilmQuality['tablePrecision'][];
 
 function integerIn(field: string, value: unknown, d: NumberDomain): number {
@@ -98,5 +106,6 @@ export function filmQualityFrom(o: FilmQualityOptions = {}): FilmQuality {
       max: AIRY_SERIES_MAX_ORDERS,
       unit: 'orders',
     }),
+    flowStepsPerFrame: integerIn('quality.flowStepsPerFrame', q.flowStepsPerFrame, FLOW_STEPS_PER_FRAME),
   };
 }

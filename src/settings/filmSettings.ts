@@ -1,5 +1,6 @@
 import { type Medium } from '../physics/medium.ts';
 import { FIELDS, type FieldName } from '../fields/fields.ts';
+import type { FlowSettings } from '../fields/thicknessField.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
@@ -34,8 +35,8 @@ export type ToneMapping = Exclude<(typeof TONE_MAPPINGS)[number], 'auto'>;
 export const toneMappingOf = (s: Pick<FilmSettings, 'tonemap' | 'env'>): ToneMapping =>
   s.tonemap !== 'auto' ? s.tonemap : isHdrEnvironment(s.env) ? 'agx' : 'none';
 
-/** Everything a rendered bubble depends on. Ranges and defaults: `filmParameters.ts`. */
-export interface FilmSettings {
+/** Everything a rendered bubble depends on (the flowing film's FlowSettings included). Ranges and defaults: `filmParameters.ts`. */
+export interface FilmSettings extends FlowSettings {
   readonly nOutside: number;
   /** ñ_b: a number, a material, a Cauchy film, a named medium or a complex constant (medium.ts) */
   readonly nFilm: Medium;

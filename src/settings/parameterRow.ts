@@ -33,7 +33,7 @@ export type PanelControl =
   /** A medium (medium.ts): a film index's controls, a named medium (a metal, an oxide) or a complex constant (text n,k). */
   | { readonly folder: PanelFolder; readonly kind: 'medium'; readonly role: Exclude<MediumRole, 'outside'> };
 
-export const PANEL_FOLDERS = ['film', 'light and colour', 'view'] as const;
+export const PANEL_FOLDERS = ['film', 'flow', 'light and colour', 'view'] as const;
 export type PanelFolder = (typeof PANEL_FOLDERS)[number];
 
 /**
@@ -119,23 +119,28 @@ export function customRow<S, K extends keyof S & string>(
   return { ...named(n, defaultValue, kind.write), ...kind, expected: expectationText(kind.expects, EN) };
 }
 
-/** A number in a closed domain; the panel's slider spans the whole domain in steps of `step`. */
+/**
+ * A number in a closed domain (a whole number if `step` is 'integer'); the panel's slider spans the
+ * whole domain in steps of `step` (1 for an integer).
+ */
 export function numberRow<S, K extends keyof S & string>(
   n: RowNames<S, K>,
   domain: NumberDomain,
   defaultValue: S[K],
   folder: PanelFolder | null,
-  step = 0,
+  step: number | 'integer' = 0,
 ): ParameterRow<S> {
+  const integer = step === 'integer';
+  const values = { min: domain.min, max: domain.max };
   return {
     ...named(n, defaultValue, (s) => String(s[n.key])),
-    expected: expectedNumber(domain),
-    expects: { key: 'expected.number', values: { min: domain.min, max: domain.max }, unit: domain.unit },
+    expected: integer ? `an integer in [${domain.min}, ${domain.max}]${domain.unit ? ` ${domain.unit}` : ''}` : expectedNumber(domain),
+    expects: { key: integer ? 'expected.integer' : 'expected.number', values, unit: domain.unit },
     read: (raw) => {
       const v = parseDecimal(raw);
-      return isInDomain(v, domain) ? ({ [n.key]: v } as Partial<S>) : null;
+      return isInDomain(v, domain) && (!integer || Number.isInteger(v)) ? ({ [n.key]: v } as Partial<S>) : null;
     },
-    control: folder && { folder, kind: 'slider', min: domain.min, max: domain.max, step },
+    control: folder && { folder, kind: 'slider', min: domain.min, max: domain.max, step: integer ? 1 : step },
   };
 }
 

@@ -100,8 +100,8 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
     // The same session every run: the page takes its random draws from a seeded generator here.
     { changes: CHANGES, perFrame: CHANGES_PER_FRAME, size: SIZE, draws: Array.from({ length: 3 * CHANGES }, mulberry32(20261123)) },
   );
-  // Every slider and every list of the panel: field, film material, illuminant, polarisation, normalisation, space, tone mapping, mode, environment, sides.
-  expect(done).toMatchObject({ count: CHANGES, sliders: 9, selects: 10 });
+  // Every slider and every list of the panel: field, film material, inside medium, illuminant, polarisation, normalisation, space, tone mapping, mode, environment, sides.
+  expect(done).toMatchObject({ count: CHANGES, sliders: 9, selects: 11 });
   // While the session runs, the panel's bubble holds one program per part it draws (bubble, table
   // pass, sky, probe), whatever it was switched through: never more than its own count at the start plus
   // SWITCH_ALLOWANCE (parts its first settings did not draw), and as many geometries and textures

@@ -57,3 +57,6 @@ export function faceDirection(face: number, tanA: number, tanB: number, out: Flo
  * atan(xy/√(1 + x² + y²)). Differences of it give each cell's exact area.
  */
 export const gnomonicSolidAngle = (x: number, y: number): number => Math.atan((x * y) / Math.sqrt(1 + x * x + y * y));
+
+/** Each face's n, u, v as the columns of a 3 × 3 matrix, face after face (a shader's `mat3 uCubeFaces[6]`). */
+export const cubeFaceColumns = (): number[] => CUBE_FACES.flatMap((f) => [...f.n, ...f.u, ...f.v]);

@@ -1,5 +1,5 @@
 /** Below this |δ| the series 1 − δ²/3 replaces δ/atanh δ (its next term, 4δ⁴/45, is under 1e-13 there). */
-const SERIES_BELOW = 1e-3;
+export const LOG_MEAN_SERIES_BELOW = 1e-3;
 
 /**
  * The logarithmic mean L(a, b) = (a − b)/(ln a − ln b) of two non-negative numbers, L(a, a) = a and
@@ -12,7 +12,7 @@ export function logarithmicMean(a: number, b: number): number {
   if (sum <= 0) return 0;
   const delta = (a - b) / sum;
   const mean = 0.5 * sum;
-  if (Math.abs(delta) < SERIES_BELOW) return mean * (1 - (delta * delta) / 3);
+  if (Math.abs(delta) < LOG_MEAN_SERIES_BELOW) return mean * (1 - (delta * delta) / 3);
   if (Math.abs(delta) >= 1) return 0;
   return (mean * delta) / Math.atanh(delta);
 }

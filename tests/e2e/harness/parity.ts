@@ -4,6 +4,7 @@ import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/settings/fi
 import type { ParityGroup, ParityMode } from '../../../scripts/harness/parityCase.ts';
 import { FilmXyzProbe } from '../../../scripts/harness/filmXyzProbe.ts';
 import { renderThickness } from './thicknessFieldProbe.ts';
+import { GpuFilmSimulation } from '../../../src/flow/gpuFilmSimulation.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');
 if (!canvas) throw new Error('parity.html must hold #gl');
@@ -12,11 +13,33 @@ const probe = new FilmXyzProbe(renderer);
 
 window.renderFilmXyz = (groups, mode, quality = DEFAULT_FILM_QUALITY) => probe.render(groups, mode, quality);
 window.renderThickness = (points, s) => renderThickness(renderer, points, s);
+window.runFlow = (parameters, steps, blow) => {
+  const sim = new GpuFilmSimulation(renderer, parameters);
+  if (blow) sim.blow(blow.center, blow.velocityMps);
+  sim.step(steps);
+  const { eta, gamma, intact } = sim.readFilm();
+  const result = {
+    eta: [...eta],
+    gamma: [...gamma],
+    intact: [...intact],
+    edgeVelocity: [...sim.readEdgeVelocity()],
+    surfactantResidual: sim.surfactantResidual(),
+    steps: sim.steps,
+  };
+  sim.dispose();
+  return result;
+};
 document.body.dataset.ready = 'yes';
 
 declare global {
   interface Window {
     /** XYZ per case of every group, in the groups' order, as the shader computes it. */
     renderFilmXyz?: (groups: readonly ParityGroup[], mode: ParityMode, quality?: FilmQuality) => number[][][];
+    /** The GPU film after `steps` steps from its start (air blown as given): per cell η, Γ, intact; per edge u·n_e; the last solve's residual. */
+    runFlow?: (
+      parameters: Record<string, number>,
+      steps: number,
+      blow?: { center: [number, number, number]; velocityMps: [number, number, number] },
+    ) => { eta: number[]; gamma: number[]; intact: number[]; edgeVelocity: number[]; surfactantResidual: number; steps: number };
   }
 }

@@ -1,10 +1,13 @@
 /**
  * Renders the thickness fields' tfcThicknessAt (shaders/fields/) at given points of the unit sphere into a
  * float target and reads it back, one pixel per point (the parity harness's thickness twin check).
+ * An evolving field's film is its simulation's at the settings' time.
  */
 import { FULLSCREEN_VERTEX } from '../../../src/gpu/fullscreenPass.ts';
 import { ShaderMaterial, type WebGLRenderer } from 'three';
-import type { FilmSettings } from '../../../src/settings/filmSettings.ts';
+import type { FieldName } from '../../../src/fields/fields.ts';
+import type { FieldSettings as ThicknessFieldSettings } from '../../../src/fields/thicknessField.ts';
+import { createFieldState } from '../../../src/bubble/fieldStates.ts';
 import {
   thicknessFieldDefines,
   thicknessFieldSource,
@@ -13,7 +16,7 @@ import {
 } from '../../../src/bubble/thicknessFieldSource.ts';
 import { floatRowTexture, renderFloatRow } from '../../../src/gpu/floatRow.ts';
 
-export type FieldSettings = Pick<FilmSettings, 'field' | 'thicknessNm' | 'thicknessRangeNm' | 'swirlSpeed' | 'timeSeconds'>;
+export type FieldSettings = ThicknessFieldSettings & { readonly field: FieldName };
 
 const FRAGMENT = `${thicknessFieldSource()}
 uniform sampler2D uPoints;
@@ -35,7 +38,11 @@ export function renderThickness(
     fragmentShader: FRAGMENT,
   });
   updateThicknessFieldUniforms(material.uniforms, s);
+  // An evolving field's film, advanced to the settings' time (at simSpeed 0: its start).
+  const state = createFieldState(s.field, renderer);
+  state?.advance(material.uniforms, s, Infinity);
   const out = renderFloatRow(renderer, material, points.length);
+  state?.dispose();
   texture.dispose();
   material.dispose();
   return points.map((_, i) => out[4 * i]!);

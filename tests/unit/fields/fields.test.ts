@@ -1,10 +1,16 @@
 /** The thickness fields: each module's uniforms are what its GLSL declares, and its range bounds its thickness. */
-import { readFileSync } from 'node:fs';
+import { readFileSync, readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { FIELDS, THICKNESS_FIELDS } from '../../../src/fields/fields.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
 
-const glsl = (file: string): string => readFileSync(new URL(`../../../shaders/fields/${file}`, import.meta.url), 'utf8');
+const shaders = new URL('../../../shaders/', import.meta.url);
+/** A GLSL file by its name, which is unique across shaders/'s folders. */
+const glsl = (file: string): string => {
+  const path = readdirSync(shaders, { recursive: true, encoding: 'utf8' }).find((f) => f === file || f.endsWith(`/${file}`));
+  if (!path) throw new Error(`shaders/ holds no ${file}`);
+  return readFileSync(new URL(path, shaders), 'utf8');
+};
 /** The uniforms a field's GLSL declares, its includes' included. */
 function declared(file: string): string[] {
   const text = glsl(file);

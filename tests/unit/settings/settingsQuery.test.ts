@@ -8,7 +8,8 @@ describe('URL parameters', () => {
   it('reads every documented parameter', () => {
     const { settings, errors } = parseSettings(
       '?thickness=420&thicknessRange=300&speed=2&field=drainage&nFilm=1.4&nOutside=1.1&nInside=1.2&illuminant=7500' +
-        '&polarization=s&normalization=paper&space=display-p3&mode=exact&sides=front&env=park&envRotation=90&tonemap=neutral&exposure=1.5&animate=0&time=12.5',
+        '&polarization=s&normalization=paper&space=display-p3&mode=exact&sides=front&env=park&envRotation=90&tonemap=neutral&exposure=1.5&animate=0&time=12.5' +
+        '&radius=25&surfactant=2e-7&evaporation=3&wind=0.5&seed=42&simSpeed=2&grid=32',
     );
     expect(errors).toEqual([]);
     expect(settings).toEqual({
@@ -32,6 +33,13 @@ describe('URL parameters', () => {
       exposure: 1.5,
       animate: false,
       timeSeconds: 12.5,
+      radiusMm: 25,
+      surfactantMolM2: 2e-7,
+      evaporationNmS: 3,
+      windMps: 0.5,
+      seed: 42,
+      simSpeed: 2,
+      gridN: 32,
     });
   });
 
@@ -93,9 +101,19 @@ describe('URL parameters', () => {
     exposure: [0, 100],
     envRotation: [0, 360],
     time: [0, 1_000_000],
+    radius: [10, 100],
+    surfactant: [1e-8, 1e-6],
+    evaporation: [0, 100],
+    wind: [0, 2],
+    simSpeed: [0, 10],
+  };
+  /** The whole-number parameters: a fraction is refused as well. */
+  const INTEGER: Record<string, [number, number]> = {
+    seed: [0, 2_147_483_647],
+    grid: [4, 256],
   };
   const NAMED: Record<string, readonly string[]> = {
-    field: ['uniform', 'drainage', 'swirl'],
+    field: ['uniform', 'drainage', 'swirl', 'flow'],
     polarization: ['unpolarized', 'paper', 's', 'p'],
     normalization: ['white', 'paper'],
     space: ['srgb', 'display-p3', 'wide-gamut'],
@@ -107,6 +125,13 @@ describe('URL parameters', () => {
   const rows: [string, string, string][] = [
     ...Object.entries(NUMERIC).flatMap(([name, [min, max]]) =>
       [...NOT_NUMBERS, ...outsideRange(min, max)].map((v): [string, string, string] => [name, v, `[${min}, ${max}]`]),
+    ),
+    ...Object.entries(INTEGER).flatMap(([name, [min, max]]) =>
+      [...NOT_NUMBERS, ...outsideRange(min, max), String(min + 0.5)].map((v): [string, string, string] => [
+        name,
+        v,
+        `an integer in [${min}, ${max}]`,
+      ]),
     ),
     ...Object.entries(NAMED).flatMap(([name, allowed]) =>
       notNames(allowed).map((v): [string, string, string] => [name, v, allowed.join(', ')]),

@@ -1,0 +1,62 @@
+// GPU pass 3 of the step (mirrors src/physics/flow/predictEdgeVelocity.ts): at each edge the
+// velocity traced back along the great circle for Δt (semi-Lagrangian, sampled from the padded cell
+// velocity and parallel-transported to the edge), then the semi-implicit force step of eq. (17)
+//   u* = (η_e u_adv/Δt + η_e g_e + Cr u_air) / (η_e/Δt + Cr),   c_e = M/(η_e/Δt + Cr),
+// u_air the wind's air at the surface plus a blow's,
+// η_e the logarithmic mean. Edges beside a ruptured cell are closed. An edge-atlas pass: (u*, c_e).
+#include "cubeSphereGrid.glsl"
+#include "cubeSphereSampler.glsl"
+#include "logarithmicMean.glsl"
+uniform sampler2D uFilm;
+uniform sampler2D uCellVelocity;
+uniform sampler2D uPaddedCellVelocity;
+uniform float uDt;
+uniform float uAirFriction;
+uniform float uGravity;
+uniform float uMarangoni;
+/** The air at the surface along +x: WIND_SURFACE_FACTOR × the wind (in U). */
+uniform float uSurfaceWind;
+/**
+ * A blow, the app's interaction (the twin has none): air at uBlowVelocity (in U, tangent at
+ * uBlowCenter) in a Gaussian patch exp(−(1 − x·c)/w²), w = TFC_BLOW_WIDTH_RAD; 0 when still.
+ */
+uniform vec3 uBlowCenter;
+uniform vec3 uBlowVelocity;
+
+vec4 tfcPredictEdgeVelocity() {
+  int e = tfcEdgeAt(ivec2(gl_FragCoord.xy));
+  vec4 cells = tfcEdgeCells(e);
+  int ca = tfcIndex(cells.x);
+  int cb = tfcIndex(cells.y);
+  vec4 filmA = texelFetch(uFilm, tfcCellTexel(ca), 0);
+  vec4 filmB = texelFetch(uFilm, tfcCellTexel(cb), 0);
+  if (filmA.b == 0.0 || filmB.b == 0.0) return vec4(0.0);
+  vec3 m = tfcEdgeMid(e);
+  vec4 normal = tfcEdgeNormal(e);
+  vec3 n = normal.xyz;
+  // The velocity at the midpoint: the mean of the two cells', in the tangent plane there.
+  vec3 w = 0.5 * (texelFetch(uCellVelocity, tfcCellTexel(ca), 0).xyz + texelFetch(uCellVelocity, tfcCellTexel(cb), 0).xyz);
+  w -= dot(w, m) * m;
+  float speed = length(w);
+  float advected;
+  if (speed * uDt > 0.0) {
+    float s = speed * uDt;
+    vec3 t = w / speed;
+    float cs = cos(s);
+    float sn = sin(s);
+    vec3 b = tfcSamplePadded(uPaddedCellVelocity, cs * m - sn * t).xyz;
+    // Parallel transport along the great circle: the component along the path becomes the one
+    // along t here; the one along k = m × t is kept.
+    vec3 k = cross(m, t);
+    advected = dot(b, sn * m + cs * t) * dot(t, n) + dot(b, k) * dot(k, n);
+  } else {
+    advected = dot(w, n);
+  }
+  float etaEdge = tfcLogarithmicMean(filmA.r, filmB.r);
+  float gravityAlongNormal = -uGravity * normal.w;
+  float denominator = etaEdge / uDt + uAirFriction;
+  float blow = exp(-(1.0 - dot(m, uBlowCenter)) / (TFC_BLOW_WIDTH_RAD * TFC_BLOW_WIDTH_RAD)) * dot(uBlowVelocity, n);
+  float air = uSurfaceWind * n.x + blow;
+  float predicted = (etaEdge * advected / uDt + etaEdge * gravityAlongNormal + uAirFriction * air) / denominator;
+  return vec4(predicted, uMarangoni / denominator, 0.0, 0.0);
+}

@@ -1,0 +1,19 @@
+// GPU pass 1 of the step (mirrors src/physics/flow/reconstructCellVelocity.ts): the tangent
+// velocity at each cell centre from its 4 edge velocities, Perot's reconstruction
+// u_c = (1/A_c) Σ_e L_e (u·n_out)_e (x_e − x_c), projected onto the tangent plane. A cell-atlas pass.
+#include "cubeSphereGrid.glsl"
+uniform sampler2D uEdgeVelocity;
+
+vec4 tfcReconstructCellVelocity() {
+  int c = tfcCellAt(ivec2(gl_FragCoord.xy));
+  vec4 cell = tfcCellGeometry(c);
+  vec4 edges = tfcCellEdges(c);
+  vec3 u = vec3(0.0);
+  for (int s = 0; s < 4; s++) {
+    int e = tfcEdgeOf(edges[s]);
+    float flux = sign(edges[s]) * texelFetch(uEdgeVelocity, tfcEdgeTexel(e), 0).r * tfcEdgeCells(e).z;
+    u += flux * (tfcEdgeMid(e) - cell.xyz);
+  }
+  u -= dot(u, cell.xyz) * cell.xyz;
+  return vec4(u / cell.w, 0.0);
+}

@@ -1,0 +1,48 @@
+// GPU pass 6 of the step (mirrors src/physics/flow/transportFilm.ts): Dη/Dt = −η∇·u and
+// DΓ/Dt = −Γ∇·u in conservation form by first-order upwind finite volumes, as three passes: each
+// cell's limiter (the fraction of its outflow allowed, so no cell sends more than it holds), each
+// edge's fluxes Δt L_e u_e q_upwind × limiter, and each cell's update, which keeps η, Γ ≥ 0.
+#include "cubeSphereGrid.glsl"
+uniform sampler2D uFilm;
+uniform sampler2D uEdgeVelocity;
+uniform float uDt;
+
+/** The cell's limiter (r): 1, or its content over its outflow in one step. */
+vec4 tfcTransportLimiter() {
+  int c = tfcCellAt(ivec2(gl_FragCoord.xy));
+  vec4 edges = tfcCellEdges(c);
+  float outflow = 0.0;
+  for (int s = 0; s < 4; s++) {
+    int e = tfcEdgeOf(edges[s]);
+    outflow += tfcEdgeCells(e).z * max(0.0, sign(edges[s]) * texelFetch(uEdgeVelocity, tfcEdgeTexel(e), 0).r);
+  }
+  outflow *= uDt;
+  float area = tfcCellGeometry(c).w;
+  return vec4(outflow > area ? area / outflow : 1.0, 0.0, 0.0, 0.0);
+}
+
+uniform sampler2D uLimiter;
+
+/** The edge's fluxes of η (r) and Γ (g) from A to B (an edge-atlas pass). */
+vec4 tfcTransportFlux() {
+  int e = tfcEdgeAt(ivec2(gl_FragCoord.xy));
+  vec4 cells = tfcEdgeCells(e);
+  float u = texelFetch(uEdgeVelocity, tfcEdgeTexel(e), 0).r;
+  ivec2 upwind = tfcCellTexel(tfcIndex(u >= 0.0 ? cells.x : cells.y));
+  float volume = uDt * cells.z * u * texelFetch(uLimiter, upwind, 0).r;
+  return vec4(volume * texelFetch(uFilm, upwind, 0).rg, 0.0, 0.0);
+}
+
+uniform sampler2D uFlux;
+
+/** The cell's η (r) and Γ (g) after the fluxes; its intact mark (b) kept. */
+vec4 tfcTransportUpdate() {
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  int c = tfcCellAt(texel);
+  vec4 edges = tfcCellEdges(c);
+  vec2 outflow = vec2(0.0);
+  for (int s = 0; s < 4; s++) outflow += sign(edges[s]) * texelFetch(uFlux, tfcEdgeTexel(tfcEdgeOf(edges[s])), 0).rg;
+  vec4 film = texelFetch(uFilm, texel, 0);
+  // max(0, ·) only absorbs rounding: the limiter already bounds the outflow by the content.
+  return vec4(max(vec2(0.0), film.rg - outflow / tfcCellGeometry(c).w), film.ba);
+}

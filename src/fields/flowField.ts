@@ -1,0 +1,81 @@
+import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
+import { cubeFaceColumns } from '../physics/flow/cubeSphereFaces.ts';
+import { cubeSphereGrid } from '../physics/flow/cubeSphereGrid.ts';
+import { cubeSphereHalo, padField, paddedSampler } from '../physics/flow/cubeSphereSampler.ts';
+import { flowNumbers } from '../physics/flow/flowNumbers.ts';
+import { FLOW_PARAMETERS, type FlowParameterKey, type FlowParameters } from '../physics/flow/flowParameters.ts';
+import { initialFilm } from '../physics/flow/initialFilm.ts';
+import type { FieldSettings, ThicknessField, Vec3 } from './thicknessField.ts';
+
+/** The flow's mean thickness: the view's, at least the model's lowest (its numbers divide by η0). */
+const THICKNESS_MIN_NM = FLOW_PARAMETERS.find((r) => r.key === 'thicknessNm')!.domain.min;
+/**
+ * The film table covers this many times the thickest the film is at its start or at rest (the
+ * settled profile's bottom): room for the transients between; thicker film is drawn at the table's end.
+ */
+const TABLE_MARGIN = 1.5;
+
+/** The flow parameters the settings give: every row of FLOW_PARAMETERS is a settings field of the same name. */
+export function flowParametersOf(s: FieldSettings): FlowParameters {
+  const given: Partial<Record<FlowParameterKey, number>> = s;
+  const values = Object.fromEntries(FLOW_PARAMETERS.map((r) => [r.key, given[r.key] ?? r.defaultValue]));
+  return { ...(values as FlowParameters), thicknessNm: Math.max(THICKNESS_MIN_NM, s.thicknessNm) };
+}
+
+/** The simulation's direction (z up, docs/flow.md#the-grid) of a point of the view (y up): a quarter turn about x. */
+export const flowDirection = ([x, y, z]: Vec3): Vec3 => [x, -z, y];
+
+/** The film's start (η per cell, padded for sampling) for the last grid and seed asked for. */
+let start: { key: string; padded: Float64Array; maxEta: number } | null = null;
+function startFilm(gridN: number, seed: number) {
+  const key = `${gridN} ${seed}`;
+  if (start?.key !== key) {
+    const grid = cubeSphereGrid(gridN);
+    const { eta } = initialFilm(grid, seed);
+    start = { key, padded: padField(cubeSphereHalo(grid), eta, 1), maxEta: Math.max(...eta) };
+  }
+  return start;
+}
+
+/**
+ * The thickest the film is at its start or settled (h̄ · 2a/(1 − e^(−2a)) at the bottom of the
+ * resting profile h̄ (a/sinh a) e^(−a cos θ), a = g/M: docs/flow.md#the-stationary-film), times
+ * TABLE_MARGIN, within the film stack's domain.
+ */
+function flowMaxNm(s: FieldSettings): number {
+  const p = flowParametersOf(s);
+  const numbers = flowNumbers(p);
+  const a = numbers.gravity / numbers.marangoni;
+  const settledBottom = (2 * a) / -Math.expm1(-2 * a);
+  const factor = Math.max(settledBottom, startFilm(p.gridN, p.seed).maxEta);
+  return Math.min(FILM_STACK_DOMAIN.thicknessNm.max, Math.max(1, TABLE_MARGIN * factor * p.thicknessNm));
+}
+
+/**
+ * The flowing soap film (shaders/fields/flowField.glsl): the full thickness h̄·η sampled from the
+ * simulation of src/physics/flow/, run on the GPU by src/flow/ (the view's FieldState), bilinear
+ * within a cube face and seamless across them. Its TypeScript twin is the film at its start.
+ */
+export const flowField = {
+  glsl: 'flowField.glsl',
+  uniforms: () => ({
+    uThicknessNm: { value: 500 },
+    uFlowMaxThicknessNm: { value: 1 },
+    uFlowFilm: { value: null },
+    uFlowGridN: { value: 1 },
+    uCubeFaces: { value: Float32Array.from(cubeFaceColumns()) },
+  }),
+  update: (u, s) => {
+    u.uThicknessNm!.value = flowParametersOf(s).thicknessNm;
+    u.uFlowMaxThicknessNm!.value = flowMaxNm(s);
+  },
+  thicknessAt: (p, s) => {
+    const { gridN, seed, thicknessNm } = flowParametersOf(s);
+    const out = new Float64Array(1);
+    paddedSampler(cubeSphereHalo(cubeSphereGrid(gridN)), 1)(startFilm(gridN, seed).padded, ...flowDirection(p), out);
+    return Math.min(flowMaxNm(s), Math.max(0, thicknessNm * out[0]!));
+  },
+  maxThicknessNm: flowMaxNm,
+  animates: true,
+  evolves: true,
+} as const satisfies ThicknessField;
