@@ -21,6 +21,7 @@ export const LATIN_IN_JAPANESE: ReadonlySet<string> = new Set([
   'Shift', // the key's label
   'cauchy', // the URL's and attribute's keyword for a Cauchy film
   'complex', // the URL's and attribute's keyword for a complex index n,k
+  'TiO', // TiO₂, titanium dioxide's formula
 ]);
 
 /** The Latin words of `text` that are neither symbols (one or two letters) nor in LATIN_IN_JAPANESE. */

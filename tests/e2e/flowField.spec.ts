@@ -105,3 +105,19 @@ test('B on the bubble blows at the probe, to the right: the film there moves rig
   expect(blown[right!]! - calm[right!]!).toBeGreaterThan(1e-3);
   expect(blown[left!]! - calm[left!]!).toBeLessThan(-1e-3);
 });
+
+test('showing the flowing film and leaving it again, five times, leaves the live GPU objects as they were', async ({ page }) => {
+  const problems = watchProblems(page);
+  await load(page, FROZEN.replace('field=flow', 'field=uniform'));
+  const objects = await settledGpuObjects(page);
+  await page.evaluate(() => {
+    const view = (window as unknown as Demo).bubbleView;
+    for (let i = 0; i < 5; i++)
+      for (const field of ['flow', 'uniform'] as const) {
+        view.apply({ ...view.current, field });
+        view.render();
+      }
+  });
+  await expect.poll(() => gpuObjects(page)).toEqual(objects);
+  expect(problems).toEqual([]);
+});
