@@ -22,6 +22,11 @@ export interface BenchPlan {
   readonly materials: { readonly width: number; readonly height: number; readonly frames: number };
   /** the built demo's viewport, and how often each panel change and its way back is made */
   readonly demo: { readonly width: number; readonly height: number; readonly panelRepeats: number; readonly windowMs: number };
+  /**
+   * How many stages run at once: 1 in the full run, whose times are its figures; 2 in the smoke,
+   * whose times mean nothing, so that its pages compile on both cores and the builds overlap them.
+   */
+  readonly concurrency: number;
   readonly devPort: number;
   readonly previewPort: number;
   readonly resultsFile: string;
@@ -40,6 +45,7 @@ export const FULL_PLAN: BenchPlan = {
   gridStride: 1,
   materials: { width: 1280, height: 720, frames: 20 },
   demo: { width: 1280, height: 720, panelRepeats: 2, windowMs: 1000 },
+  concurrency: 1,
   devPort: 5192,
   previewPort: 5193,
   resultsFile: 'bench-results.json',
@@ -55,6 +61,7 @@ export const SMOKE_PLAN: BenchPlan = {
   gridStride: 16,
   materials: { width: 160, height: 90, frames: 1 },
   demo: { width: 320, height: 180, panelRepeats: 1, windowMs: 400 },
+  concurrency: 2,
   devPort: 5194,
   previewPort: 5195,
   resultsFile: '.scratch/bench-smoke-results.json',

@@ -44,6 +44,9 @@ export interface BenchRowResult {
   readonly xyz: readonly number[][][];
 }
 
+/** [width, height] of a row's first frame: small, so that it costs the compile and the table's build but few fragments. */
+export const FIRST_FRAME_SIZE = [64, 36] as const;
+
 /**
  * The changes timed per row, as a user makes them in the panel: n film, the light, the
  * polarisation, the range; each there and back to the row's own value (a water row's n film

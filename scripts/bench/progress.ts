@@ -52,11 +52,12 @@ export class Progress {
     } finally {
       const seconds = (performance.now() - t0) / 1000;
       this.done.push({ cost: stage.cost, seconds });
-      const costLeft = this.stages.slice(index + 1).reduce((sum, s) => sum + s.cost, 0);
+      // The stages not yet done, whether started or not (several may run at once).
+      const costLeft = this.stages.reduce((sum, s) => sum + s.cost, 0) - this.done.reduce((sum, d) => sum + d.cost, 0);
       const left = secondsLeft(this.done, costLeft);
       const elapsed = (performance.now() - this.started) / 1000;
       console.error(
-        `[bench ${elapsed.toFixed(0)} s] ${index + 1}/${this.stages.length} ${stage.name}: ${seconds.toFixed(1)} s; about ${left === null ? '?' : left.toFixed(0)} s left`,
+        `[bench ${elapsed.toFixed(0)} s] ${this.done.length}/${this.stages.length} ${stage.name}: ${seconds.toFixed(1)} s; about ${left === null ? '?' : left.toFixed(0)} s left`,
       );
     }
   }

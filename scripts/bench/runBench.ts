@@ -13,15 +13,20 @@ import type { ParityGroup } from '../harness/parityCase.ts';
 import { type BenchPlan, thinnedGrid } from './benchPlan.ts';
 import type { BenchResults } from './benchResults.ts';
 import { runRow, warmUp } from './browserRows.ts';
-import { buildAndMeasure } from './bundleSize.ts';
-import { demoPageFigures } from './demoPage.ts';
+import { type BundleSizes, buildAndMeasure } from './bundleSize.ts';
+import { type DemoPageFigures, demoPageFigures } from './demoPage.ts';
 import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './errorGrids.ts';
-import { materialFigures } from './materialFigures.ts';
-import { packageSize } from './packageSize.ts';
+import { type MaterialFigures, materialFigures } from './materialFigures.ts';
+import { type PackageSize, packageSize } from './packageSize.ts';
 import { Progress, type Stage, rowCost } from './progress.ts';
 import { referenceSpeed } from './referenceSpeed.ts';
 import { type BenchRow, MATERIALS_ROW } from './rows.ts';
 import type { MeasuredRow } from './rowsMarkdown.ts';
+
+const REFERENCE_STAGE = 'reference speed';
+const BUNDLE_STAGE = 'demo and element builds';
+const PACKAGE_STAGE = 'package (npm pack)';
+const DEMO_STAGE = 'built demo page';
 
 /** Expected costs of the stages other than the rows, against a fast row's (the full run). */
 const STAGE_COSTS = { reference: 0.5, materials: 3, bundle: 1.5, package: 1.5, demo: 5 };
@@ -69,78 +74,113 @@ async function measureRow(
   return { name: row.name, settings: row.settings, quality: row.quality, ...result, errors, seconds: (performance.now() - t0) / 1000 };
 }
 
+/**
+ * Runs the tasks, `width` at once: one by one in their order, or several, the costliest first so
+ * that no long one is left running alone at the end.
+ */
+async function runAtOnce(tasks: readonly { readonly cost: number; readonly run: () => Promise<void> }[], width: number): Promise<void> {
+  const queue = width === 1 ? [...tasks] : [...tasks].sort((a, b) => b.cost - a.cost);
+  const runner = async () => {
+    for (let task = queue.shift(); task; task = queue.shift()) await task.run();
+  };
+  await Promise.all(Array.from({ length: width }, runner));
+}
+
 export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withMaterials: boolean): Promise<BenchResults> {
   const started = performance.now();
   const load = [loadavg()[0]!];
   const stages: Stage[] = [
-    { name: 'reference speed', cost: STAGE_COSTS.reference },
+    { name: REFERENCE_STAGE, cost: STAGE_COSTS.reference },
     ...rows.map((r) => ({ name: r.name, cost: rowCost(r) })),
     ...(withMaterials ? [{ name: MATERIALS_ROW, cost: STAGE_COSTS.materials }] : []),
-    { name: 'demo and element builds', cost: STAGE_COSTS.bundle },
-    { name: 'package (npm pack)', cost: STAGE_COSTS.package },
-    { name: 'built demo page', cost: STAGE_COSTS.demo },
+    { name: BUNDLE_STAGE, cost: STAGE_COSTS.bundle },
+    { name: PACKAGE_STAGE, cost: STAGE_COSTS.package },
+    { name: DEMO_STAGE, cost: STAGE_COSTS.demo },
   ];
   const progress = new Progress(stages);
   const failures: { stage: string; message: string }[] = [];
   const stageSeconds: Record<string, number> = {};
-  let next = 0;
-  /** Runs the next stage; what it throws is recorded (null returned) and the run goes on. */
-  const stage = async <T>(work: () => Promise<T> | T): Promise<T | null> => {
-    const index = next++;
+  /** Runs a stage; what it throws is recorded (null returned) and the run goes on. */
+  const stage = async <T>(name: string, work: () => Promise<T> | T): Promise<T | null> => {
+    const index = stages.findIndex((s) => s.name === name);
     const t0 = performance.now();
     try {
       return await progress.run(index, work);
     } catch (error) {
       const message = error instanceof Error ? (error.stack ?? error.message) : String(error);
-      console.error(`${stages[index]!.name} threw: ${message}`);
-      failures.push({ stage: stages[index]!.name, message });
+      console.error(`${name} threw: ${message}`);
+      failures.push({ stage: name, message });
       return null;
     } finally {
-      stageSeconds[stages[index]!.name] = (performance.now() - t0) / 1000;
+      stageSeconds[name] = (performance.now() - t0) / 1000;
     }
   };
 
-  const reference = await stage(referenceSpeed);
+  const reference = await stage(REFERENCE_STAGE, referenceSpeed);
   const grids = new ErrorGrids(plan.gridStride);
   const devUrl = `http://127.0.0.1:${plan.devPort}`;
   const browser = await chromium.launch(chromiumLaunchOptions());
   try {
-    const server = await createServer({
-      logLevel: 'silent',
-      server: { port: plan.devPort, strictPort: true, host: '127.0.0.1', hmr: false, watch: null },
-    });
-    await server.listen();
-    const measured: MeasuredRow[] = [];
-    let materials = null;
-    try {
-      await warmUp(browser, devUrl);
-      for (const row of rows) {
-        const m = await stage(() => measureRow(browser, devUrl, plan, row, grids));
-        if (m) measured.push(m);
+    // The rows and the material in the dev server; the builds, then the built demo page, in its preview.
+    const measured: (MeasuredRow | null)[] = [];
+    let materials: MaterialFigures | null = null;
+    const inDevServer = async () => {
+      const server = await createServer({
+        logLevel: 'silent',
+        server: { port: plan.devPort, strictPort: true, host: '127.0.0.1', hmr: false, watch: null },
+      });
+      await server.listen();
+      try {
+        await warmUp(browser, devUrl);
+        const tasks = [
+          ...rows.map((row, i) => ({
+            cost: rowCost(row),
+            run: async () => {
+              measured[i] = await stage(row.name, () => measureRow(browser, devUrl, plan, row, grids));
+            },
+          })),
+          ...(withMaterials
+            ? [
+                {
+                  cost: STAGE_COSTS.materials,
+                  run: async () => {
+                    // The material's film is three's iridescenceIOR, one number: the soap film's grids.
+                    materials = await stage(MATERIALS_ROW, () =>
+                      materialFigures(browser, devUrl, plan.materials, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
+                    );
+                  },
+                },
+              ]
+            : []),
+        ];
+        await runAtOnce(tasks, plan.concurrency);
+      } finally {
+        await server.close();
       }
-      if (withMaterials)
-        // The material's film is three's iridescenceIOR, one number: the soap film's grids.
-        materials = await stage(() =>
-          materialFigures(browser, devUrl, plan.materials, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
-        );
-    } finally {
-      await server.close();
-    }
-    const bundle = await stage(buildAndMeasure);
-    const pack = await stage(packageSize);
-    const previewServer = await preview({ logLevel: 'silent', preview: { port: plan.previewPort, strictPort: true, host: '127.0.0.1' } });
-    let demo;
-    try {
-      demo = await stage(() => demoPageFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.demo));
-    } finally {
-      await new Promise((resolve) => previewServer.httpServer.close(resolve));
-    }
+    };
+    let bundle: BundleSizes | null = null;
+    let pack: PackageSize | null = null;
+    let demo: DemoPageFigures | null = null;
+    const builtPage = async () => {
+      bundle = await stage(BUNDLE_STAGE, buildAndMeasure);
+      pack = await stage(PACKAGE_STAGE, packageSize);
+      const previewServer = await preview({ logLevel: 'silent', preview: { port: plan.previewPort, strictPort: true, host: '127.0.0.1' } });
+      try {
+        demo = await stage(DEMO_STAGE, () => demoPageFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.demo));
+      } finally {
+        await new Promise((resolve) => previewServer.httpServer.close(resolve));
+      }
+    };
+    if (plan.concurrency === 1) {
+      await inDevServer();
+      await builtPage();
+    } else await Promise.all([inDevServer(), builtPage()]);
     load.push(loadavg()[0]!);
     return {
       plan,
       machine: { node: process.version, cpus: cpus().length, cpuModel: cpus()[0]?.model ?? 'unknown', load },
       reference,
-      rows: measured,
+      rows: measured.filter((m) => m !== null),
       materials,
       bundle,
       package: pack,

@@ -8,7 +8,7 @@ import { BubbleView, createBubbleRenderer } from '../../../src/scene/bubbleView.
 import { FilmXyzProbe } from '../../harness/filmXyzProbe.ts';
 import { loadEnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
 import { isHdrEnvironment } from '../../../src/settings/filmSettings.ts';
-import { type BenchRowSpec, CHANGES } from '../benchRow.ts';
+import { type BenchRowSpec, CHANGES, FIRST_FRAME_SIZE } from '../benchRow.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 if (!canvas) throw new Error('bench.html must hold #bubble');
@@ -56,17 +56,18 @@ window.benchRow = async (spec: BenchRowSpec) => {
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
     return performance.now() - started;
   };
-  const [firstWidth, firstHeight] = spec.sizes[0]!;
-  view.resize(firstWidth, firstHeight);
+  // The first frame, small: the program's compile and the table's build, without a slow row's
+  // full-size fragment cost, which the timed frames then measure once each.
+  view.resize(...FIRST_FRAME_SIZE);
   view.render();
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   const firstFrameMs = performance.now();
   const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? view.table.lastBuildMs : null;
   const buildsBefore = view.table.builds;
 
-  // Per size: the first frame, up to 2 warm-up frames, then up to `frames` timed ones within the
-  // budget. A frame longer than the budget is its own measurement (the shader compiled with the
-  // first frame), and the larger sizes are not timed (null): each would cost more than it.
+  // Per size: up to 3 warm-up frames, then up to `frames` timed ones within the budget. A frame
+  // longer than the budget is its own measurement (the program compiled with the small first
+  // frame), and the larger sizes are not timed (null): each would cost more than it.
   const frames: ({ medianMs: number; count: number } | null)[] = [];
   let slow = false;
   for (const [width, height] of spec.sizes) {
@@ -90,7 +91,7 @@ window.benchRow = async (spec: BenchRowSpec) => {
   // Each change and its way back (timed too where `changesBack`), up to `changeRepeats` times while
   // that change has taken less than the budget; none (null) for the textured sphere, which shows no
   // film, and for a row whose frame alone outlasts the budget.
-  view.resize(firstWidth, firstHeight);
+  view.resize(...spec.sizes[0]!);
   const changesTimed = spec.kind === 'bubble' && frames[0]!.medianMs <= spec.frameBudgetMs;
   const changeToFrameMs = CHANGES.map(({ values }) => {
     if (!changesTimed) return null;
