@@ -20,13 +20,20 @@ vec3 tfcSpectralIridescence(float thicknessNm, float cosIncidence) {
   return tfcApplyMatrix3(uXyzToLinearWorking, tfcFilmXyz(thicknessNm, cosIncidence, false));
 }
 
-// The F0 three's image-based light takes for the film: three integrates a lobe's single scattering
-// as F0·dfg.x + F90·dfg.y (its DFG table, at the roughness and n·v), and inverts Schlick's curve to
-// get F0 from the film's value F. Here F0 solves F0·dfg.x + F90·dfg.y = F·(dfg.x + dfg.y): the lobe
-// reflects the film's own F of its energy, so a smooth surface shows F at every angle (Schlick's
-// inversion against the table drifts from 35° on: ΔE00 0.3 at 50°, 3 at 80°, the film lost past 88°).
+// The F0 three's image-based light takes for the film. three integrates a lobe's single scattering
+// as Fss = F0·dfg.x + F90·dfg.y (its DFG table, at the roughness and n·v) and adds multiple
+// scattering Fss·Favg·Ems / (1 − Ems·Favg), Ems = 1 − dfg.x − dfg.y, Favg = F0 + (1 − F0)/21
+// (computeMultiscatteringIridescence): in all Fss / (1 − Ems·Favg). three gets F0 by inverting
+// Schlick's curve at n·v. Here F0 solves Fss / (1 − Ems·Favg) = F, linear in F0:
+//   F0 = (F·(1 − Ems/21) − F90·dfg.y) / (dfg.x + (20/21)·Ems·F),
+// so the lobe reflects the film's own F under uniform light, at every angle. Solving the single
+// scattering alone (F0·dfg.x + F90·dfg.y = F·(dfg.x + dfg.y)) left near grazing, where the table's
+// Ems at three's least roughness (0.045) reaches 0.05 and F0 is far from F, ΔE00 1.1 at 88.5°–89°;
+// Schlick's inversion drifts from 35° on (ΔE00 0.3 at 50°, 3 at 80°, the film lost past 88°). The
+// denominator stays above 0.14 over three's table for F in −0.3–1.3.
 vec3 tfcSpectralIridescenceF0(vec3 film, vec2 dfg, float f90) {
-  return film + (film - f90) * dfg.y / max(dfg.x, 1e-4);
+  float ems = 1.0 - dfg.x - dfg.y;
+  return (film * (1.0 - ems / 21.0) - f90 * dfg.y) / max(dfg.x + (20.0 / 21.0) * ems * film, vec3(1e-4));
 }
 
 #endif

@@ -45,6 +45,14 @@ const nk = (m: Medium, lambdaNm: number): [number, number] => {
   return [z.re, z.im];
 };
 
+/** The film's largest real index over the band (at the knots; at every λ for a constant one): its fringes are closest there. */
+export function filmIndexMax(nFilm: Medium): number {
+  if (!isDispersiveMedium(nFilm)) return nk(nFilm, SODIUM_D_NM)[0];
+  let max = 0;
+  for (let i = 0; i < KNOTS; i++) max = Math.max(max, nk(nFilm, LAMBDA_MIN_NM + i * STEP_NM)[0]);
+  return max;
+}
+
 /** Sets them to `s`: ñ_b and ñ_c at the D line where they vary, and every STEP_NM in the knots (mediumIndexAt in float64). */
 export function updateFilmMediaUniforms(u: Record<string, { value: unknown }>, s: FilmMedia): void {
   u.uNOutside!.value = s.nOutside;

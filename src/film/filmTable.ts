@@ -10,7 +10,14 @@ import {
 } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { dispersiveRows, dispersiveRowsTexture } from './dispersiveRows.ts';
-import { type FilmMedia, filmMediaDefines, filmMediaUniforms, isDispersiveFilm, updateFilmMediaUniforms } from './filmMedia.ts';
+import {
+  type FilmMedia,
+  filmIndexMax,
+  filmMediaDefines,
+  filmMediaUniforms,
+  isDispersiveFilm,
+  updateFilmMediaUniforms,
+} from './filmMedia.ts';
 import { enumCode, enumConstants } from '../gpu/enumDefines.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
@@ -183,10 +190,10 @@ export class FilmTable {
     this.budget.drawn(passKind(s), (columns[1] - columns[0]) * 2 * grid.rows, began, ms);
   }
 
-  /** The full grid for the settings (its width follows the thickness range). */
+  /** The full grid for the settings (its width follows the thickness range and the film's index). */
   private fullGrid(s: FilmSettings): Grid {
     const layout = this.quality.table;
-    return { width: filmTableWidth(layout, maxFieldThicknessNm(s)), rows: layout.rows };
+    return { width: filmTableWidth(layout, maxFieldThicknessNm(s), filmIndexMax(s.nFilm)), rows: layout.rows };
   }
 
   private buildFull(renderer: WebGLRenderer, s: FilmSettings): void {

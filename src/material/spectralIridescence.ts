@@ -29,8 +29,9 @@ const DIELECTRIC_FILM = 'evalIridescence( 1.0, material.iridescenceIOR, dotNVi, 
 const SPECTRAL_FILM = 'tfcSpectralIridescence( material.iridescenceThickness, dotNVi )';
 /**
  * three's F0 for the film's image-based light: Schlick's curve inverted at n·v. Ours inverts the
- * DFG table the light is then integrated with (docs/material.md#the-films-f0-for-image-based-light),
- * so a mirror-smooth surface reflects the film's own value at n·v at every angle.
+ * lobe the light is then integrated with, its DFG table's single scattering and three's multiple
+ * scattering (docs/material.md#the-films-f0-for-image-based-light), so under uniform light the
+ * surface reflects the film's own value at n·v at every angle.
  */
 const DIELECTRIC_F0 = 'material.iridescenceF0Dielectric = Schlick_to_F0( iridescenceFresnelDielectric, 1.0, dotNVi );';
 const SPECTRAL_F0 =

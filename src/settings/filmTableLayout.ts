@@ -11,8 +11,9 @@ export interface FilmTableLayout {
   /** texels along thickness at most */
   readonly width: number;
   /**
-   * The thickness cell wanted at the table's thick end: a table over thin films needs fewer
-   * texels (`filmTableWidth`), and a smaller table is built sooner.
+   * The thickness cell wanted at the table's thick end for a film of index up to
+   * `CELL_FILM_INDEX`: a table over thin films needs fewer texels (`filmTableWidth`), and a smaller
+   * table is built sooner.
    */
   readonly thickEndCellNm: number;
   /** rows per half (outside view, inside view) */
@@ -25,11 +26,21 @@ export interface FilmTableLayout {
 }
 
 /**
- * Texels along thickness for a table up to `maxThicknessNm`: enough that the thick end's cell,
- * max · thicknessPower / (width − 1), is at most `thickEndCellNm`, in steps of 64, at most `width`.
+ * The film index `thickEndCellNm` is given for (a soap film's). A film's fringes are λ/(2 n_b cos θ_r)
+ * apart in thickness, so a film of larger index n_b gets cells CELL_FILM_INDEX / n_b as long: as
+ * many to a fringe (Fe3O4, n_b up to 2.46: 4.3 nm cells for 8).
  */
-export function filmTableWidth(l: FilmTableLayout, maxThicknessNm: number): number {
-  const wanted = (maxThicknessNm * l.thicknessPower) / l.thickEndCellNm + 1;
+export const CELL_FILM_INDEX = 1.33;
+
+/**
+ * Texels along thickness for a table up to `maxThicknessNm` of a film whose real index reaches
+ * `filmIndex` in the band: enough that the thick end's cell, max · thicknessPower / (width − 1), is
+ * at most `thickEndCellNm` (times CELL_FILM_INDEX / filmIndex above that index), in steps of 64, at
+ * most `width`.
+ */
+export function filmTableWidth(l: FilmTableLayout, maxThicknessNm: number, filmIndex: number): number {
+  const cellNm = l.thickEndCellNm * Math.min(1, CELL_FILM_INDEX / filmIndex);
+  const wanted = (maxThicknessNm * l.thicknessPower) / cellNm + 1;
   return Math.min(l.width, 64 * Math.max(1, Math.ceil(wanted / 64)));
 }
 

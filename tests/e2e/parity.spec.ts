@@ -13,13 +13,7 @@ import { MODES } from '../../src/settings/filmSettings.ts';
 import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
 import type { ParityGroup, ParityMode } from '../../scripts/harness/parityCase.ts';
 import { mulberry32 } from '../seededRandom.ts';
-import {
-  MAX_DELTA_E00_FIXED,
-  MAX_DELTA_E00_METAL_FIXED,
-  MAX_DELTA_E00_METAL_STRESS,
-  MAX_DELTA_E00_METAL_TABLE_FIXED,
-  MAX_DELTA_E00_STRESS,
-} from '../tolerances.ts';
+import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_METAL_FIXED, MAX_DELTA_E00_METAL_STRESS, MAX_DELTA_E00_STRESS } from '../tolerances.ts';
 
 /**
  * Shader parity as numbers: the real GLSL (shaders/film/filmColor.glsl, every mode of MODES)
@@ -229,8 +223,7 @@ function metalDomain(): { fixed: Group[]; stress: Group[]; tirEdge: Group[] } {
 }
 
 for (const mode of MODES) {
-  const fixedBound = mode === 'table' ? MAX_DELTA_E00_METAL_TABLE_FIXED : MAX_DELTA_E00_METAL_FIXED;
-  test(`${mode} mode on absorbing insides matches the reference within ΔE00 ${fixedBound} (0–1000 nm, 0–85°) and ${MAX_DELTA_E00_METAL_STRESS} (to 90°, 10 µm)`, async ({
+  test(`${mode} mode on absorbing insides matches the reference within ΔE00 ${MAX_DELTA_E00_METAL_FIXED} (0–1000 nm, 0–85°) and ${MAX_DELTA_E00_METAL_STRESS} (to 90°, 10 µm)`, async ({
     page,
   }) => {
     test.slow(mode !== 'fourier', 'tabulated media by bins');
@@ -243,7 +236,7 @@ for (const mode of MODES) {
     keepFigures(`${mode}-metal`, figures);
     console.log(`parity ${mode} metal: ${JSON.stringify(figures)}`);
     expect([...fixedResult.nonFinite, ...stressResult.nonFinite, ...(tirResult?.nonFinite ?? [])]).toEqual([]);
-    expect(fixedResult.figures.max, fixedResult.figures.worst).toBeLessThanOrEqual(fixedBound);
+    expect(fixedResult.figures.max, fixedResult.figures.worst).toBeLessThanOrEqual(MAX_DELTA_E00_METAL_FIXED);
     expect(stressResult.figures.max, stressResult.figures.worst).toBeLessThanOrEqual(MAX_DELTA_E00_METAL_STRESS);
   });
 }

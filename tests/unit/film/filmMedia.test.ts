@@ -1,7 +1,8 @@
 /** The film's media: the uniforms TypeScript sets are exactly those the GLSL declares. */
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from '../../../src/film/filmMedia.ts';
+import { filmIndexMax, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from '../../../src/film/filmMedia.ts';
+import { waterIndex } from '../../../src/physics/filmIndex.ts';
 import type { Medium } from '../../../src/physics/medium.ts';
 
 const declared = (file: string): string[] =>
@@ -40,5 +41,12 @@ describe('film media uniforms', () => {
     expect([knots[4 * i], knots[4 * i + 1]]).toEqual([Math.fround(1.38), 0]);
     expect(knots[4 * i + 2]! < 0.43 && knots[4 * i + 2]! > 0.29).toBe(true);
     expect(knots[4 * i + 3]! > 2.455 && knots[4 * i + 3]! < 2.863).toBe(true);
+  });
+
+  it("filmIndexMax: a constant film's n; a normally dispersive film's n at the band's short end", () => {
+    expect(filmIndexMax(1.38)).toBe(1.38);
+    expect(filmIndexMax({ complex: [2.6, 3.4] })).toBe(2.6);
+    expect(filmIndexMax('water')).toBe(waterIndex(380));
+    expect(filmIndexMax({ cauchy: [1.45, 6000, 0] })).toBeCloseTo(1.45 + 6000 / 380 ** 2, 12);
   });
 });
