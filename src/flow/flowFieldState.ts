@@ -15,7 +15,8 @@ const STEP_SLACK = 1e-9;
  * The flow field's film (src/fields/flowField.ts) as the view keeps it: a GpuFilmSimulation of the
  * settings' parameters, advanced in whole fixed steps to the film time timeSeconds × simSpeed, so
  * the same settings give the same film on every load whatever the display rate; made anew from its
- * start when a parameter changes or the time goes back.
+ * start when a parameter changes or the time goes back. With the settings' `renew` a new bubble
+ * follows a burst (src/flow/renewFilm.ts).
  */
 export class FlowFieldState implements FieldState {
   private simulation: GpuFilmSimulation | null = null;
@@ -34,10 +35,10 @@ export class FlowFieldState implements FieldState {
 
   advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean {
     const parameters = flowParametersOf(s);
-    const key = JSON.stringify(parameters);
+    const key = JSON.stringify([parameters, s.renew]);
     if (!this.simulation || key !== this.key) {
       this.simulation?.dispose();
-      this.simulation = new GpuFilmSimulation(this.renderer, parameters);
+      this.simulation = new GpuFilmSimulation(this.renderer, parameters, { renew: s.renew });
       this.key = key;
     }
     const sim = this.simulation;

@@ -46,6 +46,7 @@ export const EN = {
   'param.windMps': 'wind (m/s)',
   'param.seed': 'perturbation seed',
   'param.simSpeed': 'simulation speed',
+  'param.renew': 'a new bubble after a burst',
   'param.gridN': 'cells per cube face side',
   'param.timeSeconds': 'time (s)',
   'param.animate': 'animate',

@@ -46,6 +46,7 @@ export const JA: Catalogue = {
   'param.windMps': '風 (m/s)',
   'param.seed': '乱れのシード',
   'param.simSpeed': 'シミュレーションの速さ',
+  'param.renew': '割れたら次の泡',
   'param.gridN': '立方体の面あたりのセル数',
   'param.timeSeconds': '時刻 (s)',
   'param.animate': 'アニメーション',

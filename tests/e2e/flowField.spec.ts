@@ -9,7 +9,12 @@ import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './we
  * the same URL draws the same pixels on every load, and again after a lost context; a frozen view
  * draws nothing after its frame. A small grid keeps SwiftShader quick.
  */
-const FROZEN = '/?field=flow&grid=16&seed=5&wind=0.5&animate=0&time=0.15&env=none';
+const FROZEN = '/?field=flow&grid=16&seed=5&wind=0.5&animate=0&time=0.06&env=none';
+/**
+ * The wind thins that film to its rupture thickness at 0.125 s; the rims then sweep the sphere in a
+ * few steps, and with renew the film is new again 0.25 s (RENEW_DELAY_S) after that.
+ */
+const RENEWED_S = 0.45;
 
 type Demo = Window & { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView };
 
@@ -40,14 +45,28 @@ async function load(page: Page, url: string) {
 test('field=flow at a frozen time draws the same pixels on every load, the film simulated to that time', async ({ page }) => {
   const problems = watchProblems(page);
   const first = await load(page, FROZEN);
-  expect(first.steps).toBe(Math.floor(0.15 / first.stepSeconds));
+  expect(first.steps).toBe(Math.floor(0.06 / first.stepSeconds));
   expect(first.lit, 'a lit bubble').toBeGreaterThan(1000);
   const second = await load(page, FROZEN);
   expect(second).toEqual(first);
   // The time matters: another time is another film.
-  const later = await load(page, FROZEN.replace('time=0.15', 'time=0.3'));
+  const later = await load(page, FROZEN.replace('time=0.06', 'time=0.1'));
   expect(later.hash).not.toBe(first.hash);
   expect(problems).toEqual([]);
+});
+
+test('a burst film is gone for good with renew=0; with renew=1 a whole new bubble follows', async ({ page }) => {
+  const at = (seconds: number, renew: number) => load(page, `${FROZEN.replace('time=0.06', `time=${seconds}`)}&renew=${renew}`);
+  const intactCells = () =>
+    page.evaluate(() => {
+      const film = (window as unknown as Demo).bubbleView.evolvingFilm as unknown as { current: { readFilm(): { intact: Uint8Array } } };
+      return film.current.readFilm().intact.reduce((s, v) => s + v, 0);
+    });
+  const gone = await at(RENEWED_S, 0);
+  expect(await intactCells()).toBe(0);
+  const renewed = await at(RENEWED_S, 1);
+  expect(await intactCells()).toBe(6 * 16 * 16);
+  expect(renewed.hash).not.toBe(gone.hash);
 });
 
 test('a frozen flowing film draws nothing after its frame', async ({ page }) => {
