@@ -43,7 +43,11 @@ export class FlowFieldState implements FieldState {
     }
     const sim = this.simulation;
     const wanted = Math.floor(((s.timeSeconds * s.simSpeed) / sim.stepSeconds) * (1 + STEP_SLACK));
-    if (wanted < sim.steps) sim.reset();
+    if (wanted < sim.steps) {
+      // The film starts again: a blow still under way was on the film given up, not on its start.
+      sim.reset();
+      this.blowing = null;
+    }
     this.step(sim, Math.min(wanted - sim.steps, maxSteps));
     u.uFlowFilm!.value = sim.paddedFilm;
     u.uFlowGridN!.value = sim.grid.n;

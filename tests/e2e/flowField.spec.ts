@@ -1,6 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
 import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
+import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
 import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';
 
@@ -98,16 +99,20 @@ test('after a lost context the flowing film is simulated again from its start to
   expect(problems).toEqual([]);
 });
 
-test('B on the bubble blows at the probe, to the right: the film there moves right', async ({ page }) => {
+test("B on the bubble, or Enter on the panel's blow button, blows at the probe, to the right: the film there moves right", async ({
+  page,
+}) => {
   // Still air, so the blow is the only air.
   await load(page, FROZEN.replace('wind=0.5', 'wind=0'));
-  await page.getByRole('application').focus();
-  /** η at the front of the bubble 0.3 rad right and left of the centre, 0.03 s of film after the time, blown or not. */
-  const filmAfter = (blown: boolean) =>
-    page.evaluate((withBlow) => {
+  await openPanel(page);
+  const button = page.getByRole('button', { name: 'blow (B)' });
+  /** η at the front of the bubble 0.3 rad right and left of the centre, 0.03 s of film after the time, blown (by B, by the button) or not. */
+  const filmAfter = async (blow: 'none' | 'key' | 'button') => {
+    if (blow === 'button') await button.press('Enter');
+    return page.evaluate((withKey) => {
       const view = (window as unknown as Demo).bubbleView;
       const start = view.current.timeSeconds;
-      if (withBlow) document.querySelector<HTMLElement>('[role=application]')!.dispatchEvent(new KeyboardEvent('keydown', { key: 'b' }));
+      if (withKey) document.querySelector<HTMLElement>('[role=application]')!.dispatchEvent(new KeyboardEvent('keydown', { key: 'b' }));
       view.apply({ ...view.current, timeSeconds: start + 0.03 });
       view.render();
       const film = view.evolvingFilm as unknown as { current: { readFilm(): { eta: Float32Array }; grid: { n: number } } };
@@ -115,14 +120,17 @@ test('B on the bubble blows at the probe, to the right: the film there moves rig
       view.apply({ ...view.current, timeSeconds: start });
       view.render();
       return [...eta];
-    }, blown);
-  const calm = await filmAfter(false);
-  const blown = await filmAfter(true);
+    }, blow === 'key');
+  };
+  const calm = await filmAfter('none');
   const grid = cubeSphereGrid(16);
   // The view's front (0, 0, 1) is the simulation's (0, −1, 0); the view's right, +x, is its +x.
   const [right, left] = [0.3, -0.3].map((a) => nearestCell(grid, Math.sin(a), -Math.cos(a), 0));
-  expect(blown[right!]! - calm[right!]!).toBeGreaterThan(1e-3);
-  expect(blown[left!]! - calm[left!]!).toBeLessThan(-1e-3);
+  const [byKey, byButton] = [await filmAfter('key'), await filmAfter('button')];
+  expect(byKey[right!]! - calm[right!]!).toBeGreaterThan(1e-3);
+  expect(byKey[left!]! - calm[left!]!).toBeLessThan(-1e-3);
+  // The button blows as the key does.
+  expect(byButton).toEqual(byKey);
 });
 
 test('showing the flowing film and leaving it again, five times, leaves the live GPU objects as they were', async ({ page }) => {
