@@ -67,8 +67,10 @@ export const BLOW_WIDTH_RAD = 0.3;
 const SYSTEM_GUESS = [0, 0, 1, 0];
 const SWEEP_GUESS = [1, 0, 0, 0];
 
-/** The hole table (shaders/flow/filmHoles.glsl): a row per hole, its rays' radii and then its frame (centre, e1, e2). */
-const HOLE_TABLE: AtlasSize = { width: HOLE_RAYS + 3, height: MAX_HOLES };
+/** The texels of a hole's frame after its rays: centre (with the open flag), e1, e2 (tfcReadHole). */
+const HOLE_FRAME_TEXELS = 3;
+/** The hole table (shaders/flow/filmHoles.glsl): a row per hole, its rays' radii and then its frame. */
+const HOLE_TABLE: AtlasSize = { width: HOLE_RAYS + HOLE_FRAME_TEXELS, height: MAX_HOLES };
 /** No puncture (uPuncture's w = 0). */
 const NO_PUNCTURE = [0, 0, 0, 0];
 
