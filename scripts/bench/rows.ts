@@ -93,7 +93,7 @@ export const ROWS: readonly BenchRow[] = [
   table({}, ' (default layout)', 'half'),
   sceneStep('default table, uniform field (swirl off)', { field: 'uniform' }),
   sceneStep('default table, drainage field (swirl off)', { field: 'drainage' }),
-  // The flowing film simulated on the GPU each frame (6 × 128² cells, ~25 passes a step): simSpeed
+  // The flowing film simulated on the GPU each frame (6 × 128² cells, ~30 passes a step): simSpeed
   // 0.05 makes a frame's 1/60 s about 5 fixed steps of 0.17 ms film time, close to the app's 8 a frame.
   sceneStep('default table, flow field (6×128² cells, ~5 steps a frame, simSpeed 0.05)', { field: 'flow', simSpeed: 0.05 }),
   sceneStep('default table, front wall only', { sides: 'front' }),

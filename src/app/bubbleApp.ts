@@ -164,9 +164,7 @@ export class BubbleApp {
     const onRelease = () => (dragged = null);
     const onKey = (e: KeyboardEvent) => {
       if ((e.key === 'b' || e.key === 'B') && !e.altKey && !e.ctrlKey && !e.metaKey) {
-        // B blows on a flowing film at the probe, to the right, five view heights a second.
-        const [x, y] = this.settings.probe;
-        parts.view.blow(x, y, 5 * parts.surface.clientHeight, 0);
+        this.blowAtProbe();
         return;
       }
       const move = arrowKeyStep(e, PROBE_STEP);
@@ -338,12 +336,26 @@ export class BubbleApp {
     this.parts.onChange?.(this.settings);
   }
 
+  /** Blows on a flowing film at the probe, to the right, five view heights a second (B, or the panel's button). */
+  private blowAtProbe(): void {
+    const [x, y] = this.settings.probe;
+    this.parts.view.blow(x, y, 5 * this.parts.surface.clientHeight, 0);
+  }
+
   /** Builds the panel anew: closed if the one it replaces was, else as the page's CSS says for its size. */
   private buildControls(): void {
     const { controls } = this.parts;
     const closed = this.gui ? this.gui._closed : controls !== undefined && startsClosed(controls, 'panel');
     this.gui?.destroy();
-    this.gui = controls ? createControlPanel(this.settings, (s) => this.change(s), controls, this.cat) : null;
+    this.gui = controls
+      ? createControlPanel(
+          this.settings,
+          (s) => this.change(s),
+          controls,
+          this.cat,
+          () => this.blowAtProbe(),
+        )
+      : null;
     if (closed) this.gui?.close();
   }
 

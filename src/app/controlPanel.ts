@@ -33,13 +33,15 @@ const options = (cat: Catalogue, key: string, values: readonly string[]): Record
 /**
  * A lil-gui panel over every parameter the schema (VIEW_PARAMETERS) gives a control, grouped in
  * its folders. Sliders span each parameter's whole domain, so the panel cannot produce an invalid
- * setting and reaches every valid one. `onChange` receives the new settings.
+ * setting and reaches every valid one. `onChange` receives the new settings; `blow`, if given, is
+ * the flow folder's button (what B on the bubble does).
  */
 export function createControlPanel(
   initial: ViewSettings,
   onChange: (s: ViewSettings) => void,
   container?: HTMLElement,
   cat: Catalogue = EN,
+  blow?: () => void,
 ): GUI {
   const state: Record<string, unknown> = { ...initial };
   const joins: Joined[] = [];
@@ -55,6 +57,7 @@ export function createControlPanel(
       const join = addControl(folder, row, state, cat);
       if (join) joins.push(join);
     }
+    if (folderName === 'flow' && blow) folder.add({ blow }, 'blow').name(cat['panel.blow']);
   }
   gui.onChange(emit);
   return gui;

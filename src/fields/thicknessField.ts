@@ -5,12 +5,13 @@ export type Vec3 = readonly [number, number, number];
 
 /**
  * The flowing film's settings (field `flow`): bubble radius, Γ0, evaporation, wind, seed, simulated
- * seconds per second, grid; src/physics/flow/flowParameters.ts names them and holds their ranges.
+ * seconds per second, grid (src/physics/flow/flowParameters.ts names them and holds their ranges),
+ * and whether a new bubble follows a burst (the GPU's own, src/flow/renewFilm.ts).
  */
 export type FlowSettings = Pick<
   FlowParameters,
   'radiusMm' | 'surfactantMolM2' | 'evaporationNmS' | 'windMps' | 'seed' | 'simSpeed' | 'gridN'
->;
+> & { readonly renew: boolean };
 
 /** What a field reads of the settings (the schema's rows in src/settings/filmParameters.ts). */
 export interface FieldSettings extends FlowSettings {

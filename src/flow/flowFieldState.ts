@@ -15,7 +15,8 @@ const STEP_SLACK = 1e-9;
  * The flow field's film (src/fields/flowField.ts) as the view keeps it: a GpuFilmSimulation of the
  * settings' parameters, advanced in whole fixed steps to the film time timeSeconds × simSpeed, so
  * the same settings give the same film on every load whatever the display rate; made anew from its
- * start when a parameter changes or the time goes back.
+ * start when a parameter changes or the time goes back. With the settings' `renew` a new bubble
+ * follows a burst (src/flow/renewFilm.ts).
  */
 export class FlowFieldState implements FieldState {
   private simulation: GpuFilmSimulation | null = null;
@@ -34,15 +35,19 @@ export class FlowFieldState implements FieldState {
 
   advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean {
     const parameters = flowParametersOf(s);
-    const key = JSON.stringify(parameters);
+    const key = JSON.stringify([parameters, s.renew]);
     if (!this.simulation || key !== this.key) {
       this.simulation?.dispose();
-      this.simulation = new GpuFilmSimulation(this.renderer, parameters);
+      this.simulation = new GpuFilmSimulation(this.renderer, parameters, { renew: s.renew });
       this.key = key;
     }
     const sim = this.simulation;
     const wanted = Math.floor(((s.timeSeconds * s.simSpeed) / sim.stepSeconds) * (1 + STEP_SLACK));
-    if (wanted < sim.steps) sim.reset();
+    if (wanted < sim.steps) {
+      // The film starts again: a blow still under way was on the film given up, not on its start.
+      sim.reset();
+      this.blowing = null;
+    }
     this.step(sim, Math.min(wanted - sim.steps, maxSteps));
     u.uFlowFilm!.value = sim.paddedFilm;
     u.uFlowGridN!.value = sim.grid.n;

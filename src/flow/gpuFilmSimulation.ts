@@ -18,11 +18,15 @@ import { initialFilm } from '../physics/flow/initialFilm.ts';
 import { LOG_MEAN_SERIES_BELOW } from '../physics/flow/logarithmicMean.ts';
 import { SURFACTANT_JACOBI_SWEEPS } from '../physics/flow/solveSurfactant.ts';
 import { WIND_SURFACE_FACTOR, timeStep } from '../physics/flow/timeStep.ts';
-import { VELOCITY_SCALE_M_S } from '../physics/flow/flowConstants.ts';
+import { GAS_CONSTANT_TIMES_TEMPERATURE, PURE_SURFACE_TENSION_N_M, VELOCITY_SCALE_M_S } from '../physics/flow/flowConstants.ts';
+import { HOLE_RAYS, MAX_HOLES } from '../physics/flow/filmHoles.ts';
+import { taylorCulickSpeedMps } from '../physics/flow/flowNumbers.ts';
+import { RIM_LEAD_CELLS, rimThicknessFloorNm } from '../physics/flow/ruptureFilm.ts';
 import { floatTexture } from '../gpu/floatRow.ts';
 import { FULLSCREEN_VERTEX, FullscreenPass } from '../gpu/fullscreenPass.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { type AtlasSize, cellTexelIndex, edgeAtlasSize, faceAtlasSize } from './flowAtlas.ts';
+import { renewSteps } from './renewFilm.ts';
 import { type FlowGridTextures, HALO_TAP_TEXELS, flowGridTextures } from './flowGridTextures.ts';
 
 /**
@@ -44,6 +48,11 @@ const PASSES = {
   start: ['filmSimulation.glsl', 'tfcStartFilm()'],
   evaporate: ['filmSimulation.glsl', 'tfcEvaporate()'],
   rupture: ['ruptureFilm.glsl', 'tfcRuptureFilm()'],
+  ruptureRows: ['ruptureFilm.glsl', 'tfcRuptureRows()'],
+  openHoles: ['ruptureFilm.glsl', 'tfcOpenHoles()'],
+  growRims: ['ruptureFilm.glsl', 'tfcGrowRims()'],
+  emptyHoles: ['ruptureFilm.glsl', 'tfcEmptyHoles()'],
+  burstSteps: ['renewFilm.glsl', 'tfcBurstSteps()'],
 } as const satisfies Record<string, readonly [string, string] | readonly [string, string, string]>;
 type PassName = keyof typeof PASSES;
 
@@ -57,6 +66,13 @@ export const BLOW_WIDTH_RAD = 0.3;
 /** The channel masks of a Jacobi sweep's guess: the system's Γ (its b channel) or a sweep's result (r). */
 const SYSTEM_GUESS = [0, 0, 1, 0];
 const SWEEP_GUESS = [1, 0, 0, 0];
+
+/** The texels of a hole's frame after its rays: centre (with the open flag), e1, e2 (tfcReadHole). */
+const HOLE_FRAME_TEXELS = 3;
+/** The hole table (shaders/flow/filmHoles.glsl): a row per hole, its rays' radii and then its frame. */
+const HOLE_TABLE: AtlasSize = { width: HOLE_RAYS + HOLE_FRAME_TEXELS, height: MAX_HOLES };
+/** No puncture (uPuncture's w = 0). */
+const NO_PUNCTURE = [0, 0, 0, 0];
 
 const floatTarget = (size: AtlasSize): WebGLRenderTarget =>
   new WebGLRenderTarget(size.width, size.height, {
@@ -85,8 +101,13 @@ function flowTargets(n: number) {
     sweeps: [floatTarget(cells), floatTarget(cells), floatTarget(cells)],
     limiter: floatTarget(cells),
     flux: floatTarget(edges),
-    /** The padded film, for sampling h anywhere (the bubble's field). */
+    /** The padded film, for sampling h anywhere (the bubble's field and the rims). */
     paddedFilm: floatTarget(padded),
+    /** Each row's (face, j) count of cells that opened a hole this step, 6n × 1. */
+    ruptureRows: floatTarget({ width: 6 * n, height: 1 }),
+    /** The hole table, and the steps since no film was left (1 × 1), each ping-ponged. */
+    holes: [floatTarget(HOLE_TABLE), floatTarget(HOLE_TABLE)] as [WebGLRenderTarget, WebGLRenderTarget],
+    burst: [floatTarget({ width: 1, height: 1 }), floatTarget({ width: 1, height: 1 })] as [WebGLRenderTarget, WebGLRenderTarget],
   };
 }
 type FlowTargets = ReturnType<typeof flowTargets>;
@@ -95,7 +116,8 @@ type FlowTargets = ReturnType<typeof flowTargets>;
  * The flowing film of src/physics/flow/ on the GPU, pass for pass (docs/flow.md#the-gpu-port): the
  * same grid, parameters, start and fixed step Δt, each of the twin's passes one fragment-shader
  * draw into RGBA float render targets of the renderer it is given (the cell, padded and edge
- * atlases of flowAtlas.ts). `step` runs whole steps; `paddedFilm` is the film to sample.
+ * atlases of flowAtlas.ts). `step` runs whole steps; `paddedFilm` is the film to sample. With
+ * `renew` a new bubble follows a burst (renewFilm.ts); the twin has no such option.
  */
 export class GpuFilmSimulation {
   readonly parameters: FlowParameters;
@@ -115,8 +137,10 @@ export class GpuFilmSimulation {
   private readonly materials: Record<PassName, ShaderMaterial>;
   /** Whether the film target holds the start (false until the first draw after creation, reset or a lost context). */
   private started = false;
-  /** The film target now, and the steps the padded film was made for. */
+  /** The film, hole and burst targets now, and the steps the padded film was made for. */
   private current = 0;
+  private currentHoles = 0;
+  private currentBurst = 0;
   private paddedAt = -1;
   /** The sweeps whose residuals the last step's solve left: the first (from Γ) and the one measured at its solution. */
   private residualTargets: [WebGLRenderTarget, WebGLRenderTarget] | null = null;
@@ -125,6 +149,7 @@ export class GpuFilmSimulation {
   constructor(
     private readonly renderer: WebGLRenderer,
     given: Partial<Record<string, unknown>> = {},
+    options: { readonly renew?: boolean } = {},
   ) {
     this.parameters = validateFlowParameters(given);
     this.numbers = flowNumbers(this.parameters);
@@ -151,6 +176,15 @@ export class GpuFilmSimulation {
       uGuessChannel: value(SWEEP_GUESS),
       uBlowCenter: value([0, 0, 1]),
       uBlowVelocity: value([0, 0, 0]),
+      uRimSpeed: value(
+        (this.parameters.rimSpeedFactor * taylorCulickSpeedMps(PURE_SURFACE_TENSION_N_M, 2 * this.numbers.halfThicknessM)) /
+          VELOCITY_SCALE_M_S,
+      ),
+      uTensionDrop: value((GAS_CONSTANT_TIMES_TEMPERATURE * this.parameters.surfactantMolM2) / PURE_SURFACE_TENSION_N_M),
+      uRimEtaFloor: value(rimThicknessFloorNm(this.parameters) / this.parameters.thicknessNm),
+      uRimLead: value((RIM_LEAD_CELLS * Math.PI) / (2 * this.grid.n)),
+      uRenewSteps: value(renewSteps(options.renew ?? false, this.stepSeconds)),
+      uPuncture: value(NO_PUNCTURE),
       ...Object.fromEntries(
         [
           'uField',
@@ -165,6 +199,11 @@ export class GpuFilmSimulation {
           'uSolvedGamma',
           'uLimiter',
           'uFlux',
+          'uRuptureRows',
+          'uHoles',
+          'uPaddedFilm',
+          'uStartFilm',
+          'uBurst',
         ].map((k) => [k, value(null)]),
       ),
     };
@@ -173,6 +212,8 @@ export class GpuFilmSimulation {
       TFC_HALO_TAP_TEXELS: HALO_TAP_TEXELS,
       TFC_LOG_MEAN_SERIES_BELOW: LOG_MEAN_SERIES_BELOW,
       TFC_BLOW_WIDTH_RAD: BLOW_WIDTH_RAD,
+      TFC_HOLE_RAYS: HOLE_RAYS,
+      TFC_MAX_HOLES: MAX_HOLES,
     };
     this.materials = Object.fromEntries(
       Object.entries(PASSES).map(([name, pass]) => [
@@ -254,15 +295,44 @@ export class GpuFilmSimulation {
   private ensureStarted(): void {
     if (this.started) return;
     this.current = 0;
+    this.currentHoles = 0;
+    this.currentBurst = 0;
     this.draw('start', this.film, { uFilm: this.start });
-    // The film starts at rest: zero edge velocities.
+    // The film starts at rest (zero edge velocities), with no hole and no burst.
     const r = this.renderer;
     const [colour, alpha] = [r.getClearColor(new Color()), r.getClearAlpha()];
     r.setClearColor(0x000000, 0);
-    r.setRenderTarget(this.targets.edgeVelocity);
-    r.clear(true, false, false);
+    for (const target of [this.targets.edgeVelocity, this.holes, this.burst]) {
+      r.setRenderTarget(target);
+      r.clear(true, false, false);
+    }
     r.setClearColor(colour, alpha);
     this.started = true;
+  }
+
+  private get holes(): WebGLRenderTarget {
+    return this.targets.holes[this.currentHoles]!;
+  }
+
+  private get burst(): WebGLRenderTarget {
+    return this.targets.burst[this.currentBurst]!;
+  }
+
+  /** The hole table after `pass` (openHoles or growRims) has read the current one. */
+  private drawHoles(pass: 'openHoles' | 'growRims', inputs: Record<string, Texture | readonly number[]>): void {
+    this.draw(pass, this.targets.holes[1 - this.currentHoles]!, { ...inputs, uHoles: this.holes.texture });
+    this.currentHoles = 1 - this.currentHoles;
+  }
+
+  /**
+   * Pricks the film at a direction (unit or not, the simulation's frame): a hole opens there, if
+   * one of the MAX_HOLES is free, and bursts outward from the next step (the twin's punctureFilm).
+   */
+  puncture(x: number, y: number, z: number): void {
+    this.withTargets(() => {
+      this.ensureStarted();
+      this.drawHoles('openHoles', { uBurst: this.burst.texture, uPuncture: [x, y, z, 1] });
+    });
   }
 
   private pad(field: WebGLRenderTarget, into: WebGLRenderTarget): void {
@@ -302,9 +372,23 @@ export class GpuFilmSimulation {
       this.draw('evaporate', nextFilm(), { uFilm: film() });
       flip();
     }
-    this.draw('rupture', nextFilm(), { uFilm: film() });
-    flip();
+    this.rupture();
     this.steps++;
+  }
+
+  /** Pass 8, rupture and the rims (ruptureFilm.glsl), and the burst's count (renewFilm.glsl). */
+  private rupture(): void {
+    const t = this.targets;
+    const [marked, emptied] = [t.film[1 - this.current]!, t.film[this.current]!];
+    const burst = this.burst.texture;
+    this.draw('rupture', marked, { uFilm: this.film.texture, uHoles: this.holes.texture });
+    this.draw('ruptureRows', t.ruptureRows, { uFilm: marked.texture });
+    this.drawHoles('openHoles', { uRuptureRows: t.ruptureRows.texture, uPuncture: NO_PUNCTURE, uBurst: burst });
+    this.pad(marked, t.paddedFilm);
+    this.drawHoles('growRims', { uPaddedFilm: t.paddedFilm.texture });
+    this.draw('emptyHoles', emptied, { uFilm: marked.texture, uHoles: this.holes.texture, uStartFilm: this.start });
+    this.draw('burstSteps', t.burst[1 - this.currentBurst]!, { uBurst: burst, uHoles: this.holes.texture });
+    this.currentBurst = 1 - this.currentBurst;
   }
 
   private read(target: WebGLRenderTarget): Float32Array {
@@ -324,6 +408,16 @@ export class GpuFilmSimulation {
       [eta[c], gamma[c], intact[c]] = [texels[t]!, texels[t + 1]!, texels[t + 2]!];
     }
     return { eta, gamma, intact };
+  }
+
+  /** The open holes read back, in the order they opened: each one's centre and its rays' angular radii (the twin's FilmHole). */
+  readHoles(): { center: number[]; radius: number[] }[] {
+    this.withTargets(() => this.ensureStarted());
+    const texels = this.read(this.holes);
+    const row = (s: number, k: number) => texels.subarray(4 * (s * HOLE_TABLE.width + k), 4 * (s * HOLE_TABLE.width + k + 1));
+    return Array.from({ length: MAX_HOLES }, (_, s) => s)
+      .filter((s) => row(s, HOLE_RAYS)[3] !== 0)
+      .map((s) => ({ center: [...row(s, HOLE_RAYS).subarray(0, 3)], radius: Array.from({ length: HOLE_RAYS }, (_, k) => row(s, k)[0]!) }));
   }
 
   /** The edge velocities u·n_e (in U) read back, in the twin's edge order. */

@@ -46,6 +46,7 @@ export const EN = {
   'param.windMps': 'wind (m/s)',
   'param.seed': 'perturbation seed',
   'param.simSpeed': 'simulation speed',
+  'param.renew': 'a new bubble after a burst',
   'param.gridN': 'cells per cube face side',
   'param.timeSeconds': 'time (s)',
   'param.animate': 'animate',
@@ -124,6 +125,7 @@ export const EN = {
   'panel.cauchy': 'Cauchy A,B[,C] (λ in nm)',
   'panel.insideMedium': 'inside medium',
   'panel.complex': 'complex n,k (ñ = n + ik)',
+  'panel.blow': 'blow (B)',
   'panel.notTaken': 'not taken: {problem}',
   'app.title': 'thin-film-color — a soap bubble from the spectral thin-film integral',
   'app.fourierAsTable':

@@ -46,6 +46,7 @@ export const JA: Catalogue = {
   'param.windMps': '風 (m/s)',
   'param.seed': '乱れのシード',
   'param.simSpeed': 'シミュレーションの速さ',
+  'param.renew': '割れたら次の泡',
   'param.gridN': '立方体の面あたりのセル数',
   'param.timeSeconds': '時刻 (s)',
   'param.animate': 'アニメーション',
@@ -124,6 +125,7 @@ export const JA: Catalogue = {
   'panel.cauchy': 'コーシーの式 A,B[,C]（λ は nm）',
   'panel.insideMedium': '内側の媒質',
   'panel.complex': '複素屈折率 n,k（ñ = n + ik）',
+  'panel.blow': '息を吹きかける（B）',
   'panel.notTaken': '採用しない：屈折率が範囲外か、数値でない',
   'app.title': '分光積分で求めた薄膜干渉の色のシャボン玉',
   'app.fourierAsTable':

@@ -3,12 +3,12 @@ import type { FlowSettings } from '../fields/thicknessField.ts';
 import { FLOW_PARAMETERS } from '../physics/flow/flowParameters.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
-import { type ParameterRow, choiceRow, defaultsOf, illuminantRow, mediumRow, numberRow } from './parameterRow.ts';
+import { type ParameterRow, choiceRow, defaultsOf, flagRow, illuminantRow, mediumRow, numberRow } from './parameterRow.ts';
 
 type Row = ParameterRow<FilmSettings>;
 
 /** A row of the flowing film's (a settings field named as its FLOW_PARAMETERS row), its domain and default from there, in the panel's flow folder. */
-function flowRow(key: keyof FlowSettings, url: string, step: number): Row {
+function flowRow(key: Exclude<keyof FlowSettings, 'renew'>, url: string, step: number): Row {
   const flow = FLOW_PARAMETERS.find((r) => r.key === key)!;
   return numberRow({ key, url }, flow.domain, flow.defaultValue, 'flow', flow.integer ? 'integer' : step);
 }
@@ -44,6 +44,8 @@ export const FILM_PARAMETERS: readonly Row[] = [
   flowRow('seed', 'seed', 1),
   flowRow('simSpeed', 'simSpeed', 0.01),
   flowRow('gridN', 'grid', 1),
+  // A new bubble after a burst (src/flow/renewFilm.ts).
+  flagRow({ key: 'renew', url: 'renew' }, true, 'flow'),
 ];
 
 /** The default view. */

@@ -61,7 +61,7 @@ const THICK_END_CELL_NM = { min: 0.1, max: 1000, unit: 'nm' } as const;
 const TEXEL_POWER = { min: 1, max: 4, unit: '' } as const;
 /** Skipped tails: 0 keeps every bin; above 1% of the white a visible part of the spectrum would go. */
 const TAIL_TOLERANCE = { min: 0, max: 0.01, unit: '' } as const;
-/** Steps per frame: at least one; 1000 steps of ~25 passes are a long frame on any GPU. */
+/** Steps per frame: at least one; 1000 steps of ~30 passes are a long frame on any GPU. */
 const FLOW_STEPS_PER_FRAME = { min: 1, max: 1000, unit: 'steps' } as const;
 const PRECISIONS = ['auto', 'half'] as const satisfies readonly FilmQuality['tablePrecision'][];
 

@@ -144,7 +144,7 @@ test('the teaching page in both languages and the materials page have no axe vio
   for (const path of ['/teaching.html', '/teaching.ja.html']) {
     await page.goto(path);
     // Every element built (its panel, plots and messages are in the page before the first frame).
-    await expect(page.locator('thin-film-bubble .tfb-layout')).toHaveCount(8);
+    await expect(page.locator('thin-film-bubble .tfb-layout')).toHaveCount(9);
     await page.locator('thin-film-diagram .tfd-summary').waitFor();
     await noAxeViolations(page);
   }

@@ -1,6 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
 import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
+import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
 import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';
 
@@ -9,7 +10,12 @@ import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './we
  * the same URL draws the same pixels on every load, and again after a lost context; a frozen view
  * draws nothing after its frame. A small grid keeps SwiftShader quick.
  */
-const FROZEN = '/?field=flow&grid=16&seed=5&wind=0.5&animate=0&time=0.15&env=none';
+const FROZEN = '/?field=flow&grid=16&seed=5&wind=0.5&animate=0&time=0.06&env=none';
+/**
+ * The wind thins that film to its rupture thickness at 0.125 s; the rims then sweep the sphere in a
+ * few steps, and with renew the film is new again 0.25 s (RENEW_DELAY_S) after that.
+ */
+const RENEWED_S = 0.45;
 
 type Demo = Window & { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView };
 
@@ -40,14 +46,28 @@ async function load(page: Page, url: string) {
 test('field=flow at a frozen time draws the same pixels on every load, the film simulated to that time', async ({ page }) => {
   const problems = watchProblems(page);
   const first = await load(page, FROZEN);
-  expect(first.steps).toBe(Math.floor(0.15 / first.stepSeconds));
+  expect(first.steps).toBe(Math.floor(0.06 / first.stepSeconds));
   expect(first.lit, 'a lit bubble').toBeGreaterThan(1000);
   const second = await load(page, FROZEN);
   expect(second).toEqual(first);
   // The time matters: another time is another film.
-  const later = await load(page, FROZEN.replace('time=0.15', 'time=0.3'));
+  const later = await load(page, FROZEN.replace('time=0.06', 'time=0.1'));
   expect(later.hash).not.toBe(first.hash);
   expect(problems).toEqual([]);
+});
+
+test('a burst film is gone for good with renew=0; with renew=1 a whole new bubble follows', async ({ page }) => {
+  const at = (seconds: number, renew: number) => load(page, `${FROZEN.replace('time=0.06', `time=${seconds}`)}&renew=${renew}`);
+  const intactCells = () =>
+    page.evaluate(() => {
+      const film = (window as unknown as Demo).bubbleView.evolvingFilm as unknown as { current: { readFilm(): { intact: Uint8Array } } };
+      return film.current.readFilm().intact.reduce((s, v) => s + v, 0);
+    });
+  const gone = await at(RENEWED_S, 0);
+  expect(await intactCells()).toBe(0);
+  const renewed = await at(RENEWED_S, 1);
+  expect(await intactCells()).toBe(6 * 16 * 16);
+  expect(renewed.hash).not.toBe(gone.hash);
 });
 
 test('a frozen flowing film draws nothing after its frame', async ({ page }) => {
@@ -79,16 +99,20 @@ test('after a lost context the flowing film is simulated again from its start to
   expect(problems).toEqual([]);
 });
 
-test('B on the bubble blows at the probe, to the right: the film there moves right', async ({ page }) => {
+test("B on the bubble, or Enter on the panel's blow button, blows at the probe, to the right: the film there moves right", async ({
+  page,
+}) => {
   // Still air, so the blow is the only air.
   await load(page, FROZEN.replace('wind=0.5', 'wind=0'));
-  await page.getByRole('application').focus();
-  /** η at the front of the bubble 0.3 rad right and left of the centre, 0.03 s of film after the time, blown or not. */
-  const filmAfter = (blown: boolean) =>
-    page.evaluate((withBlow) => {
+  await openPanel(page);
+  const button = page.getByRole('button', { name: 'blow (B)' });
+  /** η at the front of the bubble 0.3 rad right and left of the centre, 0.03 s of film after the time, blown (by B, by the button) or not. */
+  const filmAfter = async (blow: 'none' | 'key' | 'button') => {
+    if (blow === 'button') await button.press('Enter');
+    return page.evaluate((withKey) => {
       const view = (window as unknown as Demo).bubbleView;
       const start = view.current.timeSeconds;
-      if (withBlow) document.querySelector<HTMLElement>('[role=application]')!.dispatchEvent(new KeyboardEvent('keydown', { key: 'b' }));
+      if (withKey) document.querySelector<HTMLElement>('[role=application]')!.dispatchEvent(new KeyboardEvent('keydown', { key: 'b' }));
       view.apply({ ...view.current, timeSeconds: start + 0.03 });
       view.render();
       const film = view.evolvingFilm as unknown as { current: { readFilm(): { eta: Float32Array }; grid: { n: number } } };
@@ -96,14 +120,17 @@ test('B on the bubble blows at the probe, to the right: the film there moves rig
       view.apply({ ...view.current, timeSeconds: start });
       view.render();
       return [...eta];
-    }, blown);
-  const calm = await filmAfter(false);
-  const blown = await filmAfter(true);
+    }, blow === 'key');
+  };
+  const calm = await filmAfter('none');
   const grid = cubeSphereGrid(16);
   // The view's front (0, 0, 1) is the simulation's (0, −1, 0); the view's right, +x, is its +x.
   const [right, left] = [0.3, -0.3].map((a) => nearestCell(grid, Math.sin(a), -Math.cos(a), 0));
-  expect(blown[right!]! - calm[right!]!).toBeGreaterThan(1e-3);
-  expect(blown[left!]! - calm[left!]!).toBeLessThan(-1e-3);
+  const [byKey, byButton] = [await filmAfter('key'), await filmAfter('button')];
+  expect(byKey[right!]! - calm[right!]!).toBeGreaterThan(1e-3);
+  expect(byKey[left!]! - calm[left!]!).toBeLessThan(-1e-3);
+  // The button blows as the key does.
+  expect(byButton).toEqual(byKey);
 });
 
 test('showing the flowing film and leaving it again, five times, leaves the live GPU objects as they were', async ({ page }) => {

@@ -28,9 +28,10 @@ test('the GPU film equals its float64 twin after 200 steps from the same seeded 
       `u ${velocityError.toExponential(2)} of ${speed.toExponential(2)}; residual GPU ${gpu.surfactantResidual.toExponential(2)}, twin ${twinResidual.toExponential(2)}`,
   );
   expect(gpu.steps).toBe(STEPS);
-  // Nothing ruptured in either: the rims are the twin's alone (docs/flow.md#the-gpu-port).
+  // Nothing ruptured in either (a burst is flowBurst.spec.ts's).
   expect(twin.state.holes).toEqual([]);
   expect(gpu.intact.every((v) => v === 1)).toBe(true);
+  expect(gpu.holes).toEqual([]);
   expect(speed, 'the film moves').toBeGreaterThan(0.01);
   expect(etaError).toBeLessThanOrEqual(FLOW_GPU_FIELD_TOL);
   expect(gammaError).toBeLessThanOrEqual(FLOW_GPU_FIELD_TOL);

@@ -6,6 +6,8 @@ import { VELOCITY_SCALE_M_S } from './flowConstants.ts';
 
 /** The thinnest film a rim speed is computed for (nm): ahead of a rim there is film, and √(1/h) stays finite. */
 const RIM_THICKNESS_FLOOR_NM = 1;
+/** How far ahead of a rim its film is sampled, in cells (π/(2n) radians each): far enough that the bilinear taps miss the cells already emptied. */
+export const RIM_LEAD_CELLS = 1.5;
 
 export interface RuptureInputs {
   readonly halo: CubeSphereHalo;
@@ -57,16 +59,18 @@ function removeFilm(c: number, eta: Float64Array, gamma: Float64Array, intact: U
   intact[c] = 0;
 }
 
+/** The thinnest film (nm) a rim's speed is computed for: the rupture thickness, at least RIM_THICKNESS_FLOOR_NM. */
+export const rimThicknessFloorNm = (p: FlowParameters): number => Math.max(p.ruptureThicknessNm, RIM_THICKNESS_FLOOR_NM);
+
 function growRims(inputs: RuptureInputs, dt: number): void {
   const { halo, parameters, numbers, eta, gamma, holes } = inputs;
   const sample = paddedSampler(halo, 1);
   const paddedEta = padField(halo, eta, 1);
   const paddedGamma = padField(halo, gamma, 1);
-  // Far enough ahead that the bilinear taps miss the cells the rim has already emptied.
-  const lead = (1.5 * Math.PI) / (2 * halo.grid.n);
+  const lead = (RIM_LEAD_CELLS * Math.PI) / (2 * halo.grid.n);
   const point = new Float64Array(3);
   const value = new Float64Array(1);
-  const floorM = Math.max(parameters.ruptureThicknessNm, RIM_THICKNESS_FLOOR_NM) * 1e-9;
+  const floorM = rimThicknessFloorNm(parameters) * 1e-9;
   for (const hole of holes) {
     for (let k = 0; k < HOLE_RAYS; k++) {
       const r = hole.radius[k]!;

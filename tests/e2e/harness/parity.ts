@@ -13,9 +13,10 @@ const probe = new FilmXyzProbe(renderer);
 
 window.renderFilmXyz = (groups, mode, quality = DEFAULT_FILM_QUALITY) => probe.render(groups, mode, quality);
 window.renderThickness = (points, s) => renderThickness(renderer, points, s);
-window.runFlow = (parameters, steps, blow) => {
-  const sim = new GpuFilmSimulation(renderer, parameters);
+window.runFlow = (parameters, steps, blow, puncture, renew = false) => {
+  const sim = new GpuFilmSimulation(renderer, parameters, { renew });
   if (blow) sim.blow(blow.center, blow.velocityMps);
+  if (puncture) sim.puncture(...puncture);
   sim.step(steps);
   const { eta, gamma, intact } = sim.readFilm();
   const result = {
@@ -23,6 +24,7 @@ window.runFlow = (parameters, steps, blow) => {
     gamma: [...gamma],
     intact: [...intact],
     edgeVelocity: [...sim.readEdgeVelocity()],
+    holes: sim.readHoles(),
     surfactantResidual: sim.surfactantResidual(),
     steps: sim.steps,
   };
@@ -35,11 +37,25 @@ declare global {
   interface Window {
     /** XYZ per case of every group, in the groups' order, as the shader computes it. */
     renderFilmXyz?: (groups: readonly ParityGroup[], mode: ParityMode, quality?: FilmQuality) => number[][][];
-    /** The GPU film after `steps` steps from its start (air blown as given): per cell η, Γ, intact; per edge u·n_e; the last solve's residual. */
+    /**
+     * The GPU film after `steps` steps from its start (air blown as given, pricked at a direction
+     * first, renewed after a burst): per cell η, Γ, intact; per edge u·n_e; the open holes; the last
+     * solve's residual.
+     */
     runFlow?: (
       parameters: Record<string, number>,
       steps: number,
-      blow?: { center: [number, number, number]; velocityMps: [number, number, number] },
-    ) => { eta: number[]; gamma: number[]; intact: number[]; edgeVelocity: number[]; surfactantResidual: number; steps: number };
+      blow?: { center: [number, number, number]; velocityMps: [number, number, number] } | null,
+      puncture?: [number, number, number] | null,
+      renew?: boolean,
+    ) => {
+      eta: number[];
+      gamma: number[];
+      intact: number[];
+      edgeVelocity: number[];
+      holes: { center: number[]; radius: number[] }[];
+      surfactantResidual: number;
+      steps: number;
+    };
   }
 }

@@ -5,9 +5,9 @@ import { parseSettings } from '../../../src/settings/settingsQuery.ts';
 import { DEFAULT_VIEW_SETTINGS } from '../../../src/settings/viewParameters.ts';
 
 describe('flow rows', () => {
-  it("default to the simulation's defaults (R 40 mm, Γ0 6.67e-8 mol/m², still air, the uniform start, N 128, real time)", () => {
-    const { radiusMm, surfactantMolM2, evaporationNmS, windMps, seed, simSpeed, gridN } = DEFAULT_VIEW_SETTINGS;
-    expect({ radiusMm, surfactantMolM2, evaporationNmS, windMps, seed, simSpeed, gridN }).toEqual({
+  it("default to the simulation's defaults (R 40 mm, Γ0 6.67e-8 mol/m², still air, the uniform start, N 128, real time), a new bubble after a burst", () => {
+    const { radiusMm, surfactantMolM2, evaporationNmS, windMps, seed, simSpeed, gridN, renew } = DEFAULT_VIEW_SETTINGS;
+    expect({ radiusMm, surfactantMolM2, evaporationNmS, windMps, seed, simSpeed, gridN, renew }).toEqual({
       radiusMm: 40,
       surfactantMolM2: 6.67e-8,
       evaporationNmS: 0,
@@ -15,6 +15,7 @@ describe('flow rows', () => {
       seed: 0,
       simSpeed: 1,
       gridN: 128,
+      renew: true,
     });
     // flow is a field to choose, not the default one.
     expect(DEFAULT_VIEW_SETTINGS.field).toBe('swirl');
@@ -28,6 +29,7 @@ describe('flow rows', () => {
     ['seed', '1.5', 'seed="1.5" ignored: expected an integer in [0, 2147483647]'],
     ['simSpeed', '11', 'simSpeed="11" ignored: expected a number in [0, 10]'],
     ['grid', '300', 'grid="300" ignored: expected an integer in [4, 256]'],
+    ['renew', 'yes', 'renew="yes" ignored: expected 0 or 1'],
   ])('refuses %s=%s, naming it and its range', (name, value, message) => {
     const { settings, errors } = parseSettings(`?field=flow&${name}=${value}`);
     expect(errors).toEqual([message]);

@@ -9,7 +9,7 @@ describe('URL parameters', () => {
     const { settings, errors } = parseSettings(
       '?thickness=420&thicknessRange=300&speed=2&field=drainage&nFilm=1.4&nOutside=1.1&nInside=1.2&illuminant=7500' +
         '&polarization=s&normalization=paper&space=display-p3&mode=exact&sides=front&env=park&envRotation=90&tonemap=neutral&exposure=1.5&animate=0&time=12.5' +
-        '&radius=25&surfactant=2e-7&evaporation=3&wind=0.5&seed=42&simSpeed=2&grid=32',
+        '&radius=25&surfactant=2e-7&evaporation=3&wind=0.5&seed=42&simSpeed=2&grid=32&renew=0',
     );
     expect(errors).toEqual([]);
     expect(settings).toEqual({
@@ -40,6 +40,7 @@ describe('URL parameters', () => {
       seed: 42,
       simSpeed: 2,
       gridN: 32,
+      renew: false,
     });
   });
 
@@ -139,7 +140,9 @@ describe('URL parameters', () => {
     ...[...NOT_NUMBERS.filter((v) => v !== ''), ...outsideRange(4000, 25000), ...notNames(['D65', 'E'])].map(
       (v): [string, string, string] => ['illuminant', v, '[4000, 25000] K'],
     ),
-    ...['', 'yes', 'true', '2', '-1', ABSURDLY_LONG].map((v): [string, string, string] => ['animate', v, '0 or 1']),
+    ...['animate', 'renew'].flatMap((name) =>
+      ['', 'yes', 'true', '2', '-1', ABSURDLY_LONG].map((v): [string, string, string] => [name, v, '0 or 1']),
+    ),
     ...[...NOT_NUMBERS, '0.5', '0.5,0.5,0.5', '1.5,0.5', '-0.1,0.5', 'NaN,0.5', 'Infinity,0', '0.5,'].map((v): [string, string, string] => [
       'probe',
       v,

@@ -1,0 +1,109 @@
+/**
+ * The burst on the GPU: a pricked film opens a hole whose rim runs at the Taylor–Culick speed
+ * √(2γ/(ρh)) × the rim-speed factor (γ = γ_a − R̄TΓ0, h the film's thickness, computed here from the
+ * published constants), the same cells empty as in the float64 twin, and with `renew` a new bubble
+ * follows. The hole's radius is read from the area the film has lost, A = 2π(1 − cos r) for a cap
+ * of angular radius r, as the twin's test does.
+ */
+import { type Page, expect, test } from '@playwright/test';
+import { createFilmSimulation, punctureFilm, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
+import { FLOW_BURST_DIFFERING_CELLS, FLOW_BURST_RAY_TOL, RIM_SPEED_REL_TOL } from '../tolerances.ts';
+
+const [radiusMm, thicknessNm, surfactantMolM2, rimSpeedFactor] = [40, 500, 6.67e-8, 0.25];
+const PRICKED = { gridN: 24, radiusMm, thicknessNm, surfactantMolM2, rimSpeedFactor };
+const TOP: [number, number, number] = [0, 0, 1];
+/** Steps after the prick at which the radius is read: past the first cells (0.4 rad), short of the bottom (2.4 rad). */
+const [EARLY, LATE] = [4, 24];
+
+type Run = Awaited<ReturnType<NonNullable<Window['runFlow']>>>;
+
+async function harness(page: Page): Promise<void> {
+  await page.goto('/tests/e2e/harness/parity.html');
+  await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
+}
+
+const prickedRun = (page: Page, steps: number): Promise<Run> =>
+  page.evaluate(([p, n, at]) => window.runFlow!(p, n, null, at), [PRICKED, steps, TOP] as const);
+
+/** The angular radius of the cap with the area of the cells that have lost their film. */
+function holeRadius(intact: ArrayLike<number>, area: Float64Array): number {
+  let lost = 0;
+  for (let c = 0; c < area.length; c++) lost += intact[c] === 0 ? area[c]! : 0;
+  return Math.acos(Math.max(-1, 1 - lost / (2 * Math.PI)));
+}
+
+test('a pricked GPU film bursts at √(2γ/(ρh)) × the rim-speed factor, and empties the cells the twin empties', async ({ page }) => {
+  await harness(page);
+  const [early, late] = [await prickedRun(page, EARLY), await prickedRun(page, LATE)];
+  const twin = createFilmSimulation(PRICKED);
+  punctureFilm(twin, ...TOP);
+  for (let k = 0; k < LATE; k++) stepFilm(twin);
+  const { area } = twin.grid;
+  const surfaceTension = 0.07275 - 8.3144598 * 298.15 * surfactantMolM2;
+  const expected = rimSpeedFactor * Math.sqrt((2 * surfaceTension) / (997 * thicknessNm * 1e-9));
+  const [r1, r2] = [holeRadius(early.intact, area), holeRadius(late.intact, area)];
+  const speed = ((r2 - r1) * radiusMm * 1e-3) / ((LATE - EARLY) * twin.stepSeconds);
+  // The rays themselves, all at one radius on a uniform film.
+  const rays = late.holes[0]!.radius;
+  const raySpeed = ((rays.reduce((s, r) => s + r, 0) / rays.length) * radiusMm * 1e-3) / (LATE * twin.stepSeconds);
+  // Cells where the GPU and the twin differ lie within a cell (π/(2N) rad, 1.5 for the diagonal) of the twin's rim.
+  const twinRim = twin.state.holes[0]!.radius[0]!;
+  const cellRad = Math.PI / (2 * PRICKED.gridN);
+  const differing = [...late.intact.keys()].filter((c) => late.intact[c] !== twin.state.intact[c]);
+  const offRim = differing.filter((c) => Math.abs(Math.acos(Math.min(1, twin.grid.center[3 * c + 2]!)) - twinRim) > 1.5 * cellRad);
+  const rayError = rays.reduce((w, r, k) => Math.max(w, Math.abs(r - twin.state.holes[0]!.radius[k]!)), 0);
+  console.log(
+    `GPU rim ${speed.toFixed(3)} m/s from the lost area, ${raySpeed.toFixed(3)} m/s from the rays, formula ${expected.toFixed(3)} m/s; ` +
+      `against the twin: ${differing.length} of ${area.length} cells differ, rays by ${rayError.toExponential(2)} rad`,
+  );
+  expect(late.holes).toHaveLength(1);
+  expect(r1).toBeGreaterThan(0.3);
+  expect(r2).toBeLessThan(2.5);
+  expect(Math.abs(speed / expected - 1)).toBeLessThan(RIM_SPEED_REL_TOL);
+  expect(Math.abs(raySpeed / expected - 1)).toBeLessThan(RIM_SPEED_REL_TOL);
+  late.intact.forEach((v, c) => {
+    if (v === 0) expect([late.eta[c], late.gamma[c]]).toEqual([0, 0]);
+  });
+  expect(offRim).toEqual([]);
+  expect(differing.length).toBeLessThanOrEqual(FLOW_BURST_DIFFERING_CELLS);
+  expect(rayError).toBeLessThan(FLOW_BURST_RAY_TOL);
+});
+
+test('a GPU film thinned to the rupture thickness opens the holes the twin opens, where the twin opens them', async ({ page }) => {
+  await harness(page);
+  // Evaporation thins the whole film to the rupture thickness at once: many cells give way in one step.
+  const thinning = { gridN: 6, thicknessNm: 40, ruptureThicknessNm: 39, evaporationNmS: 100 };
+  const twin = createFilmSimulation(thinning);
+  while (twin.state.holes.length === 0) stepFilm(twin);
+  stepFilm(twin);
+  const gpu = await page.evaluate(([p, n]) => window.runFlow!(p, n), [thinning, twin.state.steps] as const);
+  const centreError = gpu.holes.reduce(
+    (w, h, s) => Math.max(w, ...h.center.map((v, k) => Math.abs(v - twin.state.holes[s]!.center[k]!))),
+    0,
+  );
+  console.log(`rupture after ${twin.state.steps} steps: ${twin.state.holes.length} holes in the twin, ${gpu.holes.length} on the GPU`);
+  expect(twin.state.holes.length).toBeGreaterThan(1);
+  expect(gpu.holes).toHaveLength(twin.state.holes.length);
+  expect(centreError).toBeLessThan(1e-6);
+  expect(gpu.intact).toEqual([...twin.state.intact]);
+});
+
+test('with renew a new bubble follows the burst: every cell whole again, holding the film it started with', async ({ page }) => {
+  await harness(page);
+  // Full speed: the rims sweep the sphere in 5 steps; the film renews RENEW_DELAY_S (172 steps) later.
+  const burst = { gridN: 16 };
+  const steps = 185;
+  const [gone, renewed] = await page.evaluate(
+    ([p, n, at]) => [window.runFlow!(p, n, null, at, false), window.runFlow!(p, n, null, at, true)],
+    [burst, steps, TOP] as const,
+  );
+  const { area } = createFilmSimulation(burst).grid;
+  // The start is the uniform film (seed 0, η = 1): its volume ∫η dA = 4π, which transport keeps.
+  const volume = renewed.eta.reduce((s, eta, c) => s + eta * area[c]!, 0);
+  console.log(`renew: ∫η dA ${volume.toFixed(6)} against 4π = ${(4 * Math.PI).toFixed(6)}`);
+  expect(gone.intact.every((v) => v === 0)).toBe(true);
+  expect(gone.holes).toHaveLength(1);
+  expect(renewed.intact.every((v) => v === 1)).toBe(true);
+  expect(renewed.holes).toEqual([]);
+  expect(Math.abs(volume / (4 * Math.PI) - 1)).toBeLessThan(1e-5);
+});
