@@ -195,3 +195,10 @@ export const FLOW_GPU_VELOCITY_TOL = 5e-5;
  * of the terms (~1e-7 of A_cΓ per cell), so its floor is far above the twin's 1e-7. Measured 5.6e-5 to 6.4e-5, as the compiler orders the float32 sums.
  */
 export const FLOW_GPU_RESIDUAL_MAX = 1e-3;
+
+/**
+ * A bare metal from its base colour (artistMetal.ts) against that colour, ΔE00: its knots' r are
+ * solved for the colour exactly; what is left is the lerp of n, k between its 5 nm knots (0.09 at
+ * most on gold, copper, silver and iron).
+ */
+export const ARTIST_METAL_BARE_DE00 = 0.2;

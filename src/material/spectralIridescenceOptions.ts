@@ -1,8 +1,10 @@
+import { Color } from 'three';
+import { type LinearRgb } from '../physics/artistMetal.ts';
 import { POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
 import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
 import { type Medium, assertMedium, mediumFromJson, parseMediumText } from '../physics/medium.ts';
-import { ParameterError, oneOf } from '../physics/validate.ts';
+import { ParameterError, isInDomain, oneOf } from '../physics/validate.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { type FilmQuality, type FilmQualityOptions, filmQualityFrom } from '../settings/filmQuality.ts';
 import { MODES } from '../settings/filmSettings.ts';
@@ -12,6 +14,9 @@ export type FilmMode = (typeof MODES)[number];
 
 /** A base as given: a medium, or its text (a name is one: `'Ti'`, `'complex:2.6,3.4'`). */
 export type BaseInput = Exclude<Medium, string> | string;
+
+/** An edge tint as given: a three.js Color, a hex number (sRGB, as three reads one) or linear [r, g, b]. */
+export type EdgeTintInput = Color | number | LinearRgb;
 
 /** How the film is computed and seen: the demo's `mode`, `illuminant`, `polarization`, `normalization`, and the quality knobs. */
 export interface SpectralIridescenceOptions {
@@ -27,6 +32,13 @@ export interface SpectralIridescenceOptions {
    * film over it is all the surface reflects.
    */
   readonly base?: BaseInput | null;
+  /**
+   * A metal's edge tint (docs/material.md#a-metal-from-its-colour): with no `base` and `metalness`
+   * > 0, the film lies on a metal whose complex index comes from the base `color` (its F0) and this
+   * colour (Gulbrandsen 2014). A three.js `Color`, a hex number (sRGB) or linear `[r, g, b]` in
+   * [0, 1]; null (the default): the base colour itself.
+   */
+  readonly edgeTint?: EdgeTintInput | null;
   /** the table's layout and bins: any of the knobs, over the demo's defaults */
   readonly quality?: FilmQualityOptions;
 }
@@ -38,19 +50,21 @@ export interface SpectralIridescenceProperties {
   polarization: Polarization;
   normalization: Normalization;
   base: Medium | null;
+  edgeTint: LinearRgb | null;
   get quality(): FilmQuality;
   /** any of the knobs, over the defaults (not over the current ones) */
   set quality(q: FilmQualityOptions);
 }
 
 /** Every option, checked, with its default. */
-export type CheckedOptions = Required<Omit<SpectralIridescenceOptions, 'quality' | 'base'>> & {
+export type CheckedOptions = Required<Omit<SpectralIridescenceOptions, 'quality' | 'base' | 'edgeTint'>> & {
   readonly quality: FilmQuality;
   readonly base: Medium | null;
+  readonly edgeTint: LinearRgb | null;
 };
 
 /** The option names, as the properties of a spectral material are named. */
-export const OPTION_NAMES = ['mode', 'illuminant', 'polarization', 'normalization', 'base', 'quality'] as const;
+export const OPTION_NAMES = ['mode', 'illuminant', 'polarization', 'normalization', 'base', 'edgeTint', 'quality'] as const;
 
 /** The options with their defaults, each checked (a ParameterError names the first bad one). */
 export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): CheckedOptions {
@@ -60,6 +74,7 @@ export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): 
     polarization: oneOf('polarization', o.polarization ?? DEFAULT_SETTINGS.polarization, POLARIZATIONS),
     normalization: oneOf('normalization', o.normalization ?? DEFAULT_SETTINGS.normalization, NORMALIZATIONS),
     base: baseOf(o.base ?? null),
+    edgeTint: edgeTintOf(o.edgeTint ?? null),
     quality: filmQualityFrom(o.quality),
   };
 }
@@ -71,6 +86,21 @@ function baseOf(base: BaseInput | null): Medium | null {
   if (medium === null) throw new ParameterError('base', `base: ${JSON.stringify(base)} is not a medium (a number, a name or complex:n,k)`);
   assertMedium('base', medium, 'inside');
   return medium;
+}
+
+const UNIT = { min: 0, max: 1, unit: '' } as const;
+
+/** The edge tint as linear [r, g, b] (a ParameterError naming `edgeTint` when a component leaves [0, 1] or it is no colour). */
+function edgeTintOf(tint: EdgeTintInput | null): LinearRgb | null {
+  if (tint === null) return null;
+  const isHex = typeof tint === 'number' && Number.isInteger(tint) && tint >= 0 && tint <= 0xffffff;
+  const rgb: unknown[] = tint instanceof Color ? tint.toArray() : isHex ? new Color(tint).toArray() : Array.isArray(tint) ? [...tint] : [];
+  if (rgb.length !== 3 || !rgb.every((c) => typeof c === 'number' && isInDomain(c, UNIT)))
+    throw new ParameterError(
+      'edgeTint',
+      `edgeTint: ${JSON.stringify(tint)} is not allowed; expected a Color, a hex number or linear [r, g, b] each in [0, 1]`,
+    );
+  return rgb as unknown as LinearRgb;
 }
 
 /** `options` without the film options' keys, and those keys apart: a one-object constructor's split. */
