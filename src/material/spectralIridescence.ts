@@ -110,7 +110,7 @@ const clampWarningOnce =
  */
 function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit: Limit): FilmSettings {
   const d = FILM_STACK_DOMAIN;
-  const nFilm = limit('iridescenceIOR', m.iridescenceIOR, d.nFilm);
+  const nFilm = o.film ?? limit('iridescenceIOR', m.iridescenceIOR, d.nFilm);
   const nInside = baseOf(m, o) ?? limit('ior', m.ior, d.nInside);
   const minNm = limit('iridescenceThicknessMinimum', m.iridescenceThicknessMinimum, d.thicknessNm);
   const maxNm = limit('iridescenceThicknessMaximum', m.iridescenceThicknessMaximum, d.thicknessNm);
@@ -152,9 +152,9 @@ function metalOf(m: MeshPhysicalMaterial, o: CheckedOptions): SampledIndex | nul
 const baseOf = (m: MeshPhysicalMaterial, o: CheckedOptions): Medium | null => o.base ?? metalOf(m, o);
 
 /** The GLSL defines of the film (filmColor.glsl's, for the mode). */
-// The film's index is three's iridescenceIOR, a number; the base is `base` (a medium), the metal, or three's ior, a number.
+// The film is `film` (a medium) or three's iridescenceIOR, a number; the base is `base` (a medium), the metal, or three's ior, a number.
 const definesOf = (m: MeshPhysicalMaterial, o: CheckedOptions) =>
-  filmColorDefines({ ...o, nFilm: DEFAULT_SETTINGS.nFilm, nInside: baseOf(m, o) ?? DEFAULT_SETTINGS.nInside }, o.quality);
+  filmColorDefines({ ...o, nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: baseOf(m, o) ?? DEFAULT_SETTINGS.nInside }, o.quality);
 
 /** What of the program the material's metalness and colour decide: whether the lobe is the metallic one, and over an opaque metal. */
 function metalState(m: MeshPhysicalMaterial, o: CheckedOptions): string {

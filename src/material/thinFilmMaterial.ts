@@ -63,6 +63,13 @@ export class ThinFilmMaterial extends MeshPhysicalMaterial {
   set base(value: BaseInput | null) {
     setSpectralOption(this, 'base', value);
   }
+  get film(): Medium | null {
+    return spectralOption(this, 'film');
+  }
+  /** a medium or its text (`'TiO2'`, `'Fe3O4'`), or null for three's `iridescenceIOR` */
+  set film(value: BaseInput | null) {
+    setSpectralOption(this, 'film', value);
+  }
   get edgeTint(): LinearRgb | null {
     return spectralOption(this, 'edgeTint');
   }

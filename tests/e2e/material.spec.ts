@@ -3,6 +3,9 @@ import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenc
 import { PHYSICAL_MATERIAL_CODES } from '../tolerances.ts';
 import { watchProblems } from './pageWatch.ts';
 import type { FilmCase } from './harness/material.ts';
+import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
+import { srgbDecode } from '../../src/physics/colorConversions.ts';
+import { type Medium } from '../../src/physics/medium.ts';
 
 /**
  * The spectral iridescence (src/material/spectralIridescence.ts) in three.js scenes, one harness
@@ -11,13 +14,22 @@ import type { FilmCase } from './harness/material.ts';
  * the programs and textures as materials come and go, and a table rebuilt after a lost context.
  */
 
-/** A soap film on glass, and a higher-index film on a lower-index base (a minimum at normal incidence). */
+/**
+ * A soap film on glass, a higher-index film on a lower-index base (a minimum at normal incidence),
+ * and a film on a gold-coloured metal (metalness 1: the metal from its colour, edge tint the colour).
+ */
 const CASES: readonly FilmCase[] = [
   { thicknessNm: 450, angleDeg: 20, nFilm: 1.33, ior: 1.5 },
   { thicknessNm: 280, angleDeg: 50, nFilm: 1.8, ior: 1.4 },
+  { thicknessNm: 300, angleDeg: 30, nFilm: 1.5, ior: 1.5, metalColor: 0xffc356 },
 ];
+const insideOf = (c: FilmCase): Medium => {
+  if (c.metalColor === undefined) return c.ior;
+  const rgb = [16, 8, 0].map((shift) => srgbDecode(((c.metalColor! >> shift) & 0xff) / 255)) as unknown as LinearRgb;
+  return artistMetalMedium(rgb, rgb);
+};
 const referenceOf = (c: FilmCase) =>
-  reference8({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm: c.nFilm, nInside: c.ior });
+  reference8({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm: c.nFilm, nInside: insideOf(c) });
 
 test('the spectral iridescence on three.js meshes: reference colour, glTF, the physical material kept, programs, context restore', async ({
   page,

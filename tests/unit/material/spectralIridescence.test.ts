@@ -185,6 +185,25 @@ describe('a base under the film', () => {
   });
 });
 
+describe('a film medium in place of iridescenceIOR', () => {
+  it("takes a named film (TiO2 on Ti): dispersive, its uniform the film's ñ at the D line, a bad one refused by name", () => {
+    const m = new ThinFilmMaterial({ mode: 'fourier', film: 'TiO2', base: 'Ti' });
+    expect(m.film).toBe('TiO2');
+    const shader = shaderObject();
+    m.onBeforeCompile(shader as never, null as never);
+    expect(shader.defines).toMatchObject({ TFC_OPAQUE_INSIDE: 1, TFC_DISPERSIVE: 1 });
+    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    // Sarkar et al.'s rows at 580 nm (2.149843) and 590 nm (2.145621) bracket the D line, 589.3 nm.
+    const [n, k] = (shader.uniforms as Record<string, { value: number[] }>).uNFilm!.value;
+    expect(n! > 2.145621 && n! < 2.149843 && k === 0).toBe(true);
+    for (const bad of ['Unobtainium', 'complex:0,1'])
+      expect(
+        parameterOf(() => (m.film = bad)),
+        bad,
+      ).toBe('film');
+  });
+});
+
 describe('a metal from its base colour', () => {
   const draw = (m: MeshPhysicalMaterial) =>
     m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
