@@ -89,3 +89,27 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
   await expect(page.locator('#readout')).toHaveText(/three\.js\s+#[0-9a-f]{6}, spectral\s+#[0-9a-f]{6}; ΔE00 \d+\.\d/);
   expect(problems).toEqual([]);
 });
+
+test("the materials page's films on metals: the titanium slider, by keyboard, thickens the oxide, recolours the coin and says the voltage", async ({
+  page,
+}) => {
+  const problems = watchProblems(page);
+  await page.goto('/materials.html');
+  await expect(page.locator('#readout')).toHaveText(/ΔE00/);
+  const slider = page.getByRole('slider', { name: 'anodized titanium, oxide thickness' });
+  await expect(slider).toHaveValue('60');
+  // 60 nm at 2 nm/V: 30 V; at 2.8 and 1.6 nm/V, 21 and 38 V (rounded to whole volts)
+  await expect(page.locator('#titanium-value')).toHaveText('TiO₂ 60 nm ≈ 30 V (21–38 V for 1.6–2.8 nm/V)');
+  const coin = () => page.evaluate(() => (window.materialsPage!.draw('side by side'), window.materialsPage!.pixelOf('anodized titanium')));
+  const before = await coin();
+  const frames = Number(await page.locator('body').getAttribute('data-frames'));
+  await slider.focus();
+  for (let i = 0; i < 40; i++) await page.keyboard.press('ArrowRight');
+  await expect(slider).toHaveValue('100');
+  await expect(slider).toHaveAttribute('aria-valuetext', 'TiO₂ 100 nm ≈ 50 V (36–63 V for 1.6–2.8 nm/V)');
+  await expect(page.locator('body')).not.toHaveAttribute('data-frames', String(frames));
+  const after = await coin();
+  // The reference's colours of TiO₂ on Ti head-on: blue at 60 nm (#5580b5), pale at 100 nm (#c2cec1).
+  expect(after[0]! - before[0]!, `${before} → ${after}`).toBeGreaterThan(30);
+  expect(problems).toEqual([]);
+});
