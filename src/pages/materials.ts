@@ -60,10 +60,15 @@ function draw(v: View = view): number[] {
   frames++;
   document.body.dataset.frames = String(frames);
   const p = probe ?? { x: 0, y: 0 };
+  return readPixel(p.x, p.y);
+}
+
+/** The 8-bit pixel drawn at (x, y) CSS pixels from the canvas's top left, read at once. */
+function readPixel(x: number, y: number): number[] {
   const r = renderer.getPixelRatio();
   const gl = renderer.getContext();
   const out = new Uint8Array(4);
-  gl.readPixels(Math.round(p.x * r), gl.drawingBufferHeight - 1 - Math.round(p.y * r), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
+  gl.readPixels(Math.round(x * r), gl.drawingBufferHeight - 1 - Math.round(y * r), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
   return [out[0]!, out[1]!, out[2]!];
 }
 
@@ -152,12 +157,7 @@ loadEnvironmentPixels('park').then(
 /** The 8-bit pixel at the centre of a named mesh (a metal's coin), as last drawn. */
 function pixelOf(name: string): number[] {
   const point = example.scene.getObjectByName(name)!.getWorldPosition(new Vector3()).project(example.camera);
-  const r = renderer.getPixelRatio();
-  const gl = renderer.getContext();
-  const out = new Uint8Array(4);
-  const [x, y] = [((point.x + 1) / 2) * canvas.clientWidth * r, ((point.y + 1) / 2) * canvas.clientHeight * r];
-  gl.readPixels(Math.round(x), Math.round(y), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
-  return [out[0]!, out[1]!, out[2]!];
+  return readPixel(((point.x + 1) / 2) * canvas.clientWidth, ((1 - point.y) / 2) * canvas.clientHeight);
 }
 
 /** For the benchmark and the tests: the example scene, a way to draw one view, a named mesh's pixel. */
