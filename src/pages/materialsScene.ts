@@ -170,7 +170,7 @@ export function exampleScene(aspect: number): ExampleScene {
     const mesh = new Mesh<CylinderGeometry, MeshPhysicalMaterial>(coin, metals[i]!.ours);
     mesh.name = m.name;
     mesh.position.set(0.42 * (i - 1), 1.3, 0.4);
-    mesh.rotation.set(Math.PI / 2 - 0.45, 0, 0.3);
+    mesh.rotation.set(Math.PI / 2 - 0.2, 0, 0.3);
     scene.add(mesh);
     return mesh;
   });
