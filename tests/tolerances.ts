@@ -201,3 +201,10 @@ export const FLOW_GPU_RESIDUAL_MAX = 1e-3;
  */
 export const FLOW_BURST_RAY_TOL = 1e-4;
 export const FLOW_BURST_DIFFERING_CELLS = 4;
+
+/**
+ * A bare metal from its base colour (artistMetal.ts) against that colour, ΔE00: its knots' r are
+ * solved for the colour exactly; what is left is the lerp of n, k between its 5 nm knots (0.09 at
+ * most on gold, copper, silver and iron).
+ */
+export const ARTIST_METAL_BARE_DE00 = 0.2;

@@ -31,6 +31,8 @@ export interface DemoPageFigures {
 export const PANEL_CHANGES = [
   ['n film', '1.4', '1.33'],
   ['film material', 'water', 'constant'],
+  // a change of the inside medium: air (n 1) → gold (a tabulated metal: the table's dispersive bins, an opaque inside) and back
+  ['inside medium', 'Au', 'constant'],
   ['illuminant', 'D93', 'D65'],
   ['polarization', 's', 'unpolarized'],
   ['range (nm)', '1200', '800'],

@@ -86,6 +86,14 @@ export const ROWS: readonly BenchRow[] = [
   EXACT_ROW,
   table({ fill: 'binned', thickEndCellNm: 0 }, ' (before: the previous default)'),
   DEFAULT_TABLE_ROW,
+  // A film on a metal (docs/physics.md#absorbing-media-on-the-gpu), the default table's frame cost
+  // next to the constant film's above: the table is filled from the dispersive bins (Fresnel per row
+  // and bin) and its inside half left black (opaque inside); a frame is the same lookup. No error
+  // columns: the grids are the soap film's.
+  sceneStep('default table, nFilm=TiO2 on nInside=Ti (a film on a metal: dispersive bins, opaque inside)', {
+    nFilm: 'TiO2',
+    nInside: 'Ti',
+  }),
   table({ thickEndCellNm: 0 }),
   table({ width: 1024, rows: 64 }),
   table({ cosPower: 1.5 }),

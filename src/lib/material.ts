@@ -6,6 +6,7 @@
 export { isSpectralIridescence, spectralIridescence, useSpectralIridescence } from '../material/spectralIridescence.ts';
 export {
   type BaseInput,
+  type EdgeTintInput,
   type FilmMode,
   type SpectralIridescenceOptions,
   type SpectralIridescenceProperties,
@@ -15,4 +16,5 @@ export { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions } from 
 export type { FilmTableLayout } from '../settings/filmTableLayout.ts';
 export type { IlluminantSpec } from '../physics/illuminants.ts';
 export type { Medium } from '../physics/medium.ts';
+export type { LinearRgb } from '../physics/artistMetal.ts';
 export { ParameterError } from '../physics/validate.ts';

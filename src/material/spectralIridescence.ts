@@ -6,7 +6,10 @@ import {
   type WebGLProgramParametersWithUniforms,
   type WebGLRenderer,
 } from 'three';
+import { type LinearRgb, artistMetalMedium } from '../physics/artistMetal.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
+import { type Medium, absorbsInBand } from '../physics/medium.ts';
+import { type SampledIndex } from '../physics/sampledIndex.ts';
 import { type NumberDomain, assertInRange, expectedNumber, isInDomain } from '../physics/validate.ts';
 import { filmColorDefines, filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } from '../film/filmColor.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
@@ -27,6 +30,8 @@ import { restoresOf } from './contextRestores.ts';
 /** The call in three's lights_fragment_begin chunk that gives the film over the dielectric base. */
 const DIELECTRIC_FILM = 'evalIridescence( 1.0, material.iridescenceIOR, dotNVi, material.iridescenceThickness, material.specularColor )';
 const SPECTRAL_FILM = 'tfcSpectralIridescence( material.iridescenceThickness, dotNVi )';
+/** The call that gives the film over the metallic base (three's base colour as F0, Schlick's Fresnel). */
+const METALLIC_FILM = 'evalIridescence( 1.0, material.iridescenceIOR, dotNVi, material.iridescenceThickness, material.diffuseColor )';
 /**
  * three's F0 for the film's image-based light: Schlick's curve inverted at n·v. Ours inverts the
  * lobe the light is then integrated with, its DFG table's single scattering and three's multiple
@@ -34,17 +39,25 @@ const SPECTRAL_FILM = 'tfcSpectralIridescence( material.iridescenceThickness, do
  * surface reflects the film's own value at n·v at every angle.
  */
 const DIELECTRIC_F0 = 'material.iridescenceF0Dielectric = Schlick_to_F0( iridescenceFresnelDielectric, 1.0, dotNVi );';
-const SPECTRAL_F0 =
-  'material.iridescenceF0Dielectric = tfcSpectralIridescenceF0( iridescenceFresnelDielectric, texture2D( dfgLUT, vec2( material.roughness, dotNVi ) ).rg, material.specularF90 );';
+const SPECTRAL_F0 = (lobe: 'Dielectric' | 'Metallic') =>
+  `material.iridescenceF0${lobe} = tfcSpectralIridescenceF0( iridescenceFresnel${lobe}, texture2D( dfgLUT, vec2( material.roughness, dotNVi ) ).rg, material.specularF90 );`;
+const METALLIC_F0 = 'material.iridescenceF0Metallic = Schlick_to_F0( iridescenceFresnelMetallic, 1.0, dotNVi );';
 /** The includes of three's physical fragment shader the film is written into. */
 const FILM_INCLUDES = ['#include <iridescence_fragment>', '#include <lights_fragment_begin>'] as const;
 
-/** three's lights_fragment_begin with the two replacements, or an error naming what a three.js release no longer has. */
-function lightsFragmentBegin(): string {
+/**
+ * three's lights_fragment_begin with the film's lobe replaced (its value and its F0), or an error
+ * naming what a three.js release no longer has: the dielectric lobe, or over a metal from the base
+ * colour (docs/material.md#a-metal-from-its-colour) the metallic one.
+ */
+function lightsFragmentBegin(metal: boolean): string {
   const begin = ShaderChunk.lights_fragment_begin;
-  for (const line of [DIELECTRIC_FILM, DIELECTRIC_F0])
+  const [film, f0, lobe] = metal
+    ? [METALLIC_FILM, METALLIC_F0, 'Metallic' as const]
+    : [DIELECTRIC_FILM, DIELECTRIC_F0, 'Dielectric' as const];
+  for (const line of [film, f0])
     if (!begin.includes(line)) throw new Error(`spectralIridescence: three.js's lights_fragment_begin no longer holds ${line}`);
-  return begin.replace(DIELECTRIC_FILM, SPECTRAL_FILM).replace(DIELECTRIC_F0, SPECTRAL_F0);
+  return begin.replace(film, SPECTRAL_FILM).replace(f0, SPECTRAL_F0(lobe));
 }
 
 /** Film tables shared by the materials whose film, light and thickness range are the same. */
@@ -67,6 +80,8 @@ interface SpectralFilm {
   readonly user: UserHooks;
   /** the parameters already warned about (once each) */
   readonly warned: Set<string>;
+  /** metalState at the last draw: a change three cannot see (metalness, the base colour) may need a new program */
+  drawnMetal: string | null;
 }
 
 const films = new WeakMap<MeshPhysicalMaterial, SpectralFilm>();
@@ -96,8 +111,8 @@ const clampWarningOnce =
  */
 function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit: Limit): FilmSettings {
   const d = FILM_STACK_DOMAIN;
-  const nFilm = limit('iridescenceIOR', m.iridescenceIOR, d.nFilm);
-  const nInside = o.base ?? limit('ior', m.ior, d.nInside);
+  const nFilm = o.film ?? limit('iridescenceIOR', m.iridescenceIOR, d.nFilm);
+  const nInside = baseOf(m, o) ?? limit('ior', m.ior, d.nInside);
   const minNm = limit('iridescenceThicknessMinimum', m.iridescenceThicknessMinimum, d.thicknessNm);
   const maxNm = limit('iridescenceThicknessMaximum', m.iridescenceThicknessMaximum, d.thicknessNm);
   return { ...DEFAULT_SETTINGS, ...o, field: 'uniform', thicknessNm: Math.max(minNm, maxNm), nOutside: 1, nFilm, nInside };
@@ -124,14 +139,36 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
   updateFilmColorUniforms(film, s, o.quality, film.table);
 }
 
+/**
+ * The metal under the film when the material is one and names no base: its index from the base
+ * colour (F0) and the edge tint (by default the base colour), per channel (artistMetal.ts).
+ */
+function metalOf(m: MeshPhysicalMaterial, o: CheckedOptions): SampledIndex | null {
+  if (o.base !== null || !(m.metalness > 0)) return null;
+  const color: LinearRgb = [m.color.r, m.color.g, m.color.b];
+  return artistMetalMedium(color, o.edgeTint ?? color);
+}
+
+/** What lies under the film in place of three's ior: `base`, or the metal from the base colour, or null. */
+const baseOf = (m: MeshPhysicalMaterial, o: CheckedOptions): Medium | null => o.base ?? metalOf(m, o);
+
 /** The GLSL defines of the film (filmColor.glsl's, for the mode). */
-// The film's index is three's iridescenceIOR, a number; the base is `base` (a medium) or three's ior, a number.
-const definesOf = (o: CheckedOptions) =>
-  filmColorDefines({ ...o, nFilm: DEFAULT_SETTINGS.nFilm, nInside: o.base ?? DEFAULT_SETTINGS.nInside }, o.quality);
+// The film is `film` (a medium) or three's iridescenceIOR, a number; the base is `base` (a medium), the metal, or three's ior, a number.
+const definesOf = (m: MeshPhysicalMaterial, o: CheckedOptions) =>
+  filmColorDefines({ ...o, nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: baseOf(m, o) ?? DEFAULT_SETTINGS.nInside }, o.quality);
+
+/** What of the program the material's metalness and colour decide: whether the lobe is the metallic one, and over an opaque metal. */
+function metalState(m: MeshPhysicalMaterial, o: CheckedOptions): string {
+  const metal = metalOf(m, o);
+  return metal === null ? '' : absorbsInBand(metal) ? ' metallic' : ' metallic clear';
+}
+
+/** The film's part of the program key: the defines, and which lobe is spectral. */
+const filmKey = (m: MeshPhysicalMaterial, o: CheckedOptions): string => `${JSON.stringify(definesOf(m, o))}${metalState(m, o)}`;
 
 /** Gives the film new options; a new program only if the defines differ (the old one freed, as setDefines does). */
 function setOptions(m: MeshPhysicalMaterial, film: SpectralFilm, options: CheckedOptions): void {
-  if (JSON.stringify(definesOf(film.options)) !== JSON.stringify(definesOf(options))) {
+  if (filmKey(m, film.options) !== filmKey(m, options)) {
     m.dispose();
     m.needsUpdate = true;
   }
@@ -160,16 +197,20 @@ function hook(m: MeshPhysicalMaterial, film: SpectralFilm): void {
         warnedIncludes = true;
         return;
       }
-      shader.defines = { ...shader.defines, ...definesOf(film.options) };
+      shader.defines = { ...shader.defines, ...definesOf(m, film.options) };
       Object.assign(shader.uniforms, film.uniforms);
       shader.fragmentShader = shader.fragmentShader
         .replace(FILM_INCLUDES[0], `${FILM_INCLUDES[0]}\n#ifdef USE_IRIDESCENCE\n${shaderSource('spectralIridescence.glsl')}\n#endif`)
-        .replace(FILM_INCLUDES[1], lightsFragmentBegin());
+        .replace(FILM_INCLUDES[1], lightsFragmentBegin(metalOf(m, film.options) !== null));
     },
     // One program per distinct film configuration and user edit (three would otherwise key it by onBeforeCompile's text alone).
-    customProgramCacheKey: () => `spectral-iridescence ${JSON.stringify(definesOf(film.options))} ${userKey(m, film.user)}`,
+    customProgramCacheKey: () => `spectral-iridescence ${filmKey(m, film.options)} ${userKey(m, film.user)}`,
     onBeforeRender: (renderer, scene, camera, geometry, object, group) => {
       film.user.onBeforeRender.call(m, renderer, scene, camera, geometry, object, group);
+      // metalness and color are uniforms to three: a metal's coming or going (or its k reaching 0) needs a new program three would not make.
+      const state = metalState(m, film.options);
+      if (film.drawnMetal !== null && film.drawnMetal !== state) m.needsUpdate = true;
+      film.drawnMetal = state;
       if (m.iridescence > 0) update(film, m, renderer);
     },
   };
@@ -215,7 +256,7 @@ function patch<M extends MeshPhysicalMaterial>(m: M, options: CheckedOptions): M
   // Kept unbound: each is called on `m`, and three's default program key is onBeforeCompile's own text.
   // eslint-disable-next-line @typescript-eslint/unbound-method
   const user = { onBeforeCompile: m.onBeforeCompile, customProgramCacheKey: m.customProgramCacheKey, onBeforeRender: m.onBeforeRender };
-  const film: SpectralFilm = { options, uniforms: filmColorUniforms(), table: null, user, warned: new Set() };
+  const film: SpectralFilm = { options, uniforms: filmColorUniforms(), table: null, user, warned: new Set(), drawnMetal: null };
   films.set(m, film);
   hook(m, film);
   if (!(m as { isThinFilmMaterial?: boolean }).isThinFilmMaterial) addProperties(m);

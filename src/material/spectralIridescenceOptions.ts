@@ -1,8 +1,10 @@
+import { Color } from 'three';
+import { type LinearRgb } from '../physics/artistMetal.ts';
 import { POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
 import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
 import { type Medium, assertMedium, mediumFromJson, parseMediumText } from '../physics/medium.ts';
-import { ParameterError, oneOf } from '../physics/validate.ts';
+import { ParameterError, isInDomain, oneOf } from '../physics/validate.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { type FilmQuality, type FilmQualityOptions, filmQualityFrom } from '../settings/filmQuality.ts';
 import { MODES } from '../settings/filmSettings.ts';
@@ -10,8 +12,11 @@ import { MODES } from '../settings/filmSettings.ts';
 /** How the film is computed: `table` (one lookup in a table the GPU builds), `fourier` (the Airy series per fragment) or `exact` (binned integral). */
 export type FilmMode = (typeof MODES)[number];
 
-/** A base as given: a medium, or its text (a name is one: `'Ti'`, `'complex:2.6,3.4'`). */
+/** A base or a film as given: a medium, or its text (a name is one: `'Ti'`, `'complex:2.6,3.4'`). */
 export type BaseInput = Exclude<Medium, string> | string;
+
+/** An edge tint as given: a three.js Color, a hex number (sRGB, as three reads one) or linear [r, g, b]. */
+export type EdgeTintInput = Color | number | LinearRgb;
 
 /** How the film is computed and seen: the demo's `mode`, `illuminant`, `polarization`, `normalization`, and the quality knobs. */
 export interface SpectralIridescenceOptions {
@@ -27,6 +32,19 @@ export interface SpectralIridescenceOptions {
    * film over it is all the surface reflects.
    */
   readonly base?: BaseInput | null;
+  /**
+   * What the film is instead of three's `iridescenceIOR`: a medium as the demo's `nFilm` takes it
+   * (`'TiO2'`, `'Fe3O4'`, `'SiO2'`, `'water'`, `'cauchy:1.45,6000'`, a number, `'complex:n,k'`); null
+   * (the default): `iridescenceIOR`.
+   */
+  readonly film?: BaseInput | null;
+  /**
+   * A metal's edge tint (docs/material.md#a-metal-from-its-colour): with no `base` and `metalness`
+   * > 0, the film lies on a metal whose complex index comes from the base `color` (its F0) and this
+   * colour (Gulbrandsen 2014). A three.js `Color`, a hex number (sRGB) or linear `[r, g, b]` in
+   * [0, 1]; null (the default): the base colour itself.
+   */
+  readonly edgeTint?: EdgeTintInput | null;
   /** the table's layout and bins: any of the knobs, over the demo's defaults */
   readonly quality?: FilmQualityOptions;
 }
@@ -38,19 +56,23 @@ export interface SpectralIridescenceProperties {
   polarization: Polarization;
   normalization: Normalization;
   base: Medium | null;
+  film: Medium | null;
+  edgeTint: LinearRgb | null;
   get quality(): FilmQuality;
   /** any of the knobs, over the defaults (not over the current ones) */
   set quality(q: FilmQualityOptions);
 }
 
 /** Every option, checked, with its default. */
-export type CheckedOptions = Required<Omit<SpectralIridescenceOptions, 'quality' | 'base'>> & {
+export type CheckedOptions = Required<Omit<SpectralIridescenceOptions, 'quality' | 'base' | 'film' | 'edgeTint'>> & {
   readonly quality: FilmQuality;
   readonly base: Medium | null;
+  readonly film: Medium | null;
+  readonly edgeTint: LinearRgb | null;
 };
 
 /** The option names, as the properties of a spectral material are named. */
-export const OPTION_NAMES = ['mode', 'illuminant', 'polarization', 'normalization', 'base', 'quality'] as const;
+export const OPTION_NAMES = ['mode', 'illuminant', 'polarization', 'normalization', 'base', 'film', 'edgeTint', 'quality'] as const;
 
 /** The options with their defaults, each checked (a ParameterError names the first bad one). */
 export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): CheckedOptions {
@@ -59,18 +81,36 @@ export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): 
     illuminant: illuminantFromJson(o.illuminant ?? DEFAULT_SETTINGS.illuminant),
     polarization: oneOf('polarization', o.polarization ?? DEFAULT_SETTINGS.polarization, POLARIZATIONS),
     normalization: oneOf('normalization', o.normalization ?? DEFAULT_SETTINGS.normalization, NORMALIZATIONS),
-    base: baseOf(o.base ?? null),
+    base: mediumOf('base', o.base ?? null, 'inside'),
+    film: mediumOf('film', o.film ?? null, 'film'),
+    edgeTint: edgeTintOf(o.edgeTint ?? null),
     quality: filmQualityFrom(o.quality),
   };
 }
 
-/** The base checked as the demo's nInside is (a ParameterError naming `base` when it is not a medium or leaves its domain). */
-function baseOf(base: BaseInput | null): Medium | null {
-  if (base === null) return null;
-  const medium = typeof base === 'string' ? parseMediumText(base) : mediumFromJson(base);
-  if (medium === null) throw new ParameterError('base', `base: ${JSON.stringify(base)} is not a medium (a number, a name or complex:n,k)`);
-  assertMedium('base', medium, 'inside');
+/** The base or the film checked as the demo's nInside or nFilm is (a ParameterError naming it when it is not a medium or leaves its domain). */
+function mediumOf(name: 'base' | 'film', given: BaseInput | null, role: 'inside' | 'film'): Medium | null {
+  if (given === null) return null;
+  const medium = typeof given === 'string' ? parseMediumText(given) : mediumFromJson(given);
+  if (medium === null)
+    throw new ParameterError(name, `${name}: ${JSON.stringify(given)} is not a medium (a number, a name or complex:n,k)`);
+  assertMedium(name, medium, role);
   return medium;
+}
+
+const UNIT = { min: 0, max: 1, unit: '' } as const;
+
+/** The edge tint as linear [r, g, b] (a ParameterError naming `edgeTint` when a component leaves [0, 1] or it is no colour). */
+function edgeTintOf(tint: EdgeTintInput | null): LinearRgb | null {
+  if (tint === null) return null;
+  const isHex = typeof tint === 'number' && Number.isInteger(tint) && tint >= 0 && tint <= 0xffffff;
+  const rgb: unknown[] = tint instanceof Color ? tint.toArray() : isHex ? new Color(tint).toArray() : Array.isArray(tint) ? [...tint] : [];
+  if (rgb.length !== 3 || !rgb.every((c) => typeof c === 'number' && isInDomain(c, UNIT)))
+    throw new ParameterError(
+      'edgeTint',
+      `edgeTint: ${JSON.stringify(tint)} is not allowed; expected a Color, a hex number or linear [r, g, b] each in [0, 1]`,
+    );
+  return rgb as unknown as LinearRgb;
 }
 
 /** `options` without the film options' keys, and those keys apart: a one-object constructor's split. */

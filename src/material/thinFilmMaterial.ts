@@ -1,11 +1,18 @@
 import { type Material, MeshPhysicalMaterial, type MeshPhysicalMaterialParameters } from 'three';
+import { type LinearRgb } from '../physics/artistMetal.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type Medium } from '../physics/medium.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
 import { type FilmQuality, type FilmQualityOptions } from '../settings/filmQuality.ts';
 import { copySpectralFilm, setSpectralOption, spectralIridescence, spectralOption } from './spectralIridescence.ts';
-import { type BaseInput, type FilmMode, type SpectralIridescenceOptions, splitFilmOptions } from './spectralIridescenceOptions.ts';
+import {
+  type BaseInput,
+  type EdgeTintInput,
+  type FilmMode,
+  type SpectralIridescenceOptions,
+  splitFilmOptions,
+} from './spectralIridescenceOptions.ts';
 
 /** A physical material's parameters and the film's options, in one object. */
 export type ThinFilmMaterialParameters = MeshPhysicalMaterialParameters & SpectralIridescenceOptions;
@@ -55,6 +62,20 @@ export class ThinFilmMaterial extends MeshPhysicalMaterial {
   /** a medium or its text (`'Ti'`, `'complex:2.6,3.4'`), or null for three's `ior` */
   set base(value: BaseInput | null) {
     setSpectralOption(this, 'base', value);
+  }
+  get film(): Medium | null {
+    return spectralOption(this, 'film');
+  }
+  /** a medium or its text (`'TiO2'`, `'Fe3O4'`), or null for three's `iridescenceIOR` */
+  set film(value: BaseInput | null) {
+    setSpectralOption(this, 'film', value);
+  }
+  get edgeTint(): LinearRgb | null {
+    return spectralOption(this, 'edgeTint');
+  }
+  /** a metal's edge tint (a Color, a hex number, linear [r, g, b]), or null for the base colour */
+  set edgeTint(value: EdgeTintInput | null) {
+    setSpectralOption(this, 'edgeTint', value);
   }
   get quality(): FilmQuality {
     return spectralOption(this, 'quality');

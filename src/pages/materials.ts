@@ -7,7 +7,8 @@ import { arrowKeyStep } from '../app/arrowKeyStep.ts';
 import { AgXToneMapping, EquirectangularReflectionMapping, type Mesh, Vector3, WebGLRenderer } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { environmentTexture, loadEnvironmentPixels } from '../bubble/environmentMaps.ts';
-import { VIEWS, type View, exampleScene } from './materialsScene.ts';
+import { TITANIUM_OXIDE_NM, VIEWS, type View, exampleScene } from './materialsScene.ts';
+import { anodizingText } from './anodizingVoltage.ts';
 import { pixelDeltaE00 } from './pixelDeltaE.ts';
 
 const element = <T extends HTMLElement>(selector: string): T => {
@@ -19,6 +20,8 @@ const canvas = element<HTMLCanvasElement>('#scene');
 const select = element<HTMLSelectElement>('#view');
 const readout = element<HTMLParagraphElement>('#readout');
 const mark = element<HTMLDivElement>('#probe-mark');
+const titanium = element<HTMLInputElement>('#titanium');
+const titaniumValue = element<HTMLOutputElement>('#titanium-value');
 
 const renderer = new WebGLRenderer({ canvas, antialias: true });
 renderer.setPixelRatio(Math.min(devicePixelRatio, 2));
@@ -32,6 +35,17 @@ let probe: { x: number; y: number } | null = null;
 let frames = 0;
 
 for (const v of VIEWS) select.append(new Option(v, v));
+Object.assign(titanium, { min: String(TITANIUM_OXIDE_NM.min), max: String(TITANIUM_OXIDE_NM.max), step: '1' });
+titanium.value = String(TITANIUM_OXIDE_NM.initial);
+
+/** Gives the anodized titanium the slider's oxide thickness, and the slider's text (the voltage that grows it). */
+function setTitanium(): void {
+  const text = anodizingText(Number(titanium.value));
+  titaniumValue.textContent = text;
+  titanium.setAttribute('aria-valuetext', text);
+  example.setTitaniumOxideNm(Number(titanium.value));
+}
+setTitanium();
 
 function resize(): void {
   renderer.setSize(innerWidth, innerHeight, false);
@@ -44,11 +58,17 @@ function draw(v: View = view): number[] {
   example.show(v);
   renderer.render(example.scene, example.camera);
   frames++;
+  document.body.dataset.frames = String(frames);
   const p = probe ?? { x: 0, y: 0 };
+  return readPixel(p.x, p.y);
+}
+
+/** The 8-bit pixel drawn at (x, y) CSS pixels from the canvas's top left, read at once. */
+function readPixel(x: number, y: number): number[] {
   const r = renderer.getPixelRatio();
   const gl = renderer.getContext();
   const out = new Uint8Array(4);
-  gl.readPixels(Math.round(p.x * r), gl.drawingBufferHeight - 1 - Math.round(p.y * r), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
+  gl.readPixels(Math.round(x * r), gl.drawingBufferHeight - 1 - Math.round(y * r), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
   return [out[0]!, out[1]!, out[2]!];
 }
 
@@ -81,7 +101,6 @@ function update(): void {
     swatch(ours),
     ` ${hex(ours)}; ΔE00 ${pixelDeltaE00(threes, ours).toFixed(1)}`,
   );
-  document.body.dataset.frames = String(frames);
 }
 
 function swatch(p: readonly number[]): HTMLSpanElement {
@@ -102,6 +121,10 @@ canvas.addEventListener('keydown', (e) => {
   update();
 });
 
+titanium.addEventListener('input', () => {
+  setTitanium();
+  draw();
+});
 select.addEventListener('change', () => {
   view = select.value as View;
   draw();
@@ -131,11 +154,17 @@ loadEnvironmentPixels('park').then(
   },
 );
 
-/** For the benchmark: the example scene and a way to draw one view. */
-window.materialsPage = { renderer, draw: (v: View) => draw(v) };
+/** The 8-bit pixel at the centre of a named mesh (a metal's coin), as last drawn. */
+function pixelOf(name: string): number[] {
+  const point = example.scene.getObjectByName(name)!.getWorldPosition(new Vector3()).project(example.camera);
+  return readPixel(((point.x + 1) / 2) * canvas.clientWidth, ((1 - point.y) / 2) * canvas.clientHeight);
+}
+
+/** For the benchmark and the tests: the example scene, a way to draw one view, a named mesh's pixel. */
+window.materialsPage = { renderer, draw: (v: View) => draw(v), pixelOf };
 
 declare global {
   interface Window {
-    materialsPage?: { renderer: WebGLRenderer; draw(view: View): number[] };
+    materialsPage?: { renderer: WebGLRenderer; draw(view: View): number[]; pixelOf(name: string): number[] };
   }
 }

@@ -1,5 +1,6 @@
 import {
   type BufferGeometry,
+  Color,
   CylinderGeometry,
   DataTexture,
   DoubleSide,
@@ -14,6 +15,11 @@ import {
   Vector2,
 } from 'three';
 import { spectralIridescence } from '../material/spectralIridescence.ts';
+import { XYZ_TO_LINEAR_SRGB, applyMatrix3 } from '../physics/colorConversions.ts';
+import { type NamedMedium } from '../physics/namedMedia.ts';
+import { transparentIndexAt } from '../physics/medium.ts';
+import { filmXyz } from '../physics/spectralIntegration.ts';
+import { SODIUM_D_NM } from '../film/filmMedia.ts';
 
 /** Which iridescence each side shows: three.js's on the left and ours on the right, or one of them on both. */
 export const VIEWS = ['side by side', 'three.js', 'spectral'] as const;
@@ -69,11 +75,66 @@ export const FILM: MeshPhysicalMaterialParameters = {
   side: DoubleSide,
 };
 
+/**
+ * The films on metals, in a row between the torus knots, each a coin: a named film on a named metal, its
+ * thickness in nm across the coin by the thickness map (minimum → maximum), or one thickness set
+ * by the page's slider (anodized titanium, `TITANIUM_OXIDE_NM`).
+ */
+export const METALS = [
+  // A protective silica overcoat on a gold mirror: gold's yellow, shifted gently as the coat thickens.
+  { name: 'gold', film: 'SiO2', base: 'Au', thicknessNm: { min: 80, max: 320 } },
+  // Anodized titanium: the oxide's thickness (and so the anodizing voltage) is the slider's.
+  { name: 'anodized titanium', film: 'TiO2', base: 'Ti', thicknessNm: null },
+  // Temper colours: a magnetite film on iron, 15–65 nm across the coin: straw, brown, purple, blue.
+  { name: 'tempered steel', film: 'Fe3O4', base: 'Fe', thicknessNm: { min: 15, max: 65 } },
+] as const satisfies readonly { name: string; film: NamedMedium; base: NamedMedium; thicknessNm: { min: number; max: number } | null }[];
+
+/** The anodized titanium's oxide thickness (nm): the slider's range and first value (a blue at 60 nm). */
+export const TITANIUM_OXIDE_NM = { min: 10, max: 250, initial: 60 } as const;
+
+/** linear sRGB of a bare metal at normal incidence under D65, each in [0, 1]: three.js's metal takes it as its colour (F0). */
+function bareColor(base: NamedMedium): Color {
+  const rgb = applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz({ nOutside: 1, nFilm: 1, nInside: base, thicknessNm: 0, angleDeg: 0 }));
+  return new Color(...rgb.map((v) => Math.min(1, Math.max(0, v))));
+}
+
+/** A one-texel thickness map of green 0: the thickness is the material's minimum while the table spans to its maximum. */
+function minimumThicknessMap(): DataTexture {
+  const t = new DataTexture(new Uint8Array([0, 0, 0, 255]), 1, 1);
+  t.needsUpdate = true;
+  return t;
+}
+
+/** Each metal twice: three.js's film over a metal of the bare metal's colour, and the spectral film on the named metal. */
+function metalMaterials(map: DataTexture, fixed: DataTexture) {
+  return METALS.map((m) => {
+    const range = m.thicknessNm ?? { min: TITANIUM_OXIDE_NM.initial, max: TITANIUM_OXIDE_NM.max };
+    const film: MeshPhysicalMaterialParameters = {
+      roughness: 0.15,
+      iridescence: 1,
+      iridescenceThicknessMinimum: range.min,
+      iridescenceThicknessMaximum: range.max,
+      iridescenceThicknessMap: m.thicknessNm ? map : fixed,
+    };
+    const threes = new MeshPhysicalMaterial({
+      ...film,
+      color: bareColor(m.base),
+      metalness: 1,
+      iridescenceIOR: transparentIndexAt(m.film, SODIUM_D_NM),
+    });
+    // The metal is opaque: black and non-metal, the film over it is all the coin reflects.
+    const ours = spectralIridescence(new MeshPhysicalMaterial({ ...film, color: 0x000000, metalness: 0 }), { film: m.film, base: m.base });
+    return { threes, ours };
+  });
+}
+
 export interface ExampleScene {
   readonly scene: Scene;
   readonly camera: PerspectiveCamera;
-  /** Shows `view` (the materials each side uses). */
+  /** Shows `view` (the materials each side uses; the metals' row shows the spectral film unless the view is three.js's). */
   show(view: View): void;
+  /** Sets the anodized titanium's oxide thickness (nm, within TITANIUM_OXIDE_NM). */
+  setTitaniumOxideNm(thicknessNm: number): void;
   dispose(): void;
 }
 
@@ -102,6 +163,17 @@ export function exampleScene(aspect: number): ExampleScene {
   });
   sides[0]!.rotation.set(0.35, 0.4, 0);
   sides[1]!.rotation.set(0.35, 0.4, 0);
+  const fixed = minimumThicknessMap();
+  const metals = metalMaterials(map, fixed);
+  const coin = new CylinderGeometry(0.17, 0.17, 0.035, 64);
+  const coins = METALS.map((m, i) => {
+    const mesh = new Mesh<CylinderGeometry, MeshPhysicalMaterial>(coin, metals[i]!.ours);
+    mesh.name = m.name;
+    mesh.position.set(0.42 * (i - 1), 1.3, 0.4);
+    mesh.rotation.set(Math.PI / 2 - 0.2, 0, 0.3);
+    scene.add(mesh);
+    return mesh;
+  });
   const camera = new PerspectiveCamera(38, aspect, 0.1, 50);
   camera.position.set(0, 0.25, 5.2);
   camera.lookAt(0, 0, 0);
@@ -112,12 +184,17 @@ export function exampleScene(aspect: number): ExampleScene {
     show(view) {
       set(sides[0]!, view === 'spectral' ? ours : threes);
       set(sides[1]!, view === 'three.js' ? threes : ours);
+      coins.forEach((c, i) => (c.material = view === 'three.js' ? metals[i]!.threes : metals[i]!.ours));
+    },
+    setTitaniumOxideNm(thicknessNm) {
+      const titanium = metals[METALS.findIndex((m) => m.thicknessNm === null)]!;
+      for (const m of [titanium.threes, titanium.ours]) m.iridescenceThicknessMinimum = thicknessNm;
     },
     dispose() {
       scene.traverse((o) => o instanceof Mesh && (o.geometry as BufferGeometry).dispose());
-      threes.dispose();
-      ours.dispose();
+      for (const m of [threes, ours, ...metals.flatMap((m) => [m.threes, m.ours])]) m.dispose();
       map.dispose();
+      fixed.dispose();
     },
   };
 }

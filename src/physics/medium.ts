@@ -14,20 +14,23 @@ import {
 } from './filmIndex.ts';
 import { type AbsorbingFilmStack, COMPLEX_INDEX_DOMAIN, FILM_STACK_DOMAIN, complexIndexProblem } from './filmReflectance.ts';
 import { NAMED_MEDIA, NAMED_MEDIUM_INDEX, type NamedMedium, isNamedMedium } from './namedMedia.ts';
+import { type SampledIndex, isSampledIndex, sampledIndexAt } from './sampledIndex.ts';
 import { ParameterError, expectedNumber, parseDecimal } from './validate.ts';
 
 /**
  * What a film or the inside is made of (docs/physics.md#absorbing-media):
  * - a FilmIndex (filmIndex.ts): a real number, `water` or a Cauchy film;
  * - a named medium (namedMedia.ts): a metal or an oxide from a published table or formula;
- * - a constant complex index ñ = n + ik, `complex:n,k` ({ complex: [n, k] } in JSON), k ≥ 0.
+ * - a constant complex index ñ = n + ik, `complex:n,k` ({ complex: [n, k] } in JSON), k ≥ 0;
+ * - a SampledIndex (sampledIndex.ts): ñ at a few wavelengths, made in code (a metal from its
+ *   colour, artistMetal.ts), never read from a text.
  * The outside, where the light comes from, is always a real constant.
  */
 export interface ComplexConstant {
   /** [n, k]: ñ = n + ik */
   readonly complex: readonly [number, number];
 }
-export type Medium = FilmIndex | NamedMedium | ComplexConstant;
+export type Medium = FilmIndex | NamedMedium | ComplexConstant | SampledIndex;
 
 /** Which layer a medium is for: the outside takes a real constant only. */
 export type MediumRole = 'outside' | 'film' | 'inside';
@@ -44,6 +47,7 @@ const isComplexConstant = (m: Medium): m is ComplexConstant => typeof m === 'obj
 export function mediumIndexAt(m: Medium, lambdaNm: number): RefractiveIndex {
   if (isComplexConstant(m)) return { re: m.complex[0], im: m.complex[1] };
   if (isNamedMedium(m)) return NAMED_MEDIUM_INDEX[m].indexAt(lambdaNm);
+  if (isSampledIndex(m)) return sampledIndexAt(m, lambdaNm);
   return filmIndexAt(m, lambdaNm);
 }
 
@@ -51,7 +55,8 @@ export function mediumIndexAt(m: Medium, lambdaNm: number): RefractiveIndex {
 export const transparentIndexAt = (m: Medium, lambdaNm: number): number => asComplex(mediumIndexAt(m, lambdaNm)).re;
 
 /** Whether ñ depends on λ. */
-export const isDispersiveMedium = (m: Medium): boolean => isNamedMedium(m) || (!isComplexConstant(m) && isDispersive(m));
+export const isDispersiveMedium = (m: Medium): boolean =>
+  isNamedMedium(m) || isSampledIndex(m) || (!isComplexConstant(m) && isDispersive(m));
 
 /** Where `absorbsInBand` looks at k: every 5 nm of the colour band. */
 const ABSORPTION_CHECK_STEP_NM = 5;
@@ -62,6 +67,7 @@ const ABSORPTION_CHECK_STEP_NM = 5;
  */
 export function absorbsInBand(m: Medium): boolean {
   if (isComplexConstant(m)) return m.complex[1] > 0;
+  if (isSampledIndex(m)) return m.sampled.some(([, , k]) => k > 0);
   if (!isNamedMedium(m)) return false;
   for (let l = DISPERSION_CHECK_NM.min; l <= DISPERSION_CHECK_NM.max; l += ABSORPTION_CHECK_STEP_NM)
     if (NAMED_MEDIUM_INDEX[m].indexAt(l).im > 0) return true;
@@ -82,6 +88,7 @@ export const mediumStackAt = (stack: MediumStack, lambdaNm: number): AbsorbingFi
 /** The medium as URL, attribute and command line write it: `1.33`, `water`, `cauchy:1.45,6000`, `Au`, `complex:0.43,2.455`. */
 export function mediumText(m: Medium): string {
   if (isComplexConstant(m)) return `complex:${m.complex[0]},${m.complex[1]}`;
+  if (isSampledIndex(m)) return `sampled:${m.sampled.map(([l, n, k]) => `${l}:${n},${k}`).join(';')}`;
   return isNamedMedium(m) ? m : filmIndexText(m);
 }
 
@@ -125,13 +132,14 @@ export function mediumProblem(m: Medium, role: MediumRole): string | null {
     const [n, k] = m.complex;
     return complexIndexProblem({ re: n, im: k });
   }
+  if (isSampledIndex(m)) return m.sampled.map(([, n, k]) => complexIndexProblem({ re: n, im: k })).find((p) => p !== null) ?? null;
   // A named medium's source keeps n and k inside COMPLEX_INDEX_DOMAIN over its range (a unit test holds every one).
   return isNamedMedium(m) ? null : filmIndexProblem(m);
 }
 
 /** Throws a ParameterError naming `name` when the medium is not allowed in its role. */
 export function assertMedium(name: string, m: Medium, role: MediumRole): void {
-  if (role !== 'outside' && !isNamedMedium(m) && !isComplexConstant(m)) return assertFilmIndex(name, m);
+  if (role !== 'outside' && !isNamedMedium(m) && !isComplexConstant(m) && !isSampledIndex(m)) return assertFilmIndex(name, m);
   const problem = mediumProblem(m, role);
   if (problem) throw new ParameterError(name, `${name}: ${mediumText(m)} is not allowed (${problem}); expected ${mediumExpected(role)}`);
 }

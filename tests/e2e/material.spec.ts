@@ -3,6 +3,9 @@ import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenc
 import { PHYSICAL_MATERIAL_CODES } from '../tolerances.ts';
 import { watchProblems } from './pageWatch.ts';
 import type { FilmCase } from './harness/material.ts';
+import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
+import { srgbDecode } from '../../src/physics/colorConversions.ts';
+import { type Medium } from '../../src/physics/medium.ts';
 
 /**
  * The spectral iridescence (src/material/spectralIridescence.ts) in three.js scenes, one harness
@@ -11,13 +14,22 @@ import type { FilmCase } from './harness/material.ts';
  * the programs and textures as materials come and go, and a table rebuilt after a lost context.
  */
 
-/** A soap film on glass, and a higher-index film on a lower-index base (a minimum at normal incidence). */
+/**
+ * A soap film on glass, a higher-index film on a lower-index base (a minimum at normal incidence),
+ * and a film on a gold-coloured metal (metalness 1: the metal from its colour, edge tint the colour).
+ */
 const CASES: readonly FilmCase[] = [
   { thicknessNm: 450, angleDeg: 20, nFilm: 1.33, ior: 1.5 },
   { thicknessNm: 280, angleDeg: 50, nFilm: 1.8, ior: 1.4 },
+  { thicknessNm: 300, angleDeg: 30, nFilm: 1.5, ior: 1.5, metalColor: 0xffc356 },
 ];
+const insideOf = (c: FilmCase): Medium => {
+  if (c.metalColor === undefined) return c.ior;
+  const rgb = [16, 8, 0].map((shift) => srgbDecode(((c.metalColor! >> shift) & 0xff) / 255)) as unknown as LinearRgb;
+  return artistMetalMedium(rgb, rgb);
+};
 const referenceOf = (c: FilmCase) =>
-  reference8({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm: c.nFilm, nInside: c.ior });
+  reference8({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm: c.nFilm, nInside: insideOf(c) });
 
 test('the spectral iridescence on three.js meshes: reference colour, glTF, the physical material kept, programs, context restore', async ({
   page,
@@ -75,5 +87,29 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
   await page.goto('/materials.html');
   await expect(page.locator('body')).toHaveAttribute('data-frames', /\d+/);
   await expect(page.locator('#readout')).toHaveText(/three\.js\s+#[0-9a-f]{6}, spectral\s+#[0-9a-f]{6}; ΔE00 \d+\.\d/);
+  expect(problems).toEqual([]);
+});
+
+test("the materials page's films on metals: the titanium slider, by keyboard, thickens the oxide, recolours the coin and says the voltage", async ({
+  page,
+}) => {
+  const problems = watchProblems(page);
+  await page.goto('/materials.html');
+  await expect(page.locator('#readout')).toHaveText(/ΔE00/);
+  const slider = page.getByRole('slider', { name: 'anodized titanium, oxide thickness' });
+  await expect(slider).toHaveValue('60');
+  // 60 nm at 2 nm/V: 30 V; at 2.8 and 1.6 nm/V, 21 and 38 V (rounded to whole volts)
+  await expect(page.locator('#titanium-value')).toHaveText('TiO₂ 60 nm ≈ 30 V (21–38 V for 1.6–2.8 nm/V)');
+  const coin = () => page.evaluate(() => (window.materialsPage!.draw('side by side'), window.materialsPage!.pixelOf('anodized titanium')));
+  const before = await coin();
+  const frames = Number(await page.locator('body').getAttribute('data-frames'));
+  await slider.focus();
+  for (let i = 0; i < 40; i++) await page.keyboard.press('ArrowRight');
+  await expect(slider).toHaveValue('100');
+  await expect(slider).toHaveAttribute('aria-valuetext', 'TiO₂ 100 nm ≈ 50 V (36–63 V for 1.6–2.8 nm/V)');
+  await expect(page.locator('body')).not.toHaveAttribute('data-frames', String(frames));
+  const after = await coin();
+  // The reference's colours of TiO₂ on Ti head-on: blue at 60 nm (#5580b5), pale at 100 nm (#c2cec1).
+  expect(after[0]! - before[0]!, `${before} → ${after}`).toBeGreaterThan(30);
   expect(problems).toEqual([]);
 });

@@ -1,7 +1,7 @@
 import { type Matrix3, XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } from '../../src/physics/colorConversions.ts';
-import { type DispersiveFilmStack } from '../../src/physics/filmIndex.ts';
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
+import { type MediumStack } from '../../src/physics/medium.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
 
 /**
@@ -9,7 +9,7 @@ import { filmXyz } from '../../src/physics/spectralIntegration.ts';
  * otherwise): XYZ → linear RGB (eq 19 for sRGB, the CLI's srgb8) → clip → encode → round.
  */
 export function reference8(
-  stack: Partial<DispersiveFilmStack> & Pick<DispersiveFilmStack, 'thicknessNm'>,
+  stack: Partial<MediumStack> & Pick<MediumStack, 'thicknessNm'>,
   illuminant: IlluminantSpec = 'D65',
   toLinear: Matrix3 = XYZ_TO_LINEAR_SRGB,
 ): number[] {

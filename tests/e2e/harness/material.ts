@@ -66,19 +66,23 @@ const centre = (pixels: Uint8Array): number[] => {
   return [pixels[i]!, pixels[i + 1]!, pixels[i + 2]!];
 };
 
-/** A film on a box's face: black, mirror-smooth, non-metal, so only the film reflects. */
+/**
+ * A film on a box's face, mirror-smooth: black and non-metal, so only the film reflects, or a metal
+ * of `metalColor` (sRGB hex, metalness 1: the film over the metal from its colour).
+ */
 export interface FilmCase {
   readonly thicknessNm: number;
   readonly angleDeg: number;
   readonly nFilm: number;
   readonly ior: number;
+  readonly metalColor?: number;
 }
 
 const filmMaterial = (c: FilmCase) =>
   new MeshPhysicalMaterial({
-    color: 0x000000,
+    color: c.metalColor ?? 0x000000,
     roughness: 0,
-    metalness: 0,
+    metalness: c.metalColor === undefined ? 0 : 1,
     ior: c.ior,
     iridescence: 1,
     iridescenceIOR: c.nFilm,

@@ -185,6 +185,61 @@ describe('a base under the film', () => {
   });
 });
 
+describe('a film medium in place of iridescenceIOR', () => {
+  it("takes a named film (TiO2 on Ti): dispersive, its uniform the film's ñ at the D line, a bad one refused by name", () => {
+    const m = new ThinFilmMaterial({ mode: 'fourier', film: 'TiO2', base: 'Ti' });
+    expect(m.film).toBe('TiO2');
+    const shader = shaderObject();
+    m.onBeforeCompile(shader as never, null as never);
+    expect(shader.defines).toMatchObject({ TFC_OPAQUE_INSIDE: 1, TFC_DISPERSIVE: 1 });
+    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    // Sarkar et al.'s rows at 580 nm (2.149843) and 590 nm (2.145621) bracket the D line, 589.3 nm.
+    const [n, k] = (shader.uniforms as Record<string, { value: number[] }>).uNFilm!.value;
+    expect(n! > 2.145621 && n! < 2.149843 && k === 0).toBe(true);
+    for (const bad of ['Unobtainium', 'complex:0,1'])
+      expect(
+        parameterOf(() => (m.film = bad)),
+        bad,
+      ).toBe('film');
+  });
+});
+
+describe('a metal from its base colour', () => {
+  const draw = (m: MeshPhysicalMaterial) =>
+    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+
+  it("puts the spectral film on the metallic lobe, over an opaque metal from color, and keeps three's dielectric one", () => {
+    const m = new ThinFilmMaterial({ iridescenceIOR: 1.38, mode: 'fourier', metalness: 1, color: 0xffc356 });
+    const shader = shaderObject();
+    m.onBeforeCompile(shader as never, null as never);
+    expect(shader.defines).toMatchObject({ TFC_OPAQUE_INSIDE: 1, TFC_DISPERSIVE: 1 });
+    expect(shader.fragmentShader).toContain('vec3 iridescenceFresnelMetallic = tfcSpectralIridescence(');
+    expect(shader.fragmentShader).toContain('vec3 iridescenceFresnelDielectric = evalIridescence(');
+    draw(m);
+    const [n, k] = (shader.uniforms as Record<string, { value: number[] }>).uNInside!.value;
+    // at 589.3 nm, between the green and the red channel: finite, and a metal (k > n, k > 1)
+    expect(Number.isFinite(n) && Number.isFinite(k) && k! > n! && k! > 1).toBe(true);
+  });
+
+  it('asks three for a new program when metalness comes or goes, and takes an edge tint', () => {
+    const m = new ThinFilmMaterial({ mode: 'fourier' });
+    const key = m.customProgramCacheKey();
+    draw(m);
+    const version = m.version;
+    m.metalness = 1;
+    draw(m);
+    expect(m.version).toBeGreaterThan(version);
+    expect(m.customProgramCacheKey()).not.toBe(key);
+    m.edgeTint = [1, 1, 1];
+    expect(m.edgeTint).toEqual([1, 1, 1]);
+    for (const bad of [[1, 2, 0], 'red', -1, [0.5, 0.5]])
+      expect(
+        parameterOf(() => (m.edgeTint = bad as never)),
+        String(bad),
+      ).toBe('edgeTint');
+  });
+});
+
 describe('a parameter out of range when drawn', () => {
   it('is clamped to its range with one warning naming it and the range, not thrown', () => {
     // fourier mode: bringing the film up to date makes only CPU-side textures, no GPU needed.
