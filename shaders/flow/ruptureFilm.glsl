@@ -70,8 +70,6 @@ uniform sampler2D uPaddedFilm;
 uniform float uDt;
 /** rimSpeedFactor·√(2γ_a/(ρh̄)) in U: the rim's speed in film of η = 1 and Γ = 0. */
 uniform float uRimSpeed;
-/** R̄TΓ0/γ_a: the tension's fall per unit Γ, over γ_a. */
-uniform float uTensionDrop;
 /** The thinnest film a speed is computed for, in η0. */
 uniform float uRimEtaFloor;
 /** How far ahead of the rim the film is sampled (radians): 1.5 cells, so the taps miss the emptied ones. */
@@ -85,7 +83,8 @@ vec4 tfcGrowRims() {
   if (texel.x >= TFC_HOLE_RAYS || !h.open || old.r >= TFC_HOLE_PI) return old;
   float psi = 2.0 * TFC_HOLE_PI * float(texel.x) / float(TFC_HOLE_RAYS);
   vec4 ahead = tfcSamplePadded(uPaddedFilm, tfcPointOnRay(h, psi, min(TFC_HOLE_PI, old.r + uRimLead)));
-  float speed = uRimSpeed * sqrt(max(0.0, 1.0 - uTensionDrop * ahead.g) / max(uRimEtaFloor, ahead.r));
+  // γ/γ_a = 1 − R̄TΓ0Γ/γ_a = 1 − Γ/uRuptureGamma (the Γ at which the tension reaches 0).
+  float speed = uRimSpeed * sqrt(max(0.0, 1.0 - ahead.g / uRuptureGamma) / max(uRimEtaFloor, ahead.r));
   return vec4(min(TFC_HOLE_PI, old.r + speed * uDt), 0.0, 0.0, 0.0);
 }
 

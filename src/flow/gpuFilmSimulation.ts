@@ -18,10 +18,10 @@ import { initialFilm } from '../physics/flow/initialFilm.ts';
 import { LOG_MEAN_SERIES_BELOW } from '../physics/flow/logarithmicMean.ts';
 import { SURFACTANT_JACOBI_SWEEPS } from '../physics/flow/solveSurfactant.ts';
 import { WIND_SURFACE_FACTOR, timeStep } from '../physics/flow/timeStep.ts';
-import { GAS_CONSTANT_TIMES_TEMPERATURE, PURE_SURFACE_TENSION_N_M, VELOCITY_SCALE_M_S } from '../physics/flow/flowConstants.ts';
+import { PURE_SURFACE_TENSION_N_M, VELOCITY_SCALE_M_S } from '../physics/flow/flowConstants.ts';
 import { HOLE_RAYS, MAX_HOLES } from '../physics/flow/filmHoles.ts';
 import { taylorCulickSpeedMps } from '../physics/flow/flowNumbers.ts';
-import { RIM_LEAD_CELLS, rimThicknessFloorNm } from '../physics/flow/ruptureFilm.ts';
+import { rimLeadRad, rimThicknessFloorNm } from '../physics/flow/ruptureFilm.ts';
 import { floatTexture } from '../gpu/floatRow.ts';
 import { FULLSCREEN_VERTEX, FullscreenPass } from '../gpu/fullscreenPass.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
@@ -180,9 +180,8 @@ export class GpuFilmSimulation {
         (this.parameters.rimSpeedFactor * taylorCulickSpeedMps(PURE_SURFACE_TENSION_N_M, 2 * this.numbers.halfThicknessM)) /
           VELOCITY_SCALE_M_S,
       ),
-      uTensionDrop: value((GAS_CONSTANT_TIMES_TEMPERATURE * this.parameters.surfactantMolM2) / PURE_SURFACE_TENSION_N_M),
       uRimEtaFloor: value(rimThicknessFloorNm(this.parameters) / this.parameters.thicknessNm),
-      uRimLead: value((RIM_LEAD_CELLS * Math.PI) / (2 * this.grid.n)),
+      uRimLead: value(rimLeadRad(this.grid.n)),
       uRenewSteps: value(renewSteps(options.renew ?? false, this.stepSeconds)),
       uPuncture: value(NO_PUNCTURE),
       ...Object.fromEntries(

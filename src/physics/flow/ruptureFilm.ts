@@ -7,7 +7,9 @@ import { VELOCITY_SCALE_M_S } from './flowConstants.ts';
 /** The thinnest film a rim speed is computed for (nm): ahead of a rim there is film, and √(1/h) stays finite. */
 const RIM_THICKNESS_FLOOR_NM = 1;
 /** How far ahead of a rim its film is sampled, in cells (π/(2n) radians each): far enough that the bilinear taps miss the cells already emptied. */
-export const RIM_LEAD_CELLS = 1.5;
+const RIM_LEAD_CELLS = 1.5;
+/** That lead in radians on a grid of n × n cells per face. */
+export const rimLeadRad = (n: number): number => (RIM_LEAD_CELLS * Math.PI) / (2 * n);
 
 export interface RuptureInputs {
   readonly halo: CubeSphereHalo;
@@ -67,7 +69,7 @@ function growRims(inputs: RuptureInputs, dt: number): void {
   const sample = paddedSampler(halo, 1);
   const paddedEta = padField(halo, eta, 1);
   const paddedGamma = padField(halo, gamma, 1);
-  const lead = (RIM_LEAD_CELLS * Math.PI) / (2 * halo.grid.n);
+  const lead = rimLeadRad(halo.grid.n);
   const point = new Float64Array(3);
   const value = new Float64Array(1);
   const floorM = rimThicknessFloorNm(parameters) * 1e-9;
