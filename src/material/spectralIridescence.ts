@@ -139,6 +139,9 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
   updateFilmColorUniforms(film, s, o.quality, film.table);
 }
 
+/** Each material's metal from its colours, and the colours it was made from. */
+const metals = new WeakMap<MeshPhysicalMaterial, { readonly key: string; readonly medium: SampledIndex }>();
+
 /**
  * The metal under the film when the material is one and names no base: its index from the base
  * colour (F0) and the edge tint (by default the base colour), per channel (artistMetal.ts).
@@ -146,7 +149,14 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
 function metalOf(m: MeshPhysicalMaterial, o: CheckedOptions): SampledIndex | null {
   if (o.base !== null || !(m.metalness > 0)) return null;
   const color: LinearRgb = [m.color.r, m.color.g, m.color.b];
-  return artistMetalMedium(color, o.edgeTint ?? color);
+  const tint = o.edgeTint ?? color;
+  // Asked for on every draw (the settings, the program key): made again only when a colour changes.
+  const key = `${color.join()} ${tint.join()}`;
+  const made = metals.get(m);
+  if (made?.key === key) return made.medium;
+  const medium = artistMetalMedium(color, tint);
+  metals.set(m, { key, medium });
+  return medium;
 }
 
 /** What lies under the film in place of three's ior: `base`, or the metal from the base colour, or null. */
