@@ -8,7 +8,7 @@ import { type FilmTableLayout, filmTableCosIncidence } from '../settings/filmTab
 /** RGBA texels per row and bin (shaders/physics/binnedIntegration.glsl's stride TFC_DISPERSIVE_BIN_TEXELS). */
 export const DISPERSIVE_BIN_TEXELS = 4;
 
-interface DispersiveFilm {
+export interface DispersiveFilm {
   readonly nOutside: number;
   readonly nFilm: Medium;
   readonly nInside: Medium;
@@ -58,10 +58,30 @@ export function dispersiveRows(s: DispersiveFilm, layout: FilmTableLayout, data:
   }
 }
 
+/** The floats dispersiveRows writes for a layout. */
+export const dispersiveRowsLength = (layout: FilmTableLayout): number => 4 * DISPERSIVE_BIN_TEXELS * layout.spectralBins * 2 * layout.rows;
+
+/** What a dispersive film's row terms follow from: the film and the table's layout (its rows and bins). */
+export const dispersiveRowsKey = (film: DispersiveFilm, layout: FilmTableLayout): string =>
+  JSON.stringify([{ nOutside: film.nOutside, nFilm: film.nFilm, nInside: film.nInside, polarization: film.polarization }, layout]);
+
+/** dispersiveRows for a key of dispersiveRowsKey, in a new array (on the main thread or in dispersiveRowsWorker.ts). */
+export function dispersiveRowsOfKey(key: string): Float32Array {
+  const [film, layout] = JSON.parse(key) as [DispersiveFilm, FilmTableLayout];
+  const data = new Float32Array(dispersiveRowsLength(layout));
+  dispersiveRows(film, layout, data);
+  return data;
+}
+
 /** A texture for dispersiveRows of a layout (filled and uploaded by FilmTable). */
 export function dispersiveRowsTexture(layout: FilmTableLayout): DataTexture {
-  const width = DISPERSIVE_BIN_TEXELS * layout.spectralBins;
-  const texture = new DataTexture(new Float32Array(4 * width * 2 * layout.rows), width, 2 * layout.rows, RGBAFormat, FloatType);
+  const texture = new DataTexture(
+    new Float32Array(dispersiveRowsLength(layout)),
+    DISPERSIVE_BIN_TEXELS * layout.spectralBins,
+    2 * layout.rows,
+    RGBAFormat,
+    FloatType,
+  );
   texture.minFilter = texture.magFilter = NearestFilter;
   return texture;
 }

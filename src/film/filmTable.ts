@@ -9,7 +9,8 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
-import { dispersiveRows, dispersiveRowsTexture } from './dispersiveRows.ts';
+import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
+import { dispersiveRowsOf, dispersiveRowsReady } from './dispersiveRowsStore.ts';
 import {
   type FilmMedia,
   filmIndexMax,
@@ -23,7 +24,7 @@ import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
 import { type FilmSettings } from '../settings/filmSettings.ts';
 import { maxFieldThicknessNm } from '../fields/fields.ts';
-import { filmTableWidth } from '../settings/filmTableLayout.ts';
+import { type FilmTableLayout, filmTableWidth } from '../settings/filmTableLayout.ts';
 import { filmTableLayoutDefines } from './filmTableDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
@@ -60,6 +61,31 @@ interface Grid {
 }
 
 /**
+ * The table pass keeps the programs of this many sets of defines (a constant and a dispersive film,
+ * say), so going back to a film drawn before compiles nothing: on a GPU that compiles on the
+ * calling thread (SwiftShader) a compile is a stall of several frames.
+ */
+const KEPT_PASSES = 2;
+
+/** A table pass (shaders/film/filmTable.glsl) with no defines yet. */
+const tablePass = (): ShaderMaterial =>
+  new ShaderMaterial({
+    uniforms: {
+      uSpectralBins: { value: null },
+      uSpectralTransform: { value: null },
+      uAirySeriesRows: { value: null },
+      uDispersiveRows: { value: null },
+      uPolarization: { value: 0 },
+      ...filmMediaUniforms(),
+      uTableMaxThicknessNm: { value: 1 },
+      uFilmTableWidth: { value: 1 },
+      uFilmTableRows: { value: 1 },
+    },
+    vertexShader: FULLSCREEN_VERTEX,
+    fragmentShader: shaderSource('filmTable.glsl'),
+  });
+
+/**
  * The `table` method: a GPU pass running shaders/film/filmTable.glsl fills a float texture with the
  * film's XYZ over (thickness 0..max, cos θ_i 0..1), for light from outside and from inside, laid
  * out as `quality.table` says. It is rebuilt only when `tableKey` changes.
@@ -85,22 +111,11 @@ export class FilmTable {
   private readonly budget = new TableBandBudget();
   private shownGrid: Grid = { width: 1, rows: 1 };
   private fullscreen = new FullscreenPass();
-  /** The table pass: one program for every polarisation (a uniform), so changing it compiles nothing. */
-  private readonly pass = new ShaderMaterial({
-    uniforms: {
-      uSpectralBins: { value: null },
-      uSpectralTransform: { value: null },
-      uAirySeriesRows: { value: null },
-      uDispersiveRows: { value: null },
-      uPolarization: { value: 0 },
-      ...filmMediaUniforms(),
-      uTableMaxThicknessNm: { value: 1 },
-      uFilmTableWidth: { value: 1 },
-      uFilmTableRows: { value: 1 },
-    },
-    vertexShader: FULLSCREEN_VERTEX,
-    fragmentShader: shaderSource('filmTable.glsl'),
-  });
+  /**
+   * The table pass, the last used first, one per set of defines (KEPT_PASSES at most): one program
+   * for every polarisation (a uniform), so changing it compiles nothing.
+   */
+  private readonly passes: ShaderMaterial[] = [];
   /**
    * The per-row terms: the series' C₀, B, q (airySeriesRows.ts), or for a dispersive film the Fresnel
    * terms per row and bin (dispersiveRows.ts). One texture, remade when the kind changes, so a
@@ -154,17 +169,18 @@ export class FilmTable {
       this.show(key, false);
       return true;
     }
-    // A table shown (the first is not waited for) stays until the new light's transform is at hand.
-    if (key !== this.shown.key && this.shown.key !== '' && !spectralTransformReady(s.illuminant, s.normalization)) {
-      this.waiting = true;
-      this.budget.idle(); // the frames meanwhile draw no table: they are not timed
-      return false;
-    }
     const kind = passKind(s);
     if (key !== this.shown.key) {
       const full = this.fullGrid(s);
       const divisor = this.budget.coarseDivisor(kind, full.width * 2 * full.rows);
       const grid = { width: Math.max(2, Math.ceil(full.width / divisor)), rows: Math.max(2, Math.ceil(full.rows / divisor)) };
+      // A table shown (the first is not waited for) stays until what Web Workers compute for the
+      // new one is at hand: the light's transform, and a dispersive film's row terms for both grids.
+      if (this.shown.key !== '' && !this.inputsReady(s, [grid, full])) {
+        this.waiting = true;
+        this.budget.idle(); // the frames meanwhile draw no table: they are not timed
+        return false;
+      }
       this.building = { s, columns: 0 };
       this.timedDraw(renderer, s, this.coarseTarget, grid, [0, grid.width]);
       this.show(key, true, grid);
@@ -182,6 +198,18 @@ export class FilmTable {
     this.budget.idle();
     this.show(key, false);
     return true;
+  }
+
+  /** Whether the light's transform and, for a dispersive film, the row terms of each grid are at hand (each asked of its worker at once). */
+  private inputsReady(s: FilmSettings, grids: readonly Grid[]): boolean {
+    const ready = [spectralTransformReady(s.illuminant, s.normalization)];
+    if (isDispersiveFilm(s)) ready.push(...grids.map((g) => dispersiveRowsReady(dispersiveRowsKey(s, this.rowLayout(s, g)))));
+    return ready.every(Boolean);
+  }
+
+  /** The layout of the row terms of `grid` for `s`: the table's, with the grid's rows and the settings' bins. */
+  private rowLayout(s: FilmSettings, grid: Grid): FilmTableLayout {
+    return { ...this.quality.table, rows: grid.rows, spectralBins: spectralBinsFor(s, this.quality, this.quality.table.spectralBins) };
   }
 
   /** `draw` in the app's frames: when it began and what it cost go to the budget. */
@@ -236,7 +264,7 @@ export class FilmTable {
     u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, bins, this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
     // A dispersive film is filled from the bins, with their terms per row (shaders/film/filmTable.glsl).
-    this.updateRows(s, grid, bins);
+    this.updateRows(s, grid);
     u.uDispersiveRows!.value = this.rows.texture;
     u.uAirySeriesRows!.value = this.rows.texture;
     u.uPolarization!.value = enumCode('TFC_POLARIZATION', POLARIZATIONS, s.polarization);
@@ -262,22 +290,25 @@ export class FilmTable {
     return { began, ms };
   }
 
-  /** The per-row terms for `s` on `grid` (computed in float64 on the CPU), unless the texture holds them already. */
-  private updateRows(s: FilmSettings, grid: Grid, bins: number): void {
+  /**
+   * The per-row terms for `s` on `grid` (computed in float64 on the CPU: a dispersive film's in a
+   * worker, dispersiveRowsStore.ts, or here if not at hand), unless the texture holds them already.
+   */
+  private updateRows(s: FilmSettings, grid: Grid): void {
     const rowsFor = `${tableKey(s)} ${grid.rows}`;
     if (rowsFor === this.rowsFor) return;
     this.rowsFor = rowsFor;
-    const rowLayout = { ...this.quality.table, rows: grid.rows, spectralBins: bins };
+    const rowLayout = this.rowLayout(s, grid);
     const dispersive = isDispersiveFilm(s);
     if (this.rows.dispersive !== dispersive) {
       this.rows.texture.dispose();
       const texture = dispersive
-        ? dispersiveRowsTexture({ ...this.quality.table, spectralBins: bins })
+        ? dispersiveRowsTexture({ ...rowLayout, rows: this.quality.table.rows })
         : airySeriesRowsTexture(this.quality.table);
       this.rows = { texture, dispersive };
     }
     const data = this.rows.texture.image.data as Float32Array;
-    if (dispersive) dispersiveRows(s, rowLayout, data);
+    if (dispersive) data.set(dispersiveRowsOf(dispersiveRowsKey(s, rowLayout)));
     else airySeriesRows(s, rowLayout, data);
     this.rows.texture.needsUpdate = true;
   }
@@ -315,23 +346,29 @@ export class FilmTable {
     this.rowsFor = ''; // its row terms too, with the rest of the table
   }
 
+  /** The table pass for these media and bins: a kept one with those defines, else the least recently used (or a new one) given them. */
   private material(media: Pick<FilmMedia, 'nFilm' | 'nInside'>, bins: number): ShaderMaterial {
-    setDefines(this.pass, {
+    const defines = {
       ...filmMediaDefines(media),
       TFC_POLARIZATION_UNIFORM: 1,
       ...enumConstants('TFC_POLARIZATION', POLARIZATIONS),
       ...spectralBinDefines(bins, this.quality.spectralTailTolerance),
       ...filmTableLayoutDefines(this.quality.table),
       ...airySeriesDefines(),
-    });
-    return this.pass;
+    };
+    const key = JSON.stringify(defines);
+    const kept = this.passes.findIndex((p) => JSON.stringify(p.defines) === key);
+    const pass = kept >= 0 ? this.passes.splice(kept, 1)[0]! : this.passes.length < KEPT_PASSES ? tablePass() : this.passes.pop()!;
+    setDefines(pass, defines);
+    this.passes.unshift(pass);
+    return pass;
   }
 
   dispose(): void {
     this.target.dispose();
     this.coarseTarget.dispose();
     this.fullscreen.dispose();
-    this.pass.dispose();
+    for (const pass of this.passes) pass.dispose();
     this.rows.texture.dispose();
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);

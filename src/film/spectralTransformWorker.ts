@@ -3,19 +3,7 @@
  * (spectralTransformStore.ts starts it): a message { key } (spectralLightKey) is answered with
  * { key, texels }, the texels transferred, not copied.
  */
+import { serveTexels } from '../threads/workerTexels.ts';
 import { type SpectralLight, spectralTransformTexels } from './spectralTransformTexels.ts';
 
-export interface SpectralTransformRequest {
-  readonly key: string;
-}
-
-export interface SpectralTransformReply {
-  readonly key: string;
-  readonly texels: Float32Array;
-}
-
-addEventListener('message', (e: MessageEvent<SpectralTransformRequest>) => {
-  const { key } = e.data;
-  const texels = spectralTransformTexels(JSON.parse(key) as SpectralLight);
-  postMessage({ key, texels } satisfies SpectralTransformReply, { transfer: [texels.buffer] });
-});
+serveTexels((key) => spectralTransformTexels(JSON.parse(key) as SpectralLight));

@@ -4,8 +4,8 @@
  * takes at most BAND_SHARE of a frame's own time; the coarse table is sized the same way.
  */
 
-/** A band may take this share of a frame's own time: a frame with a band lasts ≤ 1.75 frames. */
-export const BAND_SHARE = 0.75;
+/** A band may take this share of a frame's own time: a frame with a band lasts ≤ 1.5 frames, with room below 2 for the display's vsync and a busy CPU. */
+export const BAND_SHARE = 0.5;
 /** Until a frame has been measured, a coarse table has this many times fewer texels per side than the full one. */
 export const COARSE_DIVISOR = 4;
 /** … and the first band of a kind of pass not yet measured is this share of the width. */
@@ -22,6 +22,15 @@ const MIN_BAND_COLUMNS = 4;
 
 /** What is measured of a table pass: a dispersive film's texel sums its bins, a constant film's the series. */
 export type PassKind = 'dispersive' | 'constant';
+
+/**
+ * A kind of pass not yet measured is taken to cost the other kind's measured cost per texel times
+ * the ratio of these weights, and twice that to err on the side of smaller bands: a dispersive
+ * texel sums 150 bins with their terms read per bin (measured on SwiftShader: ~5× a constant film's
+ * texel, docs/benchmarks.md's first table builds).
+ */
+const KIND_COST: Readonly<Record<PassKind, number>> = { constant: 1, dispersive: 5 };
+const UNMEASURED_MARGIN = 2;
 
 export class TableBandBudget {
   /** A frame's own time (ms): from the end of one table draw to the start of the next, the GPU's work for the frame between included. */
@@ -52,9 +61,18 @@ export class TableBandBudget {
     this.lastDrawEnd = null;
   }
 
+  /** The pass's cost per texel: measured, or estimated from the other kind's (KIND_COST), or unknown. */
+  private cost(kind: PassKind): number | undefined {
+    const measured = this.msPerTexel.get(kind);
+    if (measured !== undefined) return measured;
+    const other: PassKind = kind === 'constant' ? 'dispersive' : 'constant';
+    const known = this.msPerTexel.get(other);
+    return known === undefined ? undefined : (UNMEASURED_MARGIN * known * KIND_COST[kind]) / KIND_COST[other];
+  }
+
   /** The columns of the next band, `rows` texels each, of the `remaining` columns of a table `width` wide. */
   bandColumns(kind: PassKind, rows: number, width: number, remaining: number): number {
-    const cost = this.msPerTexel.get(kind);
+    const cost = this.cost(kind);
     const columns =
       cost === undefined || this.frameMs === undefined
         ? Math.ceil(width * FIRST_BAND_SHARE)
@@ -64,7 +82,7 @@ export class TableBandBudget {
 
   /** How many times fewer texels per side the coarse table has than the full one (`texels` texels). */
   coarseDivisor(kind: PassKind, texels: number): number {
-    const cost = this.msPerTexel.get(kind);
+    const cost = this.cost(kind);
     if (cost === undefined || this.frameMs === undefined) return COARSE_DIVISOR;
     return Math.max(COARSE_DIVISOR, Math.ceil(Math.sqrt((texels * cost) / (BAND_SHARE * this.frameMs))));
   }

@@ -7,7 +7,10 @@ import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { type SpectralLight, spectralLightKey, spectralTransformTexels } from '../../../src/film/spectralTransformTexels.ts';
-import type { SpectralTransformReply, SpectralTransformRequest } from '../../../src/film/spectralTransformWorker.ts';
+import type {
+  TexelsReply as SpectralTransformReply,
+  TexelsRequest as SpectralTransformRequest,
+} from '../../../src/threads/workerTexels.ts';
 import { fakeWorkerClass, loadWorkerScope, nextTask } from '../fakeWorker.ts';
 
 const LIGHT: SpectralLight = { illuminant: 'D93', normalization: 'paper' };

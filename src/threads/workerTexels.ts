@@ -1,0 +1,67 @@
+import { WorkerRequests } from './workerRequests.ts';
+
+/** What a texels worker is asked: the key its texels follow from. */
+export interface TexelsRequest {
+  readonly key: string;
+}
+
+/** … and what it answers: the key and its texels (transferred, not copied). */
+export interface TexelsReply {
+  readonly key: string;
+  readonly texels: Float32Array;
+}
+
+/**
+ * Float texels that follow from a key (a light's spectral transform, a dispersive film's row terms),
+ * computed in a module Web Worker that `serveTexels` runs, or on the caller's thread where there is
+ * none or it fails; the last `keep` keys' texels are kept, so the same key is not computed again.
+ */
+export class WorkerTexels {
+  private readonly kept = new Map<string, Float32Array>();
+  private readonly requests: WorkerRequests<TexelsReply>;
+
+  constructor(
+    /** Makes the worker: `new Worker(new URL('./file.ts', import.meta.url), { type: 'module' })` in the module that owns it. */
+    make: () => Worker,
+    private readonly compute: (key: string) => Float32Array,
+    private readonly keep: number,
+  ) {
+    // The keys asked of a worker that failed are computed on this thread when next asked for.
+    this.requests = new WorkerRequests<TexelsReply>(make, (reply) => this.hold(reply.key, reply.texels));
+  }
+
+  /** The texels of `key`, computed on this thread unless at hand. */
+  of(key: string): Float32Array {
+    const kept = this.kept.get(key);
+    if (kept) return kept;
+    const texels = this.compute(key);
+    this.hold(key, texels);
+    return texels;
+  }
+
+  /**
+   * Whether the texels of `key` are at hand. If not, the worker is asked for them (once) and the
+   * answer is false until they arrive; where there is no worker they are computed here at once (true).
+   */
+  ready(key: string): boolean {
+    if (this.kept.has(key)) return true;
+    if (this.requests.ask(key, { key } satisfies TexelsRequest)) return false;
+    this.of(key);
+    return true;
+  }
+
+  private hold(key: string, texels: Float32Array): void {
+    this.kept.delete(key);
+    this.kept.set(key, texels);
+    for (const old of this.kept.keys()) if (this.kept.size > this.keep) this.kept.delete(old);
+  }
+}
+
+/** In a worker module: answers each TexelsRequest with its key and `compute(key)`, transferred. */
+export function serveTexels(compute: (key: string) => Float32Array): void {
+  addEventListener('message', (e: MessageEvent<TexelsRequest>) => {
+    const { key } = e.data;
+    const texels = compute(key);
+    postMessage({ key, texels } satisfies TexelsReply, { transfer: [texels.buffer] });
+  });
+}
