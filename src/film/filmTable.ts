@@ -37,6 +37,7 @@ import {
 } from './spectralTransformTexture.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 import { type PassKind, TableBandBudget } from './tableBandBudget.ts';
+import { KEPT_PASSES } from './keptPasses.ts';
 
 /** What the table depends on; anything else (the field's animation, exposure, space) leaves it alone. */
 export function tableKey(s: FilmSettings): string {
@@ -59,13 +60,6 @@ interface Grid {
   readonly width: number;
   readonly rows: number;
 }
-
-/**
- * The table pass keeps the programs of this many sets of defines (a constant and a dispersive film,
- * say), so going back to a film drawn before compiles nothing: on a GPU that compiles on the
- * calling thread (SwiftShader) a compile is a stall of several frames.
- */
-const KEPT_PASSES = 2;
 
 /** A table pass (shaders/film/filmTable.glsl) with no defines yet. */
 const tablePass = (): ShaderMaterial =>
