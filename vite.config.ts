@@ -6,7 +6,7 @@ const ELEMENT_ENTRY = 'src/element/index.ts';
 /** The site's pages (public/ is copied as it is): the demo, and the example page of the material for any three.js scene. */
 const SITE_PAGES = ['index.html', 'materials.html'];
 /** The browser tests' own pages, built only into the tests' site (`--mode e2e`, dist-e2e/). */
-const TEST_PAGES = ['tests/e2e/harness/parity.html', 'tests/e2e/harness/material.html'];
+const TEST_PAGES = ['tests/e2e/harness/parity.html', 'tests/e2e/harness/material.html', 'scripts/harness/materialGrid.html'];
 
 /**
  * The library's entries (package.json `exports`): the float64 physics, the spectral material for

@@ -49,3 +49,16 @@ export function gridError(g: ParityGroup, reference: readonly Xyz[], shader: rea
   const [thicknessNm, cosIncidence] = g.inputs[deltas.indexOf(Math.max(...deltas))]!;
   return { ...deltaStats(deltas), worst: { thicknessNm, angleDeg: (Math.acos(cosIncidence) * 180) / Math.PI } };
 }
+
+/**
+ * gridError over the grid's films thicker than 0 nm: the whole material's measure, as three turns
+ * its film off at 0 nm and draws its own base there (Schlick's Fresnel).
+ */
+export function filmsGridError(g: ParityGroup, reference: readonly Xyz[], shader: readonly number[][]): GridError {
+  const films = g.inputs.flatMap(([t], k) => (t > 0 ? [k] : []));
+  return gridError(
+    { ...g, inputs: films.map((k) => g.inputs[k]!) },
+    films.map((k) => reference[k]!),
+    films.map((k) => shader[k]!),
+  );
+}

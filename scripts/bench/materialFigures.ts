@@ -12,7 +12,7 @@ import type { View } from '../../src/pages/materialsScene.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import type { BenchPlan } from './benchPlan.ts';
-import { type GridError, gridError } from './errorGrids.ts';
+import { type GridError, filmsGridError, gridError } from './errorGrids.ts';
 import { openPage } from './openPage.ts';
 
 /** The modes whose error the material's grids measure. */
@@ -34,7 +34,7 @@ export interface MaterialFigures {
   readonly gridErrors: Record<(typeof GRID_MODES)[number], { all: GridError; films: GridError }[]>;
 }
 
-/** The error grids drawn by the whole material (scripts/bench/page/materialGrid.ts), against the reference. */
+/** The error grids drawn by the whole material (scripts/harness/materialGrid.ts), against the reference. */
 async function gridErrors(
   browser: Browser,
   baseUrl: string,
@@ -43,22 +43,14 @@ async function gridErrors(
 ): Promise<MaterialFigures['gridErrors']> {
   const page = await openPage(browser);
   try {
-    await page.goto(`${baseUrl}/scripts/bench/page/materialGrid.html`);
+    await page.goto(`${baseUrl}/scripts/harness/materialGrid.html`);
     await page.waitForSelector('body[data-ready="yes"]');
     const errors = {} as MaterialFigures['gridErrors'];
     for (const mode of GRID_MODES) {
       errors[mode] = [];
       for (const [i, g] of grids.entries()) {
         const xyz = await page.evaluate(([g, mode]) => window.materialGridXyz!(g, mode), [g, mode] as const);
-        const films = g.inputs.flatMap(([t], k) => (t > 0 ? [k] : []));
-        errors[mode].push({
-          all: gridError(g, reference[i]!, xyz),
-          films: gridError(
-            { ...g, inputs: films.map((k) => g.inputs[k]!) },
-            films.map((k) => reference[i]![k]!),
-            films.map((k) => xyz[k]!),
-          ),
-        });
+        errors[mode].push({ all: gridError(g, reference[i]!, xyz), films: filmsGridError(g, reference[i]!, xyz) });
       }
     }
     return errors;

@@ -82,11 +82,12 @@ function spectralBinCount(field: string, value: unknown): number {
 
 /**
  * The quality knobs given, each checked (a ParameterError names it as `quality.<knob>` with its
- * allowed values), over the defaults: the table's knobs one by one over the default table.
+ * allowed values), over the defaults (the bubble's, or a consumer's own): the table's knobs one by
+ * one over the default table.
  */
-export function filmQualityFrom(o: FilmQualityOptions = {}): FilmQuality {
-  const q = { ...DEFAULT_FILM_QUALITY, ...o };
-  const t = { ...DEFAULT_FILM_QUALITY.table, ...o.table };
+export function filmQualityFrom(o: FilmQualityOptions = {}, defaults: FilmQuality = DEFAULT_FILM_QUALITY): FilmQuality {
+  const q = { ...defaults, ...o };
+  const t = { ...defaults.table, ...o.table };
   return {
     exactSpectralBins: spectralBinCount('quality.exactSpectralBins', q.exactSpectralBins),
     dispersiveSpectralBins: spectralBinCount('quality.dispersiveSpectralBins', q.dispersiveSpectralBins),
