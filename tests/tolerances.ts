@@ -66,7 +66,7 @@ export const MAX_DELTA_E00_METAL_STRESS = 0.5;
  * The whole spectral material's pixels (three's lobe included) over the benchmark's grids, films
  * thicker than 0 nm (tests/e2e/materialGrid.spec.ts): a tenth of a just-noticeable difference on the
  * fixed grid, half of one on the stress grid, as for films on metals. Measured in `table` mode: 0.094
- * and 0.470 (6 nm cells at the table's thick end; 0.104 with 8 nm); `fourier` 0.038 and 0.351.
+ * and 0.470 (6 nm cells at the table's thick end; 0.104 with 8 nm).
  */
 export const MAX_DELTA_E00_MATERIAL_FIXED = 0.1;
 export const MAX_DELTA_E00_MATERIAL_STRESS = 0.5;
