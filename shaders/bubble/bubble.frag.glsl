@@ -4,8 +4,8 @@
 // direction, and through both walls the environment behind. Left out: the third wall the far
 // wall's reflection crosses on its way in, and every reflection of higher order (each ≤ R² ≈ 2e-3
 // of the light for soap). uExposure scales all of it, as it scales the background; three.js's tone
-// mapping (renderer.toneMapping) then maps it to the display. An opaque inside (uOpaqueInside, a
-// metal) transmits nothing: a coated solid sphere, no far wall and nothing behind.
+// mapping (renderer.toneMapping) then maps it to the display. An opaque inside (TFC_OPAQUE_INSIDE, a
+// metal: filmMedia.glsl) transmits nothing: a coated solid sphere, no far wall and nothing behind.
 // Defines: TFC_FILM_MODE, TFC_THICKNESS_FIELD, TFC_SIDES (_FRONT | _BOTH), TFC_ENVIRONMENT, TFC_HATCH_OUT_OF_GAMUT;
 // TFC_PROBE (src/scene/probe.ts) outputs the near wall's film XYZ and thickness instead of a colour.
 // tfcThicknessAt(p): the field's GLSL, placed before this file (src/bubble/thicknessFieldSource.ts).
@@ -16,7 +16,6 @@
 uniform mat3 uXyzToLinearWorking;   // XYZ -> three.js's working space (linear sRGB, eq 19)
 uniform mat3 uXyzToLinearDisplay;   // XYZ -> the display's linear space, for the gamut test
 uniform float uExposure;
-uniform bool uOpaqueInside;         // the inside absorbs (a uniform, so a change of medium compiles nothing)
 
 varying vec3 vWorldPosition;
 varying vec3 vWorldNormal;
@@ -34,18 +33,19 @@ void main() {
 #endif
   vec3 nearR = tfcApplyMatrix3(uXyzToLinearWorking, nearXyz);
   vec3 nearLight = tfcReflectedRadiance(reflect(-toEye, normal));
+#ifdef TFC_OPAQUE_INSIDE
   vec3 behind = vec3(0.0);
-  if (!uOpaqueInside) {
-    behind = tfcEnvironmentRadiance(-toEye);
-#if TFC_SIDES == TFC_SIDES_BOTH
-    // The chord through a unit sphere at incidence θ has length 2 cos θ; the exit point's film is
-    // met at the same θ from inside. (Object space = world space up to the sphere's scale.)
-    vec3 farPoint = normalize(vSpherePoint - 2.0 * cosIncidence * toEye);
-    vec3 farR = tfcApplyMatrix3(uXyzToLinearWorking, tfcFilmXyz(tfcThicknessAt(farPoint), cosIncidence, true));
-    // Seen from inside, the far wall's normal points inward (-farPoint); reflect() is sign-blind.
-    behind = farR * tfcReflectedRadiance(reflect(-toEye, farPoint)) + clamp(1.0 - farR, 0.0, 1.0) * behind;
+#else
+  vec3 behind = tfcEnvironmentRadiance(-toEye);
 #endif
-  }
+#if TFC_SIDES == TFC_SIDES_BOTH && !defined(TFC_OPAQUE_INSIDE)
+  // The chord through a unit sphere at incidence θ has length 2 cos θ; the exit point's film is
+  // met at the same θ from inside. (Object space = world space up to the sphere's scale.)
+  vec3 farPoint = normalize(vSpherePoint - 2.0 * cosIncidence * toEye);
+  vec3 farR = tfcApplyMatrix3(uXyzToLinearWorking, tfcFilmXyz(tfcThicknessAt(farPoint), cosIncidence, true));
+  // Seen from inside, the far wall's normal points inward (-farPoint); reflect() is sign-blind.
+  behind = farR * tfcReflectedRadiance(reflect(-toEye, farPoint)) + clamp(1.0 - farR, 0.0, 1.0) * behind;
+#endif
   vec3 color = uExposure * (nearR * nearLight + clamp(1.0 - nearR, 0.0, 1.0) * behind);
 #if TFC_HATCH_OUT_OF_GAMUT
   vec3 display = tfcApplyMatrix3(uXyzToLinearDisplay, uExposure * nearXyz);

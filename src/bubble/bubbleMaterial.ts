@@ -12,7 +12,6 @@ import { enumDefines } from '../gpu/enumDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { type FilmTableBinding, filmColorDefines, filmColorUniforms, matrix3, updateFilmColorUniforms } from '../film/filmColor.ts';
-import { isOpaqueInside } from '../film/filmMedia.ts';
 import { environmentDefines, environmentUniforms, updateEnvironmentUniforms } from './environmentMaterial.ts';
 
 /** The compile-time switches: a shader holds only the mode, field, sides and options in use. */
@@ -35,7 +34,6 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
       ...thicknessFieldUniforms(),
       ...environmentUniforms(),
       uXyzToLinearDisplay: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
-      uOpaqueInside: { value: false },
     },
     vertexShader: shaderSource('bubble.vert.glsl'),
     fragmentShader: thicknessFieldSource() + shaderSource('bubble.frag.glsl'),
@@ -59,7 +57,5 @@ export function updateBubbleUniforms(
   updateFilmColorUniforms(m, s, q, table);
   updateThicknessFieldUniforms(u, s);
   updateEnvironmentUniforms(m, s, environmentMap);
-  // A uniform, not a define: going to a metal and back compiles no bubble (nor its probe).
-  u.uOpaqueInside!.value = isOpaqueInside(s);
   (u.uXyzToLinearDisplay!.value as Matrix3).set(...(displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB));
 }

@@ -19,7 +19,7 @@ export const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
 export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm' | 'nInside'>;
 
-/** TFC_OPAQUE_INSIDE alone, for a method that reads no knots (three's iridescence). */
+/** TFC_OPAQUE_INSIDE alone, for the methods that read no knots (the table's lookup, three's iridescence). */
 const opaqueInsideDefine = (s: FilmColorSettings): Record<string, number> => {
   const { TFC_OPAQUE_INSIDE } = filmMediaDefines(s);
   return TFC_OPAQUE_INSIDE === undefined ? {} : { TFC_OPAQUE_INSIDE };
@@ -38,9 +38,8 @@ export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<s
       ...spectralBinDefines(spectralBinsFor(s, q, q.exactSpectralBins), q.spectralTailTolerance),
       ...filmMediaDefines(s),
     };
-  // The lookup depends neither on the polarisation nor on the media (the table pass does: an opaque
-  // inside leaves the table's inside half black), so changing them compiles no bubble.
-  if (s.mode === 'table') return { ...filmMode, ...filmTableLayoutDefines(q.table) };
+  // The lookup does not depend on the polarisation (the table pass does), so changing it compiles no bubble.
+  if (s.mode === 'table') return { ...filmMode, ...filmTableLayoutDefines(q.table), ...opaqueInsideDefine(s) };
   // The series, and the binned integral for evanescent films (which have no real optical path).
   if (s.mode === 'fourier')
     return {

@@ -17,9 +17,6 @@ export const SODIUM_D_NM = 589.29;
 export const isDispersiveFilm = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): boolean =>
   isDispersiveMedium(s.nFilm) || isDispersiveMedium(s.nInside);
 
-/** Whether the inside absorbs somewhere in the band (a metal): no light reaches the film from inside, none passes through. */
-export const isOpaqueInside = (s: Pick<FilmMedia, 'nInside'>): boolean => absorbsInBand(s.nInside);
-
 /**
  * The defines of a film-colour shader for these media: TFC_DISPERSIVE and its knots where the film
  * or the inside depends on λ, TFC_OPAQUE_INSIDE where the inside absorbs (no light from inside).
@@ -28,7 +25,7 @@ export const filmMediaDefines = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): Recor
   ...(isDispersiveFilm(s)
     ? { TFC_DISPERSIVE: 1, TFC_MEDIA_KNOTS: KNOTS, TFC_MEDIA_FIRST_NM: LAMBDA_MIN_NM, TFC_MEDIA_STEP_NM: STEP_NM }
     : {}),
-  ...(isOpaqueInside(s) ? { TFC_OPAQUE_INSIDE: 1 } : {}),
+  ...(absorbsInBand(s.nInside) ? { TFC_OPAQUE_INSIDE: 1 } : {}),
 });
 
 /**

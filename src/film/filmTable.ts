@@ -37,7 +37,7 @@ import {
 } from './spectralTransformTexture.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 import { type PassKind, TableBandBudget } from './tableBandBudget.ts';
-import { KEPT_PASSES } from './keptPasses.ts';
+import { KEPT_PASSES, TABLE_PASS_NAME } from './keptPasses.ts';
 
 /** What the table depends on; anything else (the field's animation, exposure, space) leaves it alone. */
 export function tableKey(s: FilmSettings): string {
@@ -64,6 +64,7 @@ interface Grid {
 /** A table pass (shaders/film/filmTable.glsl) with no defines yet. */
 const tablePass = (): ShaderMaterial =>
   new ShaderMaterial({
+    name: TABLE_PASS_NAME,
     uniforms: {
       uSpectralBins: { value: null },
       uSpectralTransform: { value: null },

@@ -4,3 +4,6 @@
  * calling thread (SwiftShader) a compile is a stall of several frames.
  */
 export const KEPT_PASSES = 2;
+
+/** The table pass's material name: three names its programs after it (renderer.info.programs). */
+export const TABLE_PASS_NAME = 'tfcFilmTablePass';
