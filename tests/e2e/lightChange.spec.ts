@@ -1,6 +1,7 @@
 import { expect, test } from '@playwright/test';
 import { openPanel } from './panel.ts';
-import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
+import { reference8, worstCodeDifference } from './referenceColor.ts';
+import { expectChangeShownCleanly, recordCentreFrames } from './centreFrames.ts';
 import { COARSE_FRAME_CODES } from '../tolerances.ts';
 
 /**
@@ -25,21 +26,7 @@ for (const mode of ['table', 'fourier'] as const)
     // The two lights' colours are told apart even from a coarse table.
     expect(worstCodeDifference(expected[0]!, expected[1]!)).toBeGreaterThan(2 * COARSE_FRAME_CODES);
     // From here, the centre pixel of every frame the view draws, and whether it was drawn in full.
-    await page.evaluate(() => {
-      const w = window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView; drawn: [number[], boolean][] };
-      const view = w.bubbleView;
-      const render = view.render.bind(view);
-      w.drawn = [];
-      view.render = (quick?: boolean) => {
-        render(quick);
-        const gl = view.renderer.getContext();
-        const pixel = new Uint8Array(4);
-        gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-        gl.readPixels(gl.drawingBufferWidth >> 1, gl.drawingBufferHeight >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-        w.drawn.push([[pixel[0]!, pixel[1]!, pixel[2]!], !view.coarse]);
-      };
-    });
-    const drawn = () => page.evaluate(() => (window as unknown as { drawn: [number[], boolean][] }).drawn);
+    const drawn = await recordCentreFrames(page);
 
     await openPanel(page);
     const illuminant = page.locator('.lil-controller', { hasText: /^illuminant/ }).locator('select');
@@ -47,20 +34,11 @@ for (const mode of ['table', 'fourier'] as const)
       [0, 1],
       [1, 0],
     ] as const) {
-      const before = (await drawn()).length;
-      await illuminant.selectOption(LIGHTS[to]);
-      await expect.poll(async () => (await drawn()).slice(before).some(([, full]) => full)).toBe(true);
-      const frames = (await drawn()).slice(before);
-      const lightOf = (rgb: number[]) => [from, to].find((i) => worstCodeDifference(rgb, expected[i]!) <= COARSE_FRAME_CODES);
-      console.log(
-        `${LIGHTS[from]} → ${LIGHTS[to]}: ${frames.map(([rgb, full]) => `${rgb}${full ? '' : ' (coarse)'}`).join('; ')}; references ${expected[from]} / ${expected[to]}`,
+      await expectChangeShownCleanly(
+        drawn,
+        () => illuminant.selectOption(LIGHTS[to]),
+        [LIGHTS[from], LIGHTS[to]],
+        [expected[from]!, expected[to]!],
       );
-      const lights = frames.map(([rgb]) => lightOf(rgb));
-      expect(lights, 'every frame shows one of the two lights').not.toContain(undefined);
-      // The previous light, then the new one: once shown, the new light stays.
-      expect(lights.slice(lights.indexOf(to))).toEqual(lights.slice(lights.indexOf(to)).map(() => to));
-      const [last, full] = frames.at(-1)!;
-      expect(full).toBe(true);
-      expect(worstCodeDifference(last, expected[to]!)).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
     }
   });
