@@ -26,8 +26,8 @@ export type PassKind = 'dispersive' | 'constant';
 /**
  * A kind of pass not yet measured is taken to cost the other kind's measured cost per texel times
  * the ratio of these weights, and twice that to err on the side of smaller bands: a dispersive
- * texel sums 150 bins with their terms read per bin (measured on SwiftShader: ~5× a constant film's
- * texel, docs/benchmarks.md's first table builds).
+ * texel sums 150 bins with their terms read per bin (measured per texel on SwiftShader in the built
+ * demo's bands: 4–10× a constant film's), so the estimate, 10×, covers the measured range.
  */
 const KIND_COST: Readonly<Record<PassKind, number>> = { constant: 1, dispersive: 5 };
 const UNMEASURED_MARGIN = 2;
