@@ -29,7 +29,8 @@ function builtMarkdown(r: BenchResults): string {
       `| … swirl animating | ${d.animating.frames} / ${d.animating.tableBuilds} |`,
       `| … canvas hidden (display: none) | ${d.canvasHidden.frames} / ${d.canvasHidden.tableBuilds} |`,
       `| … page hidden | ${d.pageHidden.frames} / ${d.pageHidden.tableBuilds} |`,
-      `| frame interval while the swirl animates (${width}×${height}, median) | ${d.frameMs.toFixed(0)} ms |`,
+      `| frame interval while the swirl animates (${width}×${height}: the mean over a window, median of the windows) | ${d.frameMs.toFixed(0)} ms |`,
+      `| no change (the windows before the panel's inputs) → longest gap between frames shown, median / worst (× the frame interval) | ${d.unchangedLongestGap.median.toFixed(1)}× / ${d.unchangedLongestGap.max.toFixed(1)}× |`,
       ...PANEL_CHANGES.map(
         ([name], i) =>
           `| panel: ${name} → longest gap between frames shown, median of ${2 * r.plan.demo.panelRepeats} / worst (× the frame interval); → shown in full, plots included | ${d.panelLongestGap[i]!.median.toFixed(1)}× / ${d.panelLongestGap[i]!.max.toFixed(1)}×; ${d.panelChangeFullMs[i]!.toFixed(0)} ms |`,

@@ -38,6 +38,7 @@ import {
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
 import { type PassKind, TableBandBudget } from './tableBandBudget.ts';
 import { KEPT_PASSES, TABLE_PASS_NAME } from './keptPasses.ts';
+import { GpuTimer } from '../gpu/gpuTimer.ts';
 
 /** What the table depends on; anything else (the field's animation, exposure, space) leaves it alone. */
 export function tableKey(s: FilmSettings): string {
@@ -55,6 +56,20 @@ export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['
 }
 
 const passKind = (s: FilmSettings): PassKind => (isDispersiveFilm(s) ? 'dispersive' : 'constant');
+
+/**
+ * Runs `pass` into `target` (bound) and waits for it: a 1-pixel read at column `x` before it (the
+ * GPU's earlier work done, the frames queued included) and after it; returns when the pass began
+ * and its milliseconds.
+ */
+function syncTimed(renderer: WebGLRenderer, target: WebGLRenderTarget, x: number, pass: () => void): { began: number; ms: number } {
+  const pixel = target.texture.type === FloatType ? new Float32Array(4) : new Uint16Array(4);
+  renderer.readRenderTargetPixels(target, x, 0, 1, 1, pixel);
+  const began = performance.now();
+  pass();
+  renderer.readRenderTargetPixels(target, x, 0, 1, 1, pixel);
+  return { began, ms: performance.now() - began };
+}
 
 interface Grid {
   readonly width: number;
@@ -104,6 +119,10 @@ export class FilmTable {
   /** Whether quick updates wait for a new light's transform (the table shown is for other settings). */
   private waiting = false;
   private readonly budget = new TableBandBudget();
+  /** Whether the last table draw was in the app's frame before (not across frames that drew none): the time between is a frame's. */
+  private drawsFollow = false;
+  /** Times the app's table draws on the GPU (null where it cannot; undefined until the first). */
+  private timer: GpuTimer | null | undefined;
   private shownGrid: Grid = { width: 1, rows: 1 };
   private fullscreen = new FullscreenPass();
   /**
@@ -157,7 +176,9 @@ export class FilmTable {
   update(renderer: WebGLRenderer, s: FilmSettings, quick = false): boolean {
     const key = tableKey(s);
     this.waiting = false;
+    this.timer?.poll();
     if (!quick) {
+      this.drawsFollow = false;
       if (key === this.shown.key && !this.shown.coarse) return false;
       this.building = null;
       this.buildFull(renderer, s);
@@ -173,7 +194,7 @@ export class FilmTable {
       // new one is at hand: the light's transform, and a dispersive film's row terms for both grids.
       if (this.shown.key !== '' && !this.inputsReady(s, [grid, full])) {
         this.waiting = true;
-        this.budget.idle(); // the frames meanwhile draw no table: they are not timed
+        this.drawsFollow = false; // the frames meanwhile draw no table: they are not timed
         return false;
       }
       this.building = { s, columns: 0 };
@@ -190,7 +211,7 @@ export class FilmTable {
     if (last) this.building = null; // the last band lets go of the light's textures
     this.timedDraw(renderer, b.s, this.target, grid, [from, b.columns]);
     if (!last) return false;
-    this.budget.idle();
+    this.drawsFollow = false;
     this.show(key, false);
     return true;
   }
@@ -207,10 +228,29 @@ export class FilmTable {
     return { ...this.quality.table, rows: grid.rows, spectralBins: spectralBinsFor(s, this.quality, this.quality.table.spectralBins) };
   }
 
-  /** `draw` in the app's frames: when it began and what it cost go to the budget. */
+  /**
+   * `draw` in the app's frames, timed for the budget: by the GPU's timer where it has one (the
+   * result comes frames later, costing no wait), else by waiting for the GPU (`syncTimed`).
+   */
   private timedDraw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: [number, number]): void {
-    const { began, ms } = this.draw(renderer, s, target, grid, columns);
-    this.budget.drawn(passKind(s), (columns[1] - columns[0]) * 2 * grid.rows, began, ms);
+    const kind = passKind(s);
+    const texels = (columns[1] - columns[0]) * 2 * grid.rows;
+    const follows = this.drawsFollow;
+    this.drawsFollow = true;
+    const report = (began: number, ms: number) => {
+      if (!follows) this.budget.idle();
+      this.budget.drawn(kind, texels, began, ms);
+    };
+    this.timer ??= GpuTimer.of(renderer);
+    const timer = this.timer;
+    this.draw(renderer, s, target, grid, columns, (pass) => {
+      if (!timer) {
+        const { began, ms } = syncTimed(renderer, target, columns[0], pass);
+        return report(began, ms);
+      }
+      const began = performance.now();
+      timer.time(pass, (ms) => report(began, ms));
+    });
   }
 
   /** The full grid for the settings (its width follows the thickness range and the film's index). */
@@ -221,7 +261,7 @@ export class FilmTable {
 
   private buildFull(renderer: WebGLRenderer, s: FilmSettings): void {
     const started = performance.now();
-    this.draw(renderer, s, this.target, this.fullGrid(s), null);
+    this.draw(renderer, s, this.target, this.fullGrid(s), null, (pass) => syncTimed(renderer, this.target, 0, pass));
     this.lastBuildMs = performance.now() - started;
   }
 
@@ -233,8 +273,7 @@ export class FilmTable {
 
   /**
    * Runs the pass over `grid` in `target` (sized to it), over the columns [from, to) if given
-   * (the rest of the texture is kept), and waits for it (a 1-pixel read); returns when the pass
-   * began, after a 1-pixel read before it (the GPU's earlier work done), and its milliseconds.
+   * (the rest of the texture is kept), through `time`, which draws it and times it.
    */
   private draw(
     renderer: WebGLRenderer,
@@ -242,7 +281,8 @@ export class FilmTable {
     target: WebGLRenderTarget,
     grid: Grid,
     columns: [number, number] | null,
-  ): { began: number; ms: number } {
+    time: (pass: () => void) => void,
+  ): void {
     const type = tableTexelType(renderer, this.quality.tablePrecision);
     if (target.texture.type !== type) {
       target.dispose(); // reallocated at the new type on the next render
@@ -269,12 +309,7 @@ export class FilmTable {
     u.uFilmTableRows!.value = grid.rows;
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(target);
-    const pixel = type === FloatType ? new Float32Array(4) : new Uint16Array(4);
-    renderer.readRenderTargetPixels(target, from, 0, 1, 1, pixel);
-    const began = performance.now();
-    this.fullscreen.render(renderer, material);
-    renderer.readRenderTargetPixels(target, from, 0, 1, 1, pixel);
-    const ms = performance.now() - began;
+    time(() => this.fullscreen.render(renderer, material));
     renderer.setRenderTarget(previous);
     // The pass reads the light's textures only while it draws: let go of them until the next
     // build, unless a full table is being built band by band.
@@ -282,7 +317,6 @@ export class FilmTable {
       releaseSpectralBinsTexture(this);
       releaseSpectralTransformTexture(this);
     }
-    return { began, ms };
   }
 
   /**
@@ -338,6 +372,8 @@ export class FilmTable {
     this.shown = { key: '', coarse: false };
     this.building = null;
     this.waiting = false;
+    this.drawsFollow = false;
+    this.timer = undefined; // its queries were the lost context's
     this.rowsFor = ''; // its row terms too, with the rest of the table
   }
 

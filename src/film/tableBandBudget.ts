@@ -17,8 +17,8 @@ const FIRST_BAND_SHARE = 1 / 16;
  * counts at once. A pass's cost per texel measured higher counts at once, a lower one half.
  */
 const FRAME_GROWTH = 2;
-/** A band is at least this many columns: the fixed cost of a draw and its syncs is then small beside its texels'. */
-const MIN_BAND_COLUMNS = 4;
+/** A band is at least one column. */
+const MIN_BAND_COLUMNS = 1;
 
 /** What is measured of a table pass: a dispersive film's texel sums its bins, a constant film's the series. */
 export type PassKind = 'dispersive' | 'constant';
@@ -33,32 +33,38 @@ const KIND_COST: Readonly<Record<PassKind, number>> = { constant: 1, dispersive:
 const UNMEASURED_MARGIN = 2;
 
 export class TableBandBudget {
-  /** A frame's own time (ms): from the end of one table draw to the start of the next, the GPU's work for the frame between included. */
+  /** A frame's own time (ms): the time between table draws in the app's frames, less the draws' own. */
   private frameMs: number | undefined;
   /** The pass's cost per texel (ms), by kind. */
   private readonly msPerTexel = new Map<PassKind, number>();
-  /** When the last table draw of the app's frames ended (performance.now()), if the frames since are building. */
-  private lastDrawEnd: number | null = null;
+  /** The app's frames building since they last stopped: when the first draw began, how many were drawn, and all their milliseconds. */
+  private run: { firstBegan: number; draws: number; drawnMs: number } | null = null;
 
   /**
-   * A table draw in the app's frames: it began at `began` (performance.now(), once the GPU had
-   * done the work before it) and took `ms` (synced) for `texels` texels.
+   * A table draw in the app's frames, reported in the order drawn: asked for at `began`
+   * (performance.now()), it took `ms` on the GPU for `texels` texels. Where a GPU timer reports it
+   * frames later, the CPU may have run ahead of the GPU or waited for it at any one draw; over the
+   * draws since the frames started building, the time between them is a frame's own time plus the
+   * draws' own (timed by waiting for the GPU, `began` is once its earlier work is done: the same holds).
    */
   drawn(kind: PassKind, texels: number, began: number, ms: number): void {
-    if (this.lastDrawEnd !== null) {
-      const frame = began - this.lastDrawEnd;
+    if (this.run) {
+      const frame = (began - this.run.firstBegan - this.run.drawnMs) / this.run.draws;
       const taken = this.frameMs;
-      this.frameMs = taken === undefined || frame <= taken ? frame : Math.min((taken + frame) / 2, FRAME_GROWTH * taken);
-    }
+      if (frame > 0) this.frameMs = taken === undefined || frame <= taken ? frame : Math.min((taken + frame) / 2, FRAME_GROWTH * taken);
+      this.run.draws++;
+      this.run.drawnMs += ms;
+    } else this.run = { firstBegan: began, draws: 1, drawnMs: ms };
+    // A draw timed at 0 ms (a timer's resolution) tells nothing of the cost.
+    if (!(ms > 0 && texels > 0)) return;
     const cost = ms / texels;
     const taken = this.msPerTexel.get(kind);
     this.msPerTexel.set(kind, taken === undefined || cost >= taken ? cost : (taken + cost) / 2);
-    this.lastDrawEnd = began + ms;
   }
 
   /** The app's frames stopped building (the table is complete, or waits): the time until the next draw is not a frame's. */
   idle(): void {
-    this.lastDrawEnd = null;
+    this.run = null;
   }
 
   /** The pass's cost per texel: measured, or estimated from the other kind's (KIND_COST), or unknown. */

@@ -50,6 +50,33 @@ describe('the table band budget', () => {
     expect(Math.abs(budget.bandColumns('dispersive', ROWS, WIDTH, WIDTH) - constant / 2)).toBeLessThanOrEqual(1);
   });
 
+  it('a frame is the time between the draws of a run less their own, over the whole run: timed frames later, the CPU may run ahead or wait at any one draw', () => {
+    const budget = new TableBandBudget();
+    const draw = 1000 * CONSTANT_MS;
+    // The second draw was asked for late (the CPU waited), the third early: together, two frames.
+    budget.drawn('constant', 1000, 0, draw);
+    budget.drawn('constant', 1000, 2 * FRAME_MS, draw);
+    budget.drawn('constant', 1000, 2 * FRAME_MS + 2 * draw, draw);
+    const columns = budget.bandColumns('constant', ROWS, WIDTH, WIDTH);
+    expect(columns * ROWS * CONSTANT_MS).toBeLessThanOrEqual(BAND_SHARE * FRAME_MS);
+    expect(columns * ROWS * CONSTANT_MS).toBeGreaterThan(BAND_SHARE * FRAME_MS - ROWS * CONSTANT_MS);
+  });
+
+  it('a draw asked for before the last one had run (the CPU ahead of the GPU) makes no frame of the gap', () => {
+    const budget = new TableBandBudget();
+    budget.drawn('constant', 1000, 0, 50);
+    budget.drawn('constant', 1000, 5, 50);
+    // No frame measured yet: the first band's share, not a band from a frame of −45 ms.
+    expect(budget.bandColumns('constant', ROWS, WIDTH, WIDTH)).toBe(WIDTH / 16);
+  });
+
+  it('a draw timed at 0 ms tells nothing of the cost', () => {
+    const budget = new TableBandBudget();
+    budget.drawn('constant', 1000, 0, 0);
+    budget.drawn('constant', 1000, FRAME_MS, 0);
+    expect(budget.bandColumns('constant', ROWS, WIDTH, WIDTH)).toBe(WIDTH / 16);
+  });
+
   it('a band never exceeds the columns remaining', () => {
     expect(measuredConstant().bandColumns('constant', ROWS, WIDTH, 7)).toBe(7);
   });
