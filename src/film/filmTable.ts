@@ -401,6 +401,7 @@ export class FilmTable {
     this.fullscreen.dispose();
     for (const pass of this.passes) pass.dispose();
     this.rows.texture.dispose();
+    this.timer?.drop();
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);
   }
