@@ -49,6 +49,7 @@ export class GpuTimer {
 
   /** Reports the timed draws whose results are available, in order. */
   poll(): void {
+    if (this.pending.length === 0) return; // the app's every frame polls: nothing to ask the context then
     const gl = this.gl;
     if (gl.isContextLost() || gl.getParameter(this.ext.GPU_DISJOINT_EXT)) return this.drop();
     while (this.pending.length > 0) {
