@@ -51,7 +51,7 @@ function nonFinite(value: unknown, path: string, key: string, parentKey: string)
  */
 export function resultProblems(
   r: BenchResults,
-  rowOf: (rowName: string) => Pick<BenchRow, 'kind' | 'measuresError'>,
+  rowOf: (rowName: string) => Pick<BenchRow, 'kind' | 'measuresError' | 'timesChanges'>,
   expectMaterials: boolean,
 ): string[] {
   const problems = r.failures.map((f) => `${f.stage} threw: ${f.message}`);
@@ -61,7 +61,7 @@ export function resultProblems(
     if (figures === null) problems.push(`no ${name} figures`);
   if (expectMaterials && r.materials === null) problems.push('no materials figures');
   for (const row of r.rows) {
-    const { kind, measuresError } = rowOf(row.name);
+    const { kind, measuresError, timesChanges } = rowOf(row.name);
     if (row.frames[0] == null) problems.push(`${row.name}: no frame time at the first size`);
     if (measuresError && row.errors === null) problems.push(`${row.name}: no error columns, though the row measures error`);
     if (!measuresError && row.errors !== null) problems.push(`${row.name}: error columns, though the row measures no error`);
@@ -71,7 +71,7 @@ export function resultProblems(
     row.frames.forEach((f, k) => {
       if (f === null && !overBudget.slice(0, k).includes(true)) problems.push(`${row.name}: size ${k + 1} not timed`);
     });
-    const changesTrimmed = kind === 'textured' || overBudget[0] === true;
+    const changesTrimmed = kind === 'textured' || timesChanges === false || overBudget[0] === true;
     if (!changesTrimmed && row.changeToFrameMs.some((c) => c === null)) problems.push(`${row.name}: a change not timed`);
   }
   return problems;

@@ -8,6 +8,8 @@ export interface BenchRowSpec {
   readonly kind: 'bubble' | 'textured';
   /** false: the walls reflect the light's white whatever the environment (the model before environment reflections), to time what they add */
   readonly reflections: boolean;
+  /** whether the changes are timed */
+  readonly timesChanges: boolean;
   readonly settings: FilmSettings;
   readonly quality: FilmQuality;
   /** [width, height] of each frame-time column */
@@ -33,7 +35,7 @@ export interface BenchRowResult {
    * per size: median ms/frame and how many frames it is the median of; null: not timed (a smaller
    * size's frame outlasted the budget)
    */
-  readonly frames: readonly ({ readonly medianMs: number; readonly count: number } | null)[];
+  readonly frames: readonly (FrameTime | null)[];
   /**
    * per change of CHANGES: the change applied → the next frame drawn and read back, ms (median of
    * the changes and changes back); null: not timed (the textured sphere, or the row's frame
@@ -42,6 +44,40 @@ export interface BenchRowResult {
   readonly changeToFrameMs: readonly (number | null)[];
   /** per grid of the spec, per case: XYZ */
   readonly xyz: readonly number[][][];
+}
+
+/**
+ * A size's frame time: the median of `count` frames drawn at that size, or, where one frame there
+ * would outlast the budget, the line through one frame at each of `fittedFrom` (smaller sizes)
+ * taken to this size's pixels (count 0).
+ */
+export interface FrameTime {
+  readonly medianMs: number;
+  readonly count: number;
+  readonly fittedFrom?: readonly (readonly [number, number])[];
+}
+
+/** A frame is fitted rather than drawn where it would take this many budgets: one somewhat over costs little more than the fit. */
+export const FIT_OVER_BUDGET = 4;
+
+/**
+ * The sizes, a quarter and a half of a size's width and height, whose frames a slow row's frame
+ * time is fitted from: 1/16 and 1/4 of its pixels.
+ */
+export const fitSizes = ([width, height]: readonly [number, number]): [[number, number], [number, number]] => [
+  [Math.round(width / 4), Math.round(height / 4)],
+  [Math.round(width / 2), Math.round(height / 2)],
+];
+
+/**
+ * A frame's time at `pixels`, on the line through two frames' [pixels, ms]: a fixed cost (the
+ * scene's draws, a simulation's steps) plus a cost per pixel (the film's fragments), not below
+ * the larger measured frame.
+ */
+export function fittedFrameMs(points: readonly [readonly [number, number], readonly [number, number]], pixels: number): number {
+  const [[p1, t1], [p2, t2]] = points;
+  if (!(p2 > p1)) throw new Error(`fittedFrameMs: the second frame's pixels (${p2}) must exceed the first's (${p1})`);
+  return Math.max(t2, t2 + ((t2 - t1) * (pixels - p2)) / (p2 - p1));
 }
 
 /** [width, height] of a row's first frame: small, so that it costs the compile and the table's build but few fragments. */

@@ -22,6 +22,7 @@ export async function runRow(
     return await page.evaluate((spec) => window.benchRow!(spec), {
       kind: row.kind,
       reflections: row.reflections ?? true,
+      timesChanges: row.timesChanges ?? true,
       settings: row.settings,
       quality: plan.smoke ? smokeQuality(row.quality) : row.quality,
       sizes: plan.sizes,

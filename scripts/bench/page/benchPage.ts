@@ -8,7 +8,7 @@ import { BubbleView, createBubbleRenderer } from '../../../src/scene/bubbleView.
 import { FilmXyzProbe } from '../../harness/filmXyzProbe.ts';
 import { loadEnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
 import { isHdrEnvironment } from '../../../src/settings/filmSettings.ts';
-import { type BenchRowSpec, CHANGES, FIRST_FRAME_SIZE } from '../benchRow.ts';
+import { type BenchRowSpec, CHANGES, FIRST_FRAME_SIZE, FIT_OVER_BUDGET, type FrameTime, fitSizes, fittedFrameMs } from '../benchRow.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 if (!canvas) throw new Error('bench.html must hold #bubble');
@@ -65,17 +65,40 @@ window.benchRow = async (spec: BenchRowSpec) => {
   const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? view.table.lastBuildMs : null;
   const buildsBefore = view.table.builds;
 
-  // Per size: up to 3 warm-up frames, then up to `frames` timed ones within the budget. A frame
-  // longer than the budget is its own measurement (the program compiled with the small first
-  // frame), and the larger sizes are not timed (null): each would cost more than it.
-  const frames: ({ medianMs: number; count: number } | null)[] = [];
+  // Per size: up to 3 warm-up frames, then up to `frames` timed ones within the budget. Where a
+  // frame at a sixteenth of the pixels, times 16, would outlast FIT_OVER_BUDGET budgets, the frame
+  // time is fitted from that frame and one at a quarter of the pixels (fittedFrameMs): a slow row's
+  // full frame (tens of seconds of per-fragment bins on a CPU rasteriser) is not drawn. A frame over
+  // the budget, timed or fitted, is its own measurement, and the larger sizes are not timed (null):
+  // each would cost more than it.
+  const frames: (FrameTime | null)[] = [];
   let slow = false;
-  for (const [width, height] of spec.sizes) {
+  for (const size of spec.sizes) {
     if (slow) {
       frames.push(null);
       continue;
     }
-    view.resize(width, height);
+    const [small, half] = fitSizes(size);
+    view.resize(...small);
+    const smallMs = frame();
+    if (smallMs * 16 > FIT_OVER_BUDGET * spec.frameBudgetMs) {
+      view.resize(...half);
+      const halfMs = frame();
+      const pixels = ([w, h]: readonly [number, number]) => w * h;
+      const fittedMs = fittedFrameMs(
+        [
+          [pixels(small), smallMs],
+          [pixels(half), halfMs],
+        ],
+        pixels(size),
+      );
+      if (fittedMs > FIT_OVER_BUDGET * spec.frameBudgetMs) {
+        slow = true;
+        frames.push({ medianMs: fittedMs, count: 0, fittedFrom: [small, half] });
+        continue;
+      }
+    }
+    view.resize(...size);
     const warm = [frame()];
     slow = warm[0]! > spec.frameBudgetMs;
     if (slow) {
@@ -90,9 +113,9 @@ window.benchRow = async (spec: BenchRowSpec) => {
   const rebuildsWhileAnimating = view.table.builds - buildsBefore;
   // Each change and its way back (timed too where `changesBack`), up to `changeRepeats` times while
   // that change has taken less than the budget; none (null) for the textured sphere, which shows no
-  // film, and for a row whose frame alone outlasts the budget.
+  // film, for a row that does not time them, and for a row whose frame alone outlasts the budget.
   view.resize(...spec.sizes[0]!);
-  const changesTimed = spec.kind === 'bubble' && frames[0]!.medianMs <= spec.frameBudgetMs;
+  const changesTimed = spec.kind === 'bubble' && spec.timesChanges && frames[0]!.medianMs <= spec.frameBudgetMs;
   const changeToFrameMs = CHANGES.map(({ values }) => {
     if (!changesTimed) return null;
     const times: number[] = [];
