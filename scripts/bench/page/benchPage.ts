@@ -13,6 +13,9 @@ import { type BenchRowSpec, CHANGES, FIRST_FRAME_SIZE, FIT_OVER_BUDGET, type Fra
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 if (!canvas) throw new Error('bench.html must hold #bubble');
 
+/** A frame four times the pixels taking at least this many times as long is mostly a cost per pixel. */
+const PIXEL_BOUND = 2;
+
 const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
 
 /** A 256² sRGB texture for the floor row: the sphere then costs one texture fetch per pixel. */
@@ -66,8 +69,8 @@ window.benchRow = async (spec: BenchRowSpec) => {
   const buildsBefore = view.table.builds;
 
   // Per size: up to 3 warm-up frames, then up to `frames` timed ones within the budget. Where a
-  // frame at a sixteenth of the pixels, times 16, would outlast FIT_OVER_BUDGET budgets, the frame
-  // time is fitted from that frame and one at a quarter of the pixels (fittedFrameMs): a slow row's
+  // frame at a 64th of the pixels, times 64, would outlast FIT_OVER_BUDGET budgets, the frame
+  // time is fitted from that frame and one at a 16th of the pixels (fittedFrameMs): a slow row's
   // full frame (tens of seconds of per-fragment bins on a CPU rasteriser) is not drawn. A frame over
   // the budget, timed or fitted, is its own measurement, and the larger sizes are not timed (null):
   // each would cost more than it.
@@ -78,23 +81,25 @@ window.benchRow = async (spec: BenchRowSpec) => {
       frames.push(null);
       continue;
     }
-    const [small, half] = fitSizes(size);
+    const pixels = ([w, h]: readonly [number, number]) => w * h;
+    const [small, larger] = fitSizes(size);
     view.resize(...small);
     const smallMs = frame();
-    if (smallMs * 16 > FIT_OVER_BUDGET * spec.frameBudgetMs) {
-      view.resize(...half);
-      const halfMs = frame();
-      const pixels = ([w, h]: readonly [number, number]) => w * h;
+    if ((smallMs * pixels(size)) / pixels(small) > FIT_OVER_BUDGET * spec.frameBudgetMs) {
+      view.resize(...larger);
+      const largerMs = frame();
       const fittedMs = fittedFrameMs(
         [
           [pixels(small), smallMs],
-          [pixels(half), halfMs],
+          [pixels(larger), largerMs],
         ],
         pixels(size),
       );
-      if (fittedMs > FIT_OVER_BUDGET * spec.frameBudgetMs) {
+      // Fitted only where the frame is mostly a cost per pixel (4× the pixels took ≥ PIXEL_BOUND× the
+      // time): a fixed cost's noise, taken 20× along the line, would say nothing.
+      if (largerMs >= PIXEL_BOUND * smallMs && fittedMs > FIT_OVER_BUDGET * spec.frameBudgetMs) {
         slow = true;
-        frames.push({ medianMs: fittedMs, count: 0, fittedFrom: [small, half] });
+        frames.push({ medianMs: fittedMs, count: 0, fittedFrom: [small, larger] });
         continue;
       }
     }
@@ -111,8 +116,9 @@ window.benchRow = async (spec: BenchRowSpec) => {
     frames.push({ medianMs: median(times), count });
   }
   const rebuildsWhileAnimating = view.table.builds - buildsBefore;
-  // Each change and its way back (timed too where `changesBack`), up to `changeRepeats` times while
-  // that change has taken less than the budget; none (null) for the textured sphere, which shows no
+  // Each change and its way back (timed too where `changesBack`, while that change has taken less
+  // than the budget; else drawn with the next change), up to `changeRepeats` times while that
+  // change has taken less than the budget; none (null) for the textured sphere, which shows no
   // film, for a row that does not time them, and for a row whose frame alone outlasts the budget.
   view.resize(...spec.sizes[0]!);
   const changesTimed = spec.kind === 'bubble' && spec.timesChanges && frames[0]!.medianMs <= spec.frameBudgetMs;
@@ -124,7 +130,7 @@ window.benchRow = async (spec: BenchRowSpec) => {
       for (const [i, v] of values(spec.settings).entries()) {
         const started = performance.now();
         view.apply({ ...view.current, ...v });
-        if (i > 0 && !spec.changesBack) continue; // drawn with the next change
+        if (i > 0 && !(spec.changesBack && spentMs < spec.frameBudgetMs)) continue; // drawn with the next change
         view.render();
         gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
         times.push(performance.now() - started);
