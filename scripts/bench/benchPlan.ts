@@ -43,7 +43,7 @@ export const FULL_PLAN: BenchPlan = {
   changeRepeats: 2,
   changesBack: true,
   gridStride: 1,
-  materials: { width: 1280, height: 720, frames: 20 },
+  materials: { width: 1280, height: 720, frames: 10 },
   demo: { width: 1280, height: 720, panelRepeats: 1, windowMs: 1000 },
   concurrency: 1,
   devPort: 5192,

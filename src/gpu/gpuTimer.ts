@@ -42,11 +42,6 @@ export class GpuTimer {
     this.pending.push({ query, done });
   }
 
-  /** Whether draws are timed and not yet reported. */
-  get busy(): boolean {
-    return this.pending.length > 0;
-  }
-
   /** Reports the timed draws whose results are available, in order. */
   poll(): void {
     if (this.pending.length === 0) return; // the app's every frame polls: nothing to ask the context then

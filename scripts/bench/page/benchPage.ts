@@ -69,8 +69,8 @@ window.benchRow = async (spec: BenchRowSpec) => {
   const buildsBefore = view.table.builds;
 
   // Per size: up to 3 warm-up frames, then up to `frames` timed ones within the budget. Where a
-  // frame at a 64th of the pixels, times 64, would outlast FIT_OVER_BUDGET budgets, the frame
-  // time is fitted from that frame and one at a 16th of the pixels (fittedFrameMs): a slow row's
+  // frame at a 16th of the pixels, times 16, would outlast FIT_OVER_BUDGET budgets, the frame
+  // time is fitted from that frame and one at a quarter of the pixels (fittedFrameMs): a slow row's
   // full frame (tens of seconds of per-fragment bins on a CPU rasteriser) is not drawn. A frame over
   // the budget, timed or fitted, is its own measurement, and the larger sizes are not timed (null):
   // each would cost more than it.
@@ -96,7 +96,7 @@ window.benchRow = async (spec: BenchRowSpec) => {
         pixels(size),
       );
       // Fitted only where the frame is mostly a cost per pixel (4× the pixels took ≥ PIXEL_BOUND× the
-      // time): a fixed cost's noise, taken 20× along the line, would say nothing.
+      // time): a fixed cost's noise, taken 4× along the line, would say nothing.
       if (largerMs >= PIXEL_BOUND * smallMs && fittedMs > FIT_OVER_BUDGET * spec.frameBudgetMs) {
         slow = true;
         frames.push({ medianMs: fittedMs, count: 0, fittedFrom: [small, larger] });

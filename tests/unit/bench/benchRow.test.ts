@@ -33,9 +33,9 @@ describe('a slow row’s fitted frame time', () => {
     ).toThrow(/pixels/);
   });
 
-  it('fits from a 64th and a 16th of the pixels', () => {
+  it('fits from a 16th and a quarter of the pixels', () => {
     const [small, larger] = fitSizes([1280, 720]);
-    expect(small[0] * small[1] * 64).toBe(1280 * 720);
-    expect(larger[0] * larger[1] * 16).toBe(1280 * 720);
+    expect(small[0] * small[1] * 16).toBe(1280 * 720);
+    expect(larger[0] * larger[1] * 4).toBe(1280 * 720);
   });
 });
