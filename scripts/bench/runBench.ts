@@ -4,7 +4,7 @@
  * A stage that throws is recorded and the run goes on; the caller reports it.
  */
 import { cpus, loadavg } from 'node:os';
-import { type Browser, chromium } from '@playwright/test';
+import { chromium } from '@playwright/test';
 import { createServer, preview } from 'vite';
 import type { Medium } from '../../src/physics/medium.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
@@ -75,18 +75,15 @@ async function measureRow(
 }
 
 /**
- * Runs the tasks, `lanes.length` at once, each lane with its own browser: one by one in their
- * order, or several, the costliest first so that no long one is left running alone at the end.
+ * Runs the tasks, `width` at once: one by one in their order, or several, the costliest first so
+ * that no long one is left running alone at the end.
  */
-async function runAtOnce(
-  tasks: readonly { readonly cost: number; readonly run: (browser: Browser) => Promise<void> }[],
-  lanes: readonly Browser[],
-): Promise<void> {
-  const queue = lanes.length === 1 ? [...tasks] : [...tasks].sort((a, b) => b.cost - a.cost);
-  const runner = async (browser: Browser) => {
-    for (let task = queue.shift(); task; task = queue.shift()) await task.run(browser);
+async function runAtOnce(tasks: readonly { readonly cost: number; readonly run: () => Promise<void> }[], width: number): Promise<void> {
+  const queue = width === 1 ? [...tasks] : [...tasks].sort((a, b) => b.cost - a.cost);
+  const runner = async () => {
+    for (let task = queue.shift(); task; task = queue.shift()) await task.run();
   };
-  await Promise.all(lanes.map(runner));
+  await Promise.all(Array.from({ length: width }, runner));
 }
 
 export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withMaterials: boolean): Promise<BenchResults> {
@@ -122,11 +119,7 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
   const reference = await stage(REFERENCE_STAGE, referenceSpeed);
   const grids = new ErrorGrids(plan.gridStride);
   const devUrl = `http://127.0.0.1:${plan.devPort}`;
-  // A browser per stage running at once: a browser's pages share its one GPU process, which would
-  // run their draws and compiles (a CPU rasteriser's, here) one after another.
-  const launch = () => chromium.launch(chromiumLaunchOptions());
-  const laneBrowsers = await Promise.all(Array.from({ length: plan.concurrency }, launch));
-  const builtPageBrowser = await launch();
+  const browser = await chromium.launch(chromiumLaunchOptions());
   try {
     // The rows and the material in the dev server; the builds, then the built demo page, in its preview.
     const measured: (MeasuredRow | null)[] = [];
@@ -138,11 +131,11 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
       });
       await server.listen();
       try {
-        await Promise.all(laneBrowsers.map((b) => warmUp(b, devUrl)));
+        await warmUp(browser, devUrl);
         const tasks = [
           ...rows.map((row, i) => ({
             cost: rowCost(row),
-            run: async (browser: Browser) => {
+            run: async () => {
               measured[i] = await stage(row.name, () => measureRow(browser, devUrl, plan, row, grids));
             },
           })),
@@ -150,7 +143,7 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
             ? [
                 {
                   cost: STAGE_COSTS.materials,
-                  run: async (browser: Browser) => {
+                  run: async () => {
                     // The material's film is three's iridescenceIOR, one number: the soap film's grids.
                     materials = await stage(MATERIALS_ROW, () =>
                       materialFigures(browser, devUrl, plan.materials, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
@@ -160,7 +153,7 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
               ]
             : []),
         ];
-        await runAtOnce(tasks, laneBrowsers);
+        await runAtOnce(tasks, plan.concurrency);
       } finally {
         await server.close();
       }
@@ -173,7 +166,7 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
       pack = await stage(PACKAGE_STAGE, packageSize);
       const previewServer = await preview({ logLevel: 'silent', preview: { port: plan.previewPort, strictPort: true, host: '127.0.0.1' } });
       try {
-        demo = await stage(DEMO_STAGE, () => demoPageFigures(builtPageBrowser, `http://127.0.0.1:${plan.previewPort}`, plan.demo));
+        demo = await stage(DEMO_STAGE, () => demoPageFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.demo));
       } finally {
         await new Promise((resolve) => previewServer.httpServer.close(resolve));
       }
@@ -197,6 +190,6 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
       failures,
     };
   } finally {
-    await Promise.all([...laneBrowsers, builtPageBrowser].map((b) => b.close()));
+    await browser.close();
   }
 }
