@@ -55,7 +55,7 @@ export const SMOKE_PLAN: BenchPlan = {
   smoke: true,
   sizes: [[160, 90]],
   frames: 1,
-  // Short, so that the slowest rows take the fitted path (benchPage.ts) and the full run's steps all run.
+  // Short, so that slow rows are trimmed, or fitted (benchPage.ts), as in the full run: those steps run too.
   frameBudgetMs: 250,
   changeRepeats: 1,
   changesBack: false,
