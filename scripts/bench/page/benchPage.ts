@@ -84,8 +84,12 @@ window.benchRow = async (spec: BenchRowSpec) => {
     const pixels = ([w, h]: readonly [number, number]) => w * h;
     const [small, larger] = fitSizes(size);
     view.resize(...small);
-    const smallMs = frame();
-    if ((smallMs * pixels(size)) / pixels(small) > FIT_OVER_BUDGET * spec.frameBudgetMs) {
+    // Over the threshold, a second frame confirms it (the faster of the two): on a busy machine one
+    // frame of a fast row can come late.
+    const overThreshold = (ms: number) => (ms * pixels(size)) / pixels(small) > FIT_OVER_BUDGET * spec.frameBudgetMs;
+    let smallMs = frame();
+    if (overThreshold(smallMs)) smallMs = Math.min(smallMs, frame());
+    if (overThreshold(smallMs)) {
       view.resize(...larger);
       const largerMs = frame();
       const fittedMs = fittedFrameMs(
