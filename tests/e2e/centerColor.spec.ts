@@ -3,6 +3,7 @@ import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../../src/physics/
 import { showSettings } from './appSettings.ts';
 import { centrePixel } from './drawingBuffer.ts';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
+import { DISPERSIVE_FIRST_FRAME_MS } from './waits.ts';
 
 /**
  * The page's centre pixel is the film seen head-on (θ_i ≈ 0: the centre ray is half a pixel off
@@ -13,9 +14,9 @@ import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenc
 const BASE = '/?field=uniform&env=none&sides=front&exposure=1&animate=0';
 
 /** Opens the view and reads its centre (drawn in the same task), with whether the canvas is Display P3. */
-async function centre(page: Page, query: string): Promise<{ rgb: number[]; displayIsP3: boolean }> {
+async function centre(page: Page, query: string, timeout?: number): Promise<{ rgb: number[]; displayIsP3: boolean }> {
   await page.goto(`${BASE}&${query}`);
-  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout });
   const rgb = await centrePixel(page);
   const displayIsP3 = await page.evaluate(() => (window as unknown as { bubbleView: { displayIsP3: boolean } }).bubbleView.displayIsP3);
   return { rgb, displayIsP3 };
@@ -55,11 +56,13 @@ test('exact mode: the centre pixel is the reference sRGB colour', async ({ page 
 // The table mode only: `exact` with a dispersive film (150 bins, Fresnel per bin, per pixel of the whole view) takes minutes on
 // a busy CPU rasteriser; the parity spec holds its numbers to the reference.
 test('a dispersive film (nFilm=water, a Cauchy film) shows the dispersive reference colour', async ({ page }) => {
-  for (const [query, nFilm, thicknessNm] of [
+  const films = [
     ['nFilm=water&thickness=1200', 'water', 1200],
     ['nFilm=cauchy:1.45,6000&thickness=700', { cauchy: [1.45, 6000, 0] }, 700],
-  ] as const) {
-    const { rgb } = await centre(page, query);
+  ] as const;
+  test.setTimeout(films.length * DISPERSIVE_FIRST_FRAME_MS + 60_000);
+  for (const [query, nFilm, thicknessNm] of films) {
+    const { rgb } = await centre(page, query, DISPERSIVE_FIRST_FRAME_MS);
     const expected = reference8({ thicknessNm, nFilm }, 'D65');
     console.log(`centre ${query}: page ${rgb} reference ${expected}`);
     expect.soft(() => expectClose(rgb, expected, query)).not.toThrow();

@@ -3,6 +3,7 @@ import { centrePixel } from './drawingBuffer.ts';
 import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
+import { DISPERSIVE_FIRST_FRAME_MS } from './waits.ts';
 
 test('the demo page loads with its title and a WebGL2 context', async ({ page }) => {
   await page.goto('/');
@@ -26,7 +27,7 @@ test('a bad URL parameter shows a message naming it and its range, uses the defa
 test('fourier with a dispersive film draws with the table and says why; the URL keeps mode=fourier', async ({ page }) => {
   const problems = watchProblems(page);
   await page.goto('/?nFilm=water&mode=fourier&field=uniform&animate=0&env=none');
-  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: DISPERSIVE_FIRST_FRAME_MS });
   await expect(page.locator('#messages .method-notice')).toContainText('nFilm=water');
   await expect(page.locator('#messages .method-notice')).toContainText('mode=table');
   const modes = () =>
@@ -48,6 +49,7 @@ test('fourier with a dispersive film draws with the table and says why; the URL 
 });
 
 test('the panel changes the view and the URL, and the URL restores the state', async ({ page }) => {
+  test.setTimeout(DISPERSIVE_FIRST_FRAME_MS + 120_000);
   await page.goto('/?animate=0&env=none&sides=front');
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
   await openPanel(page);
@@ -107,8 +109,8 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   const cauchy = { cauchy: [1.45, 6000, 0] } as const;
   expect(await current()).toMatchObject({ nFilm: cauchy });
 
-  await page.goto(page.url());
-  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
+  await page.goto(page.url()); // a Cauchy film: dispersive
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: DISPERSIVE_FIRST_FRAME_MS });
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300, nFilm: cauchy });
   await openPanel(page);
   await expect(page.getByRole('combobox', { name: 'thickness field' })).toHaveValue('uniform');
