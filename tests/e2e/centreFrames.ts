@@ -1,6 +1,7 @@
 import { expect, type Page } from '@playwright/test';
 import { MAX_CODE_DIFFERENCE, worstCodeDifference } from './referenceColor.ts';
 import { COARSE_FRAME_CODES } from '../tolerances.ts';
+import { DISPERSIVE_FIRST_FRAME_MS } from './waits.ts';
 
 /** Each frame drawn: its centre pixel (8-bit RGB) and whether it was drawn in full (not from a coarse table). */
 export type CentreFrame = [number[], boolean];
@@ -41,7 +42,8 @@ export async function expectChangeShownCleanly(
 ): Promise<void> {
   const before = (await drawn()).length;
   await change();
-  await expect.poll(async () => (await drawn()).slice(before).some(([, full]) => full)).toBe(true);
+  // A change to a metal inside or a dispersive film builds its table from dispersive bins, band by band.
+  await expect.poll(async () => (await drawn()).slice(before).some(([, full]) => full), { timeout: DISPERSIVE_FIRST_FRAME_MS }).toBe(true);
   const frames = (await drawn()).slice(before);
   console.log(
     `${names[0]} → ${names[1]}: ${frames.map(([rgb, full]) => `${rgb}${full ? '' : ' (coarse)'}`).join('; ')}; references ${references[0]} / ${references[1]}`,
