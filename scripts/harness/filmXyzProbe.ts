@@ -2,8 +2,8 @@
  * Renders film XYZ through the real shaders (shaders/film/filmColor.glsl, via shaderSource) into a
  * float target and reads it back: one draw per group, one pixel per case, no colour conversion.
  * In `table` mode the table is built by the app's own FilmTable pass, covering the group's
- * largest thickness (as the bubble's table covers its field's). Used by the parity harness and
- * the benchmark's error columns.
+ * largest thickness (as the bubble's table covers its field's), in the columns the cases read.
+ * Used by the parity harness and the benchmark's error columns.
  */
 import { FULLSCREEN_VERTEX } from '../../src/gpu/fullscreenPass.ts';
 import { ShaderMaterial, type WebGLRenderer } from 'three';
@@ -63,8 +63,9 @@ export class FilmXyzProbe {
     let table: FilmTable | null = null;
     if (mode === 'table') {
       table = this.table(quality);
-      const maxThicknessNm = Math.max(...g.inputs.map(([t]) => t));
-      table.update(this.renderer, { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: maxThicknessNm, mode });
+      const thicknessesNm = g.inputs.map(([t]) => t);
+      const settings = { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: Math.max(...thicknessesNm), mode } as const;
+      table.buildAround(this.renderer, settings, thicknessesNm);
     }
     updateFilmColorUniforms(m, { ...g, mode }, quality, table);
     const out = renderFloatRow(this.renderer, m, g.inputs.length);

@@ -24,7 +24,7 @@ import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
 import { type FilmSettings } from '../settings/filmSettings.ts';
 import { maxFieldThicknessNm } from '../fields/fields.ts';
-import { type FilmTableLayout, filmTableWidth } from '../settings/filmTableLayout.ts';
+import { type FilmTableLayout, filmTableLookupColumns, filmTableWidth } from '../settings/filmTableLayout.ts';
 import { filmTableLayoutDefines } from './filmTableDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
@@ -75,6 +75,9 @@ interface Grid {
   readonly width: number;
   readonly rows: number;
 }
+
+/** Columns [from, to) of a grid. */
+type Columns = readonly [number, number];
 
 /** A table pass (shaders/film/filmTable.glsl) with no defines yet. */
 const tablePass = (): ShaderMaterial =>
@@ -232,7 +235,7 @@ export class FilmTable {
    * `draw` in the app's frames, timed for the budget: by the GPU's timer where it has one (the
    * result comes frames later, costing no wait), else by waiting for the GPU (`syncTimed`).
    */
-  private timedDraw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: [number, number]): void {
+  private timedDraw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: Grid, columns: Columns): void {
     const kind = passKind(s);
     const texels = (columns[1] - columns[0]) * 2 * grid.rows;
     const follows = this.drawsFollow;
@@ -243,7 +246,7 @@ export class FilmTable {
     };
     this.timer ??= GpuTimer.of(renderer);
     const timer = this.timer;
-    this.draw(renderer, s, target, grid, columns, (pass) => {
+    this.draw(renderer, s, target, grid, [columns], (pass) => {
       if (!timer) {
         const { began, ms } = syncTimed(renderer, target, columns[0], pass);
         return report(began, ms);
@@ -265,6 +268,21 @@ export class FilmTable {
     this.lastBuildMs = performance.now() - started;
   }
 
+  /**
+   * Builds the full grid for `s` in only the columns that looking the table up at these thicknesses
+   * reads (a lookup blends two neighbouring columns), and leaves the rest of the texture undefined:
+   * for checks that read the table at known films, at a fraction of a full build's cost on a slow
+   * GPU. Nothing counts it as built: the next `update` builds the whole table.
+   */
+  buildAround(renderer: WebGLRenderer, s: FilmSettings, thicknessesNm: readonly number[]): void {
+    const grid = this.fullGrid(s);
+    const columns = filmTableLookupColumns(this.quality.table, thicknessesNm, maxFieldThicknessNm(s), grid.width);
+    this.building = null;
+    this.draw(renderer, s, this.target, grid, columns, (pass) => syncTimed(renderer, this.target, columns[0]![0], pass));
+    this.shown = { key: '', coarse: false };
+    this.shownGrid = grid;
+  }
+
   private show(key: string, coarse: boolean, grid?: Grid): void {
     this.shown = { key, coarse };
     if (!coarse) this.builds++;
@@ -272,7 +290,7 @@ export class FilmTable {
   }
 
   /**
-   * Runs the pass over `grid` in `target` (sized to it), over the columns [from, to) if given
+   * Runs the pass over `grid` in `target` (sized to it), over the column ranges [from, to) if given
    * (the rest of the texture is kept), through `time`, which draws it and times it.
    */
   private draw(
@@ -280,7 +298,7 @@ export class FilmTable {
     s: FilmSettings,
     target: WebGLRenderTarget,
     grid: Grid,
-    columns: [number, number] | null,
+    columns: readonly Columns[] | null,
     time: (pass: () => void) => void,
   ): void {
     const type = tableTexelType(renderer, this.quality.tablePrecision);
@@ -289,9 +307,6 @@ export class FilmTable {
       target.texture.type = type;
     }
     if (target.width !== grid.width || target.height !== 2 * grid.rows) target.setSize(grid.width, 2 * grid.rows);
-    const [from, to] = columns ?? [0, grid.width];
-    target.scissor.set(from, 0, to - from, 2 * grid.rows);
-    target.scissorTest = true;
     this.maxThicknessNm = maxFieldThicknessNm(s);
     const bins = spectralBinsFor(s, this.quality, this.quality.table.spectralBins);
     const material = this.material(s, bins);
@@ -308,8 +323,14 @@ export class FilmTable {
     u.uFilmTableWidth!.value = grid.width;
     u.uFilmTableRows!.value = grid.rows;
     const previous = renderer.getRenderTarget();
-    renderer.setRenderTarget(target);
-    time(() => this.fullscreen.render(renderer, material));
+    target.scissorTest = true;
+    time(() => {
+      for (const [from, to] of columns ?? [[0, grid.width]]) {
+        target.scissor.set(from, 0, to - from, 2 * grid.rows);
+        renderer.setRenderTarget(target); // three takes the target's scissor as it binds it
+        this.fullscreen.render(renderer, material);
+      }
+    });
     renderer.setRenderTarget(previous);
     // The pass reads the light's textures only while it draws: let go of them until the next
     // build, unless a full table is being built band by band.

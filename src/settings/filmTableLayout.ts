@@ -46,3 +46,34 @@ export function filmTableWidth(l: FilmTableLayout, maxThicknessNm: number, filmI
 
 /** cos θ_i of the table's row `row` of `l.rows` (twin of filmTableCosIncidence in the GLSL). */
 export const filmTableCosIncidence = (l: FilmTableLayout, row: number): number => (row / (l.rows - 1)) ** l.cosPower;
+
+/** How far from a texel centre, in texels, a GPU's float32 lookup may land: more than its rounding, far less than a texel. */
+const LOOKUP_MARGIN_TEXELS = 0.01;
+
+/**
+ * The column ranges [from, to), merged and in order, that looking up a table `width` texels wide
+ * over 0..maxThicknessNm at these thicknesses reads: a lookup at u · (width − 1) (u as
+ * tfcFilmTableUv in shaders/film/filmTableLayout.glsl gives it) blends the two columns around it, taken within
+ * LOOKUP_MARGIN_TEXELS so that rounding on the GPU cannot reach a column left out.
+ */
+export function filmTableLookupColumns(
+  l: Pick<FilmTableLayout, 'thicknessPower'>,
+  thicknessesNm: readonly number[],
+  maxThicknessNm: number,
+  width: number,
+): [number, number][] {
+  const needed = new Set<number>();
+  for (const d of thicknessesNm) {
+    const x = Math.min(1, Math.max(0, d / maxThicknessNm)) ** (1 / l.thicknessPower) * (width - 1);
+    const from = Math.max(0, Math.floor(x - LOOKUP_MARGIN_TEXELS));
+    const to = Math.min(width - 1, Math.ceil(x + LOOKUP_MARGIN_TEXELS));
+    for (let c = from; c <= to; c++) needed.add(c);
+  }
+  const ranges: [number, number][] = [];
+  for (const c of [...needed].sort((a, b) => a - b)) {
+    const last = ranges.at(-1);
+    if (last && last[1] === c) last[1] = c + 1;
+    else ranges.push([c, c + 1]);
+  }
+  return ranges;
+}
