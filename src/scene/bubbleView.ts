@@ -48,6 +48,27 @@ export type EnvironmentStatus =
   | { readonly state: 'loading'; readonly env: HdrEnvironment }
   | { readonly state: 'failed'; readonly env: HdrEnvironment; readonly reason: string };
 
+/** Whether each renderer's canvas can show Display P3, once asked. */
+const displayP3Support = new WeakMap<WebGLRenderer, boolean>();
+
+/**
+ * Whether `renderer`'s canvas can show Display P3: whether its drawing buffer takes the space
+ * (browsers without the attribute, or that ignore the value, stay sRGB). Asked once per renderer,
+ * as setting the space reallocates the drawing buffer.
+ */
+function drawsDisplayP3(renderer: WebGLRenderer): boolean {
+  let supported = displayP3Support.get(renderer);
+  if (supported === undefined) {
+    const gl = renderer.getContext();
+    const space = renderer.outputColorSpace;
+    renderer.outputColorSpace = DisplayP3ColorSpace;
+    supported = 'drawingBufferColorSpace' in gl && gl.drawingBufferColorSpace === 'display-p3';
+    renderer.outputColorSpace = space;
+    displayP3Support.set(renderer, supported);
+  }
+  return supported;
+}
+
 /** A WebGL2 renderer for bubbles on a canvas (the drawing buffer is kept for screenshots and reads). */
 export const createBubbleRenderer = (canvas: HTMLCanvasElement): WebGLRenderer =>
   new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
@@ -134,11 +155,7 @@ export class BubbleView {
       this.fieldState = state && { field: s.field, state };
       this.filmBehind = false;
     }
-    const wantP3 = s.space === 'display-p3' || s.space === 'wide-gamut';
-    this.renderer.outputColorSpace = wantP3 ? DisplayP3ColorSpace : SRGBColorSpace;
-    const gl = this.renderer.getContext();
-    this.displayIsP3 = wantP3 && 'drawingBufferColorSpace' in gl && gl.drawingBufferColorSpace === 'display-p3';
-    if (wantP3 && !this.displayIsP3) this.renderer.outputColorSpace = SRGBColorSpace;
+    this.displayIsP3 = (s.space === 'display-p3' || s.space === 'wide-gamut') && drawsDisplayP3(this.renderer);
     const map = isHdrEnvironment(s.env) ? environmentTexture(s.env, this) : null;
     if (!map) releaseEnvironmentTexture(this);
     if (isHdrEnvironment(s.env) && !map && !this.failedEnvironments.has(s.env) && !this.loadingEnvironments.has(s.env)) this.load(s.env);
@@ -291,6 +308,9 @@ export class BubbleView {
       this.filmBehind = !film.advance(this.bubble.material.uniforms, this.settings, quick ? this.quality.flowStepsPerFrame : Infinity);
     // Per frame, as views may share the renderer (each view's materials are compiled for its own).
     r.toneMapping = this.toneMapping;
+    // Only on a change: a new space reallocates the drawing buffer, which waits for the GPU's queued work.
+    const space = this.displayIsP3 ? DisplayP3ColorSpace : SRGBColorSpace;
+    if (r.outputColorSpace !== space) r.outputColorSpace = space;
     r.render(this.scene, this.camera);
   }
 
