@@ -49,13 +49,11 @@ export interface BenchRowResult {
 /**
  * A size's frame time: the median of `count` frames drawn at that size, or, where one frame there
  * would outlast the budget, the line through one frame at each of `fittedFrom` (smaller sizes)
- * taken to this size's pixels (count 0).
+ * taken to this size's pixels.
  */
-export interface FrameTime {
-  readonly medianMs: number;
-  readonly count: number;
-  readonly fittedFrom?: readonly (readonly [number, number])[];
-}
+export type FrameTime =
+  | { readonly medianMs: number; readonly count: number }
+  | { readonly medianMs: number; readonly fittedFrom: readonly (readonly [number, number])[] };
 
 /** A frame is fitted rather than drawn where it would take this many budgets: one somewhat over costs little more than the fit. */
 export const FIT_OVER_BUDGET = 4;

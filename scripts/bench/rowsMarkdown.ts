@@ -37,7 +37,7 @@ export function rowsMarkdown(rows: readonly MeasuredRow[], plan: BenchPlan): str
       if (f === null) return 'not timed';
       const floorMs = floor.frames[i]?.medianMs;
       const ratio = floorMs === undefined ? '' : ` (${(f.medianMs / floorMs).toFixed(2)}×)`;
-      if (f.fittedFrom) return `≈${ms(f.medianMs)}${ratio} [fitted]`;
+      if ('fittedFrom' in f) return `≈${ms(f.medianMs)}${ratio} [fitted]`;
       return `${ms(f.medianMs)}${ratio}${f.count < plan.frames ? ` [${f.count}]` : ''}`;
     });
     const table = r.tableBuildMs === null ? '—' : ms(r.tableBuildMs);

@@ -75,13 +75,13 @@ window.benchRow = async (spec: BenchRowSpec) => {
   // the budget, timed or fitted, is its own measurement, and the larger sizes are not timed (null):
   // each would cost more than it.
   const frames: (FrameTime | null)[] = [];
+  const pixels = ([w, h]: readonly [number, number]) => w * h;
   let slow = false;
   for (const size of spec.sizes) {
     if (slow) {
       frames.push(null);
       continue;
     }
-    const pixels = ([w, h]: readonly [number, number]) => w * h;
     const [small, larger] = fitSizes(size);
     view.resize(...small);
     // Over the threshold, a second frame confirms it (the faster of the two): on a busy machine one
@@ -103,7 +103,7 @@ window.benchRow = async (spec: BenchRowSpec) => {
       // time): a fixed cost's noise, taken 4× along the line, would say nothing.
       if (largerMs >= PIXEL_BOUND * smallMs && fittedMs > FIT_OVER_BUDGET * spec.frameBudgetMs) {
         slow = true;
-        frames.push({ medianMs: fittedMs, count: 0, fittedFrom: [small, larger] });
+        frames.push({ medianMs: fittedMs, fittedFrom: [small, larger] });
         continue;
       }
     }
