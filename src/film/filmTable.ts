@@ -278,7 +278,7 @@ export class FilmTable {
     const grid = this.fullGrid(s);
     const columns = filmTableLookupColumns(this.quality.table, thicknessesNm, maxFieldThicknessNm(s), grid.width);
     this.building = null;
-    this.draw(renderer, s, this.target, grid, columns, (pass) => syncTimed(renderer, this.target, columns[0]![0], pass));
+    this.draw(renderer, s, this.target, grid, columns, (pass) => pass());
     this.shown = { key: '', coarse: false };
     this.shownGrid = grid;
   }
