@@ -121,46 +121,12 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
   const devUrl = `http://127.0.0.1:${plan.devPort}`;
   const browser = await chromium.launch(chromiumLaunchOptions());
   try {
-    // The rows and the material in the dev server; the builds, then the built demo page, in its preview.
     const measured: (MeasuredRow | null)[] = [];
     let materials: MaterialFigures | null = null;
-    const inDevServer = async () => {
-      const server = await createServer({
-        logLevel: 'silent',
-        server: { port: plan.devPort, strictPort: true, host: '127.0.0.1', hmr: false, watch: null },
-      });
-      await server.listen();
-      try {
-        await warmUp(browser, devUrl);
-        const tasks = [
-          ...rows.map((row, i) => ({
-            cost: rowCost(row),
-            run: async () => {
-              measured[i] = await stage(row.name, () => measureRow(browser, devUrl, plan, row, grids));
-            },
-          })),
-          ...(withMaterials
-            ? [
-                {
-                  cost: STAGE_COSTS.materials,
-                  run: async () => {
-                    // The material's film is three's iridescenceIOR, one number: the soap film's grids.
-                    materials = await stage(MATERIALS_ROW, () =>
-                      materialFigures(browser, devUrl, plan.materials, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
-                    );
-                  },
-                },
-              ]
-            : []),
-        ];
-        await runAtOnce(tasks, plan.concurrency);
-      } finally {
-        await server.close();
-      }
-    };
     let bundle: BundleSizes | null = null;
     let pack: PackageSize | null = null;
     let demo: DemoPageFigures | null = null;
+    // The builds, then the built demo page in a preview server of its own.
     const builtPage = async () => {
       bundle = await stage(BUNDLE_STAGE, buildAndMeasure);
       pack = await stage(PACKAGE_STAGE, packageSize);
@@ -171,10 +137,41 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
         await new Promise((resolve) => previewServer.httpServer.close(resolve));
       }
     };
-    if (plan.concurrency === 1) {
-      await inDevServer();
-      await builtPage();
-    } else await Promise.all([inDevServer(), builtPage()]);
+    // The rows and the material in the dev server, and the built page: in this order one by one,
+    // or (the smoke) the costliest first, `concurrency` at once.
+    const server = await createServer({
+      logLevel: 'silent',
+      server: { port: plan.devPort, strictPort: true, host: '127.0.0.1', hmr: false, watch: null },
+    });
+    await server.listen();
+    try {
+      await warmUp(browser, devUrl);
+      const tasks = [
+        ...rows.map((row, i) => ({
+          cost: rowCost(row),
+          run: async () => {
+            measured[i] = await stage(row.name, () => measureRow(browser, devUrl, plan, row, grids));
+          },
+        })),
+        ...(withMaterials
+          ? [
+              {
+                cost: STAGE_COSTS.materials,
+                run: async () => {
+                  // The material's film is three's iridescenceIOR, one number: the soap film's grids.
+                  materials = await stage(MATERIALS_ROW, () =>
+                    materialFigures(browser, devUrl, plan.materials, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
+                  );
+                },
+              },
+            ]
+          : []),
+        { cost: STAGE_COSTS.bundle + STAGE_COSTS.package + STAGE_COSTS.demo, run: builtPage },
+      ];
+      await runAtOnce(tasks, plan.concurrency);
+    } finally {
+      await server.close();
+    }
     load.push(loadavg()[0]!);
     return {
       plan,
