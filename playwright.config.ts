@@ -1,10 +1,13 @@
 import { defineConfig } from '@playwright/test';
-import { chromiumLaunchOptions } from './scripts/chromium.ts';
+import { chromiumLaunchOptions, glBackendName } from './scripts/chromium.ts';
 
 import { BUILT_PORT, BUILT_URL } from './tests/e2e/servers.ts';
 
 export default defineConfig({
   testDir: 'tests/e2e',
+  // Checks the WebGL2 backend TFC_GL names before any test, and names it in the report.
+  globalSetup: './tests/e2e/backendCheck.ts',
+  metadata: { glBackend: glBackendName() },
   // A test's own limit: the slowest here take ~1 min alone, ~2 min beside another worker on a busy machine.
   timeout: 300_000,
   // Assertions wait for their condition (a frame drawn, a table built), returning as soon as it

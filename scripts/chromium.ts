@@ -1,5 +1,5 @@
 import { existsSync } from 'node:fs';
-import { chromium } from '@playwright/test';
+import { chromium, type Browser } from '@playwright/test';
 
 /** Playwright's launch options for a Chromium (executablePath left out: Playwright's own). */
 export interface ChromiumLaunchOptions {
@@ -10,11 +10,48 @@ export interface ChromiumLaunchOptions {
 /** The Chromium found, as launch options, or one line saying why none was found and how to get one. */
 export type ChromiumSearch = { readonly found: ChromiumLaunchOptions } | { readonly missing: string };
 
-/** WebGL2 headless on SwiftShader (docs/browser.md#launch-flags); the first also enables the timer query. */
-export const CHROMIUM_ARGS = ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist', '--disable-quic'];
+/** A CPU WebGL backend of headless Chromium: its launch flags and the WebGL2 renderer it must give. */
+export interface GlBackend {
+  readonly args: readonly string[];
+  /** What the unmasked WebGL2 renderer string contains on this backend (docs/browser.md#backends). */
+  readonly renderer: string;
+}
+
+/** Flags every backend shares: the GPU blocklist ignored (a CPU device is on it), no QUIC. */
+const COMMON_ARGS = ['--ignore-gpu-blocklist', '--disable-quic'];
+
+/**
+ * The CPU backends the tests, the benchmark and the render command can run on (docs/browser.md#backends).
+ * SwiftShader compiles on the calling thread; Mesa llvmpipe, through ANGLE's EGL, offers
+ * KHR_parallel_shader_compile. Both enable EXT_disjoint_timer_query_webgl2 and WEBGL_lose_context.
+ */
+export const GL_BACKENDS = {
+  llvmpipe: { args: ['--use-gl=angle', '--use-angle=gles-egl', ...COMMON_ARGS], renderer: 'llvmpipe' },
+  swiftshader: { args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', ...COMMON_ARGS], renderer: 'SwiftShader' },
+} as const satisfies Record<string, GlBackend>;
+export type GlBackendName = keyof typeof GL_BACKENDS;
+export const GL_BACKEND_NAMES = Object.keys(GL_BACKENDS) as GlBackendName[];
+
+/** The backend used when TFC_GL is not set: the one with the shorter browser suite, every test passing (docs/testing.md). */
+export const DEFAULT_GL_BACKEND: GlBackendName = 'llvmpipe';
+
+/** The backend named by `setting` (TFC_GL's value; unset or empty means the default), or a message naming the known ones. */
+export function parseGlBackend(setting: string | undefined): { readonly name: GlBackendName } | { readonly unknown: string } {
+  if (setting === undefined || setting === '') return { name: DEFAULT_GL_BACKEND };
+  if ((GL_BACKEND_NAMES as string[]).includes(setting)) return { name: setting as GlBackendName };
+  return { unknown: `TFC_GL=${JSON.stringify(setting.slice(0, 40))} is not a known WebGL backend; known: ${GL_BACKEND_NAMES.join(', ')}.` };
+}
+
+/** The backend TFC_GL names; an unknown name stops the run (exit 2) with the list of known ones. */
+export function glBackendName(): GlBackendName {
+  const parsed = parseGlBackend(process.env.TFC_GL);
+  if ('name' in parsed) return parsed.name;
+  console.error(parsed.unknown);
+  return process.exit(2);
+}
 
 const found = (executablePath: string | undefined): ChromiumSearch => ({
-  found: { ...(executablePath ? { executablePath } : {}), args: CHROMIUM_ARGS },
+  found: { ...(executablePath ? { executablePath } : {}), args: [...GL_BACKENDS[glBackendName()].args] },
 });
 const missing = (why: string): ChromiumSearch => ({
   missing: `${why} Install one (Debian: apt-get install -y chromium; elsewhere: npx playwright install chromium) or set CHROME_PATH.`,
@@ -23,7 +60,7 @@ const missing = (why: string): ChromiumSearch => ({
 /**
  * The Chromium that the browser tests, the benchmark and the render command launch: CHROME_PATH
  * if set, else Debian's /usr/bin/chromium, else the browser Playwright downloads with
- * `npx playwright install chromium`.
+ * `npx playwright install chromium`; with the flags of the backend TFC_GL names.
  */
 export function findChromium(): ChromiumSearch {
   const fromEnv = process.env.CHROME_PATH;
@@ -39,4 +76,32 @@ export function chromiumLaunchOptions(): ChromiumLaunchOptions {
   if ('found' in search) return search.found;
   console.error(search.missing);
   return process.exit(1);
+}
+
+/** The unmasked WebGL2 renderer string of a page of `browser`, or 'no WebGL2'. */
+export async function webgl2Renderer(browser: Browser): Promise<string> {
+  const page = await browser.newPage();
+  try {
+    return await page.evaluate(() => {
+      const gl = document.createElement('canvas').getContext('webgl2');
+      if (!gl) return 'no WebGL2';
+      const info = gl.getExtension('WEBGL_debug_renderer_info');
+      return String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+    });
+  } finally {
+    await page.close();
+  }
+}
+
+/**
+ * The renderer `browser` gives, checked against the backend TFC_GL names: a browser that fell
+ * back to another backend, or to no WebGL2 at all, throws. Returns one line for a report.
+ */
+export async function checkedRenderer(browser: Browser): Promise<string> {
+  const name = glBackendName();
+  const renderer = await webgl2Renderer(browser);
+  if (!renderer.includes(GL_BACKENDS[name].renderer)) {
+    throw new Error(`TFC_GL=${name} asks for a WebGL2 renderer with "${GL_BACKENDS[name].renderer}" in its name; Chromium gave "${renderer}".`);
+  }
+  return `WebGL2 backend ${name}: ${renderer}`;
 }

@@ -224,8 +224,11 @@ export class BubbleView {
     // Without the extension (SwiftShader) compiling is blocking however it is asked for: the first frame does it.
     if (!this.renderer.extensions.has('KHR_parallel_shader_compile')) return;
     this.renderer.toneMapping = this.toneMapping;
+    // Only what the frame draws: three compiles hidden meshes too (the background with env=none),
+    // a program no frame would use, and one a restored context would not make again.
+    const drawn = [this.bubble, ...(this.background.visible ? [this.background] : [])];
     await Promise.all([
-      this.renderer.compileAsync(this.scene, this.camera),
+      ...drawn.map((mesh) => this.renderer.compileAsync(mesh, this.camera, this.scene)),
       this.settings.mode === 'table' ? this.table.prepare(this.renderer, this.settings) : null,
     ]);
   }
