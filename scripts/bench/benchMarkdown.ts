@@ -69,6 +69,7 @@ export function benchMarkdown(r: BenchResults): string {
     builtMarkdown(r),
     materialsMarkdown(r),
     stagesMarkdown(r),
+    r.machine.webgl,
   ]
     .filter((part) => part !== '')
     .join('\n\n');

@@ -13,8 +13,14 @@ import type { MeasuredRow } from './rowsMarkdown.ts';
 
 export interface BenchResults {
   readonly plan: BenchPlan;
-  /** the machine: Node's version, logical CPUs, their model, the 1-minute load average at the start and the end */
-  readonly machine: { readonly node: string; readonly cpus: number; readonly cpuModel: string; readonly load: readonly number[] };
+  /** the machine: Node's version, logical CPUs, their model, the 1-minute load average at the start and the end, the WebGL2 backend and its renderer */
+  readonly machine: {
+    readonly node: string;
+    readonly cpus: number;
+    readonly cpuModel: string;
+    readonly load: readonly number[];
+    readonly webgl: string;
+  };
   readonly reference: ReferenceSpeed | null;
   readonly rows: readonly MeasuredRow[];
   /** null: not run (rows picked without it) or failed */

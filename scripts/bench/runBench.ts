@@ -8,7 +8,7 @@ import { chromium } from '@playwright/test';
 import { createServer, preview } from 'vite';
 import type { Medium } from '../../src/physics/medium.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
-import { chromiumLaunchOptions } from '../chromium.ts';
+import { checkedRenderer, chromiumLaunchOptions } from '../chromium.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import { type BenchPlan, thinnedGrid } from './benchPlan.ts';
 import type { BenchResults } from './benchResults.ts';
@@ -121,6 +121,8 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
   const devUrl = `http://127.0.0.1:${plan.devPort}`;
   const browser = await chromium.launch(chromiumLaunchOptions());
   try {
+    const webgl = await checkedRenderer(browser);
+    console.error(webgl);
     const measured: (MeasuredRow | null)[] = [];
     let materials: MaterialFigures | null = null;
     let bundle: BundleSizes | null = null;
@@ -175,7 +177,7 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
     load.push(loadavg()[0]!);
     return {
       plan,
-      machine: { node: process.version, cpus: cpus().length, cpuModel: cpus()[0]?.model ?? 'unknown', load },
+      machine: { node: process.version, cpus: cpus().length, cpuModel: cpus()[0]?.model ?? 'unknown', load, webgl },
       reference,
       rows: measured.filter((m) => m !== null),
       materials,

@@ -1,4 +1,6 @@
-import { expect, test, type Page } from '@playwright/test';
+import type { Page } from '@playwright/test';
+import { expect, test } from './fixtures.ts';
+import { parseSettings } from '../../src/settings/settingsQuery.ts';
 import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../../src/physics/colorConversions.ts';
 import { showSettings } from './appSettings.ts';
 import { centrePixel } from './drawingBuffer.ts';
@@ -13,10 +15,11 @@ import { DISPERSIVE_FIRST_FRAME_MS } from './waits.ts';
 
 const BASE = '/?field=uniform&env=none&sides=front&exposure=1&animate=0';
 
-/** Opens the view and reads its centre (drawn in the same task), with whether the canvas is Display P3. */
+/** Shows the view the URL `BASE&query` gives in the shared demo page and reads its centre (drawn in the same task), with whether the canvas is Display P3. */
 async function centre(page: Page, query: string, timeout?: number): Promise<{ rgb: number[]; displayIsP3: boolean }> {
-  await page.goto(`${BASE}&${query}`);
-  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout });
+  const { settings, refusals } = parseSettings(`${BASE}&${query}`.slice(1));
+  expect(refusals).toEqual([]);
+  await showSettings(page, settings, timeout);
   const rgb = await centrePixel(page);
   const displayIsP3 = await page.evaluate(() => (window as unknown as { bubbleView: { displayIsP3: boolean } }).bubbleView.displayIsP3);
   return { rgb, displayIsP3 };
@@ -31,7 +34,7 @@ function expectClose(actual: number[], expected: number[], what: string): void {
 const THICKNESSES_NM = [150, 300, 450, 700, 1000] as const;
 
 for (const illuminant of ['D55', 'D65', 'D93'] as const) {
-  test(`table mode: the centre pixel is the reference sRGB colour under ${illuminant}`, async ({ page }) => {
+  test(`table mode: the centre pixel is the reference sRGB colour under ${illuminant}`, async ({ demoPage: page }) => {
     await centre(page, `thickness=${THICKNESSES_NM[0]}&illuminant=${illuminant}`);
     // The other films in the same page, as the panel sets them (the table rebuilt for each).
     for (const thicknessNm of THICKNESSES_NM) {
@@ -44,7 +47,7 @@ for (const illuminant of ['D55', 'D65', 'D93'] as const) {
   });
 }
 
-test('exact mode: the centre pixel is the reference sRGB colour', async ({ page }) => {
+test('exact mode: the centre pixel is the reference sRGB colour', async ({ demoPage: page }) => {
   // Exact mode integrates 90 bins per fragment (seconds per frame on a software GPU): a small view.
   await page.setViewportSize({ width: 160, height: 120 });
   const { rgb } = await centre(page, 'thickness=450&illuminant=D65&mode=exact');
@@ -55,7 +58,7 @@ test('exact mode: the centre pixel is the reference sRGB colour', async ({ page 
 
 // The table mode only: `exact` with a dispersive film (150 bins, Fresnel per bin, per pixel of the whole view) takes minutes on
 // a busy CPU rasteriser; the parity spec holds its numbers to the reference.
-test('a dispersive film (nFilm=water, a Cauchy film) shows the dispersive reference colour', async ({ page }) => {
+test('a dispersive film (nFilm=water, a Cauchy film) shows the dispersive reference colour', async ({ demoPage: page }) => {
   const films = [
     ['nFilm=water&thickness=1200', 'water', 1200],
     ['nFilm=cauchy:1.45,6000&thickness=700', { cauchy: [1.45, 6000, 0] }, 700],
@@ -69,7 +72,7 @@ test('a dispersive film (nFilm=water, a Cauchy film) shows the dispersive refere
   }
 });
 
-test('space=display-p3 shows the reference P3 colour, or falls back to sRGB where the browser cannot', async ({ page }) => {
+test('space=display-p3 shows the reference P3 colour, or falls back to sRGB where the browser cannot', async ({ demoPage: page }) => {
   const { rgb, displayIsP3 } = await centre(page, 'thickness=450&illuminant=D65&space=display-p3');
   const expected = reference8({ thicknessNm: 450 }, 'D65', displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB);
   console.log(

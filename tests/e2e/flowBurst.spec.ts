@@ -5,7 +5,8 @@
  * follows. The hole's radius is read from the area the film has lost, A = 2π(1 − cos r) for a cap
  * of angular radius r, as the twin's test does.
  */
-import { type Page, expect, test } from '@playwright/test';
+import type { Page } from '@playwright/test';
+import { expect, test } from './fixtures.ts';
 import { createFilmSimulation, punctureFilm, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
 import { FLOW_BURST_DIFFERING_CELLS, FLOW_BURST_RAY_TOL, RIM_SPEED_REL_TOL } from '../tolerances.ts';
 
@@ -17,11 +18,6 @@ const [EARLY, LATE] = [4, 24];
 
 type Run = Awaited<ReturnType<NonNullable<Window['runFlow']>>>;
 
-async function harness(page: Page): Promise<void> {
-  await page.goto('/tests/e2e/harness/parity.html');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
-}
-
 const prickedRun = (page: Page, steps: number): Promise<Run> =>
   page.evaluate(([p, n, at]) => window.runFlow!(p, n, null, at), [PRICKED, steps, TOP] as const);
 
@@ -32,8 +28,7 @@ function holeRadius(intact: ArrayLike<number>, area: Float64Array): number {
   return Math.acos(Math.max(-1, 1 - lost / (2 * Math.PI)));
 }
 
-test('a pricked GPU film bursts at √(2γ/(ρh)) × the rim-speed factor, and empties the cells the twin empties', async ({ page }) => {
-  await harness(page);
+test('a pricked GPU film bursts at √(2γ/(ρh)) × the rim-speed factor, and empties the cells the twin empties', async ({ parityPage: page }) => {
   const [early, late] = [await prickedRun(page, EARLY), await prickedRun(page, LATE)];
   const twin = createFilmSimulation(PRICKED);
   punctureFilm(twin, ...TOP);
@@ -69,8 +64,7 @@ test('a pricked GPU film bursts at √(2γ/(ρh)) × the rim-speed factor, and e
   expect(rayError).toBeLessThan(FLOW_BURST_RAY_TOL);
 });
 
-test('a GPU film thinned to the rupture thickness opens the holes the twin opens, where the twin opens them', async ({ page }) => {
-  await harness(page);
+test('a GPU film thinned to the rupture thickness opens the holes the twin opens, where the twin opens them', async ({ parityPage: page }) => {
   // Evaporation thins the whole film to the rupture thickness at once: many cells give way in one step.
   const thinning = { gridN: 6, thicknessNm: 40, ruptureThicknessNm: 39, evaporationNmS: 100 };
   const twin = createFilmSimulation(thinning);
@@ -88,8 +82,7 @@ test('a GPU film thinned to the rupture thickness opens the holes the twin opens
   expect(gpu.intact).toEqual([...twin.state.intact]);
 });
 
-test('with renew a new bubble follows the burst: every cell whole again, holding the film it started with', async ({ page }) => {
-  await harness(page);
+test('with renew a new bubble follows the burst: every cell whole again, holding the film it started with', async ({ parityPage: page }) => {
   // Full speed: the rims sweep the sphere in 5 steps; the film renews RENEW_DELAY_S (172 steps) later.
   const burst = { gridN: 16 };
   const steps = 185;

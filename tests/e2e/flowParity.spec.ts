@@ -1,4 +1,4 @@
-import { expect, test } from '@playwright/test';
+import { expect, test } from './fixtures.ts';
 import { createFilmSimulation, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
 import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
 import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
@@ -8,9 +8,7 @@ import { FLOW_GPU_FIELD_TOL, FLOW_GPU_RESIDUAL_MAX, FLOW_GPU_VELOCITY_TOL } from
 const PARAMETERS = { gridN: 16, seed: 7, windMps: 0.1, evaporationNmS: 5 };
 const STEPS = 200;
 
-test('the GPU film equals its float64 twin after 200 steps from the same seeded start', async ({ page }) => {
-  await page.goto('/tests/e2e/harness/parity.html');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
+test('the GPU film equals its float64 twin after 200 steps from the same seeded start', async ({ parityPage: page }) => {
   const gpu = await page.evaluate(([p, steps]) => window.runFlow!(p, steps), [PARAMETERS, STEPS] as const);
   const twin = createFilmSimulation(PARAMETERS);
   let twinResidual = 0;
@@ -41,9 +39,7 @@ test('the GPU film equals its float64 twin after 200 steps from the same seeded 
   expect(gpu.surfactantResidual).toBeLessThanOrEqual(FLOW_GPU_RESIDUAL_MAX);
 });
 
-test('air blown along +y at the equator moves the film there downwind: thicker ahead of the patch, thinner behind', async ({ page }) => {
-  await page.goto('/tests/e2e/harness/parity.html');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
+test('air blown along +y at the equator moves the film there downwind: thicker ahead of the patch, thinner behind', async ({ parityPage: page }) => {
   const still = { gridN: 16 };
   const steps = 20;
   const [calm, blown] = await page.evaluate(

@@ -1,5 +1,6 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
-import { expect, test, type Page } from '@playwright/test';
+import type { Page } from '@playwright/test';
+import { expect, test } from './fixtures.ts';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { POLARIZATIONS, type Polarization } from '../../src/physics/filmReflectance.ts';
 import type { FilmIndex } from '../../src/physics/filmIndex.ts';
@@ -136,8 +137,6 @@ async function render(
   mode: ParityMode,
   quality: FilmQuality = DEFAULT_FILM_QUALITY,
 ): Promise<number[][][]> {
-  await page.goto('/tests/e2e/harness/parity.html');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
   return page.evaluate(([g, m, q]) => window.renderFilmXyz!(g, m, q), [groups.map(toParity), mode, quality] as const);
 }
 
@@ -149,7 +148,7 @@ function keepFigures(name: string, figures: unknown): void {
 }
 
 for (const mode of MODES) {
-  test(`${mode} mode matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°`, async ({ page }) => {
+  test(`${mode} mode matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°`, async ({ parityPage: page }) => {
     test.slow(mode !== 'fourier', 'dispersive films by bins');
     const groups = mode === 'table' ? perTable(fixedDomain()) : fixedDomain();
     const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
@@ -160,7 +159,7 @@ for (const mode of MODES) {
     expect(figures.max, figures.worst).toBeLessThanOrEqual(MAX_DELTA_E00_FIXED);
   });
 
-  test(`${mode} mode stays finite and close on thick, grazing and TIR films`, async ({ page }) => {
+  test(`${mode} mode stays finite and close on thick, grazing and TIR films`, async ({ parityPage: page }) => {
     // The dispersive 20 µm films' tables sum 150 bins per texel over 1024 × 256 texels: over two minutes on a busy CPU rasteriser.
     test.slow(mode !== 'fourier', 'dispersive films by bins');
     const groups = mode === 'table' ? perTable(stressDomain()) : stressDomain();
@@ -224,7 +223,7 @@ function metalDomain(): { fixed: Group[]; stress: Group[]; tirEdge: Group[] } {
 
 for (const mode of MODES) {
   test(`${mode} mode on absorbing insides matches the reference within ΔE00 ${MAX_DELTA_E00_METAL_FIXED} (0–1000 nm, 0–85°) and ${MAX_DELTA_E00_METAL_STRESS} (to 90°, 10 µm)`, async ({
-    page,
+    parityPage: page,
   }) => {
     test.slow(mode !== 'fourier', 'tabulated media by bins');
     const { fixed, stress, tirEdge } = metalDomain();
@@ -270,7 +269,7 @@ function perTable(groups: readonly Group[]): Group[] {
 const constantFilms = (groups: readonly Group[]) => perTable(groups).filter((g) => typeof g.nFilm === 'number');
 
 test(`the half-float table matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°, and stays finite on the stress cases`, async ({
-  page,
+  parityPage: page,
 }) => {
   const half = { ...DEFAULT_FILM_QUALITY, tablePrecision: 'half' } as const;
   const fixed = constantFilms(fixedDomain());

@@ -1,5 +1,6 @@
 import { writeFileSync } from 'node:fs';
-import { expect, test, type Page } from '@playwright/test';
+import type { Page } from '@playwright/test';
+import { expect, test } from './fixtures.ts';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { POLARIZATIONS } from '../../src/physics/filmReflectance.ts';
 import { spectralBins, stackBinnedXyz } from '../../src/physics/binnedIntegration.ts';
@@ -54,13 +55,11 @@ function domainGroups(mode: ParityMode): ParityGroup[] {
 }
 
 async function render(page: Page, groups: readonly ParityGroup[], mode: ParityMode): Promise<number[][][]> {
-  await page.goto('/tests/e2e/harness/parity.html');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
   return page.evaluate(([g, m]) => window.renderFilmXyz!(g, m), [groups, mode] as const);
 }
 
 for (const mode of MODES) {
-  test(`${mode} mode: no NaN, Infinity, negative or over-white XYZ anywhere in the domain`, async ({ page }) => {
+  test(`${mode} mode: no NaN, Infinity, negative or over-white XYZ anywhere in the domain`, async ({ parityPage: page }) => {
     const groups = domainGroups(mode);
     const rendered = await render(page, groups, mode);
     const bad: string[] = [];
@@ -86,7 +85,7 @@ function binned64(g: ParityGroup, thicknessNm: number, angleDeg: number): Xyz {
 /** ΔE00 steps where float32 is called no longer good enough: the parity bound, and a just-noticeable difference. */
 const LIMITS = [MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS] as const;
 
-test('exact mode: where float32 stops being good enough, along thickness and along angle', async ({ page }) => {
+test('exact mode: where float32 stops being good enough, along thickness and along angle', async ({ parityPage: page }) => {
   const soap = { nOutside: 1, nFilm: 1.33, nInside: 1, illuminant: 'D65', polarization: 'unpolarized', normalization: 'white' } as const;
   const sweeps: { label: string; cases: [number, number][] }[] = [
     ...[0, 45, 80, 89].map((a) => ({

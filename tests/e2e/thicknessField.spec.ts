@@ -1,4 +1,4 @@
-import { expect, test } from '@playwright/test';
+import { expect, test } from './fixtures.ts';
 import { FIELDS } from '../../src/settings/filmSettings.ts';
 import { thicknessAt } from '../../src/fields/fields.ts';
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
@@ -36,9 +36,7 @@ const SETTINGS: FieldSettings[] = FIELDS.flatMap((field) =>
   ].map((s) => ({ ...DEFAULT_SETTINGS, field, ...s, simSpeed: 0, gridN: 12 })),
 );
 
-test("the thickness field's GLSL twin equals its TypeScript twin at points all over the bubble", async ({ page }) => {
-  await page.goto('/tests/e2e/harness/parity.html');
-  await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
+test("the thickness field's GLSL twin equals its TypeScript twin at points all over the bubble", async ({ parityPage: page }) => {
   const points = spherePoints(400);
   let worst = 0;
   for (const s of SETTINGS) {
