@@ -101,7 +101,9 @@ export async function checkedRenderer(browser: Browser): Promise<string> {
   const name = glBackendName();
   const renderer = await webgl2Renderer(browser);
   if (!renderer.includes(GL_BACKENDS[name].renderer)) {
-    throw new Error(`TFC_GL=${name} asks for a WebGL2 renderer with "${GL_BACKENDS[name].renderer}" in its name; Chromium gave "${renderer}".`);
+    throw new Error(
+      `TFC_GL=${name} asks for a WebGL2 renderer with "${GL_BACKENDS[name].renderer}" in its name; Chromium gave "${renderer}".`,
+    );
   }
   return `WebGL2 backend ${name}: ${renderer}`;
 }

@@ -1,7 +1,7 @@
 /** A run's results as the Markdown that `npm run bench` prints and docs/benchmarks.md holds. */
 import type { BenchResults } from './benchResults.ts';
 import { ELEMENT_BUNDLE } from './bundleSize.ts';
-import { PANEL_CHANGES } from './demoPage.ts';
+import { LONG_TASK_MS, PANEL_CHANGES } from './demoPage.ts';
 import { referenceSpeedMarkdown } from './referenceSpeed.ts';
 import { MATERIALS_ROW } from './rows.ts';
 import { rowsMarkdown } from './rowsMarkdown.ts';
@@ -29,12 +29,11 @@ function builtMarkdown(r: BenchResults): string {
       `| … swirl animating | ${d.animating.frames} / ${d.animating.tableBuilds} |`,
       `| … canvas hidden (display: none) | ${d.canvasHidden.frames} / ${d.canvasHidden.tableBuilds} |`,
       `| … page hidden | ${d.pageHidden.frames} / ${d.pageHidden.tableBuilds} |`,
-      `| frame interval while the swirl animates (${width}×${height}: the mean over a window, median of the windows) | ${d.frameMs.toFixed(0)} ms |`,
-      `| no change (the windows before the panel's inputs) → longest gap between frames shown, median / worst (× the frame interval) | ${d.unchangedLongestGap.median.toFixed(1)}× / ${d.unchangedLongestGap.max.toFixed(1)}× |`,
-      ...PANEL_CHANGES.map(
-        ([name], i) =>
-          `| panel: ${name} → longest gap between frames shown, upper median of ${2 * r.plan.demo.panelRepeats} / worst (× the frame interval); → shown in full, plots included | ${d.panelLongestGap[i]!.median.toFixed(1)}× / ${d.panelLongestGap[i]!.max.toFixed(1)}×; ${d.panelChangeFullMs[i]!.toFixed(0)} ms |`,
-      ),
+      ...PANEL_CHANGES.map(([name], i) => {
+        const c = d.panel[i]!;
+        return `| panel: ${name} there, back, there and back again → programs linked (first / back / second time); long tasks over ${LONG_TASK_MS} ms (count, longest); table texels drawn the first time; → shown in full, plots included (median) | ${c.programs.first} / ${c.programs.back} / ${c.programs.second}; ${c.longTasks.count}, ${c.longTasks.maxMs.toFixed(0)} ms; ${c.texels}; ${c.fullMs.toFixed(0)} ms |`;
+      }),
+      `| the GPU compiles in parallel (KHR_parallel_shader_compile) | ${d.parallelCompile ? 'yes' : 'no: every new program is compiled blocking, so a change that needs one is a long task'} |`,
     );
   return lines.join('\n');
 }

@@ -5,6 +5,8 @@
 import type { Browser, Page } from '@playwright/test';
 import { FRAME_MARKS } from '../../src/app/frameMarks.ts';
 import type { BenchPlan } from './benchPlan.ts';
+import { EN } from '../../src/i18n/en.ts';
+import { labelKey } from '../../src/settings/parameterRow.ts';
 import { openPage } from './openPage.ts';
 
 type DemoPlan = BenchPlan['demo'];
@@ -19,48 +21,77 @@ export interface DemoPageFigures {
   readonly animating: FrameCounts;
   readonly canvasHidden: FrameCounts;
   readonly pageHidden: FrameCounts;
-  /** per change of PANEL_CHANGES: the longest gap between frames shown after the input, in frame intervals before it (median of the changes there and back, and the worst) */
-  readonly panelLongestGap: readonly { readonly median: number; readonly max: number }[];
-  /** the same, in the windows before the inputs (no change): how unevenly the page's own frames come (median of all the changes' windows, and the worst) */
-  readonly unchangedLongestGap: { readonly median: number; readonly max: number };
-  /** … input to the first frame shown in full, plots included, median ms */
-  readonly panelChangeFullMs: readonly number[];
-  /** the interval between frames shown while the swirl animates (the median of the changes’ windows before the input) */
-  readonly frameMs: number;
+  /** per change of PANEL_CHANGES, what it cost the page, counts that do not depend on the rasteriser's speed */
+  readonly panel: readonly PanelChangeFigures[];
+  /** whether the GPU compiles in parallel (KHR_parallel_shader_compile): where it does, a change must leave no long task */
+  readonly parallelCompile: boolean;
 }
 
-/** Panel changes as a user makes them: [controller name, value, value back]. */
-export const PANEL_CHANGES = [
-  ['n film', '1.4', '1.33'],
-  ['film material', 'water', 'constant'],
-  // a change of the inside medium: air (n 1) → gold (a tabulated metal: the table's dispersive bins, an opaque inside) and back
-  ['inside medium', 'Au', 'constant'],
-  ['illuminant', 'D93', 'D65'],
-  ['polarization', 's', 'unpolarized'],
-  ['range (nm)', '1200', '800'],
-] as const;
+/** One panel change made there, back, there again and back again in a still page. */
+export interface PanelChangeFigures {
+  /** programs linked by the first change there, by the first way back (to settings already shown), and by the second change there and back */
+  readonly programs: { readonly first: number; readonly back: number; readonly second: number };
+  /** the main thread's long tasks (over 50 ms) from the input to a frame after the first one in full, over all four: how many, and the longest (ms, 0 for none) */
+  readonly longTasks: { readonly count: number; readonly maxMs: number };
+  /** the table's texels drawn by the first change there (coarse table and bands) */
+  readonly texels: number;
+  /** input → the first frame shown in full, plots included, median of the four, ms */
+  readonly fullMs: number;
+}
+
+/** The English panel's name of a setting's controller. */
+const named = (key: string): string => EN[labelKey(key)];
+
+/** Panel changes as a user makes them: [what, the controller's name in the English panel, value, value back]. */
+export const PANEL_CHANGES: readonly (readonly [string, string, string, string])[] = [
+  ['film medium', EN['panel.filmMaterial'], 'water', 'constant'],
+  // air (n 1) → gold (a tabulated metal: the table's dispersive bins, an opaque inside) and back
+  ['inside medium', EN['panel.insideMedium'], 'Au', 'constant'],
+  ['n film', named('nFilm'), '1.4', '1.33'],
+  ['light', named('illuminant'), 'D93', 'D65'],
+  ['polarisation', named('polarization'), 's', 'unpolarized'],
+  ['range', named('thicknessRangeNm'), '1200', '800'],
+  ['field', named('field'), 'drainage', 'swirl'],
+  ['evaluation', named('mode'), 'fourier', 'table'],
+];
+
+/** A long task, as the Long Tasks API counts one: a task of the main thread over 50 ms. */
+export const LONG_TASK_MS = 50;
 
 /**
- * Each change through the lil-gui panel (a number box's input event, or a list's change event),
- * there and back `panelRepeats` times, as a user sees it: the animation frames shown (requestAnimationFrame
- * timestamps) from `windowMs` before the input to `windowMs` after the frame that shows it in full; the longest
- * gap between two of them after the input, against the frame interval before it; and the time from
- * the input to the first frame shown in full with the plots drawn. The frame interval is the mean
- * over the window, the time a frame takes at the page's frame rate: where the GPU is slow (a
- * software one), frames come unevenly, often two at once and then a long gap, and the median of a
- * few gaps is then either.
+ * From before any script runs: a count of the programs the page links (every WebGL2 context's
+ * linkProgram), and every long task the main thread runs (PerformanceObserver, `longtask`).
  */
-async function panelChanges(
-  page: Page,
-  how: DemoPlan,
-): Promise<Pick<DemoPageFigures, 'panelLongestGap' | 'unchangedLongestGap' | 'panelChangeFullMs' | 'frameMs'>> {
+const COUNTERS_SCRIPT = `
+window.__name = (f) => f;
+window.programsLinked = 0;
+const link = WebGL2RenderingContext.prototype.linkProgram;
+WebGL2RenderingContext.prototype.linkProgram = function (program) { window.programsLinked++; return link.call(this, program); };
+window.longTasks = [];
+new PerformanceObserver((list) => { for (const e of list.getEntries()) window.longTasks.push([e.startTime, e.duration]); }).observe({ type: 'longtask', buffered: true });
+`;
+
+/**
+ * Each change through the lil-gui panel (a number box's input event, or a list's change event) in
+ * a still page: there, back, there again and back again, each waited for until a frame is shown in
+ * full with the plots drawn and `windowMs` more have passed; what each cost in programs linked,
+ * long tasks and texels.
+ */
+async function panelChanges(page: Page, how: DemoPlan): Promise<DemoPageFigures['panel']> {
   return page.evaluate(
-    async ([changes, repeats, windowMs]) => {
-      const view = (window as unknown as { bubbleView: { coarse: boolean } }).bubbleView;
+    async ([changes, windowMs, longTaskMs]) => {
+      type Counters = { programsLinked: number; longTasks: [number, number][] };
+      const w = window as unknown as Counters & { bubbleView: { coarse: boolean; table: { texelsDrawn: number } } };
+      const view = w.bubbleView;
       const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
       const wait = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
-      const controller = (name: string) =>
-        [...document.querySelectorAll<HTMLElement>('.lil-controller')].find((c) => c.querySelector('.lil-name')!.textContent === name)!;
+      const controller = (name: string) => {
+        const found = [...document.querySelectorAll<HTMLElement>('.lil-controller')].find(
+          (c) => c.querySelector('.lil-name')!.textContent === name,
+        );
+        if (!found) throw new Error(`the panel has no controller named ${name}`);
+        return found;
+      };
       const set = (name: string, value: string) => {
         const c = controller(name);
         const select = c.querySelector('select');
@@ -73,54 +104,37 @@ async function panelChanges(
           input.dispatchEvent(new Event('input', { bubbles: true }));
         }
       };
-      /** [longest gap after the input / mean gap before, ms to the first frame in full, the mean gap, the longest gap before / the mean]. */
-      const measure = async (name: string, value: string): Promise<[number, number, number, number]> => {
-        const stamps: number[] = [];
-        let running = true;
-        let inputAt = Infinity;
+      /** [programs linked, long tasks' durations, texels drawn, ms to the first frame shown in full]. */
+      const measure = async (name: string, value: string): Promise<[number, number[], number, number]> => {
+        const programs = w.programsLinked;
+        const texels = view.table.texelsDrawn;
+        const inputAt = performance.now();
         let fullAt = Infinity;
         const tick = (t: number) => {
-          stamps.push(t);
-          if (t > inputAt && !view.coarse && fullAt === Infinity) fullAt = t;
-          if (running) requestAnimationFrame(tick);
+          if (t > inputAt && !view.coarse) fullAt = t;
+          else requestAnimationFrame(tick);
         };
-        requestAnimationFrame(tick);
-        // At least three frames before the input and two after the full one, however slow the frames.
-        await wait(windowMs);
-        while (stamps.length < 3) await wait(50);
-        inputAt = performance.now();
         set(name, value);
-        while (fullAt === Infinity) await wait(50);
+        requestAnimationFrame(tick);
+        while (fullAt === Infinity || !document.querySelector('.tfb-plots[data-probe]')) await wait(20);
         await wait(windowMs);
-        while (stamps.filter((t) => t > fullAt).length < 2) await wait(50);
-        running = false;
-        const before = stamps.filter((t) => t < inputAt);
-        const frame = (before.at(-1)! - before[0]!) / (before.length - 1);
-        const after = stamps.slice(before.length - 1);
-        const gapsAfter = after.slice(1).map((t, i) => t - after[i]!);
-        const gapsBefore = before.slice(1).map((t, i) => t - before[i]!);
-        return [Math.max(...gapsAfter) / frame, fullAt - inputAt, frame, Math.max(...gapsBefore) / frame];
+        const tasks = w.longTasks.filter(([start, ms]) => start + ms > inputAt && ms > longTaskMs).map(([, ms]) => ms);
+        return [w.programsLinked - programs, tasks, view.table.texelsDrawn - texels, fullAt - inputAt];
       };
-      const panelLongestGap: { median: number; max: number }[] = [];
-      const panelChangeFullMs: number[] = [];
-      const frames: number[] = [];
-      const unchanged: number[] = [];
-      for (const [name, value, back] of changes) {
-        const runs: [number, number, number, number][] = [];
-        for (let i = 0; i < repeats; i++) runs.push(await measure(name, value), await measure(name, back));
-        panelLongestGap.push({ median: median(runs.map((r) => r[0])), max: Math.max(...runs.map((r) => r[0])) });
-        panelChangeFullMs.push(median(runs.map((r) => r[1])));
-        frames.push(...runs.map((r) => r[2]));
-        unchanged.push(...runs.map((r) => r[3]));
+      const figures = [];
+      for (const [, name, value, back] of changes) {
+        const runs = [await measure(name, value), await measure(name, back), await measure(name, value), await measure(name, back)];
+        const tasks = runs.flatMap((r) => r[1]);
+        figures.push({
+          programs: { first: runs[0]![0], back: runs[1]![0], second: runs[2]![0] + runs[3]![0] },
+          longTasks: { count: tasks.length, maxMs: Math.max(0, ...tasks) },
+          texels: runs[0]![2],
+          fullMs: median(runs.map((r) => r[3])),
+        });
       }
-      return {
-        panelLongestGap,
-        unchangedLongestGap: { median: median(unchanged), max: Math.max(...unchanged) },
-        panelChangeFullMs,
-        frameMs: median(frames),
-      };
+      return figures;
     },
-    [PANEL_CHANGES, how.panelRepeats, how.windowMs] as const,
+    [PANEL_CHANGES, how.windowMs, LONG_TASK_MS] as const,
   );
 }
 export interface FrameCounts {
@@ -155,8 +169,7 @@ async function open(
   // tsx names the functions it compiles with a helper (__name) that pages evaluated from here lack.
   // From before any script runs, the timestamp of every animation frame shown.
   await page.addInitScript({
-    content:
-      'window.__name = (f) => f; window.shownFrames = []; (function tick(t) { window.shownFrames.push(t); requestAnimationFrame(tick); })(0);',
+    content: `${COUNTERS_SCRIPT}\nwindow.shownFrames = []; (function tick(t) { window.shownFrames.push(t); requestAnimationFrame(tick); })(0);`,
   });
   await page.goto(url);
   await page.waitForSelector('body[data-frames="ready"]');
@@ -175,10 +188,16 @@ async function open(
 export async function demoPageFigures(browser: Browser, baseUrl: string, how: DemoPlan): Promise<DemoPageFigures> {
   const still = await open(browser, `${baseUrl}/?animate=0`, how);
   const stillCounts = await countOneSecond(still.page);
+  const parallelCompile = await still.page.evaluate(() =>
+    (window as unknown as { bubbleView: { renderer: { extensions: { has(name: string): boolean } } } }).bubbleView.renderer.extensions.has(
+      'KHR_parallel_shader_compile',
+    ),
+  );
+  await still.page.locator('.lil-gui.lil-root > .lil-title').click(); // the panel starts closed on a small view
+  const panel = await panelChanges(still.page, how);
   await still.page.close();
   const { page, firstFrameMs, firstCompleteFrameMs } = await open(browser, `${baseUrl}/`, how);
   const animating = await countOneSecond(page);
-  const panel = await panelChanges(page, how);
   await page.evaluate(() => (document.querySelector<HTMLCanvasElement>('#bubble')!.style.display = 'none'));
   const canvasHidden = await countOneSecond(page);
   await page.evaluate(() => {
@@ -188,13 +207,5 @@ export async function demoPageFigures(browser: Browser, baseUrl: string, how: De
   });
   const pageHidden = await countOneSecond(page);
   await page.close();
-  return {
-    firstFrameMs,
-    firstCompleteFrameMs,
-    still: stillCounts,
-    animating,
-    canvasHidden,
-    pageHidden,
-    ...panel,
-  };
+  return { firstFrameMs, firstCompleteFrameMs, still: stillCounts, animating, canvasHidden, pageHidden, panel, parallelCompile };
 }

@@ -145,6 +145,8 @@ export class FilmTable {
   /** Milliseconds the last full build at once took (synced with a 1-pixel read), and how many full tables there were: for the benchmark. */
   lastBuildMs = 0;
   builds = 0;
+  /** Texels the pass has drawn since the table was made, every build and band counted: what a change costs, whatever the GPU. */
+  texelsDrawn = 0;
 
   constructor(private readonly quality: FilmQuality) {
     this.rows = { texture: airySeriesRowsTexture(quality.table), dispersive: false };
@@ -326,6 +328,7 @@ export class FilmTable {
     target.scissorTest = true;
     time(() => {
       for (const [from, to] of columns ?? [[0, grid.width]]) {
+        this.texelsDrawn += (to - from) * 2 * grid.rows;
         target.scissor.set(from, 0, to - from, 2 * grid.rows);
         renderer.setRenderTarget(target); // three takes the target's scissor as it binds it
         this.fullscreen.render(renderer, material);

@@ -61,7 +61,10 @@ export async function demoPageReset({ page, neutral }: SharedDemo): Promise<void
 }
 
 export const test = base.extend<{ parityPage: Page; demoPage: Page }, { sharedParity: Page; sharedDemo: SharedDemo }>({
-  sharedParity: [({ browser }, use) => sharedPage(browser, '/tests/e2e/harness/parity.html', ['data-ready', 'yes']).then(use), { scope: 'worker' }],
+  sharedParity: [
+    ({ browser }, use) => sharedPage(browser, '/tests/e2e/harness/parity.html', ['data-ready', 'yes']).then(use),
+    { scope: 'worker' },
+  ],
   sharedDemo: [
     async ({ browser }, use) => {
       const page = await sharedPage(browser, NEUTRAL_VIEW, ['data-frames', 'ready']);
@@ -76,5 +79,11 @@ export const test = base.extend<{ parityPage: Page; demoPage: Page }, { sharedPa
     await use(sharedDemo.page);
   },
 });
+
+/**
+ * The tag of the tests CI also runs on the backend it does not choose (`npm run test:e2e:other-backend`,
+ * which greps for it): the table, the flow, the material and a lost context, so that neither backend rots.
+ */
+export const BOTH_BACKENDS = '@both-backends';
 
 export { expect };

@@ -28,7 +28,9 @@ function holeRadius(intact: ArrayLike<number>, area: Float64Array): number {
   return Math.acos(Math.max(-1, 1 - lost / (2 * Math.PI)));
 }
 
-test('a pricked GPU film bursts at √(2γ/(ρh)) × the rim-speed factor, and empties the cells the twin empties', async ({ parityPage: page }) => {
+test('a pricked GPU film bursts at √(2γ/(ρh)) × the rim-speed factor, and empties the cells the twin empties', async ({
+  parityPage: page,
+}) => {
   const [early, late] = [await prickedRun(page, EARLY), await prickedRun(page, LATE)];
   const twin = createFilmSimulation(PRICKED);
   punctureFilm(twin, ...TOP);
@@ -64,7 +66,9 @@ test('a pricked GPU film bursts at √(2γ/(ρh)) × the rim-speed factor, and e
   expect(rayError).toBeLessThan(FLOW_BURST_RAY_TOL);
 });
 
-test('a GPU film thinned to the rupture thickness opens the holes the twin opens, where the twin opens them', async ({ parityPage: page }) => {
+test('a GPU film thinned to the rupture thickness opens the holes the twin opens, where the twin opens them', async ({
+  parityPage: page,
+}) => {
   // Evaporation thins the whole film to the rupture thickness at once: many cells give way in one step.
   const thinning = { gridN: 6, thicknessNm: 40, ruptureThicknessNm: 39, evaporationNmS: 100 };
   const twin = createFilmSimulation(thinning);
@@ -82,7 +86,9 @@ test('a GPU film thinned to the rupture thickness opens the holes the twin opens
   expect(gpu.intact).toEqual([...twin.state.intact]);
 });
 
-test('with renew a new bubble follows the burst: every cell whole again, holding the film it started with', async ({ parityPage: page }) => {
+test('with renew a new bubble follows the burst: every cell whole again, holding the film it started with', async ({
+  parityPage: page,
+}) => {
   // Full speed: the rims sweep the sphere in 5 steps; the film renews RENEW_DELAY_S (172 steps) later.
   const burst = { gridN: 16 };
   const steps = 185;

@@ -74,7 +74,14 @@ test('a frozen flowing film draws nothing after its frame', async ({ page }) => 
   await load(page, FROZEN);
   const frames = () => page.evaluate(() => (window as unknown as Demo).bubbleView.renderer.info.render.frame);
   const before = await frames();
-  await page.evaluate(() => new Promise((resolve) => setTimeout(resolve, 500)));
+  // Ten animation frames of the page's own: an app still drawing would have drawn in each (it draws in
+  // requestAnimationFrame), however slow the machine, and three counts every render.
+  const animationFrames = await page.evaluate(async () => {
+    let count = 0;
+    while (count < 10) await new Promise((resolve) => requestAnimationFrame(() => resolve(count++)));
+    return count;
+  });
+  expect(animationFrames).toBe(10);
   expect(await frames()).toBe(before);
 });
 

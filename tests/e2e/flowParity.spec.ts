@@ -1,4 +1,4 @@
-import { expect, test } from './fixtures.ts';
+import { BOTH_BACKENDS, expect, test } from './fixtures.ts';
 import { createFilmSimulation, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
 import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
 import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
@@ -8,38 +8,44 @@ import { FLOW_GPU_FIELD_TOL, FLOW_GPU_RESIDUAL_MAX, FLOW_GPU_VELOCITY_TOL } from
 const PARAMETERS = { gridN: 16, seed: 7, windMps: 0.1, evaporationNmS: 5 };
 const STEPS = 200;
 
-test('the GPU film equals its float64 twin after 200 steps from the same seeded start', async ({ parityPage: page }) => {
-  const gpu = await page.evaluate(([p, steps]) => window.runFlow!(p, steps), [PARAMETERS, STEPS] as const);
-  const twin = createFilmSimulation(PARAMETERS);
-  let twinResidual = 0;
-  for (let k = 0; k < STEPS; k++) {
-    stepFilm(twin);
-    twinResidual = twin.state.surfactantResidual;
-  }
-  const worst = (a: readonly number[], b: Float64Array) => a.reduce((w, v, i) => Math.max(w, Math.abs(v - b[i]!)), 0);
-  const etaError = worst(gpu.eta, twin.state.eta);
-  const gammaError = worst(gpu.gamma, twin.state.gamma);
-  const velocityError = worst(gpu.edgeVelocity, twin.state.edgeVelocity);
-  const speed = twin.state.edgeVelocity.reduce((w, v) => Math.max(w, Math.abs(v)), 0);
-  console.log(
-    `flow GPU vs twin, N ${PARAMETERS.gridN}, ${STEPS} steps: η ${etaError.toExponential(2)}, Γ ${gammaError.toExponential(2)}, ` +
-      `u ${velocityError.toExponential(2)} of ${speed.toExponential(2)}; residual GPU ${gpu.surfactantResidual.toExponential(2)}, twin ${twinResidual.toExponential(2)}`,
-  );
-  expect(gpu.steps).toBe(STEPS);
-  // Nothing ruptured in either (a burst is flowBurst.spec.ts's).
-  expect(twin.state.holes).toEqual([]);
-  expect(gpu.intact.every((v) => v === 1)).toBe(true);
-  expect(gpu.holes).toEqual([]);
-  expect(speed, 'the film moves').toBeGreaterThan(0.01);
-  expect(etaError).toBeLessThanOrEqual(FLOW_GPU_FIELD_TOL);
-  expect(gammaError).toBeLessThanOrEqual(FLOW_GPU_FIELD_TOL);
-  expect(velocityError).toBeLessThanOrEqual(FLOW_GPU_VELOCITY_TOL);
-  expect(gpu.eta.every((v) => v >= 0)).toBe(true);
-  expect(gpu.surfactantResidual).toBeGreaterThan(0);
-  expect(gpu.surfactantResidual).toBeLessThanOrEqual(FLOW_GPU_RESIDUAL_MAX);
-});
+test(
+  'the GPU film equals its float64 twin after 200 steps from the same seeded start',
+  { tag: BOTH_BACKENDS },
+  async ({ parityPage: page }) => {
+    const gpu = await page.evaluate(([p, steps]) => window.runFlow!(p, steps), [PARAMETERS, STEPS] as const);
+    const twin = createFilmSimulation(PARAMETERS);
+    let twinResidual = 0;
+    for (let k = 0; k < STEPS; k++) {
+      stepFilm(twin);
+      twinResidual = twin.state.surfactantResidual;
+    }
+    const worst = (a: readonly number[], b: Float64Array) => a.reduce((w, v, i) => Math.max(w, Math.abs(v - b[i]!)), 0);
+    const etaError = worst(gpu.eta, twin.state.eta);
+    const gammaError = worst(gpu.gamma, twin.state.gamma);
+    const velocityError = worst(gpu.edgeVelocity, twin.state.edgeVelocity);
+    const speed = twin.state.edgeVelocity.reduce((w, v) => Math.max(w, Math.abs(v)), 0);
+    console.log(
+      `flow GPU vs twin, N ${PARAMETERS.gridN}, ${STEPS} steps: η ${etaError.toExponential(2)}, Γ ${gammaError.toExponential(2)}, ` +
+        `u ${velocityError.toExponential(2)} of ${speed.toExponential(2)}; residual GPU ${gpu.surfactantResidual.toExponential(2)}, twin ${twinResidual.toExponential(2)}`,
+    );
+    expect(gpu.steps).toBe(STEPS);
+    // Nothing ruptured in either (a burst is flowBurst.spec.ts's).
+    expect(twin.state.holes).toEqual([]);
+    expect(gpu.intact.every((v) => v === 1)).toBe(true);
+    expect(gpu.holes).toEqual([]);
+    expect(speed, 'the film moves').toBeGreaterThan(0.01);
+    expect(etaError).toBeLessThanOrEqual(FLOW_GPU_FIELD_TOL);
+    expect(gammaError).toBeLessThanOrEqual(FLOW_GPU_FIELD_TOL);
+    expect(velocityError).toBeLessThanOrEqual(FLOW_GPU_VELOCITY_TOL);
+    expect(gpu.eta.every((v) => v >= 0)).toBe(true);
+    expect(gpu.surfactantResidual).toBeGreaterThan(0);
+    expect(gpu.surfactantResidual).toBeLessThanOrEqual(FLOW_GPU_RESIDUAL_MAX);
+  },
+);
 
-test('air blown along +y at the equator moves the film there downwind: thicker ahead of the patch, thinner behind', async ({ parityPage: page }) => {
+test('air blown along +y at the equator moves the film there downwind: thicker ahead of the patch, thinner behind', async ({
+  parityPage: page,
+}) => {
   const still = { gridN: 16 };
   const steps = 20;
   const [calm, blown] = await page.evaluate(

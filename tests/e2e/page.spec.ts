@@ -5,15 +5,13 @@ import { watchProblems } from './pageWatch.ts';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 import { DISPERSIVE_FIRST_FRAME_MS } from './waits.ts';
 
-test('the demo page loads with its title and a WebGL2 context', async ({ page }) => {
-  await page.goto('/');
-  await expect(page).toHaveTitle(/thin-film-color/);
-  await expect(page.locator('body')).toHaveAttribute('data-webgl2', 'yes');
-});
-
-test('a bad URL parameter shows a message naming it and its range, uses the default, and logs no error', async ({ page }) => {
+test('the demo page loads with its title and WebGL2; a bad URL parameter shows a message naming it and its range, uses the default, and logs no error', async ({
+  page,
+}) => {
   const problems = watchProblems(page);
   await page.goto('/?nFilm=<img src=x onerror=alert(1)>&field=uniform&animate=0&env=none');
+  await expect(page).toHaveTitle(/thin-film-color/);
+  await expect(page.locator('body')).toHaveAttribute('data-webgl2', 'yes');
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
   await expect(page.locator('#messages')).toContainText('nFilm');
   await expect(page.locator('#messages')).toContainText('[1, 4]');

@@ -53,7 +53,8 @@ test('the shared parity page gives the same numbers for the same cases, whatever
       [1200, 0.5],
     ],
   });
-  const render = (g: ParityGroup, mode: 'table' | 'exact') => page.evaluate(([gs, m]) => window.renderFilmXyz!(gs, m), [[g], mode] as const);
+  const render = (g: ParityGroup, mode: 'table' | 'exact') =>
+    page.evaluate(([gs, m]) => window.renderFilmXyz!(gs, m), [[g], mode] as const);
   const first = await render(group(1.33, 's'), 'table');
   await render(group(2.1, 'p'), 'exact');
   await render(group(1.5, 'p'), 'table');
