@@ -12,7 +12,7 @@ import { chromium } from '@playwright/test';
 import { preview } from 'vite';
 import { FRAME_MARKS } from '../src/app/frameMarks.ts';
 import { MODES } from '../src/settings/filmSettings.ts';
-import { chromiumLaunchOptions } from './chromium.ts';
+import { checkedRenderer, chromiumLaunchOptions } from './chromium.ts';
 
 /** The port of this script's own server (the suites use 5180, the benchmark 5192–5193). */
 const PORT = 5194;
@@ -38,6 +38,7 @@ const server = await timed('static server start (`vite preview`)', () =>
   preview({ mode: 'e2e', logLevel: 'silent', preview: { port: PORT, strictPort: true, host: '127.0.0.1' } }),
 );
 const browser = await timed('Chromium launch', () => chromium.launch(chromiumLaunchOptions()));
+const webgl = await checkedRenderer(browser);
 try {
   for (const mode of MODES) {
     const page = await browser.newPage({ viewport: { width: 640, height: 480 } });
@@ -81,6 +82,8 @@ const perFile = new Map<string, number>();
 for (const t of tests) perFile.set(t.file, (perFile.get(t.file) ?? 0) + t.ms);
 const s = (ms: number) => `${(ms / 1000).toFixed(1)} s`;
 
+const metadata = (report as { config?: { metadata?: { glBackend?: string } } }).config?.metadata;
+console.log(`Fixed costs on ${webgl}; the tests' report from the backend ${metadata?.glBackend ?? 'it does not name'}.\n`);
 console.log(`| fixed cost | time |\n|---|---|\n${rows.map(([what, ms]) => `| ${what} | ${s(ms)} |`).join('\n')}\n`);
 console.log(
   `| slowest tests (of ${tests.length}; the run took ${s(report.stats.duration)}, the tests ${s(tests.reduce((a, t) => a + t.ms, 0))} in all) | time |\n|---|---|\n${[

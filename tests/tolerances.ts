@@ -15,8 +15,17 @@ export const EQUAL_ENERGY_TOLERANCE = 2e-3;
 /** Eq (19) is printed to 4 decimals, so its primaries match IEC 61966-2-1's to ~1e-3. */
 export const PRINTED_MATRIX_XY_TOL = 2e-3;
 
+/** Eq (19)'s printed matrix takes D65 to R = G = B = 1 only as far as its print: two entries 3e-4 off IEC's, the rest rounded to 4 decimals (4.8e-4 measured). */
+export const PRINTED_MATRIX_WHITE_TOL = 5e-4;
+
+/** IEC 61966-2-1 prints its knee rounded: 12.92 × 0.0031308 = 0.040449936, 6.4e-8 short of 0.04045. */
+export const SRGB_KNEE_TOL = 1e-7;
+
 /** The series is exact; what is left is F's tabulation (10 nm of path) and the truncation bound 1e-5. */
 export const SERIES_DE00 = 0.1;
+
+/** F_j(0) is the trapezoid rule over 3740 equal steps of 1/λ of the weights the white W_j integrates exactly (linear between 1 nm knots): 1.1e-7 off, measured. */
+export const SPECTRAL_TRANSFORM_WHITE_TOL = 3e-7;
 
 /** An identity of eqs (13)–(14): the Fourier series of R(φ) summed to convergence. */
 export const IDENTITY_TOL = 1e-12;
@@ -24,8 +33,22 @@ export const IDENTITY_TOL = 1e-12;
 /** Analytically equal values computed two ways differ by rounding of O(1) terms only. */
 export const ALGEBRAIC_TOL = 1e-12;
 
+/**
+ * Values equal in exact arithmetic, of order 1 (tens at most) or compared as a ratio, computed two
+ * ways without logarithms of small values (a closed form, a round trip, a rotation, a sum over λ or
+ * over the cells): rounding near 1e-15, 3.4e-15 the most measured. ALGEBRAIC_TOL leaves room for
+ * more (the logarithmic mean of 1e-6 and 1 is 4e-13 off its definition).
+ */
+export const ROUNDING_TOL = 5e-14;
+
+/** A formula of a few operations on values of order 1, written out again here or checked by a two-term identity: two units of ε, their rounding. */
+export const FEW_OPERATIONS_TOL = 2 * Number.EPSILON;
+
 /** Published chromaticities are given to 4–5 decimals: one unit of the fourth. */
 export const CHROMATICITY_TOL = 1e-4;
+
+/** A value printed to `decimals` decimal places (a published table, a worked example, a readout) stands for any within half a unit of its last. */
+export const printedValueTol = (decimals: number): number => 0.5 * 10 ** -decimals;
 
 /** The convergence bound for default sampling against a 0.01 nm step (docs/physics.md#sampling). */
 export const CONVERGENCE_DE00 = 0.1;
@@ -129,6 +152,9 @@ export const DISPERSIVE_BINNED_DE00 = 0.1;
  */
 export const BEAM_SUM_TOL = 1e-9;
 
+/** A 1 nm soap film with no phase flip at its top against its d → 0 limit (2 r_ab)²: its phase φ = 4π n_b d/λ ≈ 0.03 takes r_ab² φ² ≈ 2e-5 off. */
+export const THIN_FILM_LIMIT_TOL = 5e-5;
+
 /**
  * Eqs (13)–(14) with complex indices against a characteristic-matrix computation: the same
  * physics by other algebra (matrix products, sin/cos of a complex phase), so rounding only
@@ -211,9 +237,15 @@ export const FLOW_GPU_RESIDUAL_MAX = 1e-3;
 export const FLOW_BURST_RAY_TOL = 1e-4;
 export const FLOW_BURST_DIFFERING_CELLS = 4;
 
+/** The halo's float32 tap weights, |w| summing to at most 3 (g₁ + g₂ − c), each rounded by 2⁻²⁴ of itself: they sum to 1 within 1.8e-7 (6e-8 measured). */
+export const HALO_WEIGHT_SUM_TOL = 2e-7;
+
 /**
  * A bare metal from its base colour (artistMetal.ts) against that colour, ΔE00: its knots' r are
  * solved for the colour exactly; what is left is the lerp of n, k between its 5 nm knots (0.09 at
  * most on gold, copper, silver and iron).
  */
 export const ARTIST_METAL_BARE_DE00 = 0.2;
+
+/** The equirectangular seam probed 1e-9 of a turn either side: 1.6e-8 of a texel, where the two texels differ by 15, is 2.4e-7 from their mean. */
+export const EQUIRECT_SEAM_TOL = 3e-7;

@@ -7,7 +7,7 @@ import { fileURLToPath } from 'node:url';
 import { type Browser, type Page, chromium } from '@playwright/test';
 import { createServer } from 'vite';
 import type { RenderView } from '../../src/cli/renderOptions.ts';
-import type { ChromiumLaunchOptions } from '../chromium.ts';
+import { type ChromiumLaunchOptions, checkedRenderer } from '../chromium.ts';
 import { FRAME_DRAWN, PANEL, PLOT_PANEL, PLOTS, PLOTS_BOX, PLOTS_DRAWN } from './demoPage.ts';
 
 /** The repository, whose index.html is the demo. */
@@ -50,6 +50,8 @@ export async function renderViews(
     const base = `http://127.0.0.1:${address.port}`;
     const browser = await chromium.launch(launch);
     try {
+      // A picture from another backend than TFC_GL names, or a 2-D canvas, would not be the one asked for.
+      await checkedRenderer(browser);
       for (const view of views) take(view, await renderView(browser, base, view));
     } finally {
       await browser.close();

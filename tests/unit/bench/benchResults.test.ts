@@ -24,7 +24,7 @@ const row = (name: string, more: Partial<MeasuredRow> = {}): MeasuredRow => ({
 });
 const results = (rows: MeasuredRow[], more: Partial<BenchResults> = {}): BenchResults => ({
   plan: FULL_PLAN,
-  machine: { node: 'v20', cpus: 2, cpuModel: 'cpu', load: [1, 1] },
+  machine: { node: 'v20', cpus: 2, cpuModel: 'cpu', load: [1, 1], webgl: 'WebGL2 backend llvmpipe: llvmpipe' },
   reference: {
     reflectancePerSecondSharedOptics: 1e7,
     reflectancePerSecondFullCall: 5e5,

@@ -11,7 +11,7 @@ import {
   filmTransmittance,
 } from '../../../src/physics/filmReflectance.ts';
 import { ParameterError } from '../../../src/physics/validate.ts';
-import { ALGEBRAIC_TOL } from '../../tolerances.ts';
+import { ALGEBRAIC_TOL, ROUNDING_TOL } from '../../tolerances.ts';
 
 /** Indices chosen to make every ordering: film above, below and between its media; TIR and frustrated TIR. */
 const INDICES = [1, 1.33, 1.5, 2.5, 4] as const;
@@ -70,6 +70,25 @@ describe('exact values at the edges of the domain', () => {
         expect(Math.abs(filmReflectance(LAMBDA_NM, s) - unpolarized)).toBeLessThan(ALGEBRAIC_TOL);
       }
     }
+  });
+
+  it('total internal reflection behind an evanescent film (n_a sin θ above n_b and n_c): R = 1, T = 0 at every thickness', () => {
+    // No wave propagates past the outside medium and none is absorbed, so all the light comes back;
+    // in the physical modes only, as the paper's averaged amplitudes do not conserve energy.
+    const evanescent = (s: FilmStack) => s.nOutside * Math.sin((s.angleDeg * Math.PI) / 180) > Math.max(s.nFilm, s.nInside);
+    for (const thicknessNm of [0, 250, 20_000]) {
+      for (const angleDeg of [30, 60, 85]) {
+        for (const s of [...stacks(thicknessNm, angleDeg)].filter(evanescent)) {
+          for (const pol of ['s', 'p', 'unpolarized'] as const) {
+            expect(Math.abs(filmReflectance(LAMBDA_NM, s, pol) - 1), `${JSON.stringify(s)} ${pol}`).toBeLessThan(ROUNDING_TOL);
+            expect(filmTransmittance(LAMBDA_NM, s, pol)).toBe(0);
+          }
+        }
+      }
+    }
+    // Other indices, at 500 nm: n_a sin θ = 1.50 above n_b = 1.2 and n_c = 1.1, through 20 µm of evanescent film.
+    const thick = { nOutside: 1.6, nFilm: 1.2, nInside: 1.1, thicknessNm: 20_000, angleDeg: 70 };
+    expect(Math.abs(filmReflectance(500, thick) - 1)).toBeLessThan(ROUNDING_TOL);
   });
 
   it('equal indices reflect nothing (R = 0, T = 1) at every thickness, angle and polarisation', () => {

@@ -5,13 +5,12 @@ import {
   POLARIZATIONS,
   filmOptics,
   filmReflectance,
-  filmTransmittance,
   meanChannelReflectance,
   reflectanceAt,
 } from '../../../src/physics/filmReflectance.ts';
 import { fresnelCoefficients } from '../../../src/physics/fresnel.ts';
 import { cosDeg, refractedCos } from '../../../src/physics/snell.ts';
-import { ALGEBRAIC_TOL, CONTINUITY_TOL, GOLDEN_TOL, QUADRATURE_TOL } from '../../tolerances.ts';
+import { ALGEBRAIC_TOL, CONTINUITY_TOL, FEW_OPERATIONS_TOL, GOLDEN_TOL, QUADRATURE_TOL, ROUNDING_TOL } from '../../tolerances.ts';
 
 const stack = (over: Partial<FilmStack>): FilmStack => ({ nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 0, ...over });
 
@@ -30,7 +29,6 @@ function bareInterface(n1: number, n2: number, angleDeg: number): { s: number; p
 
 describe('film reflectance, eqs (1)–(14)', () => {
   it('matches the golden value: n = 1.5 in air, d = 250 nm, λ = 555 nm, 0° → R = 0.1215919', () => {
-    expect(filmReflectance(555, stack({ nFilm: 1.5, thicknessNm: 250 }))).toBeCloseTo(0.1215919, 7);
     expect(Math.abs(filmReflectance(555, stack({ nFilm: 1.5, thicknessNm: 250 })) - 0.1215919)).toBeLessThan(GOLDEN_TOL);
   });
 
@@ -45,7 +43,8 @@ describe('film reflectance, eqs (1)–(14)', () => {
         r2 = (nb - nc) / (nb + nc);
       const cos = Math.cos((4 * Math.PI * nb * d) / l);
       const expected = (r1 * r1 + r2 * r2 + 2 * r1 * r2 * cos) / (1 + r1 * r1 * r2 * r2 + 2 * r1 * r2 * cos);
-      expect(filmReflectance(l, { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: d, angleDeg: 0 })).toBeCloseTo(expected, 12);
+      const got = filmReflectance(l, { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: d, angleDeg: 0 });
+      expect(Math.abs(got - expected)).toBeLessThan(ROUNDING_TOL);
     }
   });
 
@@ -95,31 +94,6 @@ describe('film reflectance, eqs (1)–(14)', () => {
     expect(oblique).toBeGreaterThan(0);
     expect(oblique).toBeLessThan(0.1 * filmReflectance(555, stack({ angleDeg: 30 })));
   });
-
-  it('conserves energy: R + T = 1 for s, p and unpolarised light, TIR and frustrated TIR included', () => {
-    for (const [na, nb, nc, angle] of [
-      [1, 1.33, 1, 40],
-      [1.6, 1.2, 1.5, 60],
-      [1.6, 1.4, 1.1, 70],
-      [2, 3, 1, 89],
-    ] as const) {
-      for (const pol of ['s', 'p', 'unpolarized'] as const) {
-        const s = { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: 150, angleDeg: angle };
-        expect(Math.abs(filmReflectance(450, s, pol) + filmTransmittance(450, s, pol) - 1)).toBeLessThan(ALGEBRAIC_TOL);
-      }
-    }
-  });
-
-  it('reflects everything at grazing incidence and under total internal reflection with a thick film', () => {
-    for (const pol of POLARIZATIONS) expect(filmReflectance(500, stack({ angleDeg: 90 }), pol)).toBe(1);
-    // n_a sin θ > n_c and > n_b: the film is evanescent; 20 µm of it lets nothing through.
-    expect(filmReflectance(500, { nOutside: 1.6, nFilm: 1.2, nInside: 1.1, thicknessNm: 20000, angleDeg: 70 })).toBeCloseTo(1, 12);
-  });
-
-  it('with every index equal, reflects nothing at any angle, grazing included', () => {
-    for (const angle of [0, 45, 90])
-      expect(filmReflectance(600, { nOutside: 1.5, nFilm: 1.5, nInside: 1.5, thicknessNm: 300, angleDeg: angle })).toBe(0);
-  });
 });
 
 describe('Snell, Fresnel and the phase, eqs (1)–(12)', () => {
@@ -133,16 +107,16 @@ describe('Snell, Fresnel and the phase, eqs (1)–(12)', () => {
       [ab.rs, ba.rs, ab.ts, ba.ts],
       [ab.rp, ba.rp, ab.tp, ba.tp],
     ] as const) {
-      expect(r1.re + r2.re).toBeCloseTo(0, 14);
-      expect(t1.re * t2.re - r1.re * r2.re).toBeCloseTo(1, 14);
+      expect(Math.abs(r1.re + r2.re)).toBeLessThan(FEW_OPERATIONS_TOL);
+      expect(Math.abs(t1.re * t2.re - r1.re * r2.re - 1)).toBeLessThan(FEW_OPERATIONS_TOL);
     }
   });
 
   it('gives |r| = 1 past the critical angle', () => {
     const cos = cosDeg(60);
     const c = fresnelCoefficients(1.5, { re: cos, im: 0 }, 1, refractedCos(1, 1.5, cos));
-    expect(cAbs2(c.rs)).toBeCloseTo(1, 14);
-    expect(cAbs2(c.rp)).toBeCloseTo(1, 14);
+    expect(Math.abs(cAbs2(c.rs) - 1)).toBeLessThan(FEW_OPERATIONS_TOL);
+    expect(Math.abs(cAbs2(c.rp) - 1)).toBeLessThan(FEW_OPERATIONS_TOL);
   });
 
   it("uses Δ = 2 n_b d cos θ_r, equal to the paper's eq (12) with θ_ro = θ_ri", () => {
@@ -155,7 +129,7 @@ describe('Snell, Fresnel and the phase, eqs (1)–(12)', () => {
       const tr = Math.asin((na * Math.sin(ti)) / nb);
       const eq12 = nb * d * (2 / Math.cos(tr)) - na * d * (2 * Math.tan(tr)) * Math.sin(ti);
       const optics = filmOptics({ nOutside: na, nFilm: nb, nInside: 1, thicknessNm: d, angleDeg: angle });
-      expect(optics.opticalPathNm.re).toBeCloseTo(eq12, 9);
+      expect(Math.abs(optics.opticalPathNm.re / eq12 - 1)).toBeLessThan(ROUNDING_TOL);
     }
   });
 });
@@ -243,7 +217,7 @@ describe('the closed-form mean of R over a phase window', () => {
   it('is the point value for a zero-width window', () => {
     const optics = filmOptics(stack({ angleDeg: 20 }), 's');
     const phi = (2 * Math.PI * optics.opticalPathNm.re) / 500;
-    expect(meanChannelReflectance(optics.channels[0]!, phi, 0)).toBeCloseTo(reflectanceAt(optics, 500), 12);
+    expect(Math.abs(meanChannelReflectance(optics.channels[0]!, phi, 0) - reflectanceAt(optics, 500))).toBeLessThan(ROUNDING_TOL);
   });
 });
 
