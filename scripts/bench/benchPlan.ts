@@ -27,6 +27,13 @@ export interface BenchPlan {
    * whose times mean nothing, so that its pages compile on both cores and the builds overlap them.
    */
   readonly concurrency: number;
+  /**
+   * Whether each lane (a runner of `concurrency`) runs its rows in one page, changing the row in
+   * place (benchRow called again), rather than in a fresh page (and WebGL context) per row. false
+   * in the full run: its first frame is a cold page's and its times are the published figures.
+   * true in the smoke: a later row's first frame is then timed from its call in a warm page.
+   */
+  readonly pagePerLane: boolean;
   readonly devPort: number;
   readonly previewPort: number;
   readonly resultsFile: string;
@@ -46,6 +53,7 @@ export const FULL_PLAN: BenchPlan = {
   materials: { width: 1280, height: 720, frames: 10 },
   demo: { width: 1280, height: 720, windowMs: 1000 },
   concurrency: 1,
+  pagePerLane: false,
   devPort: 5192,
   previewPort: 5193,
   resultsFile: 'bench-results.json',
@@ -62,6 +70,7 @@ export const SMOKE_PLAN: BenchPlan = {
   materials: { width: 160, height: 90, frames: 1 },
   demo: { width: 320, height: 180, windowMs: 400 },
   concurrency: 2,
+  pagePerLane: true,
   devPort: 5194,
   previewPort: 5195,
   resultsFile: '.scratch/bench-smoke-results.json',

@@ -25,7 +25,11 @@ export interface BenchRowSpec {
 }
 
 export interface BenchRowResult {
-  /** navigation start to the first bubble frame drawn and read back */
+  /**
+   * navigation start to the first bubble frame drawn and read back; in a page reused for several
+   * rows (BenchPlan.pagePerLane), a later row's from its call's start: a warm page's first frame,
+   * not a cold one's
+   */
   readonly firstFrameMs: number;
   /** the table's build in this view (null without a table) */
   readonly tableBuildMs: number | null;

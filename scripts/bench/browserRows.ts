@@ -1,46 +1,72 @@
-/** Runs the benchmark rows in headless Chromium, one fresh page (and WebGL context) per row. */
+/**
+ * Runs the benchmark rows in headless Chromium: one fresh page (and WebGL context) per row, or
+ * (`plan.pagePerLane`) one page per lane, each of the lane's rows run in it in turn.
+ */
 import { smokeQuality } from './benchPlan.ts';
-import type { Browser } from '@playwright/test';
+import type { Browser, Page } from '@playwright/test';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import type { BenchPlan } from './benchPlan.ts';
 import type { BenchRowResult } from './benchRow.ts';
 import type { BenchRow } from './rows.ts';
 import { openPage } from './openPage.ts';
 
-/** One row in a fresh page; `grids` empty where the row measures no error (then `xyz` is empty). */
-export async function runRow(
-  browser: Browser,
-  baseUrl: string,
-  plan: BenchPlan,
-  row: BenchRow,
-  grids: readonly ParityGroup[],
-): Promise<BenchRowResult> {
+const BENCH_PAGE = '/scripts/bench/page/bench.html';
+
+async function openBenchPage(browser: Browser, baseUrl: string): Promise<Page> {
   const page = await openPage(browser, { viewport: { width: 640, height: 360 } });
-  try {
-    await page.goto(`${baseUrl}/scripts/bench/page/bench.html`);
-    await page.waitForSelector('body[data-ready="yes"]');
-    return await page.evaluate((spec) => window.benchRow!(spec), {
-      kind: row.kind,
-      reflections: row.reflections ?? true,
-      timesChanges: row.timesChanges ?? true,
-      settings: row.settings,
-      quality: plan.smoke ? smokeQuality(row.quality) : row.quality,
-      sizes: plan.sizes,
-      frames: plan.frames,
-      frameBudgetMs: plan.frameBudgetMs,
-      changeRepeats: plan.changeRepeats,
-      changesBack: plan.changesBack,
-      grids,
-    });
-  } finally {
-    await page.close();
+  await page.goto(`${baseUrl}${BENCH_PAGE}`);
+  await page.waitForSelector('body[data-ready="yes"]');
+  return page;
+}
+
+/** The rows of one lane (the tasks that run one after another): where each runs, by the plan. */
+export class RowLane {
+  /** The lane's page between its rows, where the plan keeps one (opened at the lane's first row). */
+  private page: Page | null = null;
+
+  constructor(
+    private readonly browser: Browser,
+    private readonly baseUrl: string,
+    private readonly plan: BenchPlan,
+  ) {}
+
+  /** One row; `grids` empty where the row measures no error (then `xyz` is empty). */
+  async run(row: BenchRow, grids: readonly ParityGroup[]): Promise<BenchRowResult> {
+    const page = this.page ?? (await openBenchPage(this.browser, this.baseUrl));
+    this.page = null;
+    try {
+      const result = await page.evaluate((spec) => window.benchRow!(spec), {
+        kind: row.kind,
+        reflections: row.reflections ?? true,
+        timesChanges: row.timesChanges ?? true,
+        settings: row.settings,
+        quality: this.plan.smoke ? smokeQuality(row.quality) : row.quality,
+        sizes: this.plan.sizes,
+        frames: this.plan.frames,
+        frameBudgetMs: this.plan.frameBudgetMs,
+        changeRepeats: this.plan.changeRepeats,
+        changesBack: this.plan.changesBack,
+        grids,
+      });
+      // Kept for the lane's next row only after a row that ran to its end: one that threw may have left the page in any state.
+      if (this.plan.pagePerLane) this.page = page;
+      return result;
+    } finally {
+      if (this.page !== page) await page.close();
+    }
+  }
+
+  /** Closes the lane's page, if it holds one. */
+  async close(): Promise<void> {
+    await this.page?.close();
+    this.page = null;
   }
 }
 
 /** Loads the page once so the dev server has transformed every module before the first-frame times. */
 export async function warmUp(browser: Browser, baseUrl: string): Promise<void> {
   const page = await openPage(browser);
-  await page.goto(`${baseUrl}/scripts/bench/page/bench.html`);
+  await page.goto(`${baseUrl}${BENCH_PAGE}`);
   await page.waitForSelector('body[data-ready="yes"]');
   await page.close();
 }

@@ -1,5 +1,6 @@
 /** The library's package as `npm pack` makes it: built as prepack builds it, then measured without writing a tarball. */
-import { execFileSync } from 'node:child_process';
+import { execFile } from 'node:child_process';
+import { promisify } from 'node:util';
 
 export interface PackageSize {
   /** the tarball's bytes (gzipped tar) */
@@ -9,12 +10,20 @@ export interface PackageSize {
   readonly files: number;
 }
 
-const npm = (args: readonly string[]) => execFileSync('npm', args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'] });
+/**
+ * npm's stdout; its stderr passed on. Asynchronous, so that the stages running meanwhile (pages
+ * driven from this process) are not held up while it builds.
+ */
+async function npm(args: readonly string[]): Promise<string> {
+  const child = promisify(execFile)('npm', args, { encoding: 'utf8' });
+  child.child.stderr?.pipe(process.stderr);
+  return (await child).stdout;
+}
 
-export function packageSize(): PackageSize {
+export async function packageSize(): Promise<PackageSize> {
   // What prepack runs, apart, so that pack's --json output is alone on stdout.
-  npm(['run', '--silent', 'build:lib']);
-  const [packed] = JSON.parse(npm(['pack', '--dry-run', '--json', '--ignore-scripts'])) as {
+  await npm(['run', '--silent', 'build:lib']);
+  const [packed] = JSON.parse(await npm(['pack', '--dry-run', '--json', '--ignore-scripts'])) as {
     size: number;
     unpackedSize: number;
     entryCount: number;

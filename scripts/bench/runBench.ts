@@ -12,7 +12,7 @@ import { checkedRenderer, chromiumLaunchOptions } from '../chromium.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import { type BenchPlan, thinnedGrid } from './benchPlan.ts';
 import type { BenchResults } from './benchResults.ts';
-import { runRow, warmUp } from './browserRows.ts';
+import { RowLane, warmUp } from './browserRows.ts';
 import { type BundleSizes, buildAndMeasure } from './bundleSize.ts';
 import { type DemoPageFigures, demoPageFigures } from './demoPage.ts';
 import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './errorGrids.ts';
@@ -22,6 +22,7 @@ import { Progress, type Stage, rowCost } from './progress.ts';
 import { referenceSpeed } from './referenceSpeed.ts';
 import { type BenchRow, MATERIALS_ROW } from './rows.ts';
 import type { MeasuredRow } from './rowsMarkdown.ts';
+import { runAtOnce } from './runAtOnce.ts';
 
 const REFERENCE_STAGE = 'reference speed';
 const BUNDLE_STAGE = 'demo and element builds';
@@ -58,32 +59,14 @@ class ErrorGrids {
 }
 
 /** A row measured: its figures, and its error columns exactly when it measures error. */
-async function measureRow(
-  browser: Parameters<typeof runRow>[0],
-  baseUrl: string,
-  plan: BenchPlan,
-  row: BenchRow,
-  grids: ErrorGrids,
-): Promise<MeasuredRow> {
+async function measureRow(lane: RowLane, row: BenchRow, grids: ErrorGrids): Promise<MeasuredRow> {
   const t0 = performance.now();
   const rowGrids = row.measuresError ? grids.grids(row.settings.nFilm) : [];
-  const { xyz, ...result } = await runRow(browser, baseUrl, plan, row, rowGrids);
+  const { xyz, ...result } = await lane.run(row, rowGrids);
   if (xyz.length !== rowGrids.length) throw new Error(`the page drew ${xyz.length} error grids, not ${rowGrids.length}`);
   const reference = row.measuresError ? grids.reference(row.settings.nFilm) : [];
   const errors = row.measuresError ? rowGrids.map((g, i) => gridError(g, reference[i]!, xyz[i]!)) : null;
   return { name: row.name, settings: row.settings, quality: row.quality, ...result, errors, seconds: (performance.now() - t0) / 1000 };
-}
-
-/**
- * Runs the tasks, `width` at once: one by one in their order, or several, the costliest first so
- * that no long one is left running alone at the end.
- */
-async function runAtOnce(tasks: readonly { readonly cost: number; readonly run: () => Promise<void> }[], width: number): Promise<void> {
-  const queue = width === 1 ? [...tasks] : [...tasks].sort((a, b) => b.cost - a.cost);
-  const runner = async () => {
-    for (let task = queue.shift(); task; task = queue.shift()) await task.run();
-  };
-  await Promise.all(Array.from({ length: width }, runner));
 }
 
 export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withMaterials: boolean): Promise<BenchResults> {
@@ -128,10 +111,10 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
     let bundle: BundleSizes | null = null;
     let pack: PackageSize | null = null;
     let demo: DemoPageFigures | null = null;
-    // The builds, then the built demo page in a preview server of its own.
+    // The builds, then the built demo page in a preview server of its own. The package is a task
+    // of its own: its build (dist-lib) is not the demo's (dist).
     const builtPage = async () => {
       bundle = await stage(BUNDLE_STAGE, buildAndMeasure);
-      pack = await stage(PACKAGE_STAGE, packageSize);
       const previewServer = await preview({ logLevel: 'silent', preview: { port: plan.previewPort, strictPort: true, host: '127.0.0.1' } });
       try {
         demo = await stage(DEMO_STAGE, () => demoPageFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.demo));
@@ -140,19 +123,21 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
       }
     };
     // The rows and the material in the dev server, and the built page: in this order one by one,
-    // or (the smoke) the costliest first, `concurrency` at once.
+    // or (the smoke) the costliest first, `concurrency` at once, each lane's rows in its own page
+    // where the plan keeps one per lane.
     const server = await createServer({
       logLevel: 'silent',
       server: { port: plan.devPort, strictPort: true, host: '127.0.0.1', hmr: false, watch: null },
     });
     await server.listen();
     try {
-      await warmUp(browser, devUrl);
+      // Only where the first frames are figures: the smoke's times mean nothing.
+      if (!plan.smoke) await warmUp(browser, devUrl);
       const tasks = [
         ...rows.map((row, i) => ({
           cost: rowCost(row),
-          run: async () => {
-            measured[i] = await stage(row.name, () => measureRow(browser, devUrl, plan, row, grids));
+          run: async (lane: RowLane) => {
+            measured[i] = await stage(row.name, () => measureRow(lane, row, grids));
           },
         })),
         ...(withMaterials
@@ -168,9 +153,20 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
               },
             ]
           : []),
-        { cost: STAGE_COSTS.bundle + STAGE_COSTS.package + STAGE_COSTS.demo, run: builtPage },
+        {
+          cost: STAGE_COSTS.package,
+          run: async () => {
+            pack = await stage(PACKAGE_STAGE, packageSize);
+          },
+        },
+        { cost: STAGE_COSTS.bundle + STAGE_COSTS.demo, run: builtPage },
       ];
-      await runAtOnce(tasks, plan.concurrency);
+      const lanes = Array.from({ length: plan.concurrency }, () => new RowLane(browser, devUrl, plan));
+      try {
+        await runAtOnce(tasks, lanes);
+      } finally {
+        await Promise.all(lanes.map((lane) => lane.close()));
+      }
     } finally {
       await server.close();
     }

@@ -401,9 +401,9 @@ export class FilmTable {
     this.rowsFor = ''; // its row terms too, with the rest of the table
   }
 
-  /** The table pass for these media and bins: a kept one with those defines, else the least recently used (or a new one) given them. */
-  private material(media: Pick<FilmMedia, 'nFilm' | 'nInside'>, bins: number): ShaderMaterial {
-    const defines = {
+  /** The table pass's defines for these media and bins: one program per set. */
+  private passDefines(media: Pick<FilmMedia, 'nFilm' | 'nInside'>, bins: number): Record<string, number> {
+    return {
       ...filmMediaDefines(media),
       TFC_POLARIZATION_UNIFORM: 1,
       ...enumConstants('TFC_POLARIZATION', POLARIZATIONS),
@@ -411,10 +411,20 @@ export class FilmTable {
       ...filmTableLayoutDefines(this.quality.table),
       ...airySeriesDefines(),
     };
+  }
+
+  /** What picks the table pass's program for `s`: a change of it needs another program. */
+  passKey(s: FilmSettings): string {
+    return JSON.stringify(this.passDefines(s, spectralBinsFor(s, this.quality, this.quality.table.spectralBins)));
+  }
+
+  /** The table pass for these media and bins: a kept one with those defines, else the least recently used (or a new one) given them. */
+  private material(media: Pick<FilmMedia, 'nFilm' | 'nInside'>, bins: number): ShaderMaterial {
+    const defines = this.passDefines(media, bins);
     const key = JSON.stringify(defines);
     const kept = this.passes.findIndex((p) => JSON.stringify(p.defines) === key);
     const pass = kept >= 0 ? this.passes.splice(kept, 1)[0]! : this.passes.length < KEPT_PASSES ? tablePass() : this.passes.pop()!;
-    setDefines(pass, defines);
+    setDefines(pass, defines, 1); // the kept passes keep the programs of other sets
     this.passes.unshift(pass);
     return pass;
   }

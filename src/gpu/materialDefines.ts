@@ -1,13 +1,34 @@
 import type { ShaderMaterial } from 'three';
 
 /**
- * Gives a material new defines if they differ, freeing the program of the old ones (three keeps a
- * material's programs until the material is disposed; a disposed material is set up anew on its
- * next draw), so switching modes for an hour holds one program per material, not one per set.
+ * How many sets of defines a material keeps the programs of (three keeps every program a material
+ * was drawn with until the material is disposed): a change and its way back, and two more, compile
+ * nothing the second time.
  */
-export function setDefines(m: ShaderMaterial, defines: Record<string, number>): void {
-  if (JSON.stringify(defines) === JSON.stringify(m.defines)) return;
-  m.dispose();
+export const KEPT_DEFINE_SETS = 4;
+
+/** Per material, the sets of defines (as JSON) whose programs it may hold, the current one first. */
+const keptSets = new WeakMap<ShaderMaterial, string[]>();
+
+/**
+ * Gives a material new defines if they differ. It keeps the programs of its last `kept` sets; a set
+ * beyond them frees them all (the material is disposed, and set up anew on its next draw), so
+ * switching settings for an hour holds at most `kept` programs per material, not one per set.
+ */
+export function setDefines(m: ShaderMaterial, defines: Record<string, number>, kept = KEPT_DEFINE_SETS): void {
+  const key = JSON.stringify(defines);
+  const current = JSON.stringify(m.defines);
+  if (key === current) return;
+  // A material made without defines has compiled nothing for them.
+  const sets = keptSets.get(m) ?? (Object.keys(m.defines ?? {}).length > 0 ? [current] : []);
+  const at = sets.indexOf(key);
+  if (at >= 0) sets.splice(at, 1);
+  else if (sets.length >= kept) {
+    m.dispose();
+    sets.length = 0;
+  }
+  sets.unshift(key);
+  keptSets.set(m, sets);
   m.defines = defines;
   m.needsUpdate = true;
 }

@@ -29,6 +29,8 @@ import { FilmTable } from '../film/filmTable.ts';
 import { spectralTransformReady } from '../film/spectralTransformTexture.ts';
 import { type FilmSettings, type HdrEnvironment, type ToneMapping, isHdrEnvironment, toneMappingOf } from '../settings/filmSettings.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
+import { ProgramsInParallel } from './programsInParallel.ts';
+import { linkFailures } from '../gpu/linkFailures.ts';
 import { FLOW_PARAMETERS } from '../physics/flow/flowParameters.ts';
 
 ColorManagement.define({ [DisplayP3ColorSpace]: DisplayP3ColorSpaceImpl });
@@ -69,9 +71,16 @@ function drawsDisplayP3(renderer: WebGLRenderer): boolean {
   return supported;
 }
 
-/** A WebGL2 renderer for bubbles on a canvas (the drawing buffer is kept for screenshots and reads). */
-export const createBubbleRenderer = (canvas: HTMLCanvasElement): WebGLRenderer =>
-  new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+/**
+ * A WebGL2 renderer for bubbles on a canvas (the drawing buffer is kept for screenshots and reads).
+ * Where the GPU compiles in parallel, its views check their programs' links themselves (linkFailures.ts)
+ * instead of three's check at the first draw, which would wait for the GPU.
+ */
+export function createBubbleRenderer(canvas: HTMLCanvasElement): WebGLRenderer {
+  const renderer = new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+  if (renderer.extensions.has('KHR_parallel_shader_compile')) renderer.debug.checkShaderErrors = false;
+  return renderer;
+}
 
 /**
  * A bubble: camera, environment, the film material and its table, drawn by a renderer that may
@@ -94,6 +103,8 @@ export class BubbleView {
   /** Called when an HDR environment this view asked for arrives or fails (the caller redraws). */
   onEnvironmentChange: (() => void) | null = null;
   private readonly filmProbe = new FilmProbe();
+  /** The programs of the frames to come, compiled without blocking where the GPU compiles in parallel. */
+  private readonly programs = new ProgramsInParallel();
   /** The view's size in CSS pixels and its pixel ratio. */
   private size = { width: 1, height: 1, pixelRatio: 1 };
   /** Whether the canvas really shows Display P3 (false where the browser cannot). */
@@ -128,6 +139,7 @@ export class BubbleView {
   }
 
   private readonly rebuildTable = () => {
+    this.programs.forget();
     this.table.invalidate();
     this.fieldState?.state.invalidate();
   };
@@ -222,15 +234,48 @@ export class BubbleView {
    */
   async prepare(): Promise<void> {
     // Without the extension (SwiftShader) compiling is blocking however it is asked for: the first frame does it.
-    if (!this.renderer.extensions.has('KHR_parallel_shader_compile')) return;
+    if (!this.compilesInParallel) return;
     this.renderer.toneMapping = this.toneMapping;
+    this.setDrawingBufferSpace();
+    await this.programs.compile(this.programsKey(), () => this.compilePrograms());
+  }
+
+  private get compilesInParallel(): boolean {
+    return this.renderer.extensions.has('KHR_parallel_shader_compile');
+  }
+
+  /**
+   * What picks the programs a frame draws with: the materials' defines and the tone mapping. Not the
+   * drawing buffer's space, which three keys them by too: setting it reallocates the buffer, so the
+   * frame shown could not be kept; a change of space compiles in its own frame.
+   */
+  private programsKey(): string {
+    const background = this.background.visible ? this.background.material.defines : null;
+    const table = this.settings.mode === 'table' ? this.table.passKey(this.settings) : null;
+    return JSON.stringify([this.bubble.material.defines, background, table, this.toneMapping]);
+  }
+
+  /**
+   * Compiles the programs of the next frame (bubble, background, the table pass) and of the probe
+   * that follows it, where the GPU compiles in parallel without blocking; the light's textures are made meanwhile.
+   */
+  private compilePrograms(): Promise<unknown> {
     // Only what the frame draws: three compiles hidden meshes too (the background with env=none),
     // a program no frame would use, and one a restored context would not make again.
     const drawn = [this.bubble, ...(this.background.visible ? [this.background] : [])];
-    await Promise.all([
+    return Promise.all([
       ...drawn.map((mesh) => this.renderer.compileAsync(mesh, this.camera, this.scene)),
+      this.filmProbe.compileAsync(this.renderer, this.camera, this.bubble),
       this.settings.mode === 'table' ? this.table.prepare(this.renderer, this.settings) : null,
-    ]);
+    ]).then(() => {
+      if (!this.renderer.debug.checkShaderErrors) for (const failure of linkFailures(this.renderer)) console.error(failure);
+    });
+  }
+
+  /** The drawing buffer's space for this view: only on a change, as a new space reallocates the buffer, which waits for the GPU's queued work. */
+  private setDrawingBufferSpace(): void {
+    const space = this.displayIsP3 ? DisplayP3ColorSpace : SRGBColorSpace;
+    if (this.renderer.outputColorSpace !== space) this.renderer.outputColorSpace = space;
   }
 
   /** Whether the HDR environment asked for is shown, still on its way, or failed. */
@@ -249,10 +294,11 @@ export class BubbleView {
 
   /**
    * Whether the last frame was drawn from a coarse table, or in the previous light while the new
-   * light's transform is computed (FilmTable; `fourier` mode): more frames follow until one is full.
+   * light's transform is computed (FilmTable; `fourier` mode), or kept while the programs of the
+   * next are compiled: more frames follow until one is full.
    */
   get coarse(): boolean {
-    return (this.settings.mode === 'table' && this.table.coarse) || this.lightWaiting;
+    return (this.settings.mode === 'table' && this.table.coarse) || this.lightWaiting || this.programs.busy;
   }
 
   /**
@@ -300,6 +346,11 @@ export class BubbleView {
     const drawn = r.getSize(SIZE);
     if (drawn.x !== width || drawn.y !== height) r.setSize(width, height, false);
     if (this.contextLost) return;
+    // Per frame, as views may share the renderer (each view's materials are compiled for its own).
+    r.toneMapping = this.toneMapping;
+    // The app's frames keep the frame shown until the programs of the new one are ready.
+    if (quick && this.compilesInParallel && !this.programs.ready(this.programsKey(), () => this.compilePrograms())) return;
+    this.setDrawingBufferSpace();
     // The new light's transform has arrived, or a frame that does not wait (tests, screenshots) computes it here.
     if (this.lightWaiting && (!quick || spectralTransformReady(this.settings.illuminant, this.settings.normalization))) {
       this.lightShown = null;
@@ -309,11 +360,6 @@ export class BubbleView {
     const film = this.fieldState?.state;
     if (film)
       this.filmBehind = !film.advance(this.bubble.material.uniforms, this.settings, quick ? this.quality.flowStepsPerFrame : Infinity);
-    // Per frame, as views may share the renderer (each view's materials are compiled for its own).
-    r.toneMapping = this.toneMapping;
-    // Only on a change: a new space reallocates the drawing buffer, which waits for the GPU's queued work.
-    const space = this.displayIsP3 ? DisplayP3ColorSpace : SRGBColorSpace;
-    if (r.outputColorSpace !== space) r.outputColorSpace = space;
     r.render(this.scene, this.camera);
   }
 

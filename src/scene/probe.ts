@@ -127,6 +127,18 @@ export class FilmProbe {
     return { thicknessNm: pixel[3]!, angleDeg, renderedXyz: [pixel[0]!, pixel[1]!, pixel[2]!] };
   }
 
+  /** Compiles the probe's program for the bubble's defines now, without blocking where the GPU compiles in parallel. */
+  compileAsync(renderer: WebGLRenderer, camera: PerspectiveCamera, bubble: Mesh<SphereGeometry, ShaderMaterial>): Promise<unknown> {
+    const shown = bubble.material;
+    bubble.material = this.probeMaterial(shown);
+    const previous = renderer.getRenderTarget();
+    renderer.setRenderTarget(this.target); // three picks a program by its target
+    const compiled = renderer.compileAsync(bubble, camera);
+    renderer.setRenderTarget(previous);
+    bubble.material = shown;
+    return compiled;
+  }
+
   /** The bubble's material with TFC_PROBE defined, sharing its uniforms; follows its defines. */
   private probeMaterial(shown: ShaderMaterial): ShaderMaterial {
     this.material ??= new ShaderMaterial({

@@ -1,0 +1,45 @@
+/** A benchmark row's scene: the demo's BubbleView with the row's settings and quality, and the plain textured sphere in the bubble's place for the floor rows. */
+import { DataTexture, Mesh, MeshBasicMaterial, RGBAFormat, SRGBColorSpace, type WebGLRenderer } from 'three';
+import { BubbleView } from '../../../src/scene/bubbleView.ts';
+import type { BenchRowSpec } from '../benchRow.ts';
+
+/** A 256² sRGB texture for the floor row: the sphere then costs one texture fetch per pixel. */
+function checkerTexture(): DataTexture {
+  const size = 256;
+  const data = new Uint8Array(4 * size * size);
+  for (let i = 0; i < size * size; i++) {
+    const v = (((i % size) >> 4) + ((i / size) >> 4)) % 2 ? 220 : 90;
+    data.set([v, (v * 3) >> 2, 255 - v, 255], 4 * i);
+  }
+  const t = new DataTexture(data, size, size, RGBAFormat);
+  t.colorSpace = SRGBColorSpace;
+  t.needsUpdate = true;
+  return t;
+}
+
+/** The row's view on `renderer`, and the textured sphere standing in for the bubble (the floor rows); `dispose` frees all of it. */
+export function rowScene(renderer: WebGLRenderer, spec: BenchRowSpec): { view: BubbleView; dispose: () => void } {
+  const view = new BubbleView(renderer, spec.settings, spec.quality);
+  if (!spec.reflections) {
+    // The model before environment reflections: reflectedRadiance (shaders/bubble/environment.glsl) returns the light's white.
+    const m = view.bubble.material;
+    m.onBeforeCompile = (shader) => {
+      shader.fragmentShader = shader.fragmentShader.replace(/vec3 reflectedRadiance\(vec3 direction\) \{/, '$&\n  return vec3(1.0);');
+    };
+    m.customProgramCacheKey = () => 'walls reflect white';
+  }
+  const sphere = spec.kind === 'textured' ? new MeshBasicMaterial({ map: checkerTexture() }) : null;
+  if (sphere) {
+    view.bubble.visible = false;
+    view.scene.add(new Mesh(view.bubble.geometry, sphere));
+  }
+  return {
+    view,
+    // The bubble's material goes with the view, and its onBeforeCompile with it.
+    dispose: () => {
+      view.dispose();
+      sphere?.map?.dispose();
+      sphere?.dispose();
+    },
+  };
+}
