@@ -1,7 +1,6 @@
 /**
- * The table pass keeps the programs of this many sets of defines (a constant and a dispersive film,
- * say), so going back to a film drawn before compiles nothing: on a GPU that compiles on the
- * calling thread (SwiftShader) a compile is a stall of several frames.
+ * The table pass keeps a material, with its program, for each of this many sets of defines (a
+ * constant and a dispersive film, say), so going back to a film drawn before compiles nothing.
  */
 export const KEPT_PASSES = 2;
 
