@@ -65,8 +65,5 @@ export class RowLane {
 
 /** Loads the page once so the dev server has transformed every module before the first-frame times. */
 export async function warmUp(browser: Browser, baseUrl: string): Promise<void> {
-  const page = await openPage(browser);
-  await page.goto(`${baseUrl}${BENCH_PAGE}`);
-  await page.waitForSelector('body[data-ready="yes"]');
-  await page.close();
+  await (await openBenchPage(browser, baseUrl)).close();
 }
