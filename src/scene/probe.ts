@@ -108,20 +108,15 @@ export class FilmProbe {
   ): Promise<ProbeReading | null> {
     const angleDeg = incidenceAngleDeg(camera, fx, fy);
     if (angleDeg === null) return null;
-    const shown = bubble.material;
-    const probe = this.probeMaterial(shown);
     const { width, height } = viewSize;
     const x = Math.min(width - 1, Math.floor(fx * width));
     const y = Math.min(height - 1, Math.floor(fy * height));
     camera.setViewOffset(width, height, x, y, 1, 1);
-    bubble.material = probe;
-    const previous = renderer.getRenderTarget();
-    renderer.setRenderTarget(this.target);
-    renderer.clear();
-    renderer.render(bubble, camera);
-    const read = readPixelAsync(renderer);
-    renderer.setRenderTarget(previous);
-    bubble.material = shown;
+    const read = this.drawingProbe(renderer, bubble, () => {
+      renderer.clear();
+      renderer.render(bubble, camera);
+      return readPixelAsync(renderer);
+    });
     camera.clearViewOffset();
     const pixel = await read;
     return { thicknessNm: pixel[3]!, angleDeg, renderedXyz: [pixel[0]!, pixel[1]!, pixel[2]!] };
@@ -129,14 +124,21 @@ export class FilmProbe {
 
   /** Compiles the probe's program for the bubble's defines now, without blocking where the GPU compiles in parallel. */
   compileAsync(renderer: WebGLRenderer, camera: PerspectiveCamera, bubble: Mesh<SphereGeometry, ShaderMaterial>): Promise<unknown> {
+    return this.drawingProbe(renderer, bubble, () => renderer.compileAsync(bubble, camera));
+  }
+
+  /** `act` with the bubble given the probe's material and the renderer the probe's target (three picks a program by both), both put back after. */
+  private drawingProbe<T>(renderer: WebGLRenderer, bubble: Mesh<SphereGeometry, ShaderMaterial>, act: () => T): T {
     const shown = bubble.material;
     bubble.material = this.probeMaterial(shown);
     const previous = renderer.getRenderTarget();
-    renderer.setRenderTarget(this.target); // three picks a program by its target
-    const compiled = renderer.compileAsync(bubble, camera);
-    renderer.setRenderTarget(previous);
-    bubble.material = shown;
-    return compiled;
+    renderer.setRenderTarget(this.target);
+    try {
+      return act();
+    } finally {
+      renderer.setRenderTarget(previous);
+      bubble.material = shown;
+    }
   }
 
   /** The bubble's material with TFC_PROBE defined, sharing its uniforms; follows its defines. */
