@@ -11,7 +11,7 @@ import { benchMarkdown } from './bench/benchMarkdown.ts';
 import { FULL_PLAN, SMOKE_PLAN } from './bench/benchPlan.ts';
 import { type BenchResults, resultProblems } from './bench/benchResults.ts';
 import { ROWS } from './bench/rows.ts';
-import { withBlock } from './docs/urlTable.ts';
+import { withBlock } from './docs/withBlock.ts';
 
 const DOC = 'docs/benchmarks.md';
 const README = 'README.md';

@@ -6,7 +6,7 @@
 import { readCasesFile, outFolderProblem, writeFileAtomically } from '../src/cli/commandFiles.ts';
 import { type RenderView, parseRenderCases, parseRenderCommandLine } from '../src/cli/renderOptions.ts';
 import { RENDER_USAGE } from '../src/cli/renderUsage.ts';
-import { ParameterError } from '../src/physics/validate.ts';
+import { ParameterError } from '../src/input/validate.ts';
 import { findChromium } from './chromium.ts';
 
 /** Stops with one line on stderr. */

@@ -10,7 +10,7 @@ import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { chromium } from '@playwright/test';
 import { preview } from 'vite';
-import { FRAME_MARKS } from '../src/app/frameMarks.ts';
+import { FRAME_MARKS } from '../src/pages/frameMarks.ts';
 import { MODES } from '../src/settings/filmSettings.ts';
 import { checkedRenderer, chromiumLaunchOptions } from './chromium.ts';
 

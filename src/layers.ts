@@ -4,8 +4,9 @@
  * of one layer know nothing of each other. docs/architecture.md draws the same order.
  */
 export const SOURCE_LAYERS: readonly (readonly string[])[] = [
+  ['input'], // checks of input at every entry point: the ParameterError, allowed ranges, decimal text
   ['physics', 'i18n', 'threads'], // the float64 reference and its data: no DOM, no three.js; the texts of every language; Web Worker requests
-  ['fields'], // the film's thickness over the bubble: one module per field, registered in fields.ts
+  ['fields', 'methods', 'environments'], // the registries: the film's thickness over the bubble (fields.ts), the ways to compute its colour (methods.ts), the light around it (environments.ts)
   ['settings'], // the schema of every user-facing parameter, and the film's quality knobs
   ['gpu'], // three.js plumbing: shader source, defines, shared resources, the fullscreen pass
   ['film', 'flow'], // the film's colour on the GPU; the flowing film's simulation on the GPU

@@ -6,7 +6,7 @@ import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { type Xyz } from '../../src/physics/spectralWeights.ts';
-import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
+import { type DeltaStats, deltaStats } from '../harness/deltaStats.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 
 const SOAP = { nOutside: 1, nFilm: 1.33, nInside: 1, illuminant: 'D65', polarization: 'unpolarized', normalization: 'white' } as const;

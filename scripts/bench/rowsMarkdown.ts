@@ -1,5 +1,5 @@
 /** The benchmark's main table, as Markdown. */
-import type { DeltaStats } from '../../src/physics/deltaStats.ts';
+import type { DeltaStats } from '../harness/deltaStats.ts';
 import type { FilmQuality } from '../../src/settings/filmQuality.ts';
 import type { FilmSettings } from '../../src/settings/filmSettings.ts';
 import type { BenchPlan } from './benchPlan.ts';

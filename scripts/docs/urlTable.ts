@@ -12,13 +12,3 @@ export function urlTableMarkdown(): string {
   const rows = VIEW_PARAMETERS.map((r) => `| \`${r.url}\` | ${cell(r.label)} | ${cell(r.expected)} | \`${cell(r.defaultText)}\` |`);
   return ['| parameter | what it sets | accepts | default |', '|---|---|---|---|', ...rows].join('\n');
 }
-
-/** `text` with the lines between `<!-- name -->` and `<!-- /name -->` replaced by `content`. */
-export function withBlock(text: string, name: string, content: string): string {
-  const open = `<!-- ${name} -->`;
-  const close = `<!-- /${name} -->`;
-  const start = text.indexOf(open);
-  const end = text.indexOf(close);
-  if (start < 0 || end < start) throw new Error(`README.md has no ${open} … ${close} block`);
-  return `${text.slice(0, start + open.length)}\n${content}\n${text.slice(end)}`;
-}

@@ -1,5 +1,6 @@
 import { type EnvironmentPixels, loadEnvironmentPixels } from '../bubble/environmentMaps.ts';
-import { type FilmSettings, isHdrEnvironment } from '../settings/filmSettings.ts';
+import { STAND_IN_ENVIRONMENT, isHdrEnvironment } from '../environments/environments.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
 import { cpuBubbleImage } from '../twins/cpuBubbleImage.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
 import { type Catalogue, EN } from '../i18n/en.ts';
@@ -32,7 +33,7 @@ async function withEnvironment(
     return [settings, await loadEnvironmentPixels(env)];
   } catch (error) {
     say(environmentStatusText({ state: 'failed', env, reason: error instanceof Error ? error.message : String(error) }, cat));
-    return [{ ...settings, env: 'sky' }, null];
+    return [{ ...settings, env: STAND_IN_ENVIRONMENT }, null];
   }
 }
 

@@ -10,20 +10,8 @@ import {
   RGBAFormat,
 } from 'three';
 import { EXRLoader } from 'three/addons/loaders/EXRLoader.js';
-import type { HdrEnvironment } from '../settings/filmSettings.ts';
+import { type HdrEnvironment, mapSource } from '../environments/environments.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
-
-/**
- * The HDR environments' sources: CC0 equirectangular EXRs (512 × 256, linear Rec. 709) from
- * @pmndrs/assets, each a module holding a base64 data URL. Each is its own dynamic import, so a
- * page fetches only the environment it shows (and none for `sky` or `none`).
- */
-const SOURCES: Record<HdrEnvironment, () => Promise<{ default: string }>> = {
-  park: () => import('@pmndrs/assets/hdri/park.exr.js'),
-  sunset: () => import('@pmndrs/assets/hdri/sunset.exr.js'),
-  studio: () => import('@pmndrs/assets/hdri/studio.exr.js'),
-  city: () => import('@pmndrs/assets/hdri/city.exr.js'),
-};
 
 /** An equirectangular radiance map: RGBA float texels, row 0 at the bottom (v = 0 looks straight down). */
 export interface EnvironmentPixels {
@@ -50,7 +38,7 @@ function dataUrlBytes(url: string): ArrayBuffer {
 export function loadEnvironmentPixels(name: HdrEnvironment): Promise<EnvironmentPixels> {
   let load = loads.get(name);
   if (!load) {
-    load = SOURCES[name]().then((module) => {
+    load = mapSource(name)().then((module) => {
       const exr = new EXRLoader().setDataType(FloatType).parse(dataUrlBytes(module.default));
       if (!(exr.data instanceof Float32Array) || exr.format !== RGBAFormat) throw new Error(`${name}: not an RGBA float EXR`);
       // The maps ring around the sun and lamps (negative texels, down to −1876 in park): radiance is

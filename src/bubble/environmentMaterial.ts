@@ -1,5 +1,6 @@
 import { BackSide, type DataTexture, ShaderMaterial, Vector2 } from 'three';
-import { type FilmSettings, isHdrEnvironment } from '../settings/filmSettings.ts';
+import { ENVIRONMENT_KINDS, STAND_IN_ENVIRONMENT, environmentKind, isHdrEnvironment } from '../environments/environments.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
@@ -7,15 +8,12 @@ import { shaderSource } from '../gpu/shaderSource.ts';
 /** What shaders/bubble/environment.glsl needs: which environment, its rotation, and the exposure on all light. */
 export type EnvironmentSettings = Pick<FilmSettings, 'env' | 'envRotationDeg' | 'exposure'>;
 
-/** The kinds of environment the shader tells apart: black, the procedural sky, an equirectangular HDR map. */
-const ENVIRONMENT_KINDS = ['none', 'sky', 'map'] as const;
-
 /**
- * TFC_ENVIRONMENT for the environment shown: none, the procedural sky, or an HDR map (the
- * caller shows `sky` until the map has arrived).
+ * TFC_ENVIRONMENT for the environment shown: its kind (the caller shows the stand-in until an HDR
+ * map has arrived).
  */
 export const environmentDefines = (s: Pick<FilmSettings, 'env'>): Record<string, number> =>
-  enumDefines('TFC_ENVIRONMENT', ENVIRONMENT_KINDS, s.env === 'none' || s.env === 'sky' ? s.env : 'map');
+  enumDefines('TFC_ENVIRONMENT', ENVIRONMENT_KINDS, environmentKind(s.env));
 
 /** The uniforms shaders/bubble/environment.glsl reads, plus the exposure. */
 export const environmentUniforms = () => ({
@@ -39,7 +37,7 @@ export function updateEnvironmentUniforms(m: ShaderMaterial, s: EnvironmentSetti
 export function createBackgroundMaterial(): ShaderMaterial {
   return new ShaderMaterial({
     side: BackSide,
-    defines: environmentDefines({ env: 'sky' }),
+    defines: environmentDefines({ env: STAND_IN_ENVIRONMENT }),
     uniforms: environmentUniforms(),
     // The direction from the camera, not from the sphere's centre: the environment is at infinity, as the bubble sees it.
     vertexShader: `varying vec3 vDirection;

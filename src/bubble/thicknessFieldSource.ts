@@ -1,17 +1,15 @@
 import { FIELDS, type FieldName, THICKNESS_FIELDS } from '../fields/fields.ts';
 import type { FieldSettings, FieldUniforms } from '../fields/thicknessField.ts';
-import { enumConstants, enumDefines } from '../gpu/enumDefines.ts';
+import { enumDefines } from '../gpu/enumDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 
 /**
  * The thickness fields as a shader sees them: every registered field's GLSL under its named
- * `#if`, so a program holds the one that TFC_THICKNESS_FIELD selects (`tfcThicknessAt`), and the
- * uniforms of all of them, set by the selected field's own update.
+ * `#if` (thicknessField.glsl, made from the registry by shaderSource.ts), so a program holds the
+ * one that TFC_THICKNESS_FIELD selects (`tfcThicknessAt`), and the uniforms of all of them, set
+ * by the selected field's own update.
  */
-const constants = Object.keys(enumConstants('TFC_THICKNESS_FIELD', FIELDS));
-
-export const thicknessFieldSource = (): string =>
-  `${FIELDS.map((name, i) => `${i === 0 ? '#if' : '#elif'} TFC_THICKNESS_FIELD == ${constants[i]}\n${shaderSource(THICKNESS_FIELDS[name].glsl)}`).join('\n')}\n#endif\n`;
+export const thicknessFieldSource = (): string => shaderSource('thicknessField.glsl');
 
 export const thicknessFieldDefines = (s: { readonly field: FieldName }): Record<string, number> =>
   enumDefines('TFC_THICKNESS_FIELD', FIELDS, s.field);

@@ -1,5 +1,5 @@
 import type { Rgb } from '../physics/colorConversions.ts';
-import { ParameterError } from '../physics/validate.ts';
+import { ParameterError } from '../input/validate.ts';
 
 /**
  * Where everything of a colour chart goes, in pixels from the top left; the PNG and the SVG

@@ -11,7 +11,7 @@ import {
   mediumText,
 } from '../physics/medium.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralWeights.ts';
-import { isInDomain, type NumberDomain, oneOf, rejectValue, expectedNumber } from '../physics/validate.ts';
+import { isInDomain, type NumberDomain, oneOf, rejectValue, expectedNumber } from '../input/validate.ts';
 import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../settings/filmParameters.ts';
 
 /** One film to colour: what the command line or one entry of a cases file describes. */

@@ -4,7 +4,7 @@
  */
 import { readFileSync, renameSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { basename, dirname, join } from 'node:path';
-import { ParameterError } from '../physics/validate.ts';
+import { ParameterError } from '../input/validate.ts';
 import { describePath } from './inputErrors.ts';
 
 /** A cases file larger than this is not a list of films. */

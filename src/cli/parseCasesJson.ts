@@ -1,4 +1,4 @@
-import { describeValue, ParameterError, rejectValue } from '../physics/validate.ts';
+import { describeValue, ParameterError, rejectValue } from '../input/validate.ts';
 import { CASE_FIELDS, type CaseField, type ColorCase, type RawCase, isValidId, validateColorCase } from './colorCase.ts';
 import { parseJsonArray } from './parseJsonArray.ts';
 

@@ -1,7 +1,7 @@
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
 import { ILLUMINANT_EXPECTED, parseIlluminant } from '../physics/illuminants.ts';
 import { mediumExpected, readMedium } from '../physics/medium.ts';
-import { oneOf, ParameterError, rejectValue, expectedNumber } from '../physics/validate.ts';
+import { oneOf, ParameterError, rejectValue, expectedNumber } from '../input/validate.ts';
 import {
   CASE_FLAGS,
   type CaseField,

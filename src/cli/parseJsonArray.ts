@@ -1,4 +1,4 @@
-import { ParameterError, rejectValue, shorten } from '../physics/validate.ts';
+import { ParameterError, rejectValue, shorten } from '../input/validate.ts';
 import { describePath } from './inputErrors.ts';
 import { jsonNestingDepth } from './jsonNestingDepth.ts';
 

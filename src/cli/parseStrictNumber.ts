@@ -1,4 +1,4 @@
-import { parseDecimal, rejectValue } from '../physics/validate.ts';
+import { parseDecimal, rejectValue } from '../input/validate.ts';
 
 /**
  * The finite number written in `text` (plain decimal, see `parseDecimal`), or a ParameterError

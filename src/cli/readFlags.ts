@@ -1,5 +1,5 @@
 import { parseArgs } from 'node:util';
-import { ParameterError, describeValue, rejectValue } from '../physics/validate.ts';
+import { ParameterError, describeValue, rejectValue } from '../input/validate.ts';
 
 export interface Flags {
   /** Each value flag given, by name (without "--"); a flag with nothing after it reads as ''. */

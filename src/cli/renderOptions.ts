@@ -1,7 +1,7 @@
 import { parseArgs } from 'node:util';
 import { parameterNamed, readParameter, settingsToQuery } from '../settings/settingsQuery.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
-import { parseDecimal, describeValue, isInDomain, ParameterError, rejectValue } from '../physics/validate.ts';
+import { parseDecimal, describeValue, isInDomain, ParameterError, rejectValue } from '../input/validate.ts';
 import { mediumFromJson, mediumText } from '../physics/medium.ts';
 import { parseJsonArray } from './parseJsonArray.ts';
 

@@ -1,5 +1,5 @@
 import type { GamutMapping } from '../physics/colorConversions.ts';
-import { ParameterError } from '../physics/validate.ts';
+import { ParameterError } from '../input/validate.ts';
 import { chartLayout } from './chartLayout.ts';
 import { chartPng } from './chartPng.ts';
 import { chartSvg } from './chartSvg.ts';

@@ -1,7 +1,7 @@
 import { createFilmSimulation, advanceFilm, filmSeconds } from '../physics/flow/filmSimulation.ts';
 import { PROFILE_THETA_DEG, sphereIntegral, thicknessProfileNm, thicknessRangeNm } from '../physics/flow/filmMeasures.ts';
 import { FLOW_PARAMETERS, acceptsFlowValue, expectedFlowValue, type FlowParameterKey } from '../physics/flow/flowParameters.ts';
-import { ParameterError, expectedNumber, isInDomain, type NumberDomain, rejectValue } from '../physics/validate.ts';
+import { ParameterError, expectedNumber, isInDomain, type NumberDomain, rejectValue } from '../input/validate.ts';
 import { parseStrictNumber } from './parseStrictNumber.ts';
 import { readFlags } from './readFlags.ts';
 

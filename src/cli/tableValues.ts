@@ -1,4 +1,4 @@
-import { isInDomain, type NumberDomain, ParameterError, rejectValue, expectedNumber } from '../physics/validate.ts';
+import { isInDomain, type NumberDomain, ParameterError, rejectValue, expectedNumber } from '../input/validate.ts';
 import { parseStrictNumber } from './parseStrictNumber.ts';
 
 /** A table longer than this is a typo (a step of 0.001 instead of 10), not a lesson. */

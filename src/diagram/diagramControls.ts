@@ -1,5 +1,5 @@
 import { FILM_STACK_DOMAIN, POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
-import type { NumberDomain } from '../physics/validate.ts';
+import type { NumberDomain } from '../input/validate.ts';
 import type { Catalogue, MessageKey } from '../i18n/en.ts';
 import { type DiagramSettings, WAVELENGTH_DOMAIN } from './diagramParameters.ts';
 import { settingText } from './numberText.ts';

@@ -1,7 +1,7 @@
 import { FILM_MATERIALS, type FilmIndex } from '../physics/filmIndex.ts';
 import { FILM_STACK_DOMAIN, POLARIZATIONS, type Polarization, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
-import { type NumberDomain, quoted } from '../physics/validate.ts';
+import { type NumberDomain, quoted } from '../input/validate.ts';
 import type { Catalogue, MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 import { FILM_PARAMETERS } from '../settings/filmParameters.ts';

@@ -3,7 +3,7 @@ import { catalogueFor, catalogueLang, message } from '../i18n/messages.ts';
 import { stackAt } from '../physics/filmIndex.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { BEAM_TAIL_FRACTION, type FilmBeams, filmBeams } from '../physics/reflectedBeams.ts';
-import { isInDomain, quoted } from '../physics/validate.ts';
+import { isInDomain, quoted } from '../input/validate.ts';
 import type { ProbedFilm } from '../scene/probe.ts';
 import { drawBeamFigure } from './beamFigure.ts';
 import { fillBeamTable } from './beamTable.ts';

@@ -2,7 +2,9 @@ import { Matrix3, type ShaderMaterial } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { type Matrix3 as Rows3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
-import { FILM_METHODS, type FilmSettings } from '../settings/filmSettings.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
+import type { FilmMethodInput } from '../methods/filmMethod.ts';
+import { FILM_METHOD_REGISTRY, FILM_METHODS, methodReads } from '../methods/methods.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { type FilmMedia, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from './filmMedia.ts';
 import { filmTableLayoutDefines } from './filmTableDefines.ts';
@@ -19,36 +21,28 @@ export const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
 export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm' | 'nInside'>;
 
-/** TFC_OPAQUE_INSIDE alone, for the methods that read no knots (the table's lookup, three's iridescence). */
+/** TFC_OPAQUE_INSIDE alone, which every method reads (an opaque inside sends no light from inside). */
 const opaqueInsideDefine = (s: FilmColorSettings): Record<string, number> => {
   const { TFC_OPAQUE_INSIDE } = filmMediaDefines(s);
   return TFC_OPAQUE_INSIDE === undefined ? {} : { TFC_OPAQUE_INSIDE };
 };
 
+/** The defines each input of a method (src/methods/filmMethod.ts) brings, sized by the quality. */
+const INPUT_DEFINES: Readonly<Record<FilmMethodInput, (s: FilmColorSettings, q: FilmQuality) => Record<string, number>>> = {
+  polarization: (s) => enumDefines('TFC_POLARIZATION', POLARIZATIONS, s.polarization),
+  media: (s) => filmMediaDefines(s),
+  spectralBins: (s, q) => spectralBinDefines(spectralBinsFor(s, q, q.exactSpectralBins), q.spectralTailTolerance),
+  spectralTransform: (_, q) => airySeriesDefines(q.airySeriesMaxOrders),
+  table: (_, q) => filmTableLayoutDefines(q.table),
+};
+
 /**
- * The defines shaders/film/filmColor.glsl needs: the method and polarisation in use, and only the
- * sizes of that method (the spectral bins it visits, or the table's layout).
+ * The defines shaders/film/filmColor.glsl needs: the method in use, and only what that method
+ * reads (its registry entry says which), so a change of anything else compiles nothing.
  */
 export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
-  const filmMode = enumDefines('TFC_FILM_MODE', FILM_METHODS, s.mode);
-  const method = { ...filmMode, ...enumDefines('TFC_POLARIZATION', POLARIZATIONS, s.polarization) };
-  if (s.mode === 'exact')
-    return {
-      ...method,
-      ...spectralBinDefines(spectralBinsFor(s, q, q.exactSpectralBins), q.spectralTailTolerance),
-      ...filmMediaDefines(s),
-    };
-  // The lookup does not depend on the polarisation (the table pass does), so changing it compiles no bubble.
-  if (s.mode === 'table') return { ...filmMode, ...filmTableLayoutDefines(q.table), ...opaqueInsideDefine(s) };
-  // The series, and the binned integral for evanescent films (which have no real optical path).
-  if (s.mode === 'fourier')
-    return {
-      ...method,
-      ...airySeriesDefines(q.airySeriesMaxOrders),
-      ...spectralBinDefines(spectralBinsFor(s, q, q.exactSpectralBins), q.spectralTailTolerance),
-      ...filmMediaDefines(s),
-    };
-  return { ...method, ...opaqueInsideDefine(s) };
+  const inputs = FILM_METHOD_REGISTRY[s.mode].reads.map((input) => INPUT_DEFINES[input](s, q));
+  return Object.assign(enumDefines('TFC_FILM_MODE', FILM_METHODS, s.mode), opaqueInsideDefine(s), ...inputs);
 }
 
 /**
@@ -62,13 +56,13 @@ function updateFilmColorTextures(
   q: FilmQuality,
 ): void {
   const u = m.uniforms;
-  const binned = s.mode === 'exact' || s.mode === 'fourier';
-  if (binned) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s, q, q.exactSpectralBins), m);
+  if (methodReads(s.mode, 'spectralBins'))
+    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s, q, q.exactSpectralBins), m);
   else {
     releaseSpectralBinsTexture(m);
     u.uSpectralBins!.value = null;
   }
-  if (s.mode === 'fourier') u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, m);
+  if (methodReads(s.mode, 'spectralTransform')) u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, m);
   else {
     releaseSpectralTransformTexture(m);
     u.uSpectralTransform!.value = null;

@@ -24,3 +24,12 @@ export function enumCode<T extends string>(name: string, values: readonly T[], v
 export function enumDefines<T extends string>(name: string, values: readonly T[], value: T): Record<string, number> {
   return { ...enumConstants(name, values), [name]: enumCode(name, values, value) };
 }
+
+/**
+ * GLSL holding each value's source under its named `#if` (`#if NAME == NAME_VALUE`), so a program
+ * keeps the one that the define `NAME` selects.
+ */
+export function enumSource<T extends string>(name: string, values: readonly T[], sourceOf: (value: T) => string): string {
+  const constants = Object.keys(enumConstants(name, values));
+  return `${values.map((v, i) => `${i === 0 ? '#if' : '#elif'} ${name} == ${constants[i]}\n${sourceOf(v)}`).join('\n')}\n#endif\n`;
+}

@@ -1,3 +1,7 @@
+import { FIELDS, THICKNESS_FIELDS } from '../fields/fields.ts';
+import { FILM_METHOD_REGISTRY, FILM_METHODS } from '../methods/methods.ts';
+import { enumSource } from './enumDefines.ts';
+
 /**
  * Assembles GLSL from `shaders/` (its folders mirror src/'s roles; a file is named by its base
  * name alone, which is unique across the folders): every `#include "name.glsl"` is replaced by that file, every
@@ -13,8 +17,19 @@ for (const [path, text] of Object.entries(files)) {
   byName.set(name, text);
 }
 
+/**
+ * Files made from a registry rather than written: every registered method's GLSL under its named
+ * `#if` on TFC_FILM_MODE, and every thickness field's on TFC_THICKNESS_FIELD.
+ */
+const GENERATED: Readonly<Record<string, () => string>> = {
+  'filmMethod.glsl': () => enumSource('TFC_FILM_MODE', FILM_METHODS, (m) => `#include "${FILM_METHOD_REGISTRY[m].glsl}"`),
+  'thicknessField.glsl': () => enumSource('TFC_THICKNESS_FIELD', FIELDS, (f) => `#include "${THICKNESS_FIELDS[f].glsl}"`),
+};
+for (const name of Object.keys(GENERATED))
+  if (byName.has(name)) throw new Error(`shaders/${name} is made from a registry: no file may take its name`);
+
 export function shaderSource(name: string, including: readonly string[] = []): string {
-  const text = byName.get(name);
+  const text = byName.get(name) ?? GENERATED[name]?.();
   if (text === undefined) throw new Error(`shaders/${name} does not exist`);
   if (including.includes(name)) throw new Error(`shaders/${name} includes itself: ${[...including, name].join(' → ')}`);
   return text.replace(/^[ \t]*#include\s+"([^"]+)"[ \t]*$/gm, (_, inner: string) => shaderSource(inner, [...including, name]));

@@ -29,4 +29,4 @@ export {
   xyzToXy,
 } from '../physics/colorConversions.ts';
 export { deltaE00, xyzToLab } from '../physics/colorDifference.ts';
-export { ParameterError } from '../physics/validate.ts';
+export { ParameterError } from '../input/validate.ts';

@@ -1,11 +1,12 @@
 import { BubbleApp } from '../app/bubbleApp.ts';
 import { hasWebGL2, showCpuFallback } from '../app/cpuFallback.ts';
 import { parseSettings, refusalText, settingsToQuery } from '../settings/settingsQuery.ts';
-import { FRAME_MARKS } from '../app/frameMarks.ts';
+import { FRAME_MARKS } from './frameMarks.ts';
 import { startsClosed } from '../app/startsClosed.ts';
 import { pageLanguage, prefersReducedMotion } from '../app/pagePreferences.ts';
 import type { ViewSettings } from '../settings/viewParameters.ts';
-import { BubbleView, createBubbleRenderer } from '../scene/bubbleView.ts';
+import { BubbleView } from '../scene/bubbleView.ts';
+import { createBubbleRenderer } from '../scene/bubbleRenderer.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 const messages = document.querySelector<HTMLElement>('#messages');

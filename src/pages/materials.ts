@@ -9,7 +9,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { environmentTexture, loadEnvironmentPixels } from '../bubble/environmentMaps.ts';
 import { TITANIUM_OXIDE_NM, VIEWS, type View, exampleScene } from './materialsScene.ts';
 import { anodizingText } from './anodizingVoltage.ts';
-import { pixelDeltaE00 } from './pixelDeltaE.ts';
+import { pixelDeltaE00 } from '../physics/pixelDeltaE.ts';
 
 const element = <T extends HTMLElement>(selector: string): T => {
   const e = document.querySelector<T>(selector);

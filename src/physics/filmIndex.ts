@@ -1,6 +1,6 @@
 import { FILM_STACK_DOMAIN, type FilmStack } from './filmReflectance.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from './spectralWeights.ts';
-import { ParameterError, parseDecimal, quoted } from './validate.ts';
+import { ParameterError, parseDecimal, quoted } from '../input/validate.ts';
 
 /**
  * The film's refractive index n_b as a function of wavelength (docs/physics.md#a-dispersive-film):

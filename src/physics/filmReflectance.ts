@@ -14,7 +14,7 @@ import {
 } from './complex.ts';
 import { type InterfaceCoefficients, fresnelCoefficients } from './fresnel.ts';
 import { cosDeg, refractedCos } from './snell.ts';
-import { type NumberDomain, ParameterError, assertInRange, isInDomain } from './validate.ts';
+import { type NumberDomain, ParameterError, assertInRange, isInDomain } from '../input/validate.ts';
 
 /**
  * How the two polarisations are combined:

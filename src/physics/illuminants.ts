@@ -6,7 +6,7 @@ import {
   CIE_DAYLIGHT_START_NM,
   CIE_DAYLIGHT_STEP_NM,
 } from './data/cieDaylightComponents.ts';
-import { type NumberDomain, ParameterError, assertInRange, isInDomain, parseDecimal, rejectValue } from './validate.ts';
+import { type NumberDomain, ParameterError, assertInRange, isInDomain, parseDecimal, rejectValue } from '../input/validate.ts';
 
 /**
  * Incident spectra I_in(λ) for eq (15).

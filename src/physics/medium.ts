@@ -15,7 +15,7 @@ import {
 import { type AbsorbingFilmStack, COMPLEX_INDEX_DOMAIN, FILM_STACK_DOMAIN, complexIndexProblem } from './filmReflectance.ts';
 import { NAMED_MEDIA, NAMED_MEDIUM_INDEX, type NamedMedium, isNamedMedium } from './namedMedia.ts';
 import { type SampledIndex, isSampledIndex, sampledIndexAt } from './sampledIndex.ts';
-import { ParameterError, expectedNumber, parseDecimal } from './validate.ts';
+import { ParameterError, expectedNumber, parseDecimal } from '../input/validate.ts';
 
 /**
  * What a film or the inside is made of (docs/physics.md#absorbing-media):

@@ -1,28 +1,18 @@
 import { type Medium } from '../physics/medium.ts';
 import { FIELDS, type FieldName } from '../fields/fields.ts';
+import { ENVIRONMENTS, type Environment, HDR_ENVIRONMENTS, type HdrEnvironment, isHdrEnvironment } from '../environments/environments.ts';
+import { FILM_METHODS, type FilmMethodName, MODES } from '../methods/methods.ts';
 import type { FlowSettings } from '../fields/thicknessField.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
 
 export const SPACES = ['srgb', 'display-p3', 'wide-gamut'] as const;
-/**
- * How the film colour is computed: `exact` the binned spectral integral per fragment (the
- * accuracy reference), `table` one lookup in a GPU-built table, `fourier` the Airy sum as a
- * Fourier series per fragment (a few lookups of the light's spectral transform; nothing to build).
- */
-export const MODES = ['exact', 'table', 'fourier'] as const;
-/** What a film shader can compute: the modes, and three.js's own iridescence (the benchmark's peer). */
-export const FILM_METHODS = [...MODES, 'three-iridescence'] as const;
-export { FIELDS };
+/** How the film colour is computed (`mode`): the methods' registry, src/methods/methods.ts. */
+export { FIELDS, FILM_METHODS, MODES };
 export const SIDES = ['both', 'front'] as const;
-/** Real HDR environments (CC0 equirectangular EXRs, 512 × 256; environmentMaps.ts loads them). */
-export const HDR_ENVIRONMENTS = ['park', 'sunset', 'studio', 'city'] as const;
-export type HdrEnvironment = (typeof HDR_ENVIRONMENTS)[number];
-/** `none` black (the film lit by the light's white: the reference views), `sky` procedural, or a real HDR one. */
-export const ENVIRONMENTS = ['sky', 'none', ...HDR_ENVIRONMENTS] as const;
-export type Environment = (typeof ENVIRONMENTS)[number];
-export const isHdrEnvironment = (env: Environment): env is HdrEnvironment => (HDR_ENVIRONMENTS as readonly string[]).includes(env);
+export { ENVIRONMENTS, HDR_ENVIRONMENTS, isHdrEnvironment };
+export type { Environment, HdrEnvironment };
 /**
  * How HDR light becomes display values: `none` clips (the reference views stay exact), `agx` and
  * `neutral` are three.js's AgX and Khronos PBR Neutral curves; `auto` is `none` for `none` and
@@ -46,7 +36,7 @@ export interface FilmSettings extends FlowSettings {
   readonly polarization: Polarization;
   readonly normalization: Normalization;
   readonly space: (typeof SPACES)[number];
-  readonly mode: (typeof FILM_METHODS)[number];
+  readonly mode: FilmMethodName;
   readonly field: FieldName;
   readonly thicknessNm: number;
   readonly thicknessRangeNm: number;

@@ -17,7 +17,7 @@ import {
 import { COMPLEX_INDEX_DOMAIN, FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { type Medium, type MediumRole, mediumText, readMedium } from '../physics/medium.ts';
 import { NAMED_MEDIA } from '../physics/namedMedia.ts';
-import { type NumberDomain, expectedNumber, isInDomain, parseDecimal } from '../physics/validate.ts';
+import { type NumberDomain, expectedNumber, isInDomain, parseDecimal } from '../input/validate.ts';
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 

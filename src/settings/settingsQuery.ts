@@ -1,5 +1,5 @@
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from './viewParameters.ts';
-import { quoted } from '../physics/validate.ts';
+import { quoted } from '../input/validate.ts';
 import { type ParameterRow, expectationText } from './parameterRow.ts';
 import { type Catalogue, EN } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';

@@ -1,4 +1,4 @@
-import { isInDomain, type NumberDomain, parseDecimal } from '../physics/validate.ts';
+import { isInDomain, type NumberDomain, parseDecimal } from '../input/validate.ts';
 import { FILM_PARAMETERS } from './filmParameters.ts';
 import type { FilmSettings } from './filmSettings.ts';
 import { type ParameterRow, customRow, defaultsOf, flagRow } from './parameterRow.ts';

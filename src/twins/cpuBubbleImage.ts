@@ -6,7 +6,8 @@ import { spectralWeights } from '../physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../settings/filmQuality.ts';
 import { type ShownEnvironment, environmentRadiance, reflectedRadiance } from './environment.ts';
 import type { EnvironmentPixels } from '../bubble/environmentMaps.ts';
-import { type FilmSettings, isHdrEnvironment, toneMappingOf } from '../settings/filmSettings.ts';
+import { type FilmSettings, toneMappingOf } from '../settings/filmSettings.ts';
+import { environmentKind } from '../environments/environments.ts';
 import { maxFieldThicknessNm, thicknessAt } from '../fields/fields.ts';
 import { toneMap } from './toneMapping.ts';
 import type { Vec3 } from '../fields/thicknessField.ts';
@@ -77,9 +78,10 @@ function filmColorLattice(s: FilmSettings): FilmColor {
 
 /** The environment a still image shows: an HDR `env` needs its pixels (environmentMaps.ts). */
 function shownEnvironment(s: FilmSettings, map: EnvironmentPixels | null): ShownEnvironment {
-  if (!isHdrEnvironment(s.env)) return s.env;
+  const kind = environmentKind(s.env);
+  if (kind !== 'map') return { kind };
   if (!map) throw new Error(`the environment ${s.env} needs its pixels`);
-  return { pixels: map, rotationDeg: s.envRotationDeg };
+  return { kind, pixels: map, rotationDeg: s.envRotationDeg };
 }
 
 /**

@@ -4,10 +4,14 @@ import type { EnvironmentPixels } from '../bubble/environmentMaps.ts';
 type Vec3 = readonly [number, number, number];
 
 /**
- * What a view's walls reflect and its background shows (twin of shaders/bubble/environment.glsl):
- * `none` black, `sky` the procedural sky, or an HDR map turned about the vertical axis.
+ * What a view's walls reflect and its background shows (twin of shaders/bubble/environment.glsl),
+ * by its kind (ENVIRONMENT_KINDS, src/environments/environments.ts): `none` black, `sky` the procedural sky, or an
+ * HDR `map` turned about the vertical axis.
  */
-export type ShownEnvironment = 'none' | 'sky' | { readonly pixels: EnvironmentPixels; readonly rotationDeg: number };
+export type ShownEnvironment =
+  | { readonly kind: 'none' }
+  | { readonly kind: 'sky' }
+  | { readonly kind: 'map'; readonly pixels: EnvironmentPixels; readonly rotationDeg: number };
 
 const clamp01 = (v: number) => Math.min(1, Math.max(0, v));
 const smoothstep = (e0: number, e1: number, x: number) => {
@@ -55,14 +59,14 @@ function sampleBilinear(p: EnvironmentPixels, u: number, v: number): Rgb {
 
 /** The environment's linear sRGB radiance arriving from `direction` (any length). */
 export function environmentRadiance(direction: Vec3, env: ShownEnvironment): Rgb {
-  if (env === 'none') return [0, 0, 0];
+  if (env.kind === 'none') return [0, 0, 0];
   const l = Math.hypot(direction[0], direction[1], direction[2]);
   const d: Vec3 = [direction[0] / l, direction[1] / l, direction[2] / l];
-  if (env === 'sky') return skyRadiance(d[1]);
+  if (env.kind === 'sky') return skyRadiance(d[1]);
   const [u, v] = equirectUv(d, env.rotationDeg);
   return sampleBilinear(env.pixels, u, v);
 }
 
 /** The light a wall reflects from the mirror direction: the illuminant's white with `none` (the reference views), else the environment. */
 export const reflectedRadiance = (direction: Vec3, env: ShownEnvironment): Rgb =>
-  env === 'none' ? [1, 1, 1] : environmentRadiance(direction, env);
+  env.kind === 'none' ? [1, 1, 1] : environmentRadiance(direction, env);

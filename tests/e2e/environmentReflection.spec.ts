@@ -40,7 +40,8 @@ for (const c of CASES) {
   test(`a uniform film${over} in ${c.env} (turned ${c.rotationDeg}°, tone mapping ${c.tonemap}, exposure ${c.exposure}) reflects it in the mirror direction${opaque ? '' : ' and shows it behind'}`, async ({
     page,
   }) => {
-    const env: ShownEnvironment = c.env === 'sky' ? 'sky' : { pixels: await loadEnvironmentPixels(c.env), rotationDeg: c.rotationDeg };
+    const env: ShownEnvironment =
+      c.env === 'sky' ? { kind: 'sky' } : { kind: 'map', pixels: await loadEnvironmentPixels(c.env), rotationDeg: c.rotationDeg };
     await page.goto(
       `/?field=uniform&thickness=${THICKNESS_NM}&env=${c.env}&envRotation=${c.rotationDeg}&tonemap=${c.tonemap}` +
         `&exposure=${c.exposure}&sides=front&animate=0&nInside=${encodeURIComponent(mediumText(c.nInside))}`,

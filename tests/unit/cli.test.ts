@@ -11,7 +11,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { ParameterError, describeValue } from '../../src/physics/validate.ts';
+import { ParameterError, describeValue } from '../../src/input/validate.ts';
 import { parseStrictNumber } from '../../src/cli/parseStrictNumber.ts';
 import { runColorCommand } from '../../src/cli/runColorCommand.ts';
 import { colorCommand } from '../../src/cli/colorCommand.ts';

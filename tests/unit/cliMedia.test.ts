@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { runColorCommand } from '../../src/cli/runColorCommand.ts';
-import { ParameterError } from '../../src/physics/validate.ts';
+import { ParameterError } from '../../src/input/validate.ts';
 import { ALGEBRAIC_TOL, GOLD_GOLDEN_TOL } from '../tolerances.ts';
 
 type Index = number | { n: number; k: number };

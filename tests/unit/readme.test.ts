@@ -1,7 +1,8 @@
 /** The README is a short front door, and its URL table is the schema's. */
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { urlTableMarkdown, withBlock } from '../../scripts/docs/urlTable.ts';
+import { urlTableMarkdown } from '../../scripts/docs/urlTable.ts';
+import { withBlock } from '../../scripts/docs/withBlock.ts';
 import { VIEW_PARAMETERS } from '../../src/settings/viewParameters.ts';
 
 const readme = readFileSync(new URL('../../README.md', import.meta.url), 'utf8');

@@ -1,5 +1,5 @@
 import { FILM_STACK_DOMAIN } from '../filmReflectance.ts';
-import { ParameterError, describeValue, expectedNumber, isInDomain, type NumberDomain } from '../validate.ts';
+import { ParameterError, describeValue, expectedNumber, isInDomain, type NumberDomain } from '../../input/validate.ts';
 
 /**
  * Every parameter of the film-flow simulation in one table: its key, its command-line flag, its

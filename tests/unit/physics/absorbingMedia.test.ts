@@ -17,7 +17,7 @@ import {
   transmittanceAt,
 } from '../../../src/physics/filmReflectance.ts';
 import { filmXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
-import { ParameterError } from '../../../src/physics/validate.ts';
+import { ParameterError } from '../../../src/input/validate.ts';
 import { ALGEBRAIC_TOL, ENERGY_TOL, GOLD_GOLDEN_TOL, TMM_TOL } from '../../tolerances.ts';
 
 // Complex arithmetic of the test's own, so the reference shares no code with src/physics.

@@ -10,7 +10,7 @@ import {
   filmReflectance,
   filmTransmittance,
 } from '../../../src/physics/filmReflectance.ts';
-import { ParameterError } from '../../../src/physics/validate.ts';
+import { ParameterError } from '../../../src/input/validate.ts';
 import { ALGEBRAIC_TOL, ROUNDING_TOL } from '../../tolerances.ts';
 
 /** Indices chosen to make every ordering: film above, below and between its media; TIR and frustrated TIR. */

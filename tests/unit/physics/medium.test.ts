@@ -22,7 +22,7 @@ import {
 } from '../../../src/physics/medium.ts';
 import { NAMED_MEDIA, NAMED_MEDIUM_INDEX } from '../../../src/physics/namedMedia.ts';
 import { type NkTable } from '../../../src/physics/tabulatedIndex.ts';
-import { ParameterError } from '../../../src/physics/validate.ts';
+import { ParameterError } from '../../../src/input/validate.ts';
 import { FOUR_DIGIT_REL_TOL, TABLE_SUBSAMPLE_TOL } from '../../tolerances.ts';
 
 const at = (m: Medium, lambdaNm: number) => {

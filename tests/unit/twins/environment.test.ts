@@ -45,8 +45,8 @@ describe('the equirectangular environment', () => {
         expect(Math.abs(v - v0)).toBeLessThan(ROUNDING_TOL);
       }
       const d = direction(0.3, 0.6);
-      const fullTurn = environmentRadiance(d, { pixels: MAP, rotationDeg: 360 })[2];
-      expect(Math.abs(fullTurn - environmentRadiance(d, { pixels: MAP, rotationDeg: 0 })[2])).toBeLessThan(ALGEBRAIC_TOL);
+      const fullTurn = environmentRadiance(d, { kind: 'map', pixels: MAP, rotationDeg: 360 })[2];
+      expect(Math.abs(fullTurn - environmentRadiance(d, { kind: 'map', pixels: MAP, rotationDeg: 0 })[2])).toBeLessThan(ALGEBRAIC_TOL);
     }
   });
 
@@ -57,7 +57,7 @@ describe('the equirectangular environment', () => {
       [15, 7],
       [8, 2],
     ] as const) {
-      const rgb = environmentRadiance(direction((i + 0.5) / W, (j + 0.5) / H), { pixels: MAP, rotationDeg: 0 });
+      const rgb = environmentRadiance(direction((i + 0.5) / W, (j + 0.5) / H), { kind: 'map', pixels: MAP, rotationDeg: 0 });
       expect(Math.abs(rgb[0] - i)).toBeLessThan(ALGEBRAIC_TOL);
       expect(Math.abs(rgb[1] - j)).toBeLessThan(ALGEBRAIC_TOL);
       expect(Math.abs(rgb[2] - i * j)).toBeLessThan(ALGEBRAIC_TOL);
@@ -65,7 +65,7 @@ describe('the equirectangular environment', () => {
   });
 
   it('is continuous across the seam where u wraps from 1 to 0 (halfway between the last and first columns)', () => {
-    const env = { pixels: MAP, rotationDeg: 0 };
+    const env = { kind: 'map', pixels: MAP, rotationDeg: 0 } as const;
     const v = 3.5 / H;
     const justBefore = environmentRadiance(direction(1 - 1e-9, v), env);
     const justAfter = environmentRadiance(direction(1e-9, v), env);

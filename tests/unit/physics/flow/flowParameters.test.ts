@@ -8,7 +8,7 @@ import { describe, expect, it } from 'vitest';
 import { flowNumbers, surfaceTensionNM, taylorCulickSpeedMps } from '../../../../src/physics/flow/flowNumbers.ts';
 import { DEFAULT_FLOW_PARAMETERS, FLOW_PARAMETERS, validateFlowParameters } from '../../../../src/physics/flow/flowParameters.ts';
 import { createFilmSimulation } from '../../../../src/physics/flow/filmSimulation.ts';
-import { ParameterError } from '../../../../src/physics/validate.ts';
+import { ParameterError } from '../../../../src/input/validate.ts';
 import { ALGEBRAIC_TOL, FEW_OPERATIONS_TOL, printedValueTol } from '../../../tolerances.ts';
 import { stationaryExponent } from './flowTestHelpers.ts';
 

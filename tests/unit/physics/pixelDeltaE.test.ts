@@ -1,6 +1,6 @@
 import { differenceCiede2000, type Rgb } from 'culori';
 import { describe, expect, it } from 'vitest';
-import { pixelDeltaE00 } from '../../../src/pages/pixelDeltaE.ts';
+import { pixelDeltaE00 } from '../../../src/physics/pixelDeltaE.ts';
 import { mulberry32 } from '../../seededRandom.ts';
 import { CULORI_DE00, ROUNDING_TOL } from '../../tolerances.ts';
 

@@ -1,6 +1,6 @@
-import { XYZ_TO_LINEAR_SRGB, applyMatrix3, invert3, srgbDecode } from '../physics/colorConversions.ts';
-import { deltaE00 } from '../physics/colorDifference.ts';
-import type { Xyz } from '../physics/spectralWeights.ts';
+import { XYZ_TO_LINEAR_SRGB, applyMatrix3, invert3, srgbDecode } from './colorConversions.ts';
+import { deltaE00 } from './colorDifference.ts';
+import type { Xyz } from './spectralWeights.ts';
 
 const LINEAR_SRGB_TO_XYZ = invert3(XYZ_TO_LINEAR_SRGB);
 

@@ -1,0 +1,20 @@
+// `exact` (src/methods/exactMethod.ts): the film's XYZ as the binned spectral integral per fragment
+// (eqs 15–18 over the film reflectance of eqs 1–14). TFC_DISPERSIVE: the film's or the inside's
+// index depends on λ (medium.glsl), and the dispersive bins take it.
+#ifndef THIN_FILM_EXACT_METHOD
+#define THIN_FILM_EXACT_METHOD
+
+#include "binnedIntegration.glsl"
+
+vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
+#ifdef TFC_DISPERSIVE
+  return tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, 0);
+#else
+  float na;
+  vec2 nc;
+  tfcFilmSides(fromInside, na, nc);
+  return tfcBinnedXyz(tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence), 0.0);
+#endif
+}
+
+#endif

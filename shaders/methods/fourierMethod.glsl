@@ -1,0 +1,26 @@
+// `fourier` (src/methods/fourierMethod.ts): the film's XYZ as the Airy series per fragment
+// (airySeries.glsl), by the bins where the film has no real optical path or the series needs more
+// than TFC_AIRY_SERIES_MAX_ORDERS terms. A dispersive film or inside has no series in the path
+// alone (docs/physics.md#a-dispersive-film): the dispersive bins take it.
+#ifndef THIN_FILM_FOURIER_METHOD
+#define THIN_FILM_FOURIER_METHOD
+
+#include "airySeries.glsl"
+#include "binnedIntegration.glsl"
+
+vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
+#ifdef TFC_DISPERSIVE
+  return tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, 0);
+#else
+  float na;
+  vec2 nc;
+  tfcFilmSides(fromInside, na, nc);
+  FilmOptics o = tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
+  AirySeriesTerms t[TFC_FILM_CHANNELS];
+  tfcAirySeriesTermsOf(o, t);
+  float x = o.opticalPathNm.x;
+  return o.opticalPathNm.y == 0.0 && (TFC_AIRY_SERIES_TRUNCATED == 1 || tfcAirySeriesConvergesAt(t, x)) ? tfcAirySeriesSum(t, x) : tfcBinnedXyz(o, 0.0);
+#endif
+}
+
+#endif

@@ -1,0 +1,41 @@
+import type { Medium } from '../physics/medium.ts';
+import type { MessageKey } from '../i18n/en.ts';
+
+/**
+ * What a method's shader reads beside TFC_FILM_MODE, each made for it by src/film/filmColor.ts:
+ * - `polarization`: TFC_POLARIZATION;
+ * - `media`: the media's defines and knots (a dispersive film or inside);
+ * - `spectralBins`: the light's bin weights (a texture) and the bins' defines;
+ * - `spectralTransform`: the light's spectral transform (a texture a worker computes) and the series' defines;
+ * - `table`: the film table (built on the GPU when a parameter it depends on changes) and its layout.
+ */
+export type FilmMethodInput = 'polarization' | 'media' | 'spectralBins' | 'spectralTransform' | 'table';
+
+/** What a method is asked to draw: the film's media (its fallback may depend on them). */
+export interface FilmMethodSettings {
+  readonly nFilm: Medium;
+  readonly nInside: Medium;
+}
+
+/** Another method drawn in a method's place, and the message that says why (with its `{marks}`). */
+export interface DrawnInstead {
+  readonly method: string;
+  readonly notice: MessageKey;
+  readonly values: Readonly<Record<string, string>>;
+}
+
+/**
+ * A way to compute the film's colour on the GPU: one TypeScript module and its GLSL twin of the
+ * same name (shaders/methods/), registered once in src/methods/methods.ts. Its label is the
+ * message `choice.mode.<name>` in each catalogue.
+ */
+export interface FilmMethod {
+  /** Its GLSL file, which defines `vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside)`. */
+  readonly glsl: string;
+  /** What its shader reads (the ingredients above). */
+  readonly reads: readonly FilmMethodInput[];
+  /** Whether a user may choose it (`mode=`); the others are the benchmark's peers. */
+  readonly offered: boolean;
+  /** The method drawn instead where this one cannot draw `s` (null or absent: it draws every film). */
+  readonly drawnInstead?: (s: FilmMethodSettings) => DrawnInstead | null;
+}

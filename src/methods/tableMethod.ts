@@ -1,0 +1,12 @@
+import type { FilmMethod } from './filmMethod.ts';
+
+/**
+ * `table`: one filtered lookup per fragment in a table of the film's XYZ over thickness and
+ * cos θ, built on the GPU by the exact integral. The lookup does not depend on the polarisation
+ * (the table's pass does), so changing it compiles no bubble.
+ */
+export const tableMethod = {
+  glsl: 'tableMethod.glsl',
+  reads: ['table'],
+  offered: true,
+} as const satisfies FilmMethod;
