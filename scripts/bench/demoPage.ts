@@ -3,10 +3,11 @@
  * tables it builds when nothing moves, while the swirl animates, and while hidden.
  */
 import type { Browser, Page } from '@playwright/test';
-import { FRAME_MARKS } from '../../src/app/frameMarks.ts';
+import { FRAME_MARKS } from '../../src/pages/frameMarks.ts';
 import type { BenchPlan } from './benchPlan.ts';
 import { EN } from '../../src/i18n/en.ts';
 import { labelKey } from '../../src/settings/parameterRow.ts';
+import { TABLE_PASS_NAME } from '../../src/film/keptPasses.ts';
 import { openPage } from './openPage.ts';
 
 type DemoPlan = BenchPlan['demo'];
@@ -75,14 +76,24 @@ new PerformanceObserver((list) => { for (const e of list.getEntries()) window.lo
  * Each change through the lil-gui panel (a number box's input event, or a list's change event) in
  * a still page: there, back, there again and back again, each waited for until a frame is shown in
  * full with the plots drawn and `windowMs` more have passed; what each cost in programs linked,
- * long tasks and texels.
+ * long tasks and texels. The table's texels are counted at the view's renderer: each draw of the
+ * table pass (its material named TABLE_PASS_NAME) fills its target's scissor box.
  */
 async function panelChanges(page: Page, how: DemoPlan): Promise<DemoPageFigures['panel']> {
   return page.evaluate(
-    async ([changes, windowMs, longTaskMs]) => {
+    async ([changes, windowMs, longTaskMs, tablePassName]) => {
       type Counters = { programsLinked: number; longTasks: [number, number][] };
-      const w = window as unknown as Counters & { bubbleView: { coarse: boolean; table: { texelsDrawn: number } } };
+      type Drawn = { material?: { name?: string } };
+      type Renderer = { render(drawn: Drawn, camera: unknown): void; getRenderTarget(): { scissor: { z: number; w: number } } | null };
+      const w = window as unknown as Counters & { bubbleView: { coarse: boolean; renderer: Renderer } };
       const view = w.bubbleView;
+      let texelsDrawn = 0;
+      const render = view.renderer.render.bind(view.renderer);
+      view.renderer.render = (drawn, camera) => {
+        const target = view.renderer.getRenderTarget();
+        if (target && drawn.material?.name === tablePassName) texelsDrawn += target.scissor.z * target.scissor.w;
+        render(drawn, camera);
+      };
       const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
       const wait = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
       const controller = (name: string) => {
@@ -107,7 +118,7 @@ async function panelChanges(page: Page, how: DemoPlan): Promise<DemoPageFigures[
       /** [programs linked, long tasks' durations, texels drawn, ms to the first frame shown in full]. */
       const measure = async (name: string, value: string): Promise<[number, number[], number, number]> => {
         const programs = w.programsLinked;
-        const texels = view.table.texelsDrawn;
+        const texels = texelsDrawn;
         const inputAt = performance.now();
         let fullAt = Infinity;
         const tick = (t: number) => {
@@ -119,7 +130,7 @@ async function panelChanges(page: Page, how: DemoPlan): Promise<DemoPageFigures[
         while (fullAt === Infinity || !document.querySelector('.tfb-plots[data-probe]')) await wait(20);
         await wait(windowMs);
         const tasks = w.longTasks.filter(([start, ms]) => start + ms > inputAt && ms > longTaskMs).map(([, ms]) => ms);
-        return [w.programsLinked - programs, tasks, view.table.texelsDrawn - texels, fullAt - inputAt];
+        return [w.programsLinked - programs, tasks, texelsDrawn - texels, fullAt - inputAt];
       };
       const figures = [];
       for (const [, name, value, back] of changes) {
@@ -132,9 +143,10 @@ async function panelChanges(page: Page, how: DemoPlan): Promise<DemoPageFigures[
           fullMs: median(runs.map((r) => r[3])),
         });
       }
+      Reflect.deleteProperty(view.renderer, 'render');
       return figures;
     },
-    [PANEL_CHANGES, how.windowMs, LONG_TASK_MS] as const,
+    [PANEL_CHANGES, how.windowMs, LONG_TASK_MS, TABLE_PASS_NAME] as const,
   );
 }
 export interface FrameCounts {
@@ -146,17 +158,27 @@ const WINDOW_MS = 1000;
 
 async function countOneSecond(page: Page): Promise<FrameCounts> {
   return page.evaluate(async (ms) => {
-    const view = (window as unknown as { bubbleView: { render(quick?: boolean): void; table: { builds: number } } }).bubbleView;
+    type Table = { readonly coarse: boolean; update(...args: unknown[]): boolean };
+    const view = (window as unknown as { bubbleView: { render(quick?: boolean): void; table: Table } }).bubbleView;
     let frames = 0;
     const render = view.render.bind(view);
     view.render = (quick?: boolean) => {
       frames++;
       render(quick);
     };
-    const builds = view.table.builds;
+    // A full table shown: an update that changed what the table binds and left no coarse one.
+    let tableBuilds = 0;
+    const table = view.table;
+    const update = table.update.bind(table);
+    table.update = (...args) => {
+      const changed = update(...args);
+      if (changed && !table.coarse) tableBuilds++;
+      return changed;
+    };
     await new Promise((r) => setTimeout(r, ms));
     view.render = render;
-    return { frames, tableBuilds: view.table.builds - builds };
+    Reflect.deleteProperty(table, 'update');
+    return { frames, tableBuilds };
   }, WINDOW_MS);
 }
 

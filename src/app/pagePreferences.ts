@@ -1,6 +1,6 @@
 import { type Catalogue, EN } from '../i18n/en.ts';
 import { LANGUAGES, catalogueFor, catalogueLang, message } from '../i18n/messages.ts';
-import { quoted } from '../physics/validate.ts';
+import { quoted } from '../input/validate.ts';
 
 /** Whether the user asks for less motion (the media query), so the swirl starts still unless asked to move. */
 export const prefersReducedMotion = (win: Window = window): boolean =>
