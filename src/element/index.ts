@@ -1,6 +1,6 @@
 /**
  * The embeddable bubble as one ES module: `<script type="module" src=".../thin-film-bubble.js">`
- * defines `<thin-film-bubble>` and `<thin-film-diagram>`; see README "Embedding" and docs/diagram.md.
+ * defines `<thin-film-bubble>` and `<thin-film-diagram>`; see docs/demo.md#embedding-thin-film-bubble and docs/diagram.md.
  */
 import { defineThinFilmDiagram } from '../diagram/thinFilmDiagram.ts';
 import { defineThinFilmBubble } from './thinFilmBubble.ts';

@@ -8,8 +8,10 @@ import { catalogueFor, catalogueLang } from '../i18n/messages.ts';
 import { startsClosed } from '../app/startsClosed.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
+import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import type { ProbedFilm } from '../scene/probe.ts';
 import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
+import { FrameCanvases } from './frameCanvases.ts';
 
 /**
  * The element's layout. It is a size container: narrower than 800 px (the plots column, 270 px,
@@ -19,7 +21,7 @@ import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.t
  * `--tfb-*-start` properties). A horizontal drag on the stage moves the probe, a vertical one
  * scrolls the page.
  */
-/** While the swirl animates, the probe's film is read (and `probechange` sent) at most this often. */
+/** While the film animates, the probe's film is read (and `probechange` sent) at most this often. */
 const PROBE_INTERVAL_MS = 250;
 
 const STYLE = `
@@ -62,7 +64,8 @@ function addElementStyles(doc: Document): void {
  * range, in a message inside the element, and its default (or last good) value is kept.
  * Events: `change` (detail: { settings, query }) when its panel or a press on the bubble changes the view;
  * `probechange` (detail: { thicknessNm, angleDeg }) when the film at the probe changes (after a
- * complete frame; while the swirl animates, at most every PROBE_INTERVAL_MS), also read as `probeReading`.
+ * complete frame; while the film animates, at most every PROBE_INTERVAL_MS), also read as `probeReading`.
+ * With `space` display-p3 or wide-gamut, where the browser offers it, the bubble is shown in Display P3 (FrameCanvases).
  */
 export class ThinFilmBubble extends HTMLElement {
   static readonly observedAttributes = [...VIEW_PARAMETERS.map((row) => row.attribute), 'controls', 'plots', 'lang'];
@@ -137,21 +140,17 @@ export class ThinFilmBubble extends HTMLElement {
     }
     const renderer = acquireSharedRenderer();
     const view = new BubbleView(renderer, settings);
-    const canvas = this.canvas;
+    const frames = new FrameCanvases(this.canvas);
     this.app = new BubbleApp(
       {
         view,
         surface: stage,
-        focusable: canvas,
+        focusable: this.canvas,
         catalogue: cat,
         controls,
         plots,
         messages: this.messages ?? undefined,
-        present: () => {
-          const { width, height } = renderer.domElement;
-          if (canvas.width !== width || canvas.height !== height) Object.assign(canvas, { width, height });
-          canvas.getContext('2d')?.drawImage(renderer.domElement, 0, 0);
-        },
+        present: () => frames.show(renderer.domElement, view.displayIsP3),
         // Frames that show the settings in full (not from a coarse table) are counted.
         onFrame: (complete) => {
           if (!complete) return;
@@ -171,7 +170,7 @@ export class ThinFilmBubble extends HTMLElement {
     const { probe, animate, field } = this.app?.current ?? DEFAULT_VIEW_SETTINGS;
     const [film, at, ms] = this.probedOf;
     const now = performance.now();
-    if (at === probe && (film === view.current || (animate && field === 'swirl' && now - ms < PROBE_INTERVAL_MS))) return;
+    if (at === probe && (film === view.current || (animate && THICKNESS_FIELDS[field].animates && now - ms < PROBE_INTERVAL_MS))) return;
     const of = (this.probedOf = [view.current, probe, now]);
     // The pixel comes back from the GPU a frame or two later; a reading asked for since (or the element removed) counts instead.
     view.probe(probe[0], probe[1]).then(

@@ -1,4 +1,12 @@
 import { expect, test, type Page } from '@playwright/test';
+import {
+  XYZ_TO_LINEAR_DISPLAY_P3,
+  XYZ_TO_LINEAR_SRGB,
+  applyMatrix3,
+  encode8,
+  invert3,
+  srgbDecode,
+} from '../../src/physics/colorConversions.ts';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 import { watchProblems, withoutWebGL } from './pageWatch.ts';
 import { BUILT_URL } from './servers.ts';
@@ -117,6 +125,78 @@ test('attributes: a bad one is named with its range and its default kept; a chan
 
   await el.evaluate((e) => e.remove());
   expect((await glCounts(page)).liveContexts).toBe(0);
+  expect(problems).toEqual([]);
+});
+
+/** The first element's canvases, bottom first: each one's 2-D colour space and its centre pixel (RGBA) read back in `readAs`. */
+const canvases = (page: Page, readAs: PredefinedColorSpace) =>
+  page
+    .locator('thin-film-bubble')
+    .first()
+    .evaluate(
+      (e, colorSpace) =>
+        [...e.querySelectorAll<HTMLCanvasElement>('.tfb-stage > canvas')].map((c) => {
+          const context = c.getContext('2d')!;
+          const rgba = [...context.getImageData(c.width >> 1, c.height >> 1, 1, 1, { colorSpace }).data];
+          return { colorSpace: context.getContextAttributes().colorSpace, rgba };
+        }),
+      readAs,
+    );
+
+/** An 8-bit sRGB colour as 8-bit Display P3 (the same transfer curve): what an sRGB canvas read as Display P3 gives. */
+const srgb8InDisplayP3 = (rgb: readonly number[]) =>
+  applyMatrix3(
+    XYZ_TO_LINEAR_DISPLAY_P3,
+    applyMatrix3(invert3(XYZ_TO_LINEAR_SRGB), [srgbDecode(rgb[0]! / 255), srgbDecode(rgb[1]! / 255), srgbDecode(rgb[2]! / 255)]),
+  ).map(encode8);
+
+test('space=display-p3 shows the Display P3 colour in a Display P3 canvas, and a change of space takes the canvas along', async ({
+  page,
+}) => {
+  const offersDisplayP3 = await page.evaluate(() => {
+    const twoD = document.createElement('canvas').getContext('2d', { colorSpace: 'display-p3' });
+    const gl = document.createElement('canvas').getContext('webgl2');
+    if (gl) gl.drawingBufferColorSpace = 'display-p3';
+    return twoD?.getContextAttributes().colorSpace === 'display-p3' && gl?.drawingBufferColorSpace === 'display-p3';
+  });
+  test.skip(!offersDisplayP3, 'this browser offers no Display P3 2-D canvas or WebGL drawing buffer: the element stays sRGB there');
+  const problems = watchProblems(page);
+  // 450 nm under D65 lies outside sRGB (its linear red is negative): its Display P3 colour is
+  // farther than the tolerance from its clipped sRGB colour read as Display P3, so a frame clipped
+  // to sRGB on its way to the page fails.
+  const p3 = reference8({ thicknessNm: 450 }, 'D65', XYZ_TO_LINEAR_DISPLAY_P3);
+  const srgb = reference8({ thicknessNm: 450 }, 'D65');
+  expect(worstCodeDifference(srgb8InDisplayP3(srgb), p3)).toBeGreaterThan(MAX_CODE_DIFFERENCE);
+
+  await plainPage(page, `<thin-film-bubble ${FILM} space="display-p3"></thin-film-bubble>`);
+  const el = page.locator('thin-film-bubble');
+  await expect(el).toHaveAttribute('data-frames', /\d+/);
+  /** Sets the attribute `space` and waits for a frame drawn in full in it. */
+  const setSpace = async (space: string) => {
+    const frames = await el.getAttribute('data-frames');
+    await el.evaluate((e, value) => e.setAttribute('space', value), space);
+    await expect(el).not.toHaveAttribute('data-frames', frames!);
+  };
+  // The frame is in a Display P3 canvas (read back as Display P3) beneath the element's own
+  // canvas, which is clear (it takes focus and keys).
+  const expectDisplayP3 = async () => {
+    const shown = await canvases(page, 'display-p3');
+    console.log(`element display-p3 450 nm D65: canvases ${JSON.stringify(shown)}; reference P3 ${p3}, sRGB ${srgb}`);
+    expect(shown.map((c) => c.colorSpace)).toEqual(['display-p3', 'srgb']);
+    expect(worstCodeDifference(shown[0]!.rgba.slice(0, 3), p3), `P3 canvas ${shown[0]!.rgba}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+    expect(shown[1]!.rgba[3]).toBe(0);
+  };
+  await expectDisplayP3();
+
+  // Back to sRGB: one canvas, the clipped sRGB colour read back as before; then Display P3 again.
+  await setSpace('srgb');
+  const shownSrgb = await canvases(page, 'srgb');
+  expect(shownSrgb.map((c) => c.colorSpace)).toEqual(['srgb']);
+  expect(worstCodeDifference(shownSrgb[0]!.rgba.slice(0, 3), srgb), `sRGB canvas ${shownSrgb[0]!.rgba}`).toBeLessThanOrEqual(
+    MAX_CODE_DIFFERENCE,
+  );
+  await setSpace('display-p3');
+  await expectDisplayP3();
   expect(problems).toEqual([]);
 });
 

@@ -8,7 +8,7 @@ import { KEPT_PASSES } from '../../src/film/keptPasses.ts';
 import { KEPT_DEFINE_SETS } from '../../src/gpu/materialDefines.ts';
 
 /**
- * A long session in one page (README, *Robustness*), on the built element: 10 000 changes through one
+ * A long session in one page (docs/demo.md#robustness), on the built element: 10 000 changes through one
  * bubble's lil-gui panel (sliders, illuminant, colour space, mode, …) with frames drawn along the
  * way, then that bubble removed and 10 more inserted and removed. Another bubble stays all along:
  * the shared renderer's live GPU objects (three's renderer.info) must come back to what that one
