@@ -118,9 +118,10 @@ float tfcMeanChannelReflectance(AiryTerms c, float phaseCenter, float halfWidth)
   float rho = sqrt(rho2);
   // float32 guard (not in the float64 twin): near an Airy resonance with |r_ba r_bc| → 1 (grazing
   // light) the closed form below is a difference of terms ~1/(1 − ρ) that cancel to R(1 − ρ²),
-  // and float32 keeps too few digits of it (ΔE00 3.8 for a 0.78 nm film at 89.5°). A window
-  // narrower than the resonance (w < (1 − ρ)/2) is averaged by Simpson's rule on eq (13) itself,
-  // which has no such cancellation; its error is ~(w / (1 − ρ))⁴ / 180 ≤ 4e-4 of R.
+  // and float32 keeps too few digits of it, visibly so for sub-nanometre films near grazing light
+  // (docs/gpu.md#float32-limits). A window narrower than the resonance (w < (1 − ρ)/2) is averaged
+  // by Simpson's rule on eq (13) itself, which has no such cancellation; its error is
+  // ~(w / (1 − ρ))⁴ / 180 ≤ 4e-4 of R.
   if (w < 0.5 * (1.0 - rho)) {
     return clamp((tfcChannelReflectance(c, tfcCExpI(vec2(phaseCenter - w, 0.0))) + 4.0 * tfcChannelReflectance(c, tfcCExpI(vec2(phaseCenter, 0.0)))
       + tfcChannelReflectance(c, tfcCExpI(vec2(phaseCenter + w, 0.0)))) / 6.0, 0.0, 1.0);

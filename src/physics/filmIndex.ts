@@ -4,7 +4,7 @@ import { ParameterError, parseDecimal, quoted } from '../input/validate.ts';
 
 /**
  * The film's refractive index n_b as a function of wavelength (docs/physics.md#a-dispersive-film):
- * - a number: the same at every wavelength (as every colour before dispersion);
+ * - a number: the same at every wavelength (no dispersion);
  * - a named material (FILM_MATERIALS);
  * - a Cauchy film: n(λ) = A + B/λ² + C/λ⁴, λ in nm (B in nm², C in nm⁴).
  * Its domain: n(λ) within FILM_STACK_DOMAIN.nFilm (1–4) at every λ of 380–830 nm.

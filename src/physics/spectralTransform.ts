@@ -41,7 +41,9 @@ let fft: FFT | null = null;
 /**
  * F_j for a light's weights. With σ = 1/λ, dλ = dσ/σ², F_j(x) = ∫ v_j(σ) e^{i2πxσ} dσ,
  * v_j(σ) = w_j(1/σ)/σ²; the trapezoid rule on BAND_SAMPLES equal steps of σ makes every x_k = kΔx
- * one term of a discrete Fourier transform, computed by FFT (three real transforms, ~30 ms).
+ * one term of a discrete Fourier transform, computed by FFT (three real transforms of FFT_SIZE
+ * points: longer than a frame on a busy CPU, so the app runs it in a worker,
+ * docs/gpu.md#nothing-waits-on-the-main-thread).
  */
 export function spectralTransform(w: SpectralWeights): SpectralTransform {
   fft ??= new FFT(FFT_SIZE);

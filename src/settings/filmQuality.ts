@@ -7,14 +7,15 @@ import { type FilmTableLayout, TABLE_FILLS } from './filmTableLayout.ts';
 
 /**
  * How finely the film colour is computed, apart from the scene: the knobs the benchmark
- * (`npm run bench`) compares. The defaults are chosen from its table (README, Benchmarks).
+ * (`npm run bench`) compares. The defaults are chosen from its tables (docs/benchmarks.md).
  */
 export interface FilmQuality {
   /** spectral bins per fragment in `exact` mode (must divide 450) */
   readonly exactSpectralBins: number;
   /**
    * spectral bins of a dispersive film in every mode (must divide 450): the Fresnel terms per bin
-   * and the bins' own approximation; 90 bins are ΔE00 0.10 off in float64 on 0–2 µm, 150 are 0.04
+   * and the bins' own approximation; enough that the binned method stays within ΔE00 0.1 of the
+   * reference for water and Cauchy films on 0–2 µm in float64 (tests/unit/physics/filmIndex.test.ts)
    */
   readonly dispersiveSpectralBins: number;
   readonly table: FilmTableLayout;

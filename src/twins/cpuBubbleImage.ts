@@ -16,14 +16,14 @@ import type { Vec3 } from '../fields/thicknessField.ts';
 export const CAMERA_DISTANCE = 4;
 export const FOV_DEG = 35;
 /**
- * Films are coloured by the shader's method (binnedXyz, the default `exact` bin count: within ΔE00
- * 0.11 of filmXyz to 2 µm, and its cost does not grow with thickness) on a memoised lattice,
- * interpolated bilinearly: thickness in steps around the set thickness (so a uniform film is
- * exact), at least MIN_THICKNESS_STEP_NM and at most LATTICE_THICKNESSES steps over the field's
- * range (thick films vary slowly once their fringes average out); cos θ_i in steps of
- * 1/COS_STEPS. Measured on a soap film 10–1500 nm: lattice midpoints are within ΔE00 0.95 of
- * filmXyz up to 83° (cos θ ≥ 1/8), 4.4 at the limb, where colour changes fastest with angle.
- * A 240 × 240 image takes ~0.6 s on this 2-core machine.
+ * Films are coloured by the shader's method (binnedXyz at the default `exact` bin count, whose
+ * error against filmXyz the benchmark's `exact` rows measure, docs/benchmarks.md; its cost does not
+ * grow with thickness) on a memoised lattice, interpolated bilinearly: thickness in steps around
+ * the set thickness (so a uniform film is exact), at least MIN_THICKNESS_STEP_NM and at most
+ * LATTICE_THICKNESSES steps over the field's range (thick films vary slowly once their fringes
+ * average out); cos θ_i in steps of 1/COS_STEPS. Between lattice points the interpolation adds its
+ * own error, largest at the limb, where colour changes fastest with angle. An image costs one
+ * binned integral per lattice point it meets (however many pixels) and a lookup per pixel.
  */
 export const MIN_THICKNESS_STEP_NM = 8;
 export const LATTICE_THICKNESSES = 256;
