@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { parseSettings, settingsToQuery } from '../../src/settings/settingsQuery.ts';
 import { VIEW_PARAMETERS } from '../../src/settings/viewParameters.ts';
 import { PICTURE_OPTIONS, type RenderView, parseRenderCases, parseRenderCommandLine } from '../../src/cli/renderOptions.ts';
-import { ParameterError } from '../../src/physics/validate.ts';
+import { ParameterError } from '../../src/input/validate.ts';
 import { NOT_NUMBERS, outsideRange } from './fixtures/badValues.ts';
 
 /** Texts of every kind the schema's rows take, and some no row takes. */

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { parseSettings, settingsToQuery } from '../../../src/settings/settingsQuery.ts';
 import { DEFAULT_VIEW_SETTINGS as DEFAULT_SETTINGS, VIEW_PARAMETERS } from '../../../src/settings/viewParameters.ts';
-import { MAX_ECHOED_CHARS } from '../../../src/physics/validate.ts';
+import { MAX_ECHOED_CHARS } from '../../../src/input/validate.ts';
 import { ABSURDLY_LONG, NOT_NUMBERS, notNames, outsideRange } from '../fixtures/badValues.ts';
 
 describe('URL parameters', () => {
