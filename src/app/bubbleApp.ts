@@ -160,8 +160,8 @@ export class BubbleApp {
    */
   private draw(): void {
     const view = this.parts.view;
-    view.render(true);
-    this.parts.present?.();
+    // A shared renderer's canvas holds another view's frame when this one did not draw.
+    if (view.render(true)) this.parts.present?.();
     this.status.showEnvironment(view.environmentStatus);
     // A flowing film short of a frozen time is not complete (the frames after bring it there); while
     // the film animates, every frame shows its film time and is.

@@ -199,18 +199,19 @@ export class BubbleView {
   }
 
   /**
-   * Draws one frame into the renderer's canvas, sized to this view first. `quick` (the app's
-   * frames): a table that has to be rebuilt is drawn coarsely first, so a change shows in the next
-   * frame; the frame after completes it.
+   * Draws one frame into the renderer's canvas, sized to this view first; returns whether it drew
+   * (not while the context is lost, nor in an app's frame that keeps the frame shown while the
+   * programs of the next compile). `quick` (the app's frames): a table that has to be rebuilt is
+   * drawn coarsely first, so a change shows in the next frame; the frame after completes it.
    */
-  render(quick = false): void {
+  render(quick = false): boolean {
     const r = this.renderer;
     this.output.fit(r, this.size);
-    if (this.contextLost) return;
+    if (this.contextLost) return false;
     // Per frame, as views may share the renderer (each view's materials are compiled for its own).
     this.output.toneMap(r);
     // The app's frames keep the frame shown until the programs of the new one are ready.
-    if (quick && compilesInParallel(r) && !this.programs.ready(this.programsKey(), () => this.compilePrograms())) return;
+    if (quick && compilesInParallel(r) && !this.programs.ready(this.programsKey(), () => this.compilePrograms())) return false;
     this.output.setSpace(r);
     // The new light's transform has arrived, or a frame that does not wait (tests, screenshots) computes it here.
     if (this.light.waiting && (!quick || this.light.arrived(this.settings))) {
@@ -220,6 +221,7 @@ export class BubbleView {
     this.syncTable(quick);
     this.film.advance(this.bubble.material.uniforms, this.settings, quick ? this.quality.flowStepsPerFrame : Infinity);
     r.render(this.scene, this.camera);
+    return true;
   }
 
   /**

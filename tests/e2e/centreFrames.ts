@@ -17,12 +17,13 @@ export async function recordCentreFrames(page: Page): Promise<() => Promise<Cent
     const render = view.render.bind(view);
     w.drawn = [];
     view.render = (quick?: boolean) => {
-      render(quick);
+      const drew = render(quick);
       const gl = view.renderer.getContext();
       const pixel = new Uint8Array(4);
       gl.bindFramebuffer(gl.FRAMEBUFFER, null);
       gl.readPixels(gl.drawingBufferWidth >> 1, gl.drawingBufferHeight >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
       w.drawn.push([[pixel[0]!, pixel[1]!, pixel[2]!], !view.coarse]);
+      return drew;
     };
   });
   return () => page.evaluate(() => (window as unknown as { drawn: CentreFrame[] }).drawn);
