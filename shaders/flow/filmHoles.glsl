@@ -1,7 +1,8 @@
-// The tracked holes of the film (mirrors src/physics/flow/filmHoles.ts) as one texture of
-// (TFC_HOLE_RAYS + 3) × TFC_MAX_HOLES texels: hole s is row s, its rim's angular radius along ray k
-// in texel (k, s).r, then its frame in the 3 texels after the rays: the centre (xyz, and w = 1
-// while the slot holds a hole), e1 and e2.
+// The tracked holes of the film (mirrors src/physics/flow/filmHoles.ts) as one texture, the hole
+// table (its layout from src/flow/flowLayouts.ts): hole s is row s, its rim's angular radius along
+// ray k in texel (k, s).r for the TFC_HOLE_RAYS rays, then its frame in the texels named
+// TFC_HOLE_CENTER_TEXEL (xyz, and w = 1 while the slot holds a hole), TFC_HOLE_E1_TEXEL and
+// TFC_HOLE_E2_TEXEL; TFC_MAX_HOLES rows.
 #ifndef THIN_FILM_FILM_HOLES
 #define THIN_FILM_FILM_HOLES
 const float TFC_HOLE_PI = 3.14159265358979;
@@ -14,9 +15,9 @@ struct TfcHole {
 };
 
 TfcHole tfcReadHole(sampler2D holes, int s) {
-  vec4 c = texelFetch(holes, ivec2(TFC_HOLE_RAYS, s), 0);
-  vec3 e1 = texelFetch(holes, ivec2(TFC_HOLE_RAYS + 1, s), 0).xyz;
-  vec3 e2 = texelFetch(holes, ivec2(TFC_HOLE_RAYS + 2, s), 0).xyz;
+  vec4 c = texelFetch(holes, ivec2(TFC_HOLE_CENTER_TEXEL, s), 0);
+  vec3 e1 = texelFetch(holes, ivec2(TFC_HOLE_E1_TEXEL, s), 0).xyz;
+  vec3 e2 = texelFetch(holes, ivec2(TFC_HOLE_E2_TEXEL, s), 0).xyz;
   return TfcHole(c.xyz, e1, e2, c.w != 0.0);
 }
 
@@ -28,10 +29,12 @@ TfcHole tfcNewHole(vec3 p) {
   return TfcHole(c, e1, cross(c, e1), true);
 }
 
-/** The texel (k, s) of a hole's row: ray k's radius for k < TFC_HOLE_RAYS (a new hole's are 0), then the frame. */
+/** The texel (k, s) of a hole's row: its frame's texels, and ray k's radius for k < TFC_HOLE_RAYS (a new hole's are 0). */
 vec4 tfcHoleTexel(TfcHole h, int k) {
-  if (k < TFC_HOLE_RAYS) return vec4(0.0);
-  return k == TFC_HOLE_RAYS ? vec4(h.center, 1.0) : vec4(k == TFC_HOLE_RAYS + 1 ? h.e1 : h.e2, 0.0);
+  if (k == TFC_HOLE_CENTER_TEXEL) return vec4(h.center, 1.0);
+  if (k == TFC_HOLE_E1_TEXEL) return vec4(h.e1, 0.0);
+  if (k == TFC_HOLE_E2_TEXEL) return vec4(h.e2, 0.0);
+  return vec4(0.0);
 }
 
 /** pointOnRay: the point at angular distance `distance` from the hole's centre along ray direction ψ. */

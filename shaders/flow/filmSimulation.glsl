@@ -2,7 +2,7 @@
 // from initialFilm, computed in float64 and uploaded; every cell intact), and evaporation, GPU pass
 // 7: η ← max(0, η − eΔt) on intact cells, Γ untouched. Cell-atlas passes; the film is (η, Γ, intact, 0).
 #include "flowAtlas.glsl"
-uniform sampler2D uFilm;
+#include "filmStep_pars.glsl"
 /** e·Δt, the η every intact cell loses in one step. */
 uniform float uEvaporationLoss;
 

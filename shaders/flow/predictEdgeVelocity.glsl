@@ -7,10 +7,9 @@
 #include "cubeSphereGrid.glsl"
 #include "cubeSphereSampler.glsl"
 #include "logarithmicMean.glsl"
-uniform sampler2D uFilm;
+#include "filmStep_pars.glsl"
 uniform sampler2D uCellVelocity;
 uniform sampler2D uPaddedCellVelocity;
-uniform float uDt;
 uniform float uAirFriction;
 uniform float uGravity;
 uniform float uMarangoni;

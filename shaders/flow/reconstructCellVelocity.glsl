@@ -2,7 +2,7 @@
 // velocity at each cell centre from its 4 edge velocities, Perot's reconstruction
 // u_c = (1/A_c) Σ_e L_e (u·n_out)_e (x_e − x_c), projected onto the tangent plane. A cell-atlas pass.
 #include "cubeSphereGrid.glsl"
-uniform sampler2D uEdgeVelocity;
+#include "filmStep_pars.glsl"
 
 vec4 tfcReconstructCellVelocity() {
   int c = tfcCellAt(ivec2(gl_FragCoord.xy));

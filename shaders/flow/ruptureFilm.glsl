@@ -10,7 +10,7 @@
 #include "cubeSphereGrid.glsl"
 #include "cubeSphereSampler.glsl"
 #include "renewFilm.glsl"
-uniform sampler2D uFilm;
+#include "filmStep_pars.glsl"
 uniform float uRuptureEta;
 uniform float uRuptureGamma;
 
@@ -67,7 +67,6 @@ vec4 tfcOpenHoles() {
 }
 
 uniform sampler2D uPaddedFilm;
-uniform float uDt;
 /** rimSpeedFactor·√(2γ_a/(ρh̄)) in U: the rim's speed in film of η = 1 and Γ = 0. */
 uniform float uRimSpeed;
 /** The thinnest film a speed is computed for, in η0. */

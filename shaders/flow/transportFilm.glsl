@@ -3,9 +3,7 @@
 // cell's limiter (the fraction of its outflow allowed, so no cell sends more than it holds), each
 // edge's fluxes Δt L_e u_e q_upwind × limiter, and each cell's update, which keeps η, Γ ≥ 0.
 #include "cubeSphereGrid.glsl"
-uniform sampler2D uFilm;
-uniform sampler2D uEdgeVelocity;
-uniform float uDt;
+#include "filmStep_pars.glsl"
 
 /** The cell's limiter (r): 1, or its content over its outflow in one step. */
 vec4 tfcTransportLimiter() {

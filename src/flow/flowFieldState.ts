@@ -28,7 +28,7 @@ export class FlowFieldState implements FieldState {
 
   constructor(private readonly renderer: WebGLRenderer) {}
 
-  /** The simulation now (null before the first advance): for tests and the benchmark. */
+  /** The simulation the film lives in now (null before the first advance). */
   get current(): GpuFilmSimulation | null {
     return this.simulation;
   }

@@ -1,6 +1,8 @@
 import { expect, test, type Page } from '@playwright/test';
+import type { WebGLRenderTarget } from 'three';
 import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
 import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
+import { filmCells } from './harness/filmReadback.ts';
 import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
 import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';
@@ -10,7 +12,8 @@ import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './we
  * the same URL draws the same pixels on every load, and again after a lost context; a frozen view
  * draws nothing after its frame. A small grid keeps SwiftShader quick.
  */
-const FROZEN = '/?field=flow&grid=16&seed=5&wind=0.5&animate=0&time=0.06&env=none';
+const GRID_N = 16;
+const FROZEN = `/?field=flow&grid=${GRID_N}&seed=5&wind=0.5&animate=0&time=0.06&env=none`;
 /**
  * The wind thins that film to its rupture thickness at 0.125 s; the rims then sweep the sphere in a
  * few steps, and with renew the film is new again 0.25 s (RENEW_DELAY_S) after that.
@@ -18,6 +21,24 @@ const FROZEN = '/?field=flow&grid=16&seed=5&wind=0.5&animate=0&time=0.06&env=non
 const RENEWED_S = 0.45;
 
 type Demo = Window & { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView };
+/** A page that reads its flowing film back (readsFilm). */
+type FilmReader = Window & { flowFilmTexels: () => number[] };
+
+/**
+ * Gives every load of the page a reader of the demo's flowing film: the texels of its simulation's
+ * film target (the public `stateTargets`), read through the view's renderer, for filmCells to decode.
+ */
+const readsFilm = (page: Page) =>
+  page.addInitScript(() => {
+    (window as unknown as FilmReader).flowFilmTexels = () => {
+      const view = (window as unknown as Demo).bubbleView;
+      const film = view.evolvingFilm as unknown as { current: { stateTargets: { film: WebGLRenderTarget } } };
+      const target = film.current.stateTargets.film;
+      const texels = new Float32Array(4 * target.width * target.height);
+      view.renderer.readRenderTargetPixels(target, 0, 0, target.width, target.height, texels);
+      return [...texels];
+    };
+  });
 
 /** The drawing buffer as the page last drew it (a hash of every byte and how many are lit), and the film's steps. */
 const drawn = (page: Page) =>
@@ -57,16 +78,14 @@ test('field=flow at a frozen time draws the same pixels on every load, the film 
 });
 
 test('a burst film is gone for good with renew=0; with renew=1 a whole new bubble follows', async ({ page }) => {
+  await readsFilm(page);
   const at = (seconds: number, renew: number) => load(page, `${FROZEN.replace('time=0.06', `time=${seconds}`)}&renew=${renew}`);
-  const intactCells = () =>
-    page.evaluate(() => {
-      const film = (window as unknown as Demo).bubbleView.evolvingFilm as unknown as { current: { readFilm(): { intact: Uint8Array } } };
-      return film.current.readFilm().intact.reduce((s, v) => s + v, 0);
-    });
+  const intactCells = async () =>
+    filmCells(await page.evaluate(() => (window as unknown as FilmReader).flowFilmTexels()), GRID_N).intact.reduce((s, v) => s + v, 0);
   const gone = await at(RENEWED_S, 0);
   expect(await intactCells()).toBe(0);
   const renewed = await at(RENEWED_S, 1);
-  expect(await intactCells()).toBe(6 * 16 * 16);
+  expect(await intactCells()).toBe(6 * GRID_N * GRID_N);
   expect(renewed.hash).not.toBe(gone.hash);
 });
 
@@ -109,6 +128,7 @@ test('after a lost context the flowing film is simulated again from its start to
 test("B on the bubble, or Enter on the panel's blow button, blows at the probe, to the right: the film there moves right", async ({
   page,
 }) => {
+  await readsFilm(page);
   // Still air, so the blow is the only air.
   await load(page, FROZEN.replace('wind=0.5', 'wind=0'));
   await openPanel(page);
@@ -116,21 +136,21 @@ test("B on the bubble, or Enter on the panel's blow button, blows at the probe, 
   /** η at the front of the bubble 0.3 rad right and left of the centre, 0.03 s of film after the time, blown (by B, by the button) or not. */
   const filmAfter = async (blow: 'none' | 'key' | 'button') => {
     if (blow === 'button') await button.press('Enter');
-    return page.evaluate((withKey) => {
+    const texels = await page.evaluate((withKey) => {
       const view = (window as unknown as Demo).bubbleView;
       const start = view.current.timeSeconds;
       if (withKey) document.querySelector<HTMLElement>('[role=application]')!.dispatchEvent(new KeyboardEvent('keydown', { key: 'b' }));
       view.apply({ ...view.current, timeSeconds: start + 0.03 });
       view.render();
-      const film = view.evolvingFilm as unknown as { current: { readFilm(): { eta: Float32Array }; grid: { n: number } } };
-      const { eta } = film.current.readFilm();
+      const film = (window as unknown as FilmReader).flowFilmTexels();
       view.apply({ ...view.current, timeSeconds: start });
       view.render();
-      return [...eta];
+      return film;
     }, blow === 'key');
+    return [...filmCells(texels, GRID_N).eta];
   };
   const calm = await filmAfter('none');
-  const grid = cubeSphereGrid(16);
+  const grid = cubeSphereGrid(GRID_N);
   // The view's front (0, 0, 1) is the simulation's (0, −1, 0); the view's right, +x, is its +x.
   const [right, left] = [0.3, -0.3].map((a) => nearestCell(grid, Math.sin(a), -Math.cos(a), 0));
   const [byKey, byButton] = [await filmAfter('key'), await filmAfter('button')];
