@@ -11,9 +11,14 @@ export const KEPT_DEFINE_SETS = 4;
 const keptSets = new WeakMap<ShaderMaterial, string[]>();
 
 /**
- * Gives a material new defines if they differ. It keeps the programs of its last `kept` sets; a set
- * beyond them frees them all (the material is disposed, and set up anew on its next draw), so
- * switching settings for an hour holds at most `kept` programs per material, not one per set.
+ * Gives one of the project's own materials (the bubble's, the environment's, the probe's, a table
+ * pass) new defines if they differ: a new `version`, as three's materials take a change of
+ * program. It keeps the programs of its last `kept` sets; a set beyond them frees them all by
+ * `dispose()` (three frees a material's programs only on its `dispose` event), and the material is
+ * set up anew on its next draw, so switching settings for an hour holds at most `kept` programs per
+ * material, not one per set. Only for materials no one outside the project holds: a user's
+ * material (the spectral one, src/material/) never fires `dispose` while in use, since its
+ * listeners would take it as gone; it keeps its programs until its own `dispose()`, as three's do.
  */
 export function setDefines(m: ShaderMaterial, defines: Record<string, number>, kept = KEPT_DEFINE_SETS): void {
   const key = JSON.stringify(defines);

@@ -1,9 +1,9 @@
 /**
  * The library's material entry (`thin-film-color/material`): the spectral thin film for
- * three.js's MeshPhysicalMaterial (three.js is a peer dependency). See README, "Use it in your
- * three.js scene".
+ * three.js's MeshPhysicalMaterial (three.js is a peer dependency). How to use it: docs/material.md.
  */
-export { isSpectralIridescence, spectralIridescence, useSpectralIridescence } from '../material/spectralIridescence.ts';
+export { spectralIridescence, useSpectralIridescence } from '../material/spectralIridescence.ts';
+export { isSpectralIridescence } from '../material/spectralFilm.ts';
 export {
   type BaseInput,
   type EdgeTintInput,
@@ -12,9 +12,10 @@ export {
   type SpectralIridescenceProperties,
 } from '../material/spectralIridescenceOptions.ts';
 export { ThinFilmMaterial, type ThinFilmMaterialParameters } from '../material/thinFilmMaterial.ts';
+export { type SpectralMaterialJson } from '../material/spectralIridescenceJson.ts';
 export { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions } from '../settings/filmQuality.ts';
 export type { FilmTableLayout } from '../settings/filmTableLayout.ts';
 export type { IlluminantSpec } from '../physics/illuminants.ts';
 export type { Medium } from '../physics/medium.ts';
 export type { LinearRgb } from '../physics/artistMetal.ts';
-export { ParameterError } from '../physics/validate.ts';
+export { ParameterError } from '../input/validate.ts';

@@ -4,7 +4,7 @@ import { POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts'
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
 import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
 import { type Medium, assertMedium, mediumFromJson, parseMediumText } from '../physics/medium.ts';
-import { ParameterError, isInDomain, oneOf } from '../physics/validate.ts';
+import { ParameterError, isInDomain, oneOf } from '../input/validate.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions, filmQualityFrom } from '../settings/filmQuality.ts';
 import { MODES } from '../settings/filmSettings.ts';
@@ -49,18 +49,27 @@ export interface SpectralIridescenceOptions {
   readonly quality?: FilmQualityOptions;
 }
 
-/** The options as a spectral material holds them, readable and settable (each set checked as the constructor checks it). */
+/**
+ * The options as a spectral material holds them (OPTION_NAMES), readable and settable: each read
+ * gives the option checked, each set takes it as `spectralIridescence` does (and checks it so).
+ */
 export interface SpectralIridescenceProperties {
   mode: FilmMode;
   illuminant: IlluminantSpec;
   polarization: Polarization;
   normalization: Normalization;
-  base: Medium | null;
-  film: Medium | null;
-  edgeTint: LinearRgb | null;
+  get base(): Medium | null;
+  /** a medium or its text (`'Ti'`, `'complex:2.6,3.4'`), or null for three's `ior` */
+  set base(value: BaseInput | null);
+  get film(): Medium | null;
+  /** a medium or its text (`'TiO2'`, `'Fe3O4'`), or null for three's `iridescenceIOR` */
+  set film(value: BaseInput | null);
+  get edgeTint(): LinearRgb | null;
+  /** a metal's edge tint (a Color, a hex number, linear [r, g, b]), or null for the base colour */
+  set edgeTint(value: EdgeTintInput | null);
   get quality(): FilmQuality;
   /** any of the knobs, over the defaults (not over the current ones) */
-  set quality(q: FilmQualityOptions);
+  set quality(value: FilmQualityOptions);
 }
 
 /** Every option, checked, with its default. */
@@ -72,14 +81,23 @@ export type CheckedOptions = Required<Omit<SpectralIridescenceOptions, 'quality'
 };
 
 /** The option names, as the properties of a spectral material are named. */
-export const OPTION_NAMES = ['mode', 'illuminant', 'polarization', 'normalization', 'base', 'film', 'edgeTint', 'quality'] as const;
+export const OPTION_NAMES = [
+  'mode',
+  'illuminant',
+  'polarization',
+  'normalization',
+  'base',
+  'film',
+  'edgeTint',
+  'quality',
+] as const satisfies readonly (keyof SpectralIridescenceProperties)[];
 
 /**
  * The material's default quality: the bubble's, with a table of 6 nm cells at its thick end
  * instead of 8. three's lobe (its DFG term, the F0 the film is solved into) adds an error of its
- * own to the table's, and with 8 nm cells the whole material's pixels missed the reference by up
- * to ΔE00 0.104 on the fixed grid (0.094 with 6 nm; docs/material.md). A table over 2000 nm is
- * then 704 texels wide instead of 512, built once per film.
+ * own to the table's, and finer cells along thickness keep the whole material's pixels within the
+ * bound tests/e2e/materialGrid.spec.ts holds (docs/material.md#the-films-f0-for-image-based-light;
+ * the figures: docs/benchmarks.md). The table is wider for it, built once per film.
  */
 export const MATERIAL_FILM_QUALITY: FilmQuality = { ...DEFAULT_FILM_QUALITY, table: { ...DEFAULT_FILM_QUALITY.table, thickEndCellNm: 6 } };
 

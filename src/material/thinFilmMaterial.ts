@@ -1,88 +1,40 @@
-import { type Material, MeshPhysicalMaterial, type MeshPhysicalMaterialParameters } from 'three';
-import { type LinearRgb } from '../physics/artistMetal.ts';
-import { type Polarization } from '../physics/filmReflectance.ts';
-import { type Medium } from '../physics/medium.ts';
-import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { type Normalization } from '../physics/spectralWeights.ts';
-import { type FilmQuality, type FilmQualityOptions } from '../settings/filmQuality.ts';
-import { copySpectralFilm, setSpectralOption, spectralIridescence, spectralOption } from './spectralIridescence.ts';
-import {
-  type BaseInput,
-  type EdgeTintInput,
-  type FilmMode,
-  type SpectralIridescenceOptions,
-  splitFilmOptions,
-} from './spectralIridescenceOptions.ts';
+import { type Material, type MaterialJSON, MeshPhysicalMaterial, type MeshPhysicalMaterialParameters, type Texture } from 'three';
+import { spectralIridescence } from './spectralIridescence.ts';
+import { copySpectralFilm, defineOptionProperties, filmOf } from './spectralFilm.ts';
+import { type SpectralIridescenceOptions, type SpectralIridescenceProperties, splitFilmOptions } from './spectralIridescenceOptions.ts';
+import { THIN_FILM_MATERIAL_TYPE, type SpectralMaterialJson, filmOptionsOfJson, spectralMaterialJson } from './spectralIridescenceJson.ts';
 
 /** A physical material's parameters and the film's options, in one object. */
 export type ThinFilmMaterialParameters = MeshPhysicalMaterialParameters & SpectralIridescenceOptions;
+
+// The option properties, typed once in SpectralIridescenceProperties: the class and this interface
+// merge, and defineOptionProperties (below) puts the accessors on the prototype from OPTION_NAMES.
+// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging, @typescript-eslint/no-empty-object-type
+export interface ThinFilmMaterial extends SpectralIridescenceProperties {}
 
 /**
  * A MeshPhysicalMaterial whose iridescence is the spectral film from the start (iridescence 1
  * unless the parameters say otherwise), its options properties as three's are:
  * `new ThinFilmMaterial({ iridescenceIOR: 1.33, iridescenceThicknessMaximum: 450, mode: 'table', illuminant: 'D65' })`,
  * then `material.mode = 'fourier'`. Every parameter and option is checked (a ParameterError names
- * the first bad one); `clone()` and `copy()` carry the options.
+ * the first bad one); `clone()`, `copy()` and `toJSON()` carry the options, and three's
+ * MaterialLoader loads it back once told of the class:
+ * `MaterialLoader.registerMaterial(ThinFilmMaterial.type, ThinFilmMaterial)`.
+ *
+ * `ThinFilmMaterial.type` (the class's, as three's node materials name theirs) is
+ * 'ThinFilmMaterial', and so is its JSON's `type`; an instance's `type` stays
+ * 'MeshPhysicalMaterial', because three's WebGLRenderer picks the shader it draws a material with
+ * by that name (WebGLPrograms' shaderIDs), and the shader is the physical material's.
  */
+// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging -- the interface above: accessors made at load
 export class ThinFilmMaterial extends MeshPhysicalMaterial {
+  static readonly type = THIN_FILM_MATERIAL_TYPE;
   readonly isThinFilmMaterial = true;
 
   constructor(parameters: ThinFilmMaterialParameters = {}) {
-    super({ iridescence: 1, ...splitFilmOptions(parameters)[0] });
-    spectralIridescence(this, splitFilmOptions(parameters)[1]);
-  }
-
-  get mode(): FilmMode {
-    return spectralOption(this, 'mode');
-  }
-  set mode(value: FilmMode) {
-    setSpectralOption(this, 'mode', value);
-  }
-  get illuminant(): IlluminantSpec {
-    return spectralOption(this, 'illuminant');
-  }
-  set illuminant(value: IlluminantSpec) {
-    setSpectralOption(this, 'illuminant', value);
-  }
-  get polarization(): Polarization {
-    return spectralOption(this, 'polarization');
-  }
-  set polarization(value: Polarization) {
-    setSpectralOption(this, 'polarization', value);
-  }
-  get normalization(): Normalization {
-    return spectralOption(this, 'normalization');
-  }
-  set normalization(value: Normalization) {
-    setSpectralOption(this, 'normalization', value);
-  }
-  get base(): Medium | null {
-    return spectralOption(this, 'base');
-  }
-  /** a medium or its text (`'Ti'`, `'complex:2.6,3.4'`), or null for three's `ior` */
-  set base(value: BaseInput | null) {
-    setSpectralOption(this, 'base', value);
-  }
-  get film(): Medium | null {
-    return spectralOption(this, 'film');
-  }
-  /** a medium or its text (`'TiO2'`, `'Fe3O4'`), or null for three's `iridescenceIOR` */
-  set film(value: BaseInput | null) {
-    setSpectralOption(this, 'film', value);
-  }
-  get edgeTint(): LinearRgb | null {
-    return spectralOption(this, 'edgeTint');
-  }
-  /** a metal's edge tint (a Color, a hex number, linear [r, g, b]), or null for the base colour */
-  set edgeTint(value: EdgeTintInput | null) {
-    setSpectralOption(this, 'edgeTint', value);
-  }
-  get quality(): FilmQuality {
-    return spectralOption(this, 'quality');
-  }
-  /** any of the knobs, over the defaults */
-  set quality(value: FilmQualityOptions) {
-    setSpectralOption(this, 'quality', value);
+    const [physical, film] = splitFilmOptions(parameters);
+    super({ iridescence: 1, ...physical });
+    spectralIridescence(this, film);
   }
 
   override copy(source: Material): this {
@@ -90,4 +42,18 @@ export class ThinFilmMaterial extends MeshPhysicalMaterial {
     copySpectralFilm(this, source);
     return this;
   }
+
+  override toJSON(meta?: Parameters<Material['toJSON']>[0]): SpectralMaterialJson {
+    return spectralMaterialJson(super.toJSON(meta), filmOf(this)!.options);
+  }
+
+  /** three's, then the film's options from the JSON (checked as `spectralIridescence` checks them). */
+  override fromJSON(json: MaterialJSON, textures: Record<string, Texture>): this {
+    super.fromJSON(json, textures);
+    const options = filmOptionsOfJson(json);
+    if (options !== undefined) spectralIridescence(this, options);
+    return this;
+  }
 }
+
+defineOptionProperties(ThinFilmMaterial.prototype);

@@ -2,7 +2,8 @@ import { expect, test } from '@playwright/test';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 import { PHYSICAL_MATERIAL_CODES } from '../tolerances.ts';
 import { watchProblems } from './pageWatch.ts';
-import type { FilmCase } from './harness/material.ts';
+import type { FilmCase } from './harness/materialScene.ts';
+import { FILM_STACK_DOMAIN } from '../../src/physics/filmReflectance.ts';
 import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
 import { srgbDecode } from '../../src/physics/colorConversions.ts';
 import { type Medium } from '../../src/physics/medium.ts';
@@ -31,10 +32,10 @@ const insideOf = (c: FilmCase): Medium => {
 const referenceOf = (c: FilmCase) =>
   reference8({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm: c.nFilm, nInside: insideOf(c) });
 
-test('the spectral iridescence on three.js meshes: reference colour, glTF, the physical material kept, programs, context restore', async ({
+test('the spectral iridescence on three.js meshes: reference colour, glTF, the physical material kept, programs, as a three.js user, context restore', async ({
   page,
 }) => {
-  // ~1.6 min here (SwiftShader compiles each mode's program, the soak's, and again after the context restore): room for a slower machine.
+  // SwiftShader compiles each mode's program, the soak's, the three.js user's and again after the context restore: room for a slower machine.
   test.setTimeout(300_000);
   const problems = watchProblems(page);
   await page.goto('/tests/e2e/harness/material.html');
@@ -74,6 +75,24 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
   expect(counts.disposed).toEqual(counts.before);
   expect(counts.most - counts.before.programs).toBeLessThanOrEqual(4);
   expect(counts.after).toEqual(counts.before);
+
+  // As a three.js user: a material chained through two other onBeforeCompile users draws the film
+  // (both users' edits compiled with it); an option change and back keeps its program and table
+  // with no dispose event; its clone and its JSON loaded back draw the same; an out-of-range
+  // iridescenceIOR is drawn as its range's end, with one warning, and nothing thrown.
+  const ior = { given: 5, drawn: FILM_STACK_DOMAIN.nFilm.max };
+  const user = await page.evaluate(([c, ior]) => window.materialHarness!.threeJsUserPixels(c, ior), [CASES[0]!, ior] as const);
+  expect(user.ran).toEqual(['first', 'second']);
+  expect(worstCodeDifference(user.chained, referenceOf(CASES[0]!)), `chained: ${user.chained}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  expect(user.change).toEqual({ versions: 2, programs: 0, sameTable: true, disposed: [] });
+  for (const pixel of [user.changed, user.cloned, user.load.pixel]) expect(pixel).toEqual(user.chained);
+  expect(user.load.isThinFilmMaterial).toBe(true);
+  expect(user.thrown).toBe('');
+  expect(user.outOfRange).toEqual(user.atDomainEnd);
+  expect(worstCodeDifference(user.atDomainEnd, user.chained)).toBeGreaterThan(MAX_CODE_DIFFERENCE); // the index is drawn
+  const clampWarning = (p: string) => p.startsWith('warning: spectralIridescence: iridescenceIOR 5 ');
+  expect(problems.filter(clampWarning)).toHaveLength(1);
+  problems.splice(0, problems.length, ...problems.filter((p) => !clampWarning(p)));
 
   // After a lost and restored context, a table-mode material draws its film again (its table
   // rebuilt; left empty it would draw black), with no change to the film.

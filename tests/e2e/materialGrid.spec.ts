@@ -12,7 +12,7 @@ import type { ParityGroup } from '../../scripts/harness/parityCase.ts';
 
 type GridPage = Window & { materialGridXyz: (g: ParityGroup, mode: 'table' | 'fourier') => number[][] };
 
-// `table` mode, whose figures lie nearest the bounds (`fourier`'s, 0.038 and 0.35, are the benchmark's).
+// `table` mode, whose figures lie nearest the bounds (`fourier`'s are the benchmark's: docs/benchmarks.md).
 for (const mode of ['table'] as const)
   test(
     `${mode} mode: the whole material's pixels are within ΔE00 ${MAX_DELTA_E00_MATERIAL_FIXED} of the reference on the fixed grid and ${MAX_DELTA_E00_MATERIAL_STRESS} on the stress grid`,

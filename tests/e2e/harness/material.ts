@@ -5,116 +5,27 @@
  */
 import {
   BoxGeometry,
-  type BufferGeometry,
   Color,
   DataTexture,
   DirectionalLight,
-  EquirectangularReflectionMapping,
-  FloatType,
   Mesh,
   MeshPhysicalMaterial,
   NoToneMapping,
-  OrthographicCamera,
   PCFShadowMap,
   PerspectiveCamera,
   PlaneGeometry,
   PointLight,
   RepeatWrapping,
-  RGBAFormat,
   Scene,
   TorusKnotGeometry,
   AgXToneMapping,
-  WebGLRenderer,
-  type Material,
-  type Object3D,
 } from 'three';
 import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { spectralIridescence, useSpectralIridescence } from '../../../src/material/spectralIridescence.ts';
 import { type SpectralIridescenceOptions } from '../../../src/material/spectralIridescenceOptions.ts';
-
-const canvas = document.querySelector<HTMLCanvasElement>('#gl');
-if (!canvas) throw new Error('material.html must hold #gl');
-const renderer = new WebGLRenderer({ canvas });
-renderer.toneMapping = NoToneMapping;
-const SIZE = canvas.width;
-
-/** An equirectangular float environment of `size` texels, each `texel(u, v)` (linear RGB). */
-function environment(texel: (u: number, v: number) => readonly [number, number, number], w = 32, h = 16): DataTexture {
-  const data = new Float32Array(4 * w * h);
-  for (let y = 0; y < h; y++) for (let x = 0; x < w; x++) data.set([...texel(x / w, y / h), 1], 4 * (y * w + x));
-  const t = new DataTexture(data, w, h, RGBAFormat, FloatType);
-  t.mapping = EquirectangularReflectionMapping;
-  t.needsUpdate = true;
-  return t;
-}
-
-/** Constant radiance 1 (the light's white from every direction): the demo's env=none lighting of the film. */
-const white = environment(() => [1, 1, 1]);
-
-/** The canvas's pixels (RGBA, bottom row first) right after drawing `scene`. */
-function draw(scene: Scene, camera: OrthographicCamera | PerspectiveCamera): Uint8Array {
-  renderer.render(scene, camera);
-  const gl = renderer.getContext();
-  const out = new Uint8Array(4 * SIZE * SIZE);
-  gl.readPixels(0, 0, SIZE, SIZE, gl.RGBA, gl.UNSIGNED_BYTE, out);
-  return out;
-}
-
-const centre = (pixels: Uint8Array): number[] => {
-  const i = 4 * ((SIZE / 2) * SIZE + SIZE / 2);
-  return [pixels[i]!, pixels[i + 1]!, pixels[i + 2]!];
-};
-
-/**
- * A film on a box's face, mirror-smooth: black and non-metal, so only the film reflects, or a metal
- * of `metalColor` (sRGB hex, metalness 1: the film over the metal from its colour).
- */
-export interface FilmCase {
-  readonly thicknessNm: number;
-  readonly angleDeg: number;
-  readonly nFilm: number;
-  readonly ior: number;
-  readonly metalColor?: number;
-}
-
-const filmMaterial = (c: FilmCase) =>
-  new MeshPhysicalMaterial({
-    color: c.metalColor ?? 0x000000,
-    roughness: 0,
-    metalness: c.metalColor === undefined ? 0 : 1,
-    ior: c.ior,
-    iridescence: 1,
-    iridescenceIOR: c.nFilm,
-    iridescenceThicknessMinimum: 0,
-    iridescenceThicknessMaximum: c.thicknessNm,
-  });
-
-/**
- * A 4-unit box turned by angleDeg about the vertical, its front face through the origin, seen
- * by an orthographic camera along −z: the centre pixel sees that face at θ_i = angleDeg.
- */
-function filmScene(c: FilmCase, material: Material): { scene: Scene; camera: OrthographicCamera; box: Mesh } {
-  const scene = new Scene();
-  scene.environment = white;
-  const box = new Mesh(new BoxGeometry(4, 4, 4), material);
-  const a = (c.angleDeg * Math.PI) / 180;
-  box.rotation.y = a;
-  box.position.set(-2 * Math.sin(a), 0, -2 * Math.cos(a));
-  scene.add(box);
-  const camera = new OrthographicCamera(-1, 1, 1, -1, 0.1, 20);
-  camera.position.set(0, 0, 10);
-  return { scene, camera, box };
-}
-
-const disposeAll = (root: Object3D) =>
-  root.traverse((o) => {
-    if (o instanceof Mesh) {
-      const mesh = o as Mesh<BufferGeometry, Material | Material[]>;
-      mesh.geometry.dispose();
-      for (const m of [mesh.material].flat()) m.dispose();
-    }
-  });
+import { type FilmCase, centre, disposeAll, draw, environment, filmMaterial, filmScene, renderer } from './materialScene.ts';
+import { threeJsUserPixels } from './materialThreeJsUser.ts';
 
 /** The centre pixel of a film case through the spectral material. */
 function filmPixel(c: FilmCase, options: SpectralIridescenceOptions): number[] {
@@ -285,7 +196,7 @@ async function contextRestorePixels(c: FilmCase): Promise<{ before: number[]; af
   return { before, after };
 }
 
-window.materialHarness = { filmPixel, gltfPixel, againstPhysical, programCounts, contextRestorePixels };
+window.materialHarness = { filmPixel, gltfPixel, againstPhysical, programCounts, threeJsUserPixels, contextRestorePixels };
 document.body.dataset.ready = 'yes';
 
 declare global {
@@ -295,6 +206,7 @@ declare global {
       gltfPixel: typeof gltfPixel;
       againstPhysical: typeof againstPhysical;
       programCounts: typeof programCounts;
+      threeJsUserPixels: typeof threeJsUserPixels;
       contextRestorePixels: typeof contextRestorePixels;
     };
   }

@@ -5,9 +5,10 @@
  */
 import { MeshPhysicalMaterial, ShaderLib } from 'three';
 import { describe, expect, it, vi } from 'vitest';
-import { isSpectralIridescence, spectralIridescence } from '../../../src/material/spectralIridescence.ts';
+import { spectralIridescence } from '../../../src/material/spectralIridescence.ts';
+import { isSpectralIridescence } from '../../../src/material/spectralFilm.ts';
 import { ThinFilmMaterial } from '../../../src/material/thinFilmMaterial.ts';
-import { ParameterError } from '../../../src/physics/validate.ts';
+import { ParameterError } from '../../../src/input/validate.ts';
 import { DEFAULT_FILM_QUALITY, filmQualityFrom } from '../../../src/settings/filmQuality.ts';
 
 /** What three hands onBeforeCompile: the physical material's shaders, uniforms and defines. */
@@ -237,28 +238,6 @@ describe('a metal from its base colour', () => {
         parameterOf(() => (m.edgeTint = bad as never)),
         String(bad),
       ).toBe('edgeTint');
-  });
-});
-
-describe('a parameter out of range when drawn', () => {
-  it('is clamped to its range with one warning naming it and the range, not thrown', () => {
-    // fourier mode: bringing the film up to date makes only CPU-side textures, no GPU needed.
-    const m = new ThinFilmMaterial({ iridescenceIOR: 1.33, mode: 'fourier' });
-    const shader = shaderObject();
-    m.onBeforeCompile(shader as never, null as never);
-    const uniforms = shader.uniforms as Record<string, { value: unknown }>;
-    m.iridescenceIOR = 5;
-    m.iridescenceThicknessMaximum = 30_000;
-    const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
-    const draw = () => m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
-    expect(draw).not.toThrow();
-    draw();
-    const messages = warn.mock.calls.map((c) => String(c[0]));
-    warn.mockRestore();
-    expect(messages).toHaveLength(2); // once per parameter, not per frame
-    expect(messages[0]).toMatch(/iridescenceIOR 5 .*\[1, 4\]/);
-    expect(messages[1]).toMatch(/iridescenceThicknessMaximum 30000 .*\[0, 20000\] nm/);
-    expect(uniforms.uNFilm!.value).toEqual([4, 0]); // the domain's upper end (ñ = n + 0i)
   });
 });
 

@@ -1,0 +1,88 @@
+import { type Material, type MeshPhysicalMaterial } from 'three';
+import { type filmColorUniforms } from '../film/filmColor.ts';
+import { type FilmTable } from '../film/filmTable.ts';
+import { filmKeyOf } from './materialFilm.ts';
+import {
+  type CheckedOptions,
+  OPTION_NAMES,
+  type SpectralIridescenceOptions,
+  type SpectralIridescenceProperties,
+  spectralIridescenceOptions,
+} from './spectralIridescenceOptions.ts';
+
+/** What a material upgraded by `spectralIridescence` holds: its options, its uniforms, its table, its warnings. */
+export interface SpectralFilm {
+  options: CheckedOptions;
+  readonly uniforms: ReturnType<typeof filmColorUniforms>;
+  table: FilmTable | null;
+  /** the causes already warned about (once each) */
+  readonly warned: Set<string>;
+  /** metalStateOf at the last draw: a change three cannot see (metalness, the base colour) may need a new program */
+  drawnMetal: string | null;
+}
+
+const films = new WeakMap<Material, SpectralFilm>();
+
+/** The film of a spectral material (undefined for any other). */
+export const filmOf = (m: Material): SpectralFilm | undefined => films.get(m);
+
+/** Makes `m` a spectral material holding `film`. */
+export const addFilm = (m: MeshPhysicalMaterial, film: SpectralFilm): void => void films.set(m, film);
+
+/** Whether `material` has been upgraded by `spectralIridescence` (a ThinFilmMaterial always is). */
+export const isSpectralIridescence = (material: Material): material is MeshPhysicalMaterial & SpectralIridescenceProperties =>
+  films.has(material);
+
+/** One console warning per film and cause (a frame loop would repeat it every frame). */
+export function warnOnce(film: SpectralFilm, cause: string, message: string): void {
+  if (film.warned.has(cause)) return;
+  film.warned.add(cause);
+  console.warn(`spectralIridescence: ${message}`);
+}
+
+/**
+ * Gives the film new options. Where the program's defines differ, the material's `version` moves
+ * (`needsUpdate`), as three's own materials do when a property changes their program: three then
+ * compiles or reuses the program for the new defines and keeps the others the material was drawn
+ * with until its `dispose()`. The material is never disposed here: that would tell its `dispose`
+ * listeners it is gone while it is still in use.
+ */
+export function setOptions(m: MeshPhysicalMaterial, film: SpectralFilm, options: CheckedOptions): void {
+  if (filmKeyOf(m, film.options) !== filmKeyOf(m, options)) m.needsUpdate = true;
+  film.options = options;
+}
+
+/** An option of a spectral material. */
+export const spectralOption = <K extends keyof CheckedOptions>(m: MeshPhysicalMaterial, name: K): CheckedOptions[K] =>
+  films.get(m)!.options[name];
+
+/** Sets one option of a spectral material, checked as `spectralIridescence` checks it (a ParameterError names it; the option keeps its value). */
+export function setSpectralOption(m: MeshPhysicalMaterial, name: keyof SpectralIridescenceOptions, value: unknown): void {
+  const film = films.get(m)!;
+  setOptions(m, film, spectralIridescenceOptions({ ...film.options, [name]: value }));
+}
+
+/** Gives `target` the film options of `source` when both are spectral (a material's copy). */
+export function copySpectralFilm(target: MeshPhysicalMaterial, source: Material): void {
+  const from = films.get(source);
+  const to = films.get(target);
+  if (from && to) setOptions(target, to, from.options);
+}
+
+/**
+ * The options as properties (SpectralIridescenceProperties), one accessor pair per name of
+ * OPTION_NAMES, on `target`: ThinFilmMaterial's prototype, or an upgraded material itself.
+ */
+export function defineOptionProperties(target: object): void {
+  for (const name of OPTION_NAMES)
+    Object.defineProperty(target, name, {
+      configurable: true,
+      enumerable: true,
+      get(this: MeshPhysicalMaterial) {
+        return spectralOption(this, name);
+      },
+      set(this: MeshPhysicalMaterial, value: unknown) {
+        setSpectralOption(this, name, value);
+      },
+    });
+}
