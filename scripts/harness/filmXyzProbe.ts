@@ -1,16 +1,19 @@
 /**
  * Renders film XYZ through the real shaders (shaders/film/filmColor.glsl, via shaderSource) into a
  * float target and reads it back: one draw per group, one pixel per case, no colour conversion.
- * In `table` mode the table is built by the app's own FilmTable pass, covering the group's
- * largest thickness (as the bubble's table covers its field's), in the columns the cases read.
- * Used by the parity harness and the benchmark's error columns.
+ * In `table` mode the table is drawn by the app's own table pass (FilmTablePass), over the grid
+ * covering the group's largest thickness (as the bubble's table covers its field's), in only the
+ * columns the cases' lookups read. Used by the parity harness and the benchmark's error columns.
  */
 import { FULLSCREEN_VERTEX } from '../../src/gpu/fullscreenPass.ts';
-import { ShaderMaterial, type WebGLRenderer } from 'three';
-import { filmColorDefines, filmColorUniforms, updateFilmColorUniforms } from '../../src/film/filmColor.ts';
+import { ShaderMaterial, type WebGLRenderTarget, type WebGLRenderer } from 'three';
+import { type FilmTableBinding, filmColorDefines, filmColorUniforms, updateFilmColorUniforms } from '../../src/film/filmColor.ts';
 import { type FilmQuality } from '../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
-import { FilmTable } from '../../src/film/filmTable.ts';
+import type { FilmSettings } from '../../src/settings/filmSettings.ts';
+import { filmTableLookupColumns } from '../../src/settings/filmTableLayout.ts';
+import { bindFilmTable } from '../../src/film/filmTableGrid.ts';
+import { FilmTablePass, tableTarget } from '../../src/film/filmTablePass.ts';
 import { floatRowTexture, renderFloatRow } from '../../src/gpu/floatRow.ts';
 import { shaderSource } from '../../src/gpu/shaderSource.ts';
 import type { ParityGroup, ParityMode } from './parityCase.ts';
@@ -24,7 +27,8 @@ void main() {
 
 export class FilmXyzProbe {
   private readonly materials = new Map<string, ShaderMaterial>();
-  private readonly tables = new Map<string, FilmTable>();
+  /** A table pass and its target per quality. */
+  private readonly tables = new Map<string, { readonly pass: FilmTablePass; readonly target: WebGLRenderTarget }>();
 
   constructor(private readonly renderer: WebGLRenderer) {}
 
@@ -48,11 +52,20 @@ export class FilmXyzProbe {
     return m;
   }
 
-  private table(quality: FilmQuality): FilmTable {
+  /**
+   * The table for `s` in only the columns that looking it up at these thicknesses reads (a lookup
+   * blends two neighbouring columns), the rest of its texture left undefined: the cases' colours at
+   * a fraction of a full table's cost on a slow GPU.
+   */
+  private tableAround(quality: FilmQuality, s: FilmSettings, thicknessesNm: readonly number[]): FilmTableBinding {
     const key = JSON.stringify(quality);
-    const table = this.tables.get(key) ?? new FilmTable(quality);
+    const table = this.tables.get(key) ?? { pass: new FilmTablePass(quality), target: tableTarget(2 * quality.table.rows) };
     this.tables.set(key, table);
-    return table;
+    const grid = table.pass.fullGrid(s);
+    const columns = filmTableLookupColumns(quality.table, thicknessesNm, grid.maxThicknessNm, grid.width);
+    table.pass.draw(this.renderer, s, table.target, grid, columns);
+    table.pass.releaseLight();
+    return { bind: (u) => bindFilmTable(u, table.target.texture, grid) };
   }
 
   private renderGroup(g: ParityGroup, mode: ParityMode, quality: FilmQuality): number[][] {
@@ -60,12 +73,11 @@ export class FilmXyzProbe {
     const m = this.material(mode, g, quality);
     const u = m.uniforms;
     u.uInputs!.value = inputTexture;
-    let table: FilmTable | null = null;
+    let table: FilmTableBinding | null = null;
     if (mode === 'table') {
-      table = this.table(quality);
       const thicknessesNm = g.inputs.map(([t]) => t);
       const settings = { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: Math.max(...thicknessesNm), mode } as const;
-      table.buildAround(this.renderer, settings, thicknessesNm);
+      table = this.tableAround(quality, settings, thicknessesNm);
     }
     updateFilmColorUniforms(m, { ...g, mode }, quality, table);
     const out = renderFloatRow(this.renderer, m, g.inputs.length);

@@ -13,9 +13,7 @@
 #include "colorConversions.glsl"
 #include "environment.glsl"
 
-uniform mat3 uXyzToLinearWorking;   // XYZ -> three.js's working space (linear sRGB, eq 19)
 uniform mat3 uXyzToLinearDisplay;   // XYZ -> the display's linear space, for the gamut test
-uniform float uExposure;
 
 varying vec3 vWorldPosition;
 varying vec3 vWorldNormal;

@@ -1,9 +1,12 @@
 // What the walls reflect and the background shows (twin of src/twins/environment.ts), in linear
 // sRGB: TFC_ENVIRONMENT _NONE (black) | _SKY a procedural sky (blue zenith, pale horizon, dark green
 // ground) | _MAP an equirectangular HDR map (uEnvironmentMap: u wraps round the horizon, v = 1 straight
-// up) turned about +y by the angle whose (cos, sin) is uEnvironmentTurn.
+// up) turned about +y by the angle whose (cos, sin) is uEnvironmentTurn. uExposure scales all light
+// (the environment's and the film's), as environmentUniforms (src/bubble/environmentMaterial.ts) sets it.
 #ifndef THIN_FILM_ENVIRONMENT
 #define THIN_FILM_ENVIRONMENT
+
+uniform float uExposure;
 
 #if TFC_ENVIRONMENT == TFC_ENVIRONMENT_MAP
 uniform sampler2D uEnvironmentMap;

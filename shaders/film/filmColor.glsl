@@ -7,6 +7,7 @@
 #define THIN_FILM_COLOR
 
 #include "filmMedia.glsl"
+#include "filmWorkingSpace.glsl"
 #include "filmMethod.glsl"
 
 vec3 tfcFilmXyz(float thicknessNm, float cosIncidence, bool fromInside) {

@@ -13,4 +13,15 @@ void tfcFilmSides(bool fromInside, out float na, out vec2 nc) {
   na = fromInside ? uNInside.x : uNOutside;
   nc = fromInside ? vec2(uNOutside, 0.0) : uNInside;
 }
+
+#ifdef TFC_DISPERSIVE
+#include "texelRecord.glsl"
+// The film's and the inside's ñ = (n, k) in a knot of uMediaKnots (medium.glsl), a record of
+// src/film/filmMedia.ts's MEDIA_KNOT read by its names.
+void tfcKnotMedia(vec4 knot, out vec2 film, out vec2 inside) {
+  vec4 record[TFC_MEDIA_KNOT_TEXELS] = vec4[TFC_MEDIA_KNOT_TEXELS](knot);
+  film = TFC_RECORD_VEC2(record, TFC_MEDIA_KNOT_FILM);
+  inside = TFC_RECORD_VEC2(record, TFC_MEDIA_KNOT_INSIDE);
+}
+#endif
 #endif

@@ -1,45 +1,41 @@
 // The table of film XYZ over (thickness, cos θ_i), uFilmTableWidth x 2 uFilmTableRows texels:
 // the lower half for light arriving from outside (n_a = uNOutside), the upper half from inside
-// (media swapped: the far wall of the bubble). Texel positions: filmTableLayout.glsl.
+// (media swapped: the far wall of the bubble). Its grid: filmTableGrid.glsl; texel positions: filmTableLayout.glsl.
 // Filled by TFC_TABLE_FILL: 0 the binned integral, each texel averaged over its thickness cell so
 // fringes finer than a cell do not alias; 1 the Airy series (airySeries.glsl) at the texel's film,
 // or the bins where the series has no real path or needs too many terms. The series' C0, B, q
 // depend on the row only: uAirySeriesRows holds them per row (src/film/airySeriesRows.ts,
 // computed in float64), so a texel only sums the series.
-// A dispersive film (TFC_DISPERSIVE) is filled from the dispersive bins at the texel's film (not
-// averaged over its cell: with the bilinear lookup that smoothed twice, stress grid ΔE00 0.52 against
-// 0.34), their Fresnel terms per row and bin from uDispersiveRows (src/film/dispersiveRows.ts).
-// Built by src/film/filmTable.ts.
+// A dispersive film (TFC_DISPERSIVE) is filled from the dispersive bins at the texel's film, not
+// averaged over its cell (with the bilinear lookup that would smooth twice; the `nFilm=water` rows'
+// stress grid in docs/benchmarks.md measures it), their Fresnel terms per row and bin from
+// uDispersiveRows (src/film/dispersiveRows.ts).
+// Drawn by src/film/filmTablePass.ts.
 #ifdef TFC_DISPERSIVE
 #define TFC_DISPERSIVE_ROWS 1
 #endif
 #include "binnedIntegration.glsl"
 #include "airySeries.glsl"
+#include "filmTableGrid.glsl"
 #include "filmTableLayout.glsl"
-
 #include "filmMedia.glsl"
-uniform float uTableMaxThicknessNm;
 
 #if TFC_TABLE_FILL == TFC_TABLE_FILL_SERIES
-// Row y, texels 0-2: C0, B, q of channel 0, then of channel 1, then the path per nm of thickness
-// (2 n_b cos θ_r) and 1 where it is real (0: an evanescent film, no series).
+#include "texelRecord.glsl"
+// Row y: a record of src/film/airySeriesRows.ts's AIRY_ROW, read by its names: C0, B, q of each
+// channel, the path per nm of thickness (2 n_b cos θ_r) and 1 where it is real (0: an evanescent
+// film, no series).
 uniform sampler2D uAirySeriesRows;
-// The texels rowSeries reads: src/film/airySeriesRows.ts must pack as many (TFC_AIRY_ROW_TEXELS).
-#define TFC_AIRY_ROW_TEXELS_READ 3
-#if TFC_AIRY_ROW_TEXELS != TFC_AIRY_ROW_TEXELS_READ
-#error "the Airy series rows' texels differ from what rowSeries reads"
-#endif
 
 bool tfcRowSeries(int y, out AirySeriesTerms t[TFC_FILM_CHANNELS], out float pathPerNm) {
-  vec4 a = texelFetch(uAirySeriesRows, ivec2(0, y), 0);
-  vec4 b = texelFetch(uAirySeriesRows, ivec2(1, y), 0);
-  vec4 c = texelFetch(uAirySeriesRows, ivec2(2, y), 0);
-  t[0] = AirySeriesTerms(a.x, a.yz, vec2(a.w, b.x));
+  vec4 r[TFC_AIRY_ROW_TEXELS];
+  for (int i = 0; i < TFC_AIRY_ROW_TEXELS; i++) r[i] = texelFetch(uAirySeriesRows, ivec2(i, y), 0);
+  t[0] = AirySeriesTerms(TFC_RECORD_FLOAT(r, TFC_AIRY_ROW_C0_0), TFC_RECORD_VEC2(r, TFC_AIRY_ROW_B_0), TFC_RECORD_VEC2(r, TFC_AIRY_ROW_Q_0));
 #ifdef TFC_BOTH_CHANNELS
-  t[1] = AirySeriesTerms(b.y, b.zw, c.xy);
+  t[1] = AirySeriesTerms(TFC_RECORD_FLOAT(r, TFC_AIRY_ROW_C0_1), TFC_RECORD_VEC2(r, TFC_AIRY_ROW_B_1), TFC_RECORD_VEC2(r, TFC_AIRY_ROW_Q_1));
 #endif
-  pathPerNm = c.z;
-  return c.w == 1.0;
+  pathPerNm = TFC_RECORD_FLOAT(r, TFC_AIRY_ROW_PATH_PER_NM);
+  return TFC_RECORD_FLOAT(r, TFC_AIRY_ROW_REAL_PATH) == 1.0;
 }
 #endif
 

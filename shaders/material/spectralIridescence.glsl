@@ -11,7 +11,6 @@
 #include "filmColor.glsl"
 #include "colorConversions.glsl"
 
-uniform mat3 uXyzToLinearWorking;   // XYZ -> three.js's working space (linear sRGB, eq 19)
 
 // Linear RGB reflectance relative to the light's white. Out-of-gamut components are kept, negative
 // ones too (three clips its own film at 0): the working space is float, so a saturated film stays

@@ -3,9 +3,9 @@
 #ifndef THIN_FILM_TABLE_METHOD
 #define THIN_FILM_TABLE_METHOD
 
+#include "filmTableGrid.glsl"
 #include "filmTableLayout.glsl"
 uniform sampler2D uFilmTable;
-uniform float uTableMaxThicknessNm;
 
 vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
   // Texel centres sit at the ends of the ranges (docs/gpu.md#texel-centres: otherwise visibly off).

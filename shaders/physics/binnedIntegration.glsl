@@ -65,10 +65,10 @@ struct DispersiveBin { FilmOptics optics; float pathPerNmLow; float pathPerNmHig
 // The media at λ for light arriving from outside, or from inside (the far wall: the inside is then
 // transparent, and its n the light's n_a): n_a, ñ_b, ñ_c.
 void tfcBinMedia(float lambdaNm, bool fromInside, out float na, out vec2 nb, out vec2 nc) {
-  vec4 m = tfcMediaAt(lambdaNm);
-  na = fromInside ? m.z : uNOutside;
-  nb = m.xy;
-  nc = fromInside ? vec2(uNOutside, 0.0) : m.zw;
+  vec2 inside;
+  tfcKnotMedia(tfcMediaAt(lambdaNm), nb, inside);
+  na = fromInside ? inside.x : uNOutside;
+  nc = fromInside ? vec2(uNOutside, 0.0) : inside;
 }
 
 float tfcBinPathPerNm(float lambdaNm, bool fromInside, float cosIncidence) {
@@ -87,31 +87,26 @@ FilmOptics tfcBinOptics(float centerNm, float thicknessNm, bool fromInside, floa
 }
 
 #ifdef TFC_DISPERSIVE_ROWS
+#include "texelRecord.glsl"
 uniform sampler2D uDispersiveRows;
 
-// Row y, bin b: TFC_DISPERSIVE_BIN_TEXELS texels from src/film/dispersiveRows.ts, all read here.
-#define TFC_DISPERSIVE_BIN_TEXELS_READ 4
-#if TFC_DISPERSIVE_BIN_TEXELS != TFC_DISPERSIVE_BIN_TEXELS_READ
-#error "the dispersive rows' texels per bin differ from what dispersiveBin reads"
-#endif
+// Row y, bin b: a record of src/film/dispersiveRows.ts's DISPERSIVE_BIN, read by its names.
 DispersiveBin tfcDispersiveBin(int y, int b, float thicknessNm, bool fromInside, float cosIncidence) {
-  vec4 t0 = texelFetch(uDispersiveRows, ivec2(TFC_DISPERSIVE_BIN_TEXELS * b + 0, y), 0);
-  vec4 t1 = texelFetch(uDispersiveRows, ivec2(TFC_DISPERSIVE_BIN_TEXELS * b + 1, y), 0);
-  vec4 t2 = texelFetch(uDispersiveRows, ivec2(TFC_DISPERSIVE_BIN_TEXELS * b + 2, y), 0);
-  vec4 t3 = texelFetch(uDispersiveRows, ivec2(TFC_DISPERSIVE_BIN_TEXELS * b + 3, y), 0);
+  vec4 t[TFC_DISPERSIVE_BIN_TEXELS];
+  for (int i = 0; i < TFC_DISPERSIVE_BIN_TEXELS; i++) t[i] = texelFetch(uDispersiveRows, ivec2(TFC_DISPERSIVE_BIN_TEXELS * b + i, y), 0);
   DispersiveBin d;
-  d.optics.channels[0] = AiryTerms(t0.xy, t0.zw, t1.xy);
+  d.optics.channels[0] = AiryTerms(TFC_RECORD_VEC2(t, TFC_DISPERSIVE_BIN_RAB_0), TFC_RECORD_VEC2(t, TFC_DISPERSIVE_BIN_MULTIPLE_0), TFC_RECORD_VEC2(t, TFC_DISPERSIVE_BIN_ROUND_TRIP_0));
 #ifdef TFC_BOTH_CHANNELS
-  d.optics.channels[1] = AiryTerms(t1.zw, t2.xy, t2.zw);
+  d.optics.channels[1] = AiryTerms(TFC_RECORD_VEC2(t, TFC_DISPERSIVE_BIN_RAB_1), TFC_RECORD_VEC2(t, TFC_DISPERSIVE_BIN_MULTIPLE_1), TFC_RECORD_VEC2(t, TFC_DISPERSIVE_BIN_ROUND_TRIP_1));
 #endif
-  d.optics.opticalPathNm = t3.xy * thicknessNm;
+  d.optics.opticalPathNm = TFC_RECORD_VEC2(t, TFC_DISPERSIVE_BIN_PATH_PER_NM) * thicknessNm;
   // The rows hold a film's terms (d > 0); at d = 0 filmOptics decides (the bare interface), as in the reference.
   if (thicknessNm == 0.0) {
     const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
     d.optics = tfcBinOptics(float(TFC_LAMBDA_MIN_NM) + (float(b) + 0.5) * width, 0.0, fromInside, cosIncidence);
   }
-  d.pathPerNmLow = t3.z;
-  d.pathPerNmHigh = t3.w;
+  d.pathPerNmLow = TFC_RECORD_FLOAT(t, TFC_DISPERSIVE_BIN_PATH_PER_NM_LOW);
+  d.pathPerNmHigh = TFC_RECORD_FLOAT(t, TFC_DISPERSIVE_BIN_PATH_PER_NM_HIGH);
   return d;
 }
 #else

@@ -46,7 +46,6 @@ void main() {
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
 }`,
     fragmentShader: `${shaderSource('environment.glsl')}
-uniform float uExposure;
 varying vec3 vDirection;
 void main() {
   gl_FragColor = vec4(uExposure * tfcEnvironmentRadiance(vDirection), 1.0);

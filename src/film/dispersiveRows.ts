@@ -1,12 +1,30 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
+import { packTexelRecord, texelRecord } from '../gpu/texelRecord.ts';
 import { type BinnedStack, pathPerNmAt } from '../physics/binnedIntegration.ts';
+import type { Complex } from '../physics/complex.ts';
 import { type Polarization, filmOptics } from '../physics/filmReflectance.ts';
 import { type Medium, absorbsInBand, mediumStackAt, transparentIndexAt } from '../physics/medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 import { type FilmTableLayout, filmTableCosIncidence } from '../settings/filmTableLayout.ts';
 
-/** RGBA texels per row and bin (shaders/physics/binnedIntegration.glsl's stride TFC_DISPERSIVE_BIN_TEXELS). */
-export const DISPERSIVE_BIN_TEXELS = 4;
+/**
+ * The record of a row and bin, read by these names in shaders/physics/binnedIntegration.glsl
+ * (`tfcDispersiveBin`): the Fresnel terms of eq (13) of channels 0 and 1 (complex), the optical
+ * path per nm of thickness at the bin's centre (complex) and at its two ends (real part).
+ */
+export const DISPERSIVE_BIN = texelRecord('TFC_DISPERSIVE_BIN', {
+  RAB_0: 2,
+  MULTIPLE_0: 2,
+  ROUND_TRIP_0: 2,
+  RAB_1: 2,
+  MULTIPLE_1: 2,
+  ROUND_TRIP_1: 2,
+  PATH_PER_NM: 2,
+  PATH_PER_NM_LOW: 1,
+  PATH_PER_NM_HIGH: 1,
+});
+
+const reIm = (z: Complex): readonly [number, number] => [z.re, z.im];
 
 export interface DispersiveFilm {
   readonly nOutside: number;
@@ -20,10 +38,10 @@ export interface DispersiveFilm {
  * bin, none of it depending on the thickness: the Fresnel terms of eq (13) at ñ_b, ñ_c of the bin's
  * centre (both channels), and the optical path per nm of thickness, 2 ñ_b(λ) cos θ_r(λ), at the bin's
  * centre (complex) and its two ends (real part) — computed in float64 by src/physics for
- * shaders/film/filmTable.glsl (`dispersiveRowXyz`), instead of the Fresnel terms per texel and bin.
- * Texels per (row, bin): [rab, multiple] and [roundTrip, rab] and [multiple, roundTrip] of channels 0
- * and 1, then [path at the centre (re, im), path at the low end, path at the high end]. The outside
- * half's rows first, then the inside half's (none for an opaque inside, whose half the pass leaves black).
+ * the table pass (shaders/film/filmTable.glsl, through binnedIntegration.glsl's `tfcDispersiveBin`),
+ * instead of the Fresnel terms per texel and bin.
+ * A DISPERSIVE_BIN record per (row, bin), the bins of a row together; the outside half's rows first,
+ * then the inside half's (none for an opaque inside, whose half the pass leaves black).
  */
 export function dispersiveRows(s: DispersiveFilm, layout: FilmTableLayout, data: Float32Array): void {
   const bins = layout.spectralBins;
@@ -42,24 +60,24 @@ export function dispersiveRows(s: DispersiveFilm, layout: FilmTableLayout, data:
         const at = { ...stack, nOutside: transparentIndexAt(nOutside, center), thicknessNm: 1 };
         const optics = filmOptics(mediumStackAt(at, center), s.polarization);
         const [c0, c1 = c0] = optics.channels;
-        const p = optics.opticalPathNm;
-        data.set(
-          [
-            ...[c0!.rab, c0!.multiple, c0!.roundTrip, c1!.rab, c1!.multiple, c1!.roundTrip].flatMap((z) => [z.re, z.im]),
-            p.re,
-            p.im,
-            pathPerNmAt(stack, l1),
-            pathPerNmAt(stack, l1 + width),
-          ],
-          4 * DISPERSIVE_BIN_TEXELS * ((half * layout.rows + row) * bins + b),
-        );
+        packTexelRecord(DISPERSIVE_BIN, data, (half * layout.rows + row) * bins + b, {
+          RAB_0: reIm(c0!.rab),
+          MULTIPLE_0: reIm(c0!.multiple),
+          ROUND_TRIP_0: reIm(c0!.roundTrip),
+          RAB_1: reIm(c1!.rab),
+          MULTIPLE_1: reIm(c1!.multiple),
+          ROUND_TRIP_1: reIm(c1!.roundTrip),
+          PATH_PER_NM: reIm(optics.opticalPathNm),
+          PATH_PER_NM_LOW: pathPerNmAt(stack, l1),
+          PATH_PER_NM_HIGH: pathPerNmAt(stack, l1 + width),
+        });
       }
     }
   }
 }
 
 /** The floats dispersiveRows writes for a layout. */
-export const dispersiveRowsLength = (layout: FilmTableLayout): number => 4 * DISPERSIVE_BIN_TEXELS * layout.spectralBins * 2 * layout.rows;
+export const dispersiveRowsLength = (layout: FilmTableLayout): number => DISPERSIVE_BIN.floats * layout.spectralBins * 2 * layout.rows;
 
 /** What a dispersive film's row terms follow from: the film and the table's layout (its rows and bins). */
 export const dispersiveRowsKey = (film: DispersiveFilm, layout: FilmTableLayout): string =>
@@ -73,11 +91,11 @@ export function dispersiveRowsOfKey(key: string): Float32Array {
   return data;
 }
 
-/** A texture for dispersiveRows of a layout (filled and uploaded by FilmTable). */
+/** A texture for dispersiveRows of a layout (filled and uploaded by FilmTablePass). */
 export function dispersiveRowsTexture(layout: FilmTableLayout): DataTexture {
   const texture = new DataTexture(
     new Float32Array(dispersiveRowsLength(layout)),
-    DISPERSIVE_BIN_TEXELS * layout.spectralBins,
+    DISPERSIVE_BIN.texels * layout.spectralBins,
     2 * layout.rows,
     RGBAFormat,
     FloatType,

@@ -8,8 +8,14 @@ import { FILM_METHOD_REGISTRY, FILM_METHODS, methodReads } from '../methods/meth
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { type FilmMedia, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from './filmMedia.ts';
 import { filmTableLayoutDefines } from './filmTableDefines.ts';
-import { airySeriesDefines, releaseSpectralTransformTexture, spectralTransformTexture } from './spectralTransformTexture.ts';
-import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from './spectralBinsTexture.ts';
+import {
+  airySeriesDefines,
+  releaseSpectralTransformTexture,
+  spectralTransformTexture,
+  spectralTransformUniforms,
+} from './spectralTransformTexture.ts';
+import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture, spectralBinsUniforms } from './spectralBinsTexture.ts';
+import { filmTableGridUniforms } from './filmTableGrid.ts';
 
 /**
  * The film's colour as shaders/film/filmColor.glsl computes it, from the TypeScript side: its
@@ -41,8 +47,8 @@ const INPUT_DEFINES: Readonly<Record<FilmMethodInput, (s: FilmColorSettings, q: 
  * reads (its registry entry says which), so a change of anything else compiles nothing.
  */
 export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
-  const inputs = FILM_METHOD_REGISTRY[s.mode].reads.map((input) => INPUT_DEFINES[input](s, q));
-  return Object.assign(enumDefines('TFC_FILM_MODE', FILM_METHODS, s.mode), opaqueInsideDefine(s), ...inputs);
+  const inputs = FILM_METHOD_REGISTRY[s.mode].reads.map((input: FilmMethodInput) => INPUT_DEFINES[input](s, q));
+  return Object.assign({}, enumDefines('TFC_FILM_MODE', FILM_METHODS, s.mode), opaqueInsideDefine(s), ...inputs) as Record<string, number>;
 }
 
 /**
@@ -80,13 +86,12 @@ export function releaseFilmColorTextures(m: object): void {
  * grid, the three media), and the XYZ → working space matrix (eq 19) its users apply.
  */
 export const filmColorUniforms = (): ShaderMaterial['uniforms'] => ({
-  uSpectralBins: { value: null },
-  uSpectralTransform: { value: null },
+  ...spectralBinsUniforms(),
+  ...spectralTransformUniforms(),
   uFilmTable: { value: null },
-  uTableMaxThicknessNm: { value: 1 },
-  uFilmTableWidth: { value: 1 },
-  uFilmTableRows: { value: 1 },
+  ...filmTableGridUniforms(),
   ...filmMediaUniforms(),
+  // shaders/film/filmWorkingSpace.glsl
   uXyzToLinearWorking: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
 });
 

@@ -1,3 +1,4 @@
+import { packTexelRecord, texelRecord, texelRecordDefines } from '../gpu/texelRecord.ts';
 import { asComplex } from '../physics/complex.ts';
 import { type Medium, absorbsInBand, isDispersiveMedium, mediumIndexAt } from '../physics/medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
@@ -9,6 +10,12 @@ export type FilmMedia = Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside'>;
 /** The spacing of shaders/physics/medium.glsl's knots: linear between them, n_b is within 3e-6 of water's (docs/physics.md#a-dispersive-film). */
 const STEP_NM = 5;
 const KNOTS = LAMBDA_SPAN_NM / STEP_NM + 1;
+
+/**
+ * A knot of shaders/physics/medium.glsl: the film's and the inside's ñ as (n, k), read by these
+ * names in filmMedia.glsl (`tfcKnotMedia`). One texel: medium.glsl holds a vec4 per knot.
+ */
+export const MEDIA_KNOT = texelRecord('TFC_MEDIA_KNOT', { FILM: 2, INSIDE: 2 });
 
 /** The sodium D line: the wavelength of the one index that consumers without dispersion take (uNFilm; three.js's iridescence). */
 export const SODIUM_D_NM = 589.29;
@@ -23,7 +30,13 @@ export const isDispersiveFilm = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): boole
  */
 export const filmMediaDefines = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): Record<string, number> => ({
   ...(isDispersiveFilm(s)
-    ? { TFC_DISPERSIVE: 1, TFC_MEDIA_KNOTS: KNOTS, TFC_MEDIA_FIRST_NM: LAMBDA_MIN_NM, TFC_MEDIA_STEP_NM: STEP_NM }
+    ? {
+        TFC_DISPERSIVE: 1,
+        TFC_MEDIA_KNOTS: KNOTS,
+        TFC_MEDIA_FIRST_NM: LAMBDA_MIN_NM,
+        TFC_MEDIA_STEP_NM: STEP_NM,
+        ...texelRecordDefines(MEDIA_KNOT),
+      }
     : {}),
   ...(absorbsInBand(s.nInside) ? { TFC_OPAQUE_INSIDE: 1 } : {}),
 });
@@ -37,7 +50,7 @@ export const filmMediaUniforms = () => ({
   uNOutside: { value: 1 },
   uNFilm: { value: [1.33, 0] },
   uNInside: { value: [1, 0] },
-  uMediaKnots: { value: new Float32Array(4 * KNOTS) },
+  uMediaKnots: { value: new Float32Array(MEDIA_KNOT.floats * KNOTS) },
 });
 
 const nk = (m: Medium, lambdaNm: number): [number, number] => {
@@ -60,6 +73,8 @@ export function updateFilmMediaUniforms(u: Record<string, { value: unknown }>, s
   u.uNInside!.value = nk(s.nInside, SODIUM_D_NM);
   if (!isDispersiveFilm(s)) return;
   const knots = u.uMediaKnots!.value as Float32Array;
-  for (let i = 0; i < KNOTS; i++)
-    knots.set([...nk(s.nFilm, LAMBDA_MIN_NM + i * STEP_NM), ...nk(s.nInside, LAMBDA_MIN_NM + i * STEP_NM)], 4 * i);
+  for (let i = 0; i < KNOTS; i++) {
+    const lambdaNm = LAMBDA_MIN_NM + i * STEP_NM;
+    packTexelRecord(MEDIA_KNOT, knots, i, { FILM: nk(s.nFilm, lambdaNm), INSIDE: nk(s.nInside, lambdaNm) });
+  }
 }

@@ -26,6 +26,9 @@ const shared = new SharedTextures((key) => {
 export const spectralBinsTexture = (illuminant: IlluminantSpec, normalization: Normalization, count: number, holder: object): DataTexture =>
   shared.hold(JSON.stringify({ illuminant, normalization, count }), holder);
 
+/** The uniform shaders/physics/binnedIntegration.glsl declares for the bin weights. */
+export const spectralBinsUniforms = () => ({ uSpectralBins: { value: null as DataTexture | null } });
+
 /** `holder` needs no spectral bins texture any more. */
 export const releaseSpectralBinsTexture = (holder: object): void => shared.release(holder);
 

@@ -33,6 +33,9 @@ export function spectralTransformReady(illuminant: IlluminantSpec, normalization
 
 export const releaseSpectralTransformTexture = (holder: object): void => shared.release(holder);
 
+/** The uniform shaders/physics/airySeries.glsl declares for the spectral transform. */
+export const spectralTransformUniforms = () => ({ uSpectralTransform: { value: null as DataTexture | null } });
+
 /** The defines shaders/physics/airySeries.glsl reads; `maxOrders` below the default truncates the series (the peers' m ≤ 2, 3). */
 export const airySeriesDefines = (maxOrders = AIRY_SERIES_MAX_ORDERS): Record<string, number> => ({
   TFC_SPECTRAL_TRANSFORM_WIDTH: WIDTH,

@@ -1,7 +1,8 @@
 /**
- * How much of the table a frame may build: a full table built behind a coarse one (FilmTable) is
- * drawn in bands of columns, one per frame, each sized by the measured cost of the pass so that it
- * takes at most BAND_SHARE of a frame's own time; the coarse table is sized the same way.
+ * How much of the table a frame may build: a full table built behind a coarse one
+ * (ProgressiveTableBuild) is drawn in bands of columns, one per frame, each sized by the measured
+ * cost of the pass so that it takes at most BAND_SHARE of a frame's own time; the coarse table is
+ * sized the same way.
  */
 
 /** A band may take this share of a frame's own time: a frame with a band lasts ≤ 1.5 frames, with room below 2 for the display's vsync and a busy CPU. */

@@ -31,13 +31,22 @@ test('fourier with a dispersive film draws with the table and says why; the URL 
   const modes = () =>
     page.evaluate(() => {
       const w = window as unknown as {
-        bubbleView: { current: { mode: string }; table: { builds: number } };
+        bubbleView: { current: { mode: string }; table: { coarse: boolean; bind(u: Record<string, { value: unknown }>): void } };
         bubbleApp: { current: { mode: string } };
       };
-      return { shown: w.bubbleView.current.mode, asked: w.bubbleApp.current.mode, tables: w.bubbleView.table.builds };
+      // The grid the table binds: one texel until a table is built.
+      const bound = {
+        uFilmTable: { value: null },
+        uTableMaxThicknessNm: { value: 0 },
+        uFilmTableWidth: { value: 0 },
+        uFilmTableRows: { value: 0 },
+      };
+      w.bubbleView.table.bind(bound);
+      const table = { width: bound.uFilmTableWidth.value, coarse: w.bubbleView.table.coarse };
+      return { shown: w.bubbleView.current.mode, asked: w.bubbleApp.current.mode, table };
     });
-  expect(await modes()).toMatchObject({ shown: 'table', asked: 'fourier' });
-  expect((await modes()).tables).toBeGreaterThan(0);
+  expect(await modes()).toMatchObject({ shown: 'table', asked: 'fourier', table: { coarse: false } });
+  expect((await modes()).table.width).toBeGreaterThan(1);
   // A change through the panel keeps the mode asked for in the URL.
   await openPanel(page);
   await page.getByRole('combobox', { name: 'illuminant' }).selectOption('D93');

@@ -11,7 +11,7 @@ import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { type Xyz } from '../../src/physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/settings/filmQuality.ts';
 import { MODES } from '../../src/settings/filmSettings.ts';
-import { type DeltaStats, deltaStats } from '../../src/physics/deltaStats.ts';
+import { type DeltaStats, deltaStats } from '../../scripts/harness/deltaStats.ts';
 import type { ParityGroup, ParityMode } from '../../scripts/harness/parityCase.ts';
 import { mulberry32 } from '../seededRandom.ts';
 import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_METAL_FIXED, MAX_DELTA_E00_METAL_STRESS, MAX_DELTA_E00_STRESS } from '../tolerances.ts';

@@ -7,7 +7,8 @@
  * the renderer as the first found it.
  */
 import { WebGLRenderer } from 'three';
-import { type BubbleView, createBubbleRenderer } from '../../../src/scene/bubbleView.ts';
+import type { BubbleView } from '../../../src/scene/bubbleView.ts';
+import { createBubbleRenderer } from '../../../src/scene/bubbleRenderer.ts';
 import { FilmXyzProbe } from '../../harness/filmXyzProbe.ts';
 import { loadEnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
 import { isHdrEnvironment } from '../../../src/settings/filmSettings.ts';
@@ -22,6 +23,7 @@ import {
   fittedFrameMs,
 } from '../benchRow.ts';
 import { rowScene } from './rowScene.ts';
+import { TableWatch } from './tableWatch.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 if (!canvas) throw new Error('bench.html must hold #bubble');
@@ -30,7 +32,7 @@ const renderer = createBubbleRenderer(canvas);
 /**
  * The error grids' probe on its own canvas, made at the page's first row that measures error and
  * kept for its later rows: its programs compile once per film mode and quality, and its tables
- * are drawn anew around each grid (FilmTable.buildAround).
+ * are drawn anew around each grid (the table pass in only the columns the grid's films read).
  */
 let gridProbe: FilmXyzProbe | null = null;
 /** Rows run in this page so far. */
@@ -77,11 +79,12 @@ function timeView(view: BubbleView, spec: BenchRowSpec, originMs: number): Omit<
   // The first frame, small: the program's compile and the table's build, without a slow row's
   // full-size fragment cost, which the timed frames then measure once each.
   view.resize(...FIRST_FRAME_SIZE);
+  const table = new TableWatch(view.table);
   view.render();
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   const firstFrameMs = performance.now() - originMs;
-  const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? view.table.lastBuildMs : null;
-  const buildsBefore = view.table.builds;
+  const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? table.firstBuildMs : null;
+  const buildsBefore = table.builds;
 
   // Per size: up to 3 warm-up frames, then up to `frames` timed ones within the budget. Where a
   // frame at a 16th of the pixels, times 16, would outlast FIT_OVER_BUDGET budgets, the frame
@@ -134,7 +137,8 @@ function timeView(view: BubbleView, spec: BenchRowSpec, originMs: number): Omit<
     const times = Array.from({ length: count }, frame);
     frames.push({ medianMs: median(times), count });
   }
-  const rebuildsWhileAnimating = view.table.builds - buildsBefore;
+  const rebuildsWhileAnimating = table.builds - buildsBefore;
+  table.stop();
   // Each change and its way back (timed too where `changesBack`, while that change has taken less
   // than the budget; else drawn with the next change), up to `changeRepeats` times while that
   // change has taken less than the budget; none (null) for the textured sphere, which shows no

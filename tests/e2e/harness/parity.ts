@@ -5,6 +5,7 @@ import type { ParityGroup, ParityMode } from '../../../scripts/harness/parityCas
 import { FilmXyzProbe } from '../../../scripts/harness/filmXyzProbe.ts';
 import { renderThickness } from './thicknessFieldProbe.ts';
 import { GpuFilmSimulation } from '../../../src/flow/gpuFilmSimulation.ts';
+import { readFilmState } from './filmReadback.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');
 if (!canvas) throw new Error('parity.html must hold #gl');
@@ -18,14 +19,14 @@ window.runFlow = (parameters, steps, blow, puncture, renew = false) => {
   if (blow) sim.blow(blow.center, blow.velocityMps);
   if (puncture) sim.puncture(...puncture);
   sim.step(steps);
-  const { eta, gamma, intact } = sim.readFilm();
+  const { eta, gamma, intact, edgeVelocity, holes, surfactantResidual } = readFilmState(renderer, sim);
   const result = {
     eta: [...eta],
     gamma: [...gamma],
     intact: [...intact],
-    edgeVelocity: [...sim.readEdgeVelocity()],
-    holes: sim.readHoles(),
-    surfactantResidual: sim.surfactantResidual(),
+    edgeVelocity: [...edgeVelocity],
+    holes,
+    surfactantResidual,
     steps: sim.steps,
   };
   sim.dispose();

@@ -1,7 +1,7 @@
 /** The film's media: the uniforms TypeScript sets are exactly those the GLSL declares. */
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { filmIndexMax, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from '../../../src/film/filmMedia.ts';
+import { MEDIA_KNOT, filmIndexMax, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from '../../../src/film/filmMedia.ts';
 import { waterIndex } from '../../../src/physics/filmIndex.ts';
 import type { Medium } from '../../../src/physics/medium.ts';
 import { FEW_OPERATIONS_TOL } from '../../tolerances.ts';
@@ -36,12 +36,16 @@ describe('film media uniforms', () => {
     const u = filmMediaUniforms();
     updateFilmMediaUniforms(u, { nOutside: 1, nFilm: 1.38, nInside: 'Au' });
     expect(u.uNFilm.value).toEqual([1.38, 0]);
-    const knots = u.uMediaKnots.value;
     const i = (550 - 380) / 5; // knots every 5 nm from 380 nm
-    // A knot is (film n, k, inside n, k). Johnson & Christy 1972 list gold at 548.6 nm as 0.43 + 2.455i and at 582.1 nm as 0.29 + 2.863i.
-    expect([knots[4 * i], knots[4 * i + 1]]).toEqual([Math.fround(1.38), 0]);
-    expect(knots[4 * i + 2]! < 0.43 && knots[4 * i + 2]! > 0.29).toBe(true);
-    expect(knots[4 * i + 3]! > 2.455 && knots[4 * i + 3]! < 2.863).toBe(true);
+    // A knot's fields by name, as filmMedia.glsl reads them (medium.glsl holds one vec4 per knot).
+    expect(MEDIA_KNOT.texels).toBe(1);
+    const knot = u.uMediaKnots.value.subarray(i * MEDIA_KNOT.floats, (i + 1) * MEDIA_KNOT.floats);
+    const [filmN, filmK] = knot.subarray(MEDIA_KNOT.offsets.FILM);
+    const [insideN, insideK] = knot.subarray(MEDIA_KNOT.offsets.INSIDE);
+    // Johnson & Christy 1972 list gold at 548.6 nm as 0.43 + 2.455i and at 582.1 nm as 0.29 + 2.863i.
+    expect([filmN, filmK]).toEqual([Math.fround(1.38), 0]);
+    expect(insideN! < 0.43 && insideN! > 0.29).toBe(true);
+    expect(insideK! > 2.455 && insideK! < 2.863).toBe(true);
   });
 
   it("filmIndexMax: a constant film's n; a normally dispersive film's n at the band's short end", () => {

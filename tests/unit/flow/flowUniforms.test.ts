@@ -6,6 +6,7 @@
  */
 import { readFileSync, readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
+import { declaredUniforms } from '../gpu/glslUniforms.ts';
 import { cubeSphereGrid } from '../../../src/physics/flow/cubeSphereGrid.ts';
 import { cubeSphereHalo } from '../../../src/physics/flow/cubeSphereSampler.ts';
 import { flowNumbers } from '../../../src/physics/flow/flowNumbers.ts';
@@ -18,9 +19,6 @@ const flowDir = new URL('../../../shaders/flow/', import.meta.url);
 const flowFiles = readdirSync(flowDir).filter((f) => f.endsWith('.glsl'));
 const ownText = (file: string): string => readFileSync(new URL(file, flowDir), 'utf8');
 
-/** The names of the uniforms GLSL declares, `uniform <type> <name>` (an array's name without its size). */
-const declaredUniforms = (glsl: string): string[] =>
-  [...glsl.matchAll(/^[ \t]*uniform\s+(?:(?:lowp|mediump|highp)\s+)?\w+\s+(\w+)/gm)].map((m) => m[1]!);
 
 const parameters = validateFlowParameters({ gridN: 4 });
 const grid = cubeSphereGrid(parameters.gridN);

@@ -12,6 +12,10 @@ import { ENVIRONMENTS, FIELDS, FILM_METHODS, SIDES, SPACES } from '../../../src/
 import { filmTableLayoutDefines } from '../../../src/film/filmTableDefines.ts';
 import { spectralBinDefines } from '../../../src/film/spectralBinsTexture.ts';
 import { airySeriesDefines } from '../../../src/film/spectralTransformTexture.ts';
+import { AIRY_ROW } from '../../../src/film/airySeriesRows.ts';
+import { DISPERSIVE_BIN } from '../../../src/film/dispersiveRows.ts';
+import { MEDIA_KNOT } from '../../../src/film/filmMedia.ts';
+import { type FieldWidth, texelRecordDefines } from '../../../src/gpu/texelRecord.ts';
 
 const PREFIX = /^TFC_[A-Z0-9_]+$/;
 /** Include guards (defined and tested only by their own file), and three.js's names that filmColor.glsl uses on purpose for the peer. */
@@ -19,6 +23,79 @@ const NOT_OURS = [/^THIN_FILM_[A-Z0-9_]+$/, /^USE_IRIDESCENCE$/, /^XYZ_TO_REC709
 
 const shaderDir = new URL('../../../shaders/', import.meta.url);
 const shaders = readdirSync(shaderDir, { recursive: true, encoding: 'utf8' }).filter((f) => f.endsWith('.glsl'));
+
+/** Every texel record TypeScript packs, with the texture (or uniform array) the shaders read it from. */
+const RECORDS = [
+  { record: AIRY_ROW, texture: 'uAirySeriesRows' },
+  { record: DISPERSIVE_BIN, texture: 'uDispersiveRows' },
+  { record: MEDIA_KNOT, texture: 'uMediaKnots' },
+] as const;
+
+/** Each record field's define and its width. */
+const RECORD_FIELDS = new Map<string, FieldWidth>(
+  RECORDS.flatMap(({ record }) =>
+    Object.entries(record.fields as Record<string, FieldWidth>).map(([name, width]) => [`${record.prefix}_${name}`, width] as const),
+  ),
+);
+const RECORD_TEXTURES = RECORDS.map(({ texture }) => texture);
+
+/** The text from `open` (an opening parenthesis) to its matching one, and what follows it. */
+function parenthesised(text: string, open: number): { inside: string; after: string } {
+  let depth = 0;
+  for (let i = open; i < text.length; i++) {
+    if (text[i] === '(') depth++;
+    else if (text[i] === ')' && --depth === 0) return { inside: text.slice(open + 1, i), after: text.slice(i + 1) };
+  }
+  return { inside: text.slice(open + 1), after: '' };
+}
+
+/** `inside` split at its top-level commas. */
+function topLevelArguments(inside: string): string[] {
+  const args = [''];
+  let depth = 0;
+  for (const c of inside) {
+    if (c === ',' && depth === 0) args.push('');
+    else {
+      if (c === '(' || c === '[') depth++;
+      if (c === ')' || c === ']') depth--;
+      args[args.length - 1] += c;
+    }
+  }
+  return args.map((a) => a.trim());
+}
+
+const BARE_NUMBER = /(?<![A-Za-z_0-9.])\d/;
+/** A swizzle or an index right after an expression: reading a packed texel by position. */
+const BY_POSITION = /^\s*[.[]/;
+
+/**
+ * How a line of GLSL reads a texel record other than by its fields' names: a field macro
+ * (TFC_RECORD_FLOAT, TFC_RECORD_VEC2) at an offset that is not a field's define or a field of
+ * another width, a record's texel fetched at a bare offset, or fetched and then swizzled or indexed.
+ */
+function readsByPosition(line: string): string[] {
+  if (/^\s*#\s*define\b/.test(line)) return [];
+  const problems: string[] = [];
+  for (const m of line.matchAll(/\bTFC_RECORD_(FLOAT|VEC2)\s*\(/g)) {
+    const offset = topLevelArguments(parenthesised(line, m.index + m[0].length - 1).inside)[1] ?? '';
+    const width = RECORD_FIELDS.get(offset);
+    if (width === undefined) problems.push(`${m[0]}… at ${offset || 'no offset'}, not a field's name`);
+    else if (width !== (m[1] === 'FLOAT' ? 1 : 2)) problems.push(`${m[0]}… at ${offset}, a field of ${width} floats`);
+  }
+  for (const m of line.matchAll(/\btexelFetch\s*\(/g)) {
+    const { inside, after } = parenthesised(line, m.index + m[0].length - 1);
+    const [texture = '', coordinate = ''] = topLevelArguments(inside);
+    if (!RECORD_TEXTURES.includes(texture as (typeof RECORD_TEXTURES)[number])) continue;
+    if (BARE_NUMBER.test(coordinate)) problems.push(`${texture} fetched at ${coordinate}`);
+    if (BY_POSITION.test(after)) problems.push(`${texture}'s texel read by position`);
+  }
+  for (const texture of RECORD_TEXTURES)
+    for (const m of line.matchAll(new RegExp(`\\b${texture}\\s*\\[`, 'g'))) {
+      const close = line.indexOf(']', m.index);
+      if (close >= 0 && BY_POSITION.test(line.slice(close + 1))) problems.push(`${texture}'s element read by position`);
+    }
+  return problems;
+}
 
 describe('shader defines', () => {
   it('set by TypeScript all start with TFC_, for every mode, polarisation, field, wall, environment and space', () => {
@@ -38,6 +115,7 @@ describe('shader defines', () => {
       spectralBinDefines(q.table.spectralBins, q.spectralTailTolerance),
       filmTableLayoutDefines(q.table),
       airySeriesDefines(2),
+      ...RECORDS.map(({ record }) => texelRecordDefines(record)),
     ]) {
       Object.keys(d).forEach((k) => keys.add(k));
     }
@@ -52,8 +130,8 @@ describe('shader defines', () => {
       lines.forEach((line, i) => {
         const directive = /^\s*#\s*(if|ifdef|ifndef|elif|define|undef)\b(.*)$/.exec(line);
         if (!directive) return;
-        // #define NAME value: only NAME is a define; in conditions every identifier but `defined` is one.
-        const body = directive[1] === 'define' ? (directive[2]!.trim().split(/\s+/)[0] ?? '') : directive[2]!;
+        // #define NAME value (or NAME(params) body): only NAME is a define; in conditions every identifier but `defined` is one.
+        const body = directive[1] === 'define' ? (directive[2]!.trim().split(/[\s(]/)[0] ?? '') : directive[2]!;
         for (const name of body.match(/\b[A-Za-z_][A-Za-z0-9_]*\b/g) ?? []) {
           if (name === 'defined' || PREFIX.test(name) || NOT_OURS.some((r) => r.test(name))) continue;
           bad.push(`${file}:${i + 1}: ${name}`);
@@ -80,5 +158,41 @@ describe('shader defines', () => {
     const condition = /^\s*#\s*(?:if|elif)\b(.*)$/.exec('#elif TFC_FILM_MODE == 2')![1]!;
     expect(/(?<![A-Za-z_0-9])\d/.test(condition)).toBe(true);
     expect(/(?<![A-Za-z_0-9])\d/.test(' TFC_FILM_MODE == TFC_FILM_MODE_TABLE2')).toBe(false);
+  });
+});
+
+describe('texel records', () => {
+  it("are read in shaders/ by their fields' names only, never at a bare offset or by a swizzle of a fetched texel", () => {
+    const problems: string[] = [];
+    for (const file of shaders)
+      readFileSync(new URL(file, shaderDir), 'utf8')
+        .split('\n')
+        .forEach((line, i) => problems.push(...readsByPosition(line).map((p) => `${file}:${i + 1}: ${p}`)));
+    expect(problems).toEqual([]);
+  });
+
+  it('have every field read by name in shaders/ (so none is read some other way)', () => {
+    const text = shaders.map((file) => readFileSync(new URL(file, shaderDir), 'utf8')).join('\n');
+    const unread = [...RECORD_FIELDS.keys()].filter(
+      (name) => !new RegExp(`TFC_RECORD_(FLOAT|VEC2)\\(\\s*\\w+\\s*,\\s*${name}\\s*\\)`).test(text),
+    );
+    expect(RECORD_FIELDS.size).toBeGreaterThan(10);
+    expect(unread).toEqual([]);
+  });
+
+  it('the check finds a read at a bare offset, by a swizzle or of the wrong width, and passes a read by name', () => {
+    for (const bad of [
+      'vec4 c = texelFetch(uAirySeriesRows, ivec2(2, y), 0);',
+      'pathPerNm = texelFetch(uAirySeriesRows, ivec2(i, y), 0).z;',
+      'vec4 t3 = texelFetch(uDispersiveRows, ivec2(TFC_DISPERSIVE_BIN_TEXELS * b + 3, y), 0);',
+      'float n = uMediaKnots[i].x;',
+      'float c0 = TFC_RECORD_FLOAT(r, 5);',
+      'vec2 b = TFC_RECORD_VEC2(r, TFC_AIRY_ROW_C0_0);',
+    ])
+      expect(readsByPosition(bad), bad).not.toEqual([]);
+    expect(readsByPosition('r[i] = texelFetch(uAirySeriesRows, ivec2(i, y), 0);')).toEqual([]);
+    expect(
+      readsByPosition('t[0] = AirySeriesTerms(TFC_RECORD_FLOAT(r, TFC_AIRY_ROW_C0_0), TFC_RECORD_VEC2(r, TFC_AIRY_ROW_B_0), x);'),
+    ).toEqual([]);
   });
 });

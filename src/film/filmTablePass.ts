@@ -1,0 +1,183 @@
+import { type DataTexture, FloatType, HalfFloatType, LinearFilter, RGBAFormat, type WebGLRenderer, WebGLRenderTarget } from 'three';
+import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { enumCode } from '../gpu/enumDefines.ts';
+import { FullscreenPass } from '../gpu/fullscreenPass.ts';
+import { maxFieldThicknessNm } from '../fields/fields.ts';
+import type { FilmQuality } from '../settings/filmQuality.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
+import { type FilmTableLayout, filmTableWidth } from '../settings/filmTableLayout.ts';
+import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
+import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
+import { dispersiveRowsOf, dispersiveRowsReady } from './dispersiveRowsStore.ts';
+import { filmIndexMax, isDispersiveFilm, updateFilmMediaUniforms } from './filmMedia.ts';
+import { type FilmTableGrid, setFilmTableGridUniforms } from './filmTableGrid.ts';
+import { releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
+import { releaseSpectralTransformTexture, spectralTransformReady, spectralTransformTexture } from './spectralTransformTexture.ts';
+import { TablePassPrograms } from './tablePassPrograms.ts';
+
+/** Columns [from, to) of a grid. */
+export type TableColumns = readonly [number, number];
+
+/**
+ * The table's texel type: float where the GPU can render to float (EXT_color_buffer_float) and
+ * filter it (OES_texture_float_linear), else half float, which WebGL2 always filters and renders
+ * to with EXT_color_buffer_half_float (or EXT_color_buffer_float).
+ */
+export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['tablePrecision']): typeof FloatType | typeof HalfFloatType {
+  const e = renderer.extensions;
+  return precision === 'auto' && e.has('EXT_color_buffer_float') && e.has('OES_texture_float_linear') ? FloatType : HalfFloatType;
+}
+
+/** A target for a table, `height` texels high until the pass sizes (and types) it to the grid it draws. */
+export const tableTarget = (height: number): WebGLRenderTarget =>
+  new WebGLRenderTarget(1, height, { format: RGBAFormat, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
+
+/**
+ * The table pass: shaders/film/filmTable.glsl drawn over a grid of the film table (or some of its
+ * columns) in a target, filling it with the film's XYZ over (thickness 0..max, cos θ_i 0..1), for
+ * light from outside and from inside. It holds the light's textures it reads from its first draw
+ * for a light until `releaseLight`, and the per-row terms, computed once for the bands of one table.
+ */
+export class FilmTablePass {
+  private readonly programs: TablePassPrograms;
+  private fullscreen = new FullscreenPass();
+  /**
+   * The per-row terms: the series' C₀, B, q (airySeriesRows.ts), or for a dispersive film the Fresnel
+   * terms per row and bin (dispersiveRows.ts). One texture, remade when the kind changes, so a
+   * dispersive film holds no more GPU objects than a constant one.
+   */
+  private rows: { texture: DataTexture; dispersive: boolean };
+  /** What the row terms were last computed for (dispersiveRowsKey of the film and the grid's rows). */
+  private rowsFor = '';
+
+  constructor(private readonly quality: FilmQuality) {
+    this.programs = new TablePassPrograms(quality);
+    this.rows = { texture: airySeriesRowsTexture(quality.table), dispersive: false };
+  }
+
+  /** The full grid for the settings (its width follows the thickness range and the film's index). */
+  fullGrid(s: FilmSettings): FilmTableGrid {
+    const layout = this.quality.table;
+    const maxThicknessNm = maxFieldThicknessNm(s);
+    return { width: filmTableWidth(layout, maxThicknessNm, filmIndexMax(s.nFilm)), rows: layout.rows, maxThicknessNm };
+  }
+
+  /** The layout of the row terms of `grid` for `s`: the table's, with the grid's rows and the settings' bins. */
+  private rowLayout(s: FilmSettings, grid: FilmTableGrid): FilmTableLayout {
+    return { ...this.quality.table, rows: grid.rows, spectralBins: this.programs.bins(s) };
+  }
+
+  /** Whether the light's transform and, for a dispersive film, the row terms of each grid are at hand (each asked of its worker at once). */
+  inputsReady(s: FilmSettings, grids: readonly FilmTableGrid[]): boolean {
+    const ready = [spectralTransformReady(s.illuminant, s.normalization)];
+    if (isDispersiveFilm(s)) ready.push(...grids.map((g) => dispersiveRowsReady(dispersiveRowsKey(s, this.rowLayout(s, g)))));
+    return ready.every(Boolean);
+  }
+
+  /**
+   * Runs the pass for `s` over `grid` in `target` (sized to it), over the column ranges [from, to) if
+   * given (the rest of the texture is kept), through `time`, which draws it and may time it.
+   */
+  draw(
+    renderer: WebGLRenderer,
+    s: FilmSettings,
+    target: WebGLRenderTarget,
+    grid: FilmTableGrid,
+    columns: readonly TableColumns[] | null,
+    time: (pass: () => void) => void = (pass) => pass(),
+  ): void {
+    const type = tableTexelType(renderer, this.quality.tablePrecision);
+    if (target.texture.type !== type) {
+      target.dispose(); // reallocated at the new type on the next render
+      target.texture.type = type;
+    }
+    if (target.width !== grid.width || target.height !== 2 * grid.rows) target.setSize(grid.width, 2 * grid.rows);
+    const material = this.programs.material(s);
+    const u = material.uniforms;
+    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.programs.bins(s), this);
+    u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
+    // A dispersive film is filled from the bins, with their terms per row (shaders/film/filmTable.glsl).
+    this.updateRows(s, grid);
+    u.uDispersiveRows!.value = this.rows.texture;
+    u.uAirySeriesRows!.value = this.rows.texture;
+    u.uPolarization!.value = enumCode('TFC_POLARIZATION', POLARIZATIONS, s.polarization);
+    updateFilmMediaUniforms(u, s);
+    setFilmTableGridUniforms(u, grid);
+    const previous = renderer.getRenderTarget();
+    target.scissorTest = true;
+    time(() => {
+      for (const [from, to] of columns ?? [[0, grid.width]]) {
+        target.scissor.set(from, 0, to - from, 2 * grid.rows);
+        renderer.setRenderTarget(target); // three takes the target's scissor as it binds it
+        this.fullscreen.render(renderer, material);
+      }
+    });
+    renderer.setRenderTarget(previous);
+  }
+
+  /** Lets go of the light's textures: the pass reads them only while it draws, and a table built band by band keeps them until its last band. */
+  releaseLight(): void {
+    releaseSpectralBinsTexture(this);
+    releaseSpectralTransformTexture(this);
+  }
+
+  /**
+   * The per-row terms for `s` on `grid` (computed in float64 on the CPU: a dispersive film's in a
+   * worker, dispersiveRowsStore.ts, or here if not at hand), unless the texture holds them already.
+   */
+  private updateRows(s: FilmSettings, grid: FilmTableGrid): void {
+    const rowLayout = this.rowLayout(s, grid);
+    const rowsFor = dispersiveRowsKey(s, rowLayout);
+    if (rowsFor === this.rowsFor) return;
+    this.rowsFor = rowsFor;
+    const dispersive = isDispersiveFilm(s);
+    if (this.rows.dispersive !== dispersive) {
+      this.rows.texture.dispose();
+      const texture = dispersive
+        ? dispersiveRowsTexture({ ...rowLayout, rows: this.quality.table.rows })
+        : airySeriesRowsTexture(this.quality.table);
+      this.rows = { texture, dispersive };
+    }
+    const data = this.rows.texture.image.data as Float32Array;
+    if (dispersive) data.set(dispersiveRowsOf(rowsFor));
+    else airySeriesRows(s, rowLayout, data);
+    this.rows.texture.needsUpdate = true;
+  }
+
+  /**
+   * Compiles the pass for `s` and `target`'s kind of target without blocking where the GPU compiles
+   * in parallel (KHR_parallel_shader_compile), and meanwhile makes the light's textures for `s` on
+   * this thread (the series' transform is an FFT): before a first frame, the two overlap.
+   */
+  async prepare(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget): Promise<void> {
+    const previous = renderer.getRenderTarget();
+    renderer.setRenderTarget(target); // three picks a program by its target (no tone mapping into a texture)
+    const compiled = this.fullscreen.compileAsync(renderer, this.programs.material(s));
+    renderer.setRenderTarget(previous);
+    spectralBinsTexture(s.illuminant, s.normalization, this.programs.bins(s), this);
+    spectralTransformTexture(s.illuminant, s.normalization, this);
+    await compiled;
+  }
+
+  /** What picks the pass's program for `s`: a change of it needs another program. */
+  passKey(s: FilmSettings): string {
+    return this.programs.key(s);
+  }
+
+  /**
+   * Draws in GPU objects of its own (after a lost context): the lost context's quad and row texture
+   * are let go, not disposed (see FilmTable.invalidate).
+   */
+  invalidate(): void {
+    this.fullscreen = new FullscreenPass();
+    this.rows = { texture: airySeriesRowsTexture(this.quality.table), dispersive: false };
+    this.rowsFor = ''; // its row terms were the lost context's too
+  }
+
+  dispose(): void {
+    this.fullscreen.dispose();
+    this.programs.dispose();
+    this.rows.texture.dispose();
+    this.releaseLight();
+  }
+}

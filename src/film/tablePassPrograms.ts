@@ -1,0 +1,94 @@
+import { ShaderMaterial } from 'three';
+import { POLARIZATIONS } from '../physics/filmReflectance.ts';
+import { enumConstants } from '../gpu/enumDefines.ts';
+import { FULLSCREEN_VERTEX } from '../gpu/fullscreenPass.ts';
+import { setDefines } from '../gpu/materialDefines.ts';
+import { shaderSource } from '../gpu/shaderSource.ts';
+import { texelRecordDefines } from '../gpu/texelRecord.ts';
+import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
+import { AIRY_ROW } from './airySeriesRows.ts';
+import { DISPERSIVE_BIN } from './dispersiveRows.ts';
+import { type FilmMedia, filmMediaDefines, filmMediaUniforms } from './filmMedia.ts';
+import { filmTableGridUniforms } from './filmTableGrid.ts';
+import { filmTableLayoutDefines } from './filmTableDefines.ts';
+import { KEPT_PASSES, TABLE_PASS_NAME } from './keptPasses.ts';
+import { spectralBinDefines, spectralBinsUniforms } from './spectralBinsTexture.ts';
+import { airySeriesDefines, spectralTransformUniforms } from './spectralTransformTexture.ts';
+
+/** The media that pick the table pass's program (the outside's index is a uniform). */
+export type PassMedia = Pick<FilmMedia, 'nFilm' | 'nInside'>;
+
+/**
+ * The uniforms shaders/film/filmTable.glsl declares: the light's textures, the per-row terms
+ * (one texture, bound to the series' or the dispersive bins' sampler), the polarisation, the media
+ * and the grid it draws.
+ */
+export const filmTablePassUniforms = (): ShaderMaterial['uniforms'] => ({
+  ...spectralBinsUniforms(),
+  ...spectralTransformUniforms(),
+  uAirySeriesRows: { value: null },
+  uDispersiveRows: { value: null },
+  uPolarization: { value: 0 },
+  ...filmMediaUniforms(),
+  ...filmTableGridUniforms(),
+});
+
+/** A table pass (shaders/film/filmTable.glsl) with no defines yet. */
+const tablePass = (): ShaderMaterial =>
+  new ShaderMaterial({
+    name: TABLE_PASS_NAME,
+    uniforms: filmTablePassUniforms(),
+    vertexShader: FULLSCREEN_VERTEX,
+    fragmentShader: shaderSource('filmTable.glsl'),
+  });
+
+/**
+ * The table pass's programs: a material per set of defines, the last used first, KEPT_PASSES at
+ * most. Its defines follow the media and the spectral bins only: the polarisation is a uniform, so
+ * changing it compiles nothing.
+ */
+export class TablePassPrograms {
+  private readonly passes: ShaderMaterial[] = [];
+
+  constructor(private readonly quality: FilmQuality) {}
+
+  /** The spectral bins the pass integrates for `s`. */
+  bins(s: Pick<FilmSettings, 'nFilm' | 'nInside'>): number {
+    return spectralBinsFor(s, this.quality, this.quality.table.spectralBins);
+  }
+
+  /** The pass's defines for these media and bins: one program per set. */
+  private defines(media: PassMedia, bins: number): Record<string, number> {
+    return {
+      ...filmMediaDefines(media),
+      TFC_POLARIZATION_UNIFORM: 1,
+      ...enumConstants('TFC_POLARIZATION', POLARIZATIONS),
+      ...spectralBinDefines(bins, this.quality.spectralTailTolerance),
+      ...filmTableLayoutDefines(this.quality.table),
+      ...texelRecordDefines(AIRY_ROW),
+      ...texelRecordDefines(DISPERSIVE_BIN),
+      ...airySeriesDefines(),
+    };
+  }
+
+  /** What picks the pass's program for `s`: a change of it needs another program. */
+  key(s: PassMedia): string {
+    return JSON.stringify(this.defines(s, this.bins(s)));
+  }
+
+  /** The pass for `s`: a kept one with its defines, else the least recently used (or a new one) given them. */
+  material(s: PassMedia): ShaderMaterial {
+    const defines = this.defines(s, this.bins(s));
+    const key = JSON.stringify(defines);
+    const kept = this.passes.findIndex((p) => JSON.stringify(p.defines) === key);
+    const pass = kept >= 0 ? this.passes.splice(kept, 1)[0]! : this.passes.length < KEPT_PASSES ? tablePass() : this.passes.pop()!;
+    setDefines(pass, defines, 1); // the kept passes keep the programs of other sets
+    this.passes.unshift(pass);
+    return pass;
+  }
+
+  dispose(): void {
+    for (const pass of this.passes) pass.dispose();
+  }
+}

@@ -1,0 +1,116 @@
+/**
+ * Each uniform set is declared once and set by one factory: for every shader the product draws
+ * with, the uniforms its GLSL declares in a configuration (the text a compiler sees with that
+ * configuration's defines) are uniforms its material sets, and across every configuration the
+ * material sets no uniform that no configuration declares. And no uniform is declared in two
+ * files of shaders/, apart from the alternative members of one registry (each field's or method's
+ * own GLSL, of which a program holds one). The flow's passes and the table pass are held the same
+ * way beside their own code (tests/unit/flow/flowUniforms.test.ts, tests/unit/film/tablePassPrograms.test.ts).
+ */
+import { readFileSync, readdirSync } from 'node:fs';
+import { MeshPhysicalMaterial, ShaderLib, type ShaderMaterial } from 'three';
+import { describe, expect, it } from 'vitest';
+import { createBubbleMaterial } from '../../../src/bubble/bubbleMaterial.ts';
+import { createBackgroundMaterial, environmentDefines } from '../../../src/bubble/environmentMaterial.ts';
+import { ENVIRONMENTS } from '../../../src/environments/environments.ts';
+import { FIELDS } from '../../../src/fields/fields.ts';
+import { FILM_METHODS } from '../../../src/methods/methods.ts';
+import { spectralIridescence } from '../../../src/material/spectralIridescence.ts';
+import { MODES } from '../../../src/settings/filmSettings.ts';
+import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
+import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
+import { declaredUniforms, preprocessed } from './glslUniforms.ts';
+
+/** A constant film, a dispersive one, a film on a metal: the media pick what a shader reads. */
+const MEDIA = [
+  { nFilm: 1.33, nInside: 1 },
+  { nFilm: 'water', nInside: 1 },
+  { nFilm: 1.38, nInside: 'Au' },
+] as const;
+
+/** For each configuration of a material: the uniforms its shaders declare there. */
+function declaredByConfiguration(materials: readonly Pick<ShaderMaterial, 'defines' | 'vertexShader' | 'fragmentShader'>[]): string[][] {
+  return materials.map((m) => declaredUniforms(preprocessed(`${m.vertexShader}\n${m.fragmentShader}`, m.defines ?? {})));
+}
+
+/** Every uniform a configuration declares is set, and every uniform set is declared in some configuration. */
+function expectDeclaredAreSet(declared: readonly string[][], set: readonly string[]): void {
+  expect(declared.length).toBeGreaterThan(0);
+  for (const names of declared) expect(names.filter((n) => !set.includes(n))).toEqual([]);
+  expect([...new Set(declared.flat())].sort()).toEqual([...set].sort());
+}
+
+describe('uniform sets', () => {
+  it('the preprocessing keeps the branches taken, include guards and all', () => {
+    const glsl = [
+      '#ifndef G',
+      '#define G',
+      'uniform float uA;',
+      '#endif',
+      '#ifndef G',
+      'uniform float uRepeat;',
+      '#endif',
+      '#if M == M_B',
+      'uniform float uB;',
+      '#elif M == M_C || defined(X)',
+      'uniform float uC;',
+      '#else',
+      'uniform float uD;',
+      '#endif',
+    ].join('\n');
+    expect(declaredUniforms(preprocessed(glsl, { M: 2, M_B: 1, M_C: 2 }))).toEqual(['uA', 'uC']);
+    expect(declaredUniforms(preprocessed(glsl, { M: 1, M_B: 1, M_C: 2 }))).toEqual(['uA', 'uB']);
+    expect(declaredUniforms(preprocessed(glsl, { M: 0, M_B: 1, M_C: 2 }))).toEqual(['uA', 'uD']);
+    expect(declaredUniforms(preprocessed(glsl, { M: 0, M_B: 1, M_C: 2, X: '' }))).toEqual(['uA', 'uC']);
+  });
+
+  it('the bubble sets what it declares, for every method, field, environment and kind of medium', () => {
+    const materials: ShaderMaterial[] = [];
+    let set: string[] = [];
+    for (const mode of FILM_METHODS)
+      for (const field of FIELDS)
+        for (const env of ENVIRONMENTS)
+          for (const media of MEDIA) {
+            const m = createBubbleMaterial({ ...DEFAULT_SETTINGS, mode, field, env, ...media }, DEFAULT_FILM_QUALITY);
+            set = Object.keys(m.uniforms);
+            materials.push(m);
+          }
+    expectDeclaredAreSet(declaredByConfiguration(materials), set);
+  });
+
+  it('the background sets what it declares, for every environment', () => {
+    const materials = ENVIRONMENTS.map((env) => Object.assign(createBackgroundMaterial(), { defines: environmentDefines({ env }) }));
+    expectDeclaredAreSet(declaredByConfiguration(materials), Object.keys(materials[0]!.uniforms));
+  });
+
+  it("the spectral iridescence adds to three's shader the uniforms it declares there, for every mode and kind of medium", () => {
+    const threes = declaredUniforms(ShaderLib.physical.fragmentShader);
+    const declared: string[][] = [];
+    let set: string[] = [];
+    for (const mode of MODES)
+      for (const { nFilm, nInside } of MEDIA) {
+        const m = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }), { mode, film: nFilm, base: nInside });
+        const shader = { fragmentShader: ShaderLib.physical.fragmentShader, vertexShader: '', uniforms: {}, defines: {} };
+        m.onBeforeCompile(shader as never, null as never);
+        // What three defines for a physical material with iridescence, beside the film's own defines.
+        const defines = { STANDARD: '', PHYSICAL: '', USE_IRIDESCENCE: '', ...shader.defines };
+        declared.push(declaredUniforms(preprocessed(shader.fragmentShader, defines)).filter((n) => !threes.includes(n)));
+        set = Object.keys(shader.uniforms);
+      }
+    expectDeclaredAreSet(declared, set);
+  });
+
+  it('no uniform is declared in two files of shaders/, but by the alternative members of one registry', () => {
+    const dir = new URL('../../../shaders/', import.meta.url);
+    const files = readdirSync(dir, { recursive: true, encoding: 'utf8' }).filter((f) => f.endsWith('.glsl'));
+    /** The folders whose files are alternatives: a program holds one field's and one method's GLSL. */
+    const alternatives = ['fields/', 'methods/'];
+    const declaredIn = new Map<string, string[]>();
+    for (const file of files)
+      for (const name of declaredUniforms(readFileSync(new URL(file, dir), 'utf8')))
+        declaredIn.set(name, [...(declaredIn.get(name) ?? []), file]);
+    const twice = [...declaredIn].filter(([, where]) => where.length > 1 && !alternatives.some((a) => where.every((f) => f.startsWith(a))));
+    expect(declaredIn.size).toBeGreaterThan(20);
+    expect(twice).toEqual([]);
+  });
+});
