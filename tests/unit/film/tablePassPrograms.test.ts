@@ -12,7 +12,6 @@ import { KEPT_PASSES } from '../../../src/film/keptPasses.ts';
 import { TablePassPrograms } from '../../../src/film/tablePassPrograms.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 
-
 const CONSTANT = { nFilm: 1.33, nInside: 1 } as const;
 const DISPERSIVE = { nFilm: 'water', nInside: 1 } as const;
 const METAL = { nFilm: 1.38, nInside: 'Au' } as const;

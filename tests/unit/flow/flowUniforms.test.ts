@@ -19,7 +19,6 @@ const flowDir = new URL('../../../shaders/flow/', import.meta.url);
 const flowFiles = readdirSync(flowDir).filter((f) => f.endsWith('.glsl'));
 const ownText = (file: string): string => readFileSync(new URL(file, flowDir), 'utf8');
 
-
 const parameters = validateFlowParameters({ gridN: 4 });
 const grid = cubeSphereGrid(parameters.gridN);
 const inputs: FlowUniformInputs = {
