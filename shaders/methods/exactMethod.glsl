@@ -10,10 +10,7 @@ vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
 #ifdef TFC_DISPERSIVE
   return tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, 0);
 #else
-  float na;
-  vec2 nc;
-  tfcFilmSides(fromInside, na, nc);
-  return tfcBinnedXyz(tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence), 0.0);
+  return tfcBinnedXyz(tfcSideFilmOptics(fromInside, thicknessNm, cosIncidence), 0.0);
 #endif
 }
 

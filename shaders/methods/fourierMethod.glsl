@@ -12,10 +12,7 @@ vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
 #ifdef TFC_DISPERSIVE
   return tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, 0);
 #else
-  float na;
-  vec2 nc;
-  tfcFilmSides(fromInside, na, nc);
-  FilmOptics o = tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
+  FilmOptics o = tfcSideFilmOptics(fromInside, thicknessNm, cosIncidence);
   AirySeriesTerms t[TFC_FILM_CHANNELS];
   tfcAirySeriesTermsOf(o, t);
   float x = o.opticalPathNm.x;
