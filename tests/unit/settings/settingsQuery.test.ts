@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { parseSettings, settingsToQuery } from '../../../src/settings/settingsQuery.ts';
 import { DEFAULT_VIEW_SETTINGS as DEFAULT_SETTINGS, VIEW_PARAMETERS } from '../../../src/settings/viewParameters.ts';
 import { MAX_ECHOED_CHARS } from '../../../src/input/validate.ts';
+import { ENVIRONMENTS, FIELDS, MODES } from '../../../src/settings/filmSettings.ts';
 import { ABSURDLY_LONG, NOT_NUMBERS, notNames, outsideRange } from '../fixtures/badValues.ts';
 
 describe('URL parameters', () => {
@@ -113,14 +114,15 @@ describe('URL parameters', () => {
     seed: [0, 2_147_483_647],
     grid: [4, 256],
   };
+  // The kinds that grow are listed by their registries; the message must name every member.
   const NAMED: Record<string, readonly string[]> = {
-    field: ['uniform', 'drainage', 'swirl', 'flow'],
+    field: FIELDS,
     polarization: ['unpolarized', 'paper', 's', 'p'],
     normalization: ['white', 'paper'],
     space: ['srgb', 'display-p3', 'wide-gamut'],
-    mode: ['exact', 'table'],
+    mode: MODES,
     sides: ['both', 'front'],
-    env: ['sky', 'none', 'park', 'sunset', 'studio', 'city'],
+    env: ENVIRONMENTS,
     tonemap: ['auto', 'none', 'agx', 'neutral'],
   };
   const rows: [string, string, string][] = [
