@@ -4,7 +4,6 @@
 // TFC_OPAQUE_INSIDE: the inside absorbs (k > 0), so no light reaches the film from inside.
 #ifndef THIN_FILM_MEDIA
 #define THIN_FILM_MEDIA
-#include "filmReflectance.glsl"
 uniform float uNOutside;
 uniform vec2 uNFilm;
 uniform vec2 uNInside;
@@ -13,14 +12,6 @@ uniform vec2 uNInside;
 void tfcFilmSides(bool fromInside, out float na, out vec2 nc) {
   na = fromInside ? uNInside.x : uNOutside;
   nc = fromInside ? vec2(uNOutside, 0.0) : uNInside;
-}
-
-// The film's optics (eqs 1–14) for light from outside or from inside, with the media at the sodium D line.
-FilmOptics tfcSideFilmOptics(bool fromInside, float thicknessNm, float cosIncidence) {
-  float na;
-  vec2 nc;
-  tfcFilmSides(fromInside, na, nc);
-  return tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
 }
 
 #ifdef TFC_DISPERSIVE

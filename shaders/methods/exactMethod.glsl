@@ -5,6 +5,7 @@
 #define THIN_FILM_EXACT_METHOD
 
 #include "binnedIntegration.glsl"
+#include "filmSideOptics.glsl"
 
 vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
 #ifdef TFC_DISPERSIVE

@@ -7,6 +7,7 @@
 
 #include "airySeries.glsl"
 #include "binnedIntegration.glsl"
+#include "filmSideOptics.glsl"
 
 vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
 #ifdef TFC_DISPERSIVE
