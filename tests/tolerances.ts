@@ -249,3 +249,34 @@ export const ARTIST_METAL_BARE_DE00 = 0.2;
 
 /** The equirectangular seam probed 1e-9 of a turn either side: 1.6e-8 of a texel, where the two texels differ by 15, is 2.4e-7 from their mean. */
 export const EQUIRECT_SEAM_TOL = 3e-7;
+
+/**
+ * The TiO₂/SiO₂ mirror (stackPresets.ts) against its constant-index quarter-wave ideal: TiO₂'s
+ * dispersion (2.25 at 450 nm, 2.11 at 700 nm) tilts the band's top and shifts its edges, the peak
+ * 3 nm from λ₀ and the band's centre 0.0014 from g = 1 (measured).
+ */
+export const BRAGG_PEAK_NM_TOL = 6;
+export const BRAGG_BAND_CENTRE_G_TOL = 0.005;
+
+/** The transfer matrix against tmm 0.2.0's coh_tmm on the same indices: both float64, rounding over 20–32 layers. */
+export const TMM_GOLDEN_TOL = 1e-10;
+
+/** One layer by the stack's recursion against eqs (13)–(14): the same algebra in another order (e^{iφ} as (e^{iφ/2})²), so rounding only (measured 5.2e-14, at 20 µm). */
+export const LAYER_IDENTITY_TOL = 1e-12;
+
+/** The quarter-wave mirror's closed form (docs/physics.md#stacks-of-films) is exact; R is within 1e-3 of 1, so the recursion's rounding is all that is left. */
+export const BRAGG_CLOSED_FORM_TOL = 1e-9;
+
+/** tmm's matrix products against the recursion on the same constant-index stacks: rounding of both (measured 7.4e-15 over the fixtures). */
+export const TMM_LAYERS_TOL = 1e-12;
+
+/** Colours of the same stack from tmm's R and ours, both on a 1 nm grid or ours by the adaptive rule: far below a just-noticeable difference (~1). */
+export const TMM_SPECTRUM_DE00 = 0.02;
+
+/**
+ * A stack of films drawn on the GPU (`exact` per fragment, `table` from its pass) against the
+ * float64 transfer matrix: one sample per spectral bin of 150 (docs/gpu.md#stacks-of-films:
+ * 0.013 at most in float64 on the test stacks), float32 and the table's rows on top; well under a
+ * just-noticeable difference (~1).
+ */
+export const MAX_DELTA_E00_STACK = 0.1;

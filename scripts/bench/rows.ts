@@ -8,6 +8,7 @@ import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/settings/filmQ
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
 import { type FilmSettings, HDR_ENVIRONMENTS } from '../../src/settings/filmSettings.ts';
 import type { FilmTableLayout } from '../../src/settings/filmTableLayout.ts';
+import type { FilmLayer } from '../../src/physics/filmLayers.ts';
 
 export interface BenchRow {
   readonly name: string;
@@ -59,6 +60,23 @@ const sceneStep = (name: string, more: Partial<FilmSettings>, ownTable = false):
   measuresError: false,
   ...(ownTable ? {} : { timesChanges: false as const }),
 });
+
+/** 16-layer stacks of films: a TiO₂/SiO₂-like Bragg mirror of fixed layers on glass, and a nacre-like stack whose 1.68 layers follow the field. */
+const stack16 = (layers: readonly FilmLayer[]): FilmLayer[] => Array.from({ length: 8 }, () => layers).flat();
+const BRAGG_16 = {
+  layers: stack16([
+    { n: 2.35, thicknessNm: 56.6 },
+    { n: 1.46, thicknessNm: 91.1 },
+  ]),
+  nInside: 1.52,
+};
+const NACRE_16 = {
+  layers: stack16([
+    { n: 1.68, thicknessNm: 'd' },
+    { n: 1.43, thicknessNm: 30 },
+  ]),
+  nInside: 1.53,
+};
 
 /** The rows the README's table of accuracy against cost quotes: each method at its default, and three.js's. */
 export const THREE_IRIDESCENCE_ROW: BenchRow = {
@@ -125,6 +143,19 @@ export const ROWS: readonly BenchRow[] = [
     settings: view('fourier', { nFilm: 'water' }),
   },
   { ...exact(90), name: 'exact, nFilm=water (150 bins, Fresnel per bin)', settings: view('exact', { nFilm: 'water' }) },
+  // Stacks of films (docs/gpu.md#stacks-of-films) against the default table and exact rows above: the
+  // table filled by the recursion per bin (a stack of fixed layers is the same at every thickness:
+  // two columns), a frame the same lookup; `exact` runs the recursion per fragment. No error
+  // columns: the grids are the soap film's (tests/e2e/stackParity.spec.ts holds the stacks').
+  sceneStep('default table, 16-layer stack of fixed layers (Bragg mirror (2.35:56.6/1.46:91.1)*8 on 1.52)', BRAGG_16, true),
+  sceneStep('default table, 16-layer stack following the field ((1.68:d/1.43:30)*8 on 1.53)', NACRE_16, true),
+  {
+    name: 'exact, 16-layer stack (Bragg mirror, 150 bins, the recursion per bin)',
+    kind: 'bubble',
+    settings: view('exact', BRAGG_16),
+    quality: q,
+    measuresError: false,
+  },
 ];
 
 /** The spectral material's figures (the example page, the app bundle): they run with every row, or when this name is picked. */

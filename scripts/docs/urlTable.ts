@@ -9,6 +9,8 @@ import { VIEW_PARAMETERS } from '../../src/settings/viewParameters.ts';
 const cell = (text: string): string => text.replaceAll('|', '\\|');
 
 export function urlTableMarkdown(): string {
-  const rows = VIEW_PARAMETERS.map((r) => `| \`${r.url}\` | ${cell(r.label)} | ${cell(r.expected)} | \`${cell(r.defaultText)}\` |`);
+  const rows = VIEW_PARAMETERS.map(
+    (r) => `| \`${r.url}\` | ${cell(r.label)} | ${cell(r.expected)} | ${r.defaultText === '' ? 'none' : `\`${cell(r.defaultText)}\``} |`,
+  );
   return ['| parameter | what it sets | accepts | default |', '|---|---|---|---|', ...rows].join('\n');
 }

@@ -13,6 +13,7 @@ import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
 import type { FilmSettings } from '../../src/settings/filmSettings.ts';
 import { filmTableLookupColumns } from '../../src/settings/filmTableLayout.ts';
 import { bindFilmTable } from '../../src/film/filmTableGrid.ts';
+import { filmStackUniforms } from '../../src/film/filmStack.ts';
 import { FilmTablePass, tableTarget } from '../../src/film/filmTablePass.ts';
 import { floatRowTexture, renderFloatRow } from '../../src/gpu/floatRow.ts';
 import { shaderSource } from '../../src/gpu/shaderSource.ts';
@@ -44,7 +45,7 @@ export class FilmXyzProbe {
     if (hit) return hit;
     const m = new ShaderMaterial({
       defines,
-      uniforms: { uInputs: { value: null }, ...filmColorUniforms() },
+      uniforms: { uInputs: { value: null }, ...filmColorUniforms(), ...filmStackUniforms() },
       vertexShader: FULLSCREEN_VERTEX,
       fragmentShader: FRAGMENT,
     });

@@ -1,3 +1,4 @@
+import type { FilmLayer } from '../../src/physics/filmLayers.ts';
 import type { FilmSettings } from '../../src/settings/filmSettings.ts';
 
 /**
@@ -8,6 +9,8 @@ export interface ParityGroup extends Pick<
   FilmSettings,
   'nOutside' | 'nFilm' | 'nInside' | 'illuminant' | 'polarization' | 'normalization'
 > {
+  /** A stack of films in place of nFilm (none or empty: the single film); its `d` layers take each case's thickness. */
+  readonly layers?: readonly FilmLayer[];
   /** [thicknessNm, cosIncidence] per case */
   readonly inputs: readonly (readonly [number, number])[];
 }

@@ -10,6 +10,8 @@
 // averaged over its cell (with the bilinear lookup that would smooth twice; the `nFilm=water` rows'
 // stress grid in docs/benchmarks.md measures it), their Fresnel terms per row and bin from
 // uDispersiveRows (src/film/dispersiveRows.ts).
+// A stack of films (TFC_FILM_LAYERS) is filled by its recursion per bin at the texel's thickness of
+// its `d` layers (transferMatrix.glsl), as `exact` draws it per fragment.
 // Drawn by src/film/filmTablePass.ts.
 #ifdef TFC_DISPERSIVE
 #define TFC_DISPERSIVE_ROWS 1
@@ -19,6 +21,9 @@
 #include "filmTableGrid.glsl"
 #include "filmTableLayout.glsl"
 #include "filmMedia.glsl"
+#ifdef TFC_FILM_LAYERS
+#include "transferMatrix.glsl"
+#endif
 
 #if TFC_TABLE_FILL == TFC_TABLE_FILL_SERIES
 #include "texelRecord.glsl"
@@ -54,6 +59,10 @@ void main() {
     gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
+#endif
+#ifdef TFC_FILM_LAYERS
+  gl_FragColor = vec4(tfcLayersBinnedXyz(uNOutside, fromInside, thicknessNm, cosIncidence), 1.0);
+  return;
 #endif
 #if TFC_TABLE_FILL == TFC_TABLE_FILL_SERIES && !defined(TFC_DISPERSIVE)
   AirySeriesTerms terms[TFC_FILM_CHANNELS];

@@ -1,6 +1,9 @@
-import GUI from 'lil-gui';
+import GUI, { type Controller } from 'lil-gui';
 import { message } from '../i18n/messages.ts';
 import { FILM_MATERIALS } from '../physics/filmIndex.ts';
+import type { FilmLayer } from '../physics/filmLayers.ts';
+import { layersText } from '../physics/layersText.ts';
+import { readLayersField } from './layersField.ts';
 import { type Medium, type MediumRole, mediumExpected, mediumText, readMedium } from '../physics/medium.ts';
 import { NAMED_MEDIA } from '../physics/namedMedia.ts';
 import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
@@ -45,6 +48,8 @@ export function createControlPanel(
 ): GUI {
   const state: Record<string, unknown> = { ...initial };
   const joins: Joined[] = [];
+  /** Each row's controllers, for a row that greys out another's. */
+  const controllersOf = new Map<string, readonly Controller[]>();
   const emit = () => {
     let next: ViewSettings = { ...initial, ...(state as Partial<ViewSettings>) };
     for (const join of joins) next = { ...next, ...join() };
@@ -54,7 +59,9 @@ export function createControlPanel(
   for (const folderName of PANEL_FOLDERS) {
     const folder = gui.addFolder(cat[`panel.folder.${folderName}` as MessageKey]);
     for (const row of VIEW_PARAMETERS.filter((r) => r.control?.folder === folderName)) {
-      const join = addControl(folder, row, state, cat);
+      const before = folder.controllers.length;
+      const join = addControl(folder, row, state, cat, (key) => controllersOf.get(key) ?? []);
+      controllersOf.set(row.key, folder.controllers.slice(before));
       if (join) joins.push(join);
     }
     if (folderName === 'flow' && blow) folder.add({ blow }, 'blow').name(cat['panel.blow']);
@@ -63,7 +70,16 @@ export function createControlPanel(
   return gui;
 }
 
-function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<string, unknown>, cat: Catalogue): Joined | null {
+/** A row's controllers, by its settings key. */
+type ControllersOf = (key: keyof ViewSettings) => readonly Controller[];
+
+function addControl(
+  folder: GUI,
+  row: ParameterRow<ViewSettings>,
+  state: Record<string, unknown>,
+  cat: Catalogue,
+  controllersOf: ControllersOf,
+): Joined | null {
   const control = row.control!;
   const label = cat[labelKey(row.key)];
   switch (control.kind) {
@@ -98,7 +114,35 @@ function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<
         control.role === 'film' ? FILM_MEDIUM_KINDS : INSIDE_MEDIUM_KINDS,
         control.role,
       );
+    case 'layers':
+      return addLayersControl(folder, row, state[row.key] as readonly FilmLayer[], cat, controllersOf('nFilm'));
   }
+}
+
+/**
+ * A stack of films as text (layersText.ts; empty: the single film). A text that is not one is not
+ * taken: the last good stack stays, and the field says why in its title. While a stack is set, the
+ * film index's controls are greyed out: the stack's layers carry their own indices.
+ */
+function addLayersControl(
+  folder: GUI,
+  row: ParameterRow<ViewSettings>,
+  initial: readonly FilmLayer[],
+  cat: Catalogue,
+  filmIndexControls: readonly Controller[],
+): Joined {
+  const controls = { text: layersText(initial) };
+  let good = initial;
+  const field = folder.add(controls, 'text').name(cat[labelKey(row.key)]);
+  const showUse = () => filmIndexControls.forEach((c) => c.disable(good.length > 0));
+  showUse();
+  return () => {
+    const reading = readLayersField(row, controls.text, good, cat);
+    good = reading.layers;
+    field.domElement.title = reading.title;
+    showUse();
+    return { [row.key]: good };
+  };
 }
 
 /**

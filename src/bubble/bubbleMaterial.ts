@@ -12,6 +12,7 @@ import { enumDefines } from '../gpu/enumDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { type FilmTableBinding, filmColorDefines, filmColorUniforms, matrix3, updateFilmColorUniforms } from '../film/filmColor.ts';
+import { filmStackUniforms } from '../film/filmStack.ts';
 import { environmentDefines, environmentUniforms, updateEnvironmentUniforms } from './environmentMaterial.ts';
 
 /** The compile-time switches: a shader holds only the mode, field, sides and options in use. */
@@ -31,6 +32,7 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
     defines: bubbleDefines(s, q),
     uniforms: {
       ...filmColorUniforms(),
+      ...filmStackUniforms(),
       ...thicknessFieldUniforms(),
       ...environmentUniforms(),
       uXyzToLinearDisplay: { value: matrix3(XYZ_TO_LINEAR_SRGB) },

@@ -11,13 +11,17 @@ import {
   mediumText,
 } from '../physics/medium.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralWeights.ts';
-import { isInDomain, type NumberDomain, oneOf, rejectValue, expectedNumber } from '../input/validate.ts';
+import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN, followsField } from '../physics/filmLayers.ts';
+import { isInDomain, type NumberDomain, oneOf, ParameterError, rejectValue, expectedNumber } from '../input/validate.ts';
 import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../settings/filmParameters.ts';
 
 /** One film to colour: what the command line or one entry of a cases file describes. */
 export interface ColorCase {
   readonly id: string | number;
+  /** The single film; with `layers`, its nOutside, nInside and angle, and its thickness that of every FIELD_THICKNESS layer. */
   readonly stack: MediumStack;
+  /** A stack of films in place of the stack's single film (filmLayers.ts); empty: the single film. */
+  readonly layers: readonly FilmLayer[];
   readonly illuminant: IlluminantSpec;
   readonly polarization: Polarization;
   readonly normalization: Normalization;
@@ -47,6 +51,7 @@ export const CASE_FIELDS = [
   'id',
   ...(Object.keys(NUMBER_FIELDS) as NumberField[]),
   ...(Object.keys(MEDIUM_FIELDS) as MediumField[]),
+  'layers',
   'illuminant',
   'polarization',
   'normalization',
@@ -110,7 +115,12 @@ export type RawCase = Readonly<Partial<Record<CaseField, unknown>>>;
  * The checked case, defaults filled in, or a ParameterError for the first bad field.
  * `nameOf` says how a field is called where it came from (`--thickness` on the command line).
  */
-export function validateColorCase(raw: RawCase, index: number, nameOf: (field: CaseField) => string = (f) => f): ColorCase {
+export function validateColorCase(
+  raw: RawCase,
+  index: number,
+  nameOf: (field: CaseField) => string = (f) => f,
+  layerThickness: LayerThickness = 'own',
+): ColorCase {
   const number = (field: NumberField): number => {
     const d = NUMBER_FIELDS[field];
     const value = raw[field];
@@ -118,6 +128,7 @@ export function validateColorCase(raw: RawCase, index: number, nameOf: (field: C
     return isInDomain(value, d) ? value : rejectValue(nameOf(field), value, expectedNumber(d));
   };
   const orDefault = (field: CaseField, fallback: string) => (raw[field] === undefined ? fallback : raw[field]);
+  const layers = raw.layers === undefined ? [] : validateLayers(raw, nameOf, layerThickness);
   const stack: MediumStack = {
     nOutside: validateMedium(raw.nOutside, 'nOutside', nameOf('nOutside')) as number,
     nFilm: validateMedium(raw.nFilm, 'nFilm', nameOf('nFilm')),
@@ -128,10 +139,11 @@ export function validateColorCase(raw: RawCase, index: number, nameOf: (field: C
   return {
     id: validateId(raw.id, index, nameOf('id')),
     stack,
+    layers,
     illuminant: raw.illuminant === undefined ? DEFAULT_SETTINGS.illuminant : illuminantFromJson(raw.illuminant, nameOf('illuminant')),
     polarization: oneOf(nameOf('polarization'), orDefault('polarization', DEFAULT_SETTINGS.polarization), POLARIZATIONS),
     normalization: oneOf(nameOf('normalization'), orDefault('normalization', DEFAULT_SETTINGS.normalization), NORMALIZATIONS),
-    wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm'), stack),
+    wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm'), stack, layers),
   };
 }
 
@@ -150,7 +162,11 @@ function validateId(id: unknown, index: number, name: string): string | number {
  */
 function validateMedium(value: unknown, field: MediumField, name: string): Medium {
   const { role, fallback } = MEDIUM_FIELDS[field];
-  if (value === undefined) return fallback;
+  return value === undefined ? fallback : validateMediumIn(value, role, name);
+}
+
+/** A medium given as JSON, allowed in its role. */
+function validateMediumIn(value: unknown, role: MediumRole, name: string): Medium {
   const medium = mediumFromJson(value);
   if (medium === null) return rejectValue(name, value, mediumExpected(role));
   const problem = mediumProblem(medium, role);
@@ -158,18 +174,66 @@ function validateMedium(value: unknown, field: MediumField, name: string): Mediu
 }
 
 /**
+ * Where a case's layers take their thickness from: `own`, each its number (a cases file, where
+ * `thicknessNm` is the single film's); `orField`, a number or FIELD_THICKNESS, the case's
+ * thicknessNm (the command line's --layers, whose --thickness and thickness tables set it).
+ */
+export type LayerThickness = 'own' | 'orField';
+
+/** What a cases file's `layers` is. */
+const LAYERS_JSON_EXPECTED = `an array of ${LAYERS_DOMAIN.count.min} to ${LAYERS_DOMAIN.count.max} objects { "n": a medium as nFilm takes it, "thicknessNm": ${expectedNumber(LAYERS_DOMAIN.thicknessNm)} }, outside in`;
+
+/**
+ * A case's stack of films: `[{ "n", "thicknessNm" }, …]` (the command line's --layers arrives
+ * parsed into the same form), each n a medium a film takes. A case with layers gives no nFilm (each
+ * layer has its own), and in a cases file no thicknessNm (each layer has its own, and none takes
+ * the case's: FIELD_THICKNESS is refused there).
+ */
+function validateLayers(raw: RawCase, nameOf: (field: CaseField) => string, layerThickness: LayerThickness): readonly FilmLayer[] {
+  const name = nameOf('layers');
+  const clash = (field: CaseField, why: string): never => {
+    throw new ParameterError(name, `${name}: not allowed with ${nameOf(field)} (${why})`);
+  };
+  if (raw.nFilm !== undefined) clash('nFilm', 'each layer has its own index');
+  if (raw.thicknessNm !== undefined && layerThickness === 'own') clash('thicknessNm', 'each layer has its own thicknessNm');
+  const value = raw.layers;
+  const { count, thicknessNm: thickness } = LAYERS_DOMAIN;
+  if (!Array.isArray(value) || value.length < count.min || value.length > count.max) return rejectValue(name, value, LAYERS_JSON_EXPECTED);
+  const layers = value.map((entry: unknown, i): FilmLayer => {
+    const isLayer = typeof entry === 'object' && entry !== null && !Array.isArray(entry);
+    if (!isLayer || Object.keys(entry).sort().join() !== 'n,thicknessNm') return rejectValue(`${name}[${i}]`, entry, LAYERS_JSON_EXPECTED);
+    const { n, thicknessNm } = entry as { n: unknown; thicknessNm: unknown };
+    const medium = validateMediumIn(n, 'film', `${name}[${i}].n`);
+    if (thicknessNm === FIELD_THICKNESS && layerThickness === 'orField') return { n: medium, thicknessNm };
+    if (thicknessNm === FIELD_THICKNESS) {
+      const why = `"${FIELD_THICKNESS}", the thickness field's value, is for the view and --layers: a case's layers have their own thicknesses`;
+      return rejectValue(`${name}[${i}].thicknessNm`, thicknessNm, `${expectedNumber(thickness)} (${why})`);
+    }
+    return isInDomain(thicknessNm, thickness)
+      ? { n: medium, thicknessNm }
+      : rejectValue(`${name}[${i}].thicknessNm`, thicknessNm, expectedNumber(thickness));
+  });
+  if (raw.thicknessNm !== undefined && !followsField(layers)) {
+    const message = `${nameOf('thicknessNm')}: not allowed with ${name} that has no ${FIELD_THICKNESS} layer (no layer takes the thickness)`;
+    throw new ParameterError(nameOf('thicknessNm'), message);
+  }
+  return layers;
+}
+
+/**
  * Wavelengths within WAVELENGTH_DOMAIN_NM and within the range of every medium's source (a metal's
  * table ends near 368 nm, so R(300 nm) on gold has no data behind it).
  */
-function validateWavelengths(value: unknown, name: string, stack: MediumStack): readonly number[] {
+function validateWavelengths(value: unknown, name: string, stack: MediumStack, layers: readonly FilmLayer[]): readonly number[] {
   if (value === undefined) return [];
   let domain = WAVELENGTH_DOMAIN_NM;
   let why = '';
-  for (const field of ['nFilm', 'nInside'] as const) {
-    const range = mediumRangeNm(stack[field]);
+  const films: [string, Medium][] = layers.length === 0 ? [['nFilm', stack.nFilm]] : layers.map((l, i) => [`layers[${i}].n`, l.n]);
+  for (const [field, medium] of [...films, ['nInside', stack.nInside] as [string, Medium]]) {
+    const range = mediumRangeNm(medium);
     if (range && (range.min > domain.min || range.max < domain.max)) {
       domain = { ...domain, min: Math.max(domain.min, range.min), max: Math.min(domain.max, range.max) };
-      why = ` (where ${field} ${mediumText(stack[field])} has data)`;
+      why = ` (where ${field} ${mediumText(medium)} has data)`;
     }
   }
   const expected = `${expectedNumber(domain)}${why}`;

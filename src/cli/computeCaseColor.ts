@@ -9,7 +9,10 @@ import {
   mapToGamut,
 } from '../physics/colorConversions.ts';
 import type { IlluminantSpec } from '../physics/illuminants.ts';
-import { type IndexJson, indexJson, mediumIndexAt } from '../physics/medium.ts';
+import { resolveLayers } from '../physics/filmLayers.ts';
+import { layersXyz } from '../physics/layersColor.ts';
+import { type IndexJson, type Medium, indexJson, mediumIndexAt } from '../physics/medium.ts';
+import { type LayerStack, layersReflectance } from '../physics/transferMatrix.ts';
 import { dispersiveReflectance, filmXyz } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 import type { ColorCase } from './colorCase.ts';
@@ -31,8 +34,10 @@ export interface CaseColor {
   readonly displayP3_8: Rgb;
   /** R(λ) at each of the case's `wavelengthsNm`, eqs (1)–(14). */
   readonly reflectance: readonly number[];
-  /** ñ_b(λ), the film's index, at each of the case's `wavelengthsNm`: a number when real, { n, k } when it absorbs. */
-  readonly nFilm: readonly IndexJson[];
+  /** ñ_b(λ), the film's index, at each of the case's `wavelengthsNm`: a number when real, { n, k } when it absorbs (a single film). */
+  readonly nFilm?: readonly IndexJson[];
+  /** With layers: at each of `wavelengthsNm`, every layer's index from the outside in, as `nFilm` writes one. */
+  readonly nLayers?: readonly (readonly IndexJson[])[];
   /** ñ_c(λ), the inside's index, the same way. */
   readonly nInside: readonly IndexJson[];
 }
@@ -43,9 +48,26 @@ const to8Bit = (linear: Rgb, luminance: number, gamut: GamutMapping): Rgb => {
   return [encode8(r), encode8(g), encode8(b)];
 };
 
-/** The colour of one case: eqs (15)–(18) for XYZ, then the paper's matrices and display encodings. */
+/** The case's stack of films, its FIELD_THICKNESS layers at the case's thickness; null for a single film. */
+const layerStackOf = (c: ColorCase): LayerStack | null =>
+  c.layers.length === 0
+    ? null
+    : {
+        nOutside: c.stack.nOutside,
+        layers: resolveLayers(c.layers, c.stack.thicknessNm),
+        nInside: c.stack.nInside,
+        angleDeg: c.stack.angleDeg,
+      };
+
+/**
+ * The colour of one case: eqs (15)–(18) for XYZ, then the paper's matrices and display encodings;
+ * R(λ) of the single film (eqs 1–14), or of a stack of films by the transfer matrix (transferMatrix.ts).
+ */
 export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
-  const xyz = filmXyz(c.stack, { illuminant: c.illuminant, polarization: c.polarization, normalization: c.normalization });
+  const options = { illuminant: c.illuminant, polarization: c.polarization, normalization: c.normalization };
+  const stack = layerStackOf(c);
+  const xyz = stack ? layersXyz(stack, options) : filmXyz(c.stack, options);
+  const indicesAt = (m: Medium) => c.wavelengthsNm.map((lambdaNm) => indexJson(mediumIndexAt(m, lambdaNm)));
   const linearSrgb = applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz);
   return {
     id: c.id,
@@ -56,8 +78,12 @@ export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
     srgb8: to8Bit(linearSrgb, xyz[1], gamut),
     linearWideGamut: applyMatrix3(XYZ_TO_LINEAR_WIDE_GAMUT, xyz),
     displayP3_8: to8Bit(applyMatrix3(XYZ_TO_LINEAR_DISPLAY_P3, xyz), xyz[1], gamut),
-    reflectance: c.wavelengthsNm.map((lambdaNm) => dispersiveReflectance(lambdaNm, c.stack, c.polarization)),
-    nFilm: c.wavelengthsNm.map((lambdaNm) => indexJson(mediumIndexAt(c.stack.nFilm, lambdaNm))),
-    nInside: c.wavelengthsNm.map((lambdaNm) => indexJson(mediumIndexAt(c.stack.nInside, lambdaNm))),
+    reflectance: c.wavelengthsNm.map((lambdaNm) =>
+      stack ? layersReflectance(lambdaNm, stack, c.polarization) : dispersiveReflectance(lambdaNm, c.stack, c.polarization),
+    ),
+    ...(stack
+      ? { nLayers: c.wavelengthsNm.map((lambdaNm) => stack.layers.map((l) => indexJson(mediumIndexAt(l.n, lambdaNm)))) }
+      : { nFilm: indicesAt(c.stack.nFilm) }),
+    nInside: indicesAt(c.stack.nInside),
   };
 }

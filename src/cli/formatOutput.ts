@@ -30,9 +30,14 @@ const nk = (index: IndexJson): [number, number] => (typeof index === 'number' ? 
 
 /**
  * A table as CSV: a header line, then one line per row; R(λ) columns are named `R_<λ>nm`, the film's
- * ñ_b(λ) = n + ik columns `nFilm_<λ>nm` and `kFilm_<λ>nm`, the inside's `nInside_<λ>nm` and `kInside_<λ>nm`.
+ * ñ_b(λ) = n + ik columns `nFilm_<λ>nm` and `kFilm_<λ>nm` (with `layerCount` layers, layer i's from
+ * the outside, counted from 1, `nLayer<i>_<λ>nm` and `kLayer<i>_<λ>nm`), the inside's `nInside_<λ>nm` and `kInside_<λ>nm`.
  */
-export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly number[]): string {
+export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly number[], layerCount = 0): string {
+  const films = layerCount === 0 ? ['Film'] : Array.from({ length: layerCount }, (_, i) => `Layer${i + 1}`);
+  /** The indices of film f (an entry of `films`) at every wavelength. */
+  const filmIndices = (r: TableRow, f: number): readonly IndexJson[] =>
+    layerCount === 0 ? (r.nFilm ?? []) : (r.nLayers ?? []).map((atLambda) => atLambda[f]!);
   const header = [
     'id',
     'thicknessNm',
@@ -48,8 +53,7 @@ export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly numb
     ...channels('linearWideGamut'),
     ...channels('displayP3_8'),
     ...wavelengthsNm.map((l) => `R_${l}nm`),
-    ...wavelengthsNm.map((l) => `nFilm_${l}nm`),
-    ...wavelengthsNm.map((l) => `kFilm_${l}nm`),
+    ...films.flatMap((film) => [...wavelengthsNm.map((l) => `n${film}_${l}nm`), ...wavelengthsNm.map((l) => `k${film}_${l}nm`)]),
     ...wavelengthsNm.map((l) => `nInside_${l}nm`),
     ...wavelengthsNm.map((l) => `kInside_${l}nm`),
   ];
@@ -67,8 +71,7 @@ export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly numb
       ...r.linearWideGamut,
       ...r.displayP3_8,
       ...r.reflectance,
-      ...r.nFilm.map((i) => nk(i)[0]),
-      ...r.nFilm.map((i) => nk(i)[1]),
+      ...films.flatMap((_, f) => [...filmIndices(r, f).map((i) => nk(i)[0]), ...filmIndices(r, f).map((i) => nk(i)[1])]),
       ...r.nInside.map((i) => nk(i)[0]),
       ...r.nInside.map((i) => nk(i)[1]),
     ].join(',');

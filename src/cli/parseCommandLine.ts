@@ -1,6 +1,8 @@
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
 import { ILLUMINANT_EXPECTED, parseIlluminant } from '../physics/illuminants.ts';
 import { mediumExpected, readMedium } from '../physics/medium.ts';
+import { FIELD_THICKNESS, followsField } from '../physics/filmLayers.ts';
+import { parseLayers } from '../physics/layersText.ts';
 import { oneOf, ParameterError, rejectValue, expectedNumber } from '../input/validate.ts';
 import {
   CASE_FLAGS,
@@ -88,13 +90,18 @@ export function parseCommandLine(argv: readonly string[]): Command {
     const values = parseColonRange('--angles', flags.get('angles') ?? '', NUMBER_FIELDS.angleDeg);
     return { kind: 'table', variable: 'angleDeg', values, base: caseFromFlags(flags), gamut, format };
   }
-  return { kind: 'table', variable: 'thicknessNm', values: thicknessRange(flags), base: caseFromFlags(flags), gamut, format };
+  const base = caseFromFlags(flags);
+  return { kind: 'table', variable: 'thicknessNm', values: thicknessRange(flags, base), base, gamut, format };
 }
 
-/** The values of --from/--to/--step; refuses --thickness, which they replace. */
-function thicknessRange(flags: Map<Flag, string>): number[] {
+/** The values of --from/--to/--step; refuses --thickness, which they replace, and --layers with no layer they set. */
+function thicknessRange(flags: Map<Flag, string>, base: ColorCase): number[] {
   if (flags.has('thickness')) {
     throw new ParameterError('--thickness', '--thickness: not allowed with --from/--to/--step (the table varies the thickness)');
+  }
+  if (base.layers.length > 0 && !followsField(base.layers)) {
+    const message = `--layers: not allowed with --from/--to/--step without a ${FIELD_THICKNESS} layer (the table varies the thickness ${FIELD_THICKNESS})`;
+    throw new ParameterError('--layers', message);
   }
   const missing = (['from', 'to', 'step'] as const).find((f) => !flags.has(f));
   if (missing) {
@@ -108,7 +115,8 @@ function thicknessRange(flags: Map<Flag, string>): number[] {
 function chartCommand(flags: Map<Flag, string>, format: ChartFormat, gamut: GamutMapping): Command {
   const out = flags.get('out');
   if (out === undefined || out === '') return rejectValue('--out', out, `the path of the ${format} file to write`);
-  const thicknessNm = thicknessRange(flags);
+  const base = caseFromFlags(flags);
+  const thicknessNm = thicknessRange(flags, base);
   let anglesDeg: number[] | null = null;
   if (flags.has('angles')) {
     if (flags.has('angle')) throw new ParameterError('--angle', '--angle: not allowed with --angles (the chart varies the angle)');
@@ -125,7 +133,7 @@ function chartCommand(flags: Map<Flag, string>, format: ChartFormat, gamut: Gamu
     rejectValue('--height', stripHeightPx, expected);
   }
   checkChartSize(thicknessNm.length, anglesDeg?.length ?? null, stripHeightPx);
-  return { kind: 'chart', thicknessNm, anglesDeg, base: caseFromFlags(flags), gamut, format, out, stripHeightPx };
+  return { kind: 'chart', thicknessNm, anglesDeg, base, gamut, format, out, stripHeightPx };
 }
 
 /** Flag name → raw text, or 'help'. Rejects unknown and repeated flags and positionals. */
@@ -143,7 +151,7 @@ function caseFromFlags(flags: Map<Flag, string>): ColorCase {
     const text = flags.get(flag);
     if (text !== undefined) raw[field] = flagValue(field, `--${flag}`, text);
   }
-  return validateColorCase(raw, 0, (field) => flagOf[field] ?? field);
+  return validateColorCase(raw, 0, (field) => flagOf[field] ?? field, 'orField');
 }
 
 /** A flag's text as the value a cases file would hold for its field. */
@@ -154,6 +162,7 @@ function flagValue(field: Exclude<CaseField, 'id'>, flag: string, text: string):
     return text.split(',').map((part, i) => parseStrictNumber(`${flag}[${i}]`, part, expected));
   }
   if (field === 'illuminant') return parseIlluminant(text) ?? rejectValue(flag, text, ILLUMINANT_EXPECTED);
+  if (field === 'layers') return parseLayers(flag, text);
   if (field in MEDIUM_FIELDS) {
     const { role } = MEDIUM_FIELDS[field as MediumField];
     const reading = readMedium(text, role);

@@ -23,13 +23,17 @@ Usage: npm run --silent color -- [flags]
 
 One case (defaults: a 500 nm soap film in air, seen head-on, under D65):
 ${optionLines(CASE_FLAGS)}
+                        --layers replaces --n-film; its d layers take --thickness (or each row's
+                        thickness in a table)
   --gamut G             ${GAMUT_MAPPINGS.join(' | ')}: how out-of-gamut colours become 8-bit codes (clip)
 
 Many cases:
   --cases FILE.json     a JSON array (at most ${MAX_CASES}) of objects with any of the fields
                         ${CASE_FIELDS.join(', ')};
                         illuminant is a name or { "daylightCct": K }; wavelengthsNm an array
-                        (at most ${MAX_WAVELENGTHS}); id defaults to the case's index.
+                        (at most ${MAX_WAVELENGTHS}); layers [{ "n", "thicknessNm" }, …] outside in,
+                        in place of nFilm and thicknessNm, each n as nFilm, each thicknessNm a
+                        number; id defaults to the case's index.
                         Nested at most ${MAX_CASES_NESTING_DEPTH} levels deep.
 
 A table (at most ${MAX_TABLE_ROWS} rows), one row per thickness or angle, with #rrggbb:
@@ -48,6 +52,7 @@ A chart instead of a table, written to a file (at most ${MAX_CHART_COLUMNS} colu
                                 svg: one rect per cell, ticks as lines, labels as text.
 
 Output: a JSON array, one object per case, in input order:
-  { id, illuminant, normalization, xyz, linearSrgb, srgb8, linearWideGamut, displayP3_8, reflectance }
+  { id, illuminant, normalization, xyz, linearSrgb, srgb8, linearWideGamut, displayP3_8, reflectance,
+    nFilm (or with layers nLayers: each layer's index at each wavelength), nInside }
 Bad input: exit status 2, one line on stderr, nothing on stdout.
 `;

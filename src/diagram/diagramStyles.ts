@@ -16,6 +16,7 @@ thin-film-diagram figure { margin: 6px 0; }
 thin-film-diagram .tfd-phasors { display: flex; flex-wrap: wrap; gap: 8px; }
 thin-film-diagram .tfd-phasors svg { flex: 1 1 170px; max-width: 300px; border: 1px solid #ddd; }
 thin-film-diagram .tfd-table { overflow-x: auto; }
+thin-film-diagram .tfd-stack-note { margin: 4px 0; padding: 4px 8px; border-left: 3px solid #8a5a00; background: #fff6e0; }
 thin-film-diagram table { border-collapse: collapse; font-size: 13px; }
 thin-film-diagram caption { text-align: left; font-weight: 600; padding: 2px 0; }
 thin-film-diagram th, thin-film-diagram td { padding: 2px 8px 2px 0; border-bottom: 1px solid #ddd; text-align: left; }

@@ -41,7 +41,9 @@ function beamSentence(beams: FilmBeams, cat: Catalogue): string {
  * polarisation channel, R(λ) with λ marked, a table of the beams and a summary of R; `lang`
  * (or the page's) chooses the language. `reflectance` holds R; `diagramchange` (detail:
  * { reflectance, beamCount }) follows every change. A bad attribute is named with its range in a
- * message (text only) and its earlier value kept.
+ * message (text only) and its earlier value kept. It draws one film only: when the bubble it
+ * follows shows a stack of films (its `layers` setting), a note says so and points to the bubble's
+ * plots, which show the stack's R(λ) (docs/diagram.md#one-film-only).
  */
 export class ThinFilmDiagram extends HTMLElement {
   static readonly observedAttributes = [...DIAGRAM_ATTRIBUTES, 'for', 'lang'];
@@ -49,11 +51,14 @@ export class ThinFilmDiagram extends HTMLElement {
   private flipTop = false;
   private errors: readonly string[] = [];
   private linkError: string | null = null;
+  /** The layers of the stack the linked bubble shows (0: one film, or no bubble). */
+  private bubbleLayers = 0;
   private unlink: () => void = () => {};
   private parts: {
     readonly controls: DiagramControls;
     readonly errors: HTMLElement;
     readonly summary: HTMLElement;
+    readonly stackNote: HTMLElement;
     readonly figure: SVGSVGElement;
     readonly phasors: HTMLElement;
     readonly spectrum: SVGSVGElement;
@@ -137,15 +142,16 @@ export class ThinFilmDiagram extends HTMLElement {
     errors.setAttribute('role', 'alert');
     const summary = el('p', 'tfd-summary');
     summary.setAttribute('aria-live', 'polite');
+    const stackNote = el('p', 'tfd-stack-note');
     const figure = svgFigure('figure');
     const phasors = el('div', 'tfd-phasors');
     const spectrum = svgFigure('spectrum');
     const tableBox = el('div', 'tfd-table');
     const table = doc.createElement('table');
     tableBox.append(table);
-    root.append(controls.element, errors, summary, figure, phasors, spectrum, tableBox);
+    root.append(controls.element, errors, stackNote, summary, figure, phasors, spectrum, tableBox);
     this.replaceChildren(root);
-    this.parts = { controls, errors, summary, figure, phasors, spectrum, table };
+    this.parts = { controls, errors, summary, stackNote, figure, phasors, spectrum, table };
     this.errors = readDiagramAttributes((a) => this.getAttribute(a), DEFAULT_DIAGRAM_SETTINGS, cat).errors;
     this.render();
   }
@@ -162,6 +168,7 @@ export class ThinFilmDiagram extends HTMLElement {
     this.unlink();
     this.unlink = () => {};
     this.linkError = null;
+    this.bubbleLayers = 0;
     const id = this.getAttribute('for');
     if (id === null) return this.render();
     const bubble = this.ownerDocument.getElementById(id);
@@ -174,6 +181,8 @@ export class ThinFilmDiagram extends HTMLElement {
       return this.render();
     }
     const follow = (probe: ProbedFilm | null | undefined) => {
+      // Read through the bubble's public `settings` (the element layer sits above this one).
+      this.bubbleLayers = (bubble as HTMLElement & { settings?: { layers?: readonly unknown[] } | null }).settings?.layers?.length ?? 0;
       if (
         !probe ||
         !isInDomain(probe.thicknessNm, FILM_STACK_DOMAIN.thicknessNm) ||
@@ -201,6 +210,8 @@ export class ThinFilmDiagram extends HTMLElement {
     this.beamCount = Math.max(...beams.channels.map((c) => c.beams.beams.length));
     parts.controls.sync(s, this.flipTop);
     const messages = this.linkError ? [...this.errors, this.linkError] : this.errors;
+    parts.stackNote.hidden = this.bubbleLayers === 0;
+    parts.stackNote.textContent = this.bubbleLayers ? message(cat, 'diagram.oneFilm', { count: this.bubbleLayers }) : '';
     parts.errors.replaceChildren(...messages.map((e) => Object.assign(this.ownerDocument.createElement('p'), { textContent: e })));
     parts.summary.textContent = `${message(cat, 'diagram.summary', {
       reflectance: fourFigures(this.r),

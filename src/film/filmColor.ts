@@ -1,7 +1,7 @@
 import { Matrix3, type ShaderMaterial } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { type Matrix3 as Rows3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
-import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
+import { type FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import type { FilmMethodInput } from '../methods/filmMethod.ts';
 import { FILM_METHOD_REGISTRY, FILM_METHODS, methodReads } from '../methods/methods.ts';
@@ -16,6 +16,7 @@ import {
 } from './spectralTransformTexture.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture, spectralBinsUniforms } from './spectralBinsTexture.ts';
 import { filmTableGridUniforms } from './filmTableGrid.ts';
+import { type StackedSettings, filmSpectralBins, filmStackDefines, releaseFilmStackTexture, updateFilmStackUniforms } from './filmStack.ts';
 
 /**
  * The film's colour as shaders/film/filmColor.glsl computes it, from the TypeScript side: its
@@ -25,7 +26,7 @@ import { filmTableGridUniforms } from './filmTableGrid.ts';
 
 export const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
-export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm' | 'nInside'>;
+export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm' | 'nInside'> & StackedSettings;
 
 /** TFC_OPAQUE_INSIDE alone, which every method reads (an opaque inside sends no light from inside). */
 const opaqueInsideDefine = (s: FilmColorSettings): Record<string, number> => {
@@ -37,9 +38,10 @@ const opaqueInsideDefine = (s: FilmColorSettings): Record<string, number> => {
 const INPUT_DEFINES: Readonly<Record<FilmMethodInput, (s: FilmColorSettings, q: FilmQuality) => Record<string, number>>> = {
   polarization: (s) => enumDefines('TFC_POLARIZATION', POLARIZATIONS, s.polarization),
   media: (s) => filmMediaDefines(s),
-  spectralBins: (s, q) => spectralBinDefines(spectralBinsFor(s, q, q.exactSpectralBins), q.spectralTailTolerance),
+  spectralBins: (s, q) => spectralBinDefines(filmSpectralBins(s, q, q.exactSpectralBins), q.spectralTailTolerance),
   spectralTransform: (_, q) => airySeriesDefines(q.airySeriesMaxOrders),
   table: (_, q) => filmTableLayoutDefines(q.table),
+  layers: (s) => filmStackDefines(s),
 };
 
 /**
@@ -62,8 +64,8 @@ function updateFilmColorTextures(
   q: FilmQuality,
 ): void {
   const u = m.uniforms;
-  if (methodReads(s.mode, 'spectralBins'))
-    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, spectralBinsFor(s, q, q.exactSpectralBins), m);
+  const bins = filmSpectralBins(s, q, q.exactSpectralBins);
+  if (methodReads(s.mode, 'spectralBins')) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, bins, m);
   else {
     releaseSpectralBinsTexture(m);
     u.uSpectralBins!.value = null;
@@ -73,12 +75,15 @@ function updateFilmColorTextures(
     releaseSpectralTransformTexture(m);
     u.uSpectralTransform!.value = null;
   }
+  // The stack's uniforms are a material's that may draw one (filmStackUniforms: the bubble, the parity probe).
+  if ('uFilmLayers' in u) updateFilmStackUniforms(u, methodReads(s.mode, 'layers') ? s : { ...s, layers: [] }, bins, m);
 }
 
 /** Frees what a film-colour material holds (call before disposing it). */
 export function releaseFilmColorTextures(m: object): void {
   releaseSpectralBinsTexture(m);
   releaseSpectralTransformTexture(m);
+  releaseFilmStackTexture(m);
 }
 
 /**

@@ -3,6 +3,7 @@ import { asComplex } from '../physics/complex.ts';
 import { type Medium, absorbsInBand, isDispersiveMedium, mediumIndexAt } from '../physics/medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
+import { type StackedSettings, isStacked } from './filmStack.ts';
 
 /** The three media of the film: outside (a), the film (b), inside (c). */
 export type FilmMedia = Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside'>;
@@ -20,15 +21,18 @@ export const MEDIA_KNOT = texelRecord('TFC_MEDIA_KNOT', { FILM: 2, INSIDE: 2 });
 /** The sodium D line: the wavelength of the one index that consumers without dispersion take (uNFilm; three.js's iridescence). */
 export const SODIUM_D_NM = 589.29;
 
-/** Whether the film's or the inside's index depends on λ: the shaders then take both per spectral bin. */
-export const isDispersiveFilm = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): boolean =>
-  isDispersiveMedium(s.nFilm) || isDispersiveMedium(s.nInside);
+/**
+ * Whether the film's or the inside's index depends on λ: the shaders then take both per spectral bin.
+ * A stack of films takes every medium per bin from its own texture (filmStack.ts): none of this.
+ */
+export const isDispersiveFilm = (s: Pick<FilmMedia, 'nFilm' | 'nInside'> & StackedSettings): boolean =>
+  !isStacked(s) && (isDispersiveMedium(s.nFilm) || isDispersiveMedium(s.nInside));
 
 /**
  * The defines of a film-colour shader for these media: TFC_DISPERSIVE and its knots where the film
  * or the inside depends on λ, TFC_OPAQUE_INSIDE where the inside absorbs (no light from inside).
  */
-export const filmMediaDefines = (s: Pick<FilmMedia, 'nFilm' | 'nInside'>): Record<string, number> => ({
+export const filmMediaDefines = (s: Pick<FilmMedia, 'nFilm' | 'nInside'> & StackedSettings): Record<string, number> => ({
   ...(isDispersiveFilm(s)
     ? {
         TFC_DISPERSIVE: 1,
@@ -67,7 +71,7 @@ export function filmIndexMax(nFilm: Medium): number {
 }
 
 /** Sets them to `s`: ñ_b and ñ_c at the D line where they vary, and every STEP_NM in the knots (mediumIndexAt in float64). */
-export function updateFilmMediaUniforms(u: Record<string, { value: unknown }>, s: FilmMedia): void {
+export function updateFilmMediaUniforms(u: Record<string, { value: unknown }>, s: FilmMedia & StackedSettings): void {
   u.uNOutside!.value = s.nOutside;
   u.uNFilm!.value = nk(s.nFilm, SODIUM_D_NM);
   u.uNInside!.value = nk(s.nInside, SODIUM_D_NM);

@@ -11,6 +11,14 @@ import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
 import { dispersiveRowsOf, dispersiveRowsReady } from './dispersiveRowsStore.ts';
 import { filmIndexMax, isDispersiveFilm, updateFilmMediaUniforms } from './filmMedia.ts';
 import { type FilmTableGrid, setFilmTableGridUniforms } from './filmTableGrid.ts';
+import {
+  type StackedSettings,
+  isStacked,
+  releaseFilmStackTexture,
+  stackFieldIndex,
+  stackLayers,
+  updateFilmStackUniforms,
+} from './filmStack.ts';
 import { releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
 import { releaseSpectralTransformTexture, spectralTransformReady, spectralTransformTexture } from './spectralTransformTexture.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
@@ -55,11 +63,17 @@ export class FilmTablePass {
     this.rows = { texture: airySeriesRowsTexture(quality.table), dispersive: false };
   }
 
-  /** The full grid for the settings (its width follows the thickness range and the film's index). */
-  fullGrid(s: FilmSettings): FilmTableGrid {
+  /**
+   * The full grid for the settings: its width follows the thickness range and the film's index (a
+   * stack's: the sum of its field-following layers'). A stack that does not follow the field is the
+   * same at every thickness: two equal columns, which any lookup reads alike.
+   */
+  fullGrid(s: FilmSettings & StackedSettings): FilmTableGrid {
     const layout = this.quality.table;
     const maxThicknessNm = maxFieldThicknessNm(s);
-    return { width: filmTableWidth(layout, maxThicknessNm, filmIndexMax(s.nFilm)), rows: layout.rows, maxThicknessNm };
+    const index = isStacked(s) ? stackFieldIndex(stackLayers(s), this.programs.bins(s)) : filmIndexMax(s.nFilm);
+    const width = index === null ? 2 : filmTableWidth(layout, maxThicknessNm, index);
+    return { width, rows: layout.rows, maxThicknessNm };
   }
 
   /** The layout of the row terms of `grid` for `s`: the table's, with the grid's rows and the settings' bins. */
@@ -96,12 +110,13 @@ export class FilmTablePass {
     const u = material.uniforms;
     u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.programs.bins(s), this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
-    // A dispersive film is filled from the bins, with their terms per row (shaders/film/filmTable.glsl).
+    // A stack of films is filled by its recursion per bin; a dispersive film is filled from the bins, with their terms per row (shaders/film/filmTable.glsl).
     this.updateRows(s, grid);
     u.uDispersiveRows!.value = this.rows.texture;
     u.uAirySeriesRows!.value = this.rows.texture;
     u.uPolarization!.value = enumCode('TFC_POLARIZATION', POLARIZATIONS, s.polarization);
     updateFilmMediaUniforms(u, s);
+    updateFilmStackUniforms(u, s, this.programs.bins(s), this);
     setFilmTableGridUniforms(u, grid);
     const previous = renderer.getRenderTarget();
     target.scissorTest = true;
@@ -119,6 +134,7 @@ export class FilmTablePass {
   releaseLight(): void {
     releaseSpectralBinsTexture(this);
     releaseSpectralTransformTexture(this);
+    releaseFilmStackTexture(this);
   }
 
   /**

@@ -21,16 +21,18 @@ const FRAME_GROWTH = 2;
 /** A band is at least one column. */
 const MIN_BAND_COLUMNS = 1;
 
-/** What is measured of a table pass: a dispersive film's texel sums its bins, a constant film's the series. */
-export type PassKind = 'dispersive' | 'constant';
+/** What is measured of a table pass: a dispersive film's texel sums its bins, a constant film's the series, a stack's its recursion per bin. */
+export type PassKind = 'dispersive' | 'constant' | 'stack';
 
 /**
- * A kind of pass not yet measured is taken to cost the other kind's measured cost per texel times
+ * A kind of pass not yet measured is taken to cost another kind's measured cost per texel times
  * the ratio of these weights, and twice that to err on the side of smaller bands: a dispersive
  * texel sums 150 bins with their terms read per bin (measured per texel on SwiftShader in the built
- * demo's bands: 4–10× a constant film's), so the estimate, 10×, covers the measured range.
+ * demo's bands: 4–10× a constant film's), so the estimate, 10×, covers the measured range. A
+ * stack's texel runs the recursion over its layers in each of 150 bins, two Fresnel interfaces per
+ * layer: a 16-layer stack's is taken as 8 dispersive texels (its measured cost replaces it at once).
  */
-const KIND_COST: Readonly<Record<PassKind, number>> = { constant: 1, dispersive: 5 };
+const KIND_COST: Readonly<Record<PassKind, number>> = { constant: 1, dispersive: 5, stack: 40 };
 const UNMEASURED_MARGIN = 2;
 
 export class TableBandBudget {
@@ -68,13 +70,12 @@ export class TableBandBudget {
     this.run = null;
   }
 
-  /** The pass's cost per texel: measured, or estimated from the other kind's (KIND_COST), or unknown. */
+  /** The pass's cost per texel: measured, or estimated from another kind's (KIND_COST), or unknown. */
   private cost(kind: PassKind): number | undefined {
     const measured = this.msPerTexel.get(kind);
     if (measured !== undefined) return measured;
-    const other: PassKind = kind === 'constant' ? 'dispersive' : 'constant';
-    const known = this.msPerTexel.get(other);
-    return known === undefined ? undefined : (UNMEASURED_MARGIN * known * KIND_COST[kind]) / KIND_COST[other];
+    const [other, known] = [...this.msPerTexel][0] ?? [];
+    return other === undefined || known === undefined ? undefined : (UNMEASURED_MARGIN * known * KIND_COST[kind]) / KIND_COST[other];
   }
 
   /** The columns of the next band, `rows` texels each, of the `remaining` columns of a table `width` wide. */

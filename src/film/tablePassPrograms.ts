@@ -5,19 +5,19 @@ import { FULLSCREEN_VERTEX } from '../gpu/fullscreenPass.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { texelRecordDefines } from '../gpu/texelRecord.ts';
-import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
-import type { FilmSettings } from '../settings/filmSettings.ts';
+import { type FilmQuality } from '../settings/filmQuality.ts';
 import { AIRY_ROW } from './airySeriesRows.ts';
 import { DISPERSIVE_BIN } from './dispersiveRows.ts';
 import { type FilmMedia, filmMediaDefines, filmMediaUniforms } from './filmMedia.ts';
 import { filmTableGridUniforms } from './filmTableGrid.ts';
+import { type StackedSettings, filmSpectralBins, filmStackDefines, filmStackUniforms } from './filmStack.ts';
 import { filmTableLayoutDefines } from './filmTableDefines.ts';
 import { KEPT_PASSES, TABLE_PASS_NAME } from './keptPasses.ts';
 import { spectralBinDefines, spectralBinsUniforms } from './spectralBinsTexture.ts';
 import { airySeriesDefines, spectralTransformUniforms } from './spectralTransformTexture.ts';
 
-/** The media that pick the table pass's program (the outside's index is a uniform). */
-export type PassMedia = Pick<FilmMedia, 'nFilm' | 'nInside'>;
+/** The media that pick the table pass's program (the outside's index is a uniform), or a stack of films. */
+export type PassMedia = Pick<FilmMedia, 'nFilm' | 'nInside'> & StackedSettings;
 
 /**
  * The uniforms shaders/film/filmTable.glsl declares: the light's textures, the per-row terms
@@ -31,6 +31,7 @@ export const filmTablePassUniforms = (): ShaderMaterial['uniforms'] => ({
   uDispersiveRows: { value: null },
   uPolarization: { value: 0 },
   ...filmMediaUniforms(),
+  ...filmStackUniforms(),
   ...filmTableGridUniforms(),
 });
 
@@ -54,14 +55,15 @@ export class TablePassPrograms {
   constructor(private readonly quality: FilmQuality) {}
 
   /** The spectral bins the pass integrates for `s`. */
-  bins(s: Pick<FilmSettings, 'nFilm' | 'nInside'>): number {
-    return spectralBinsFor(s, this.quality, this.quality.table.spectralBins);
+  bins(s: PassMedia): number {
+    return filmSpectralBins(s, this.quality, this.quality.table.spectralBins);
   }
 
   /** The pass's defines for these media and bins: one program per set. */
   private defines(media: PassMedia, bins: number): Record<string, number> {
     return {
       ...filmMediaDefines(media),
+      ...filmStackDefines(media),
       TFC_POLARIZATION_UNIFORM: 1,
       ...enumConstants('TFC_POLARIZATION', POLARIZATIONS),
       ...spectralBinDefines(bins, this.quality.spectralTailTolerance),

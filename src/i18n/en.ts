@@ -30,6 +30,7 @@ export const EN = {
   'param.nFilm': 'n film',
   'param.nOutside': 'n outside',
   'param.nInside': 'n inside',
+  'param.layers': 'film layers (n film unused when set)',
   'param.illuminant': 'illuminant',
   'param.polarization': 'polarization',
   'param.normalization': 'normalization',
@@ -111,6 +112,8 @@ export const EN = {
     'a number in [{min}, {max}], {materials}, or cauchy:A,B[,C] (n = A + B/λ² + C/λ⁴, λ in nm) within [{min}, {max}] over {from}–{to} nm',
   'expected.medium':
     'a number in [{min}, {max}], {materials}, cauchy:A,B[,C], {names} or complex:n,k (n in [{nMin}, {nMax}], k in [{kMin}, {kMax}])',
+  'expected.layers':
+    'INDEX:NM entries separated by /, outside in (INDEX as nFilm takes it; NM in [{min}, {max}] or {field}); (…)*N repeats a group, N in [{nMin}, {nMax}]; at most {count} layers',
   'expected.probe': 'x,y with both in [0, 1] (fractions of the view from the top left)',
   'expected.tooLong': '{expected} of at most {max} characters',
   'refusal.ignored': '{name}={value} ignored: expected {expected}',
@@ -130,6 +133,8 @@ export const EN = {
   'app.title': 'thin-film-color — a soap bubble from the spectral thin-film integral',
   'app.fourierAsTable':
     'mode=fourier has no Airy series where the film or the inside is dispersive ({name}={medium}): drawing with mode=table, filled from the same spectral bins.',
+  'app.stackAsTable':
+    "mode={method} has no closed form for a stack of films ({layers} layers): drawing with mode=table, filled by the stack's transfer-matrix recursion.",
   'app.heading': 'thin-film interference: a soap bubble',
   'app.noDisplayP3': 'This browser has no Display P3 canvas: showing sRGB.',
   'app.environmentLoading': 'Loading the environment {env}…',
@@ -187,6 +192,12 @@ export const EN = {
   'plots.tableReflectance': 'R',
   'plots.tableIncident': 'I_in',
   'plots.tableReflected': 'I_out',
+  'plots.stackNote': 'A stack of {count} layers, not one film: R(λ) and the colour are the whole stack’s (the transfer matrix).',
+  'diagram.oneFilm':
+    'This diagram draws one film. The bubble it follows shows a stack of {count} layers: the stack’s R(λ) and colour are in that bubble’s plots.',
+  'materials.stacks': 'Stacks of films, the reference colour at normal incidence and at 45°:',
+  'materials.coatedLens': 'a coated lens (one quarter wave of MgF₂ on glass, R {coated} % at 550 nm, bare glass {bare} %)',
+  'materials.nacre': 'nacre (10 aragonite tablets between organic sheets)',
   'diagram.label': 'Thin-film interference diagram',
   'diagram.controls': 'Settings',
   'diagram.figureTitle': 'The principle of thin-film interference: the reflected beams',

@@ -28,6 +28,7 @@ export const JA: Catalogue = {
   'param.thicknessRangeNm': '膜厚の幅 (nm)',
   'param.swirlSpeed': '渦の速さ',
   'param.nFilm': '薄膜の屈折率',
+  'param.layers': '多層膜（指定すると薄膜の屈折率は使わない）',
   'param.nOutside': '外側の屈折率',
   'param.nInside': '内側の屈折率',
   'param.illuminant': '光源',
@@ -111,6 +112,8 @@ export const JA: Catalogue = {
     '[{min}, {max}] の数値、{materials}、または {from}–{to} nm で [{min}, {max}] に収まるコーシーの式 cauchy:A,B[,C]（n = A + B/λ² + C/λ⁴、λ は nm）',
   'expected.medium':
     '[{min}, {max}] の数値、{materials}、cauchy:A,B[,C]、{names}、または complex:n,k（n は [{nMin}, {nMax}]、k は [{kMin}, {kMax}]）',
+  'expected.layers':
+    '「屈折率:膜厚」を外側から順に / で区切って並べたもの（屈折率は薄膜の屈折率と同じ書き方、膜厚は [{min}, {max}] nm の数値または膜厚の分布に従う {field}）。(…)*N はかっこ内を N 回繰り返す（N は [{nMin}, {nMax}] の整数）。展開後に合わせて {count} 層まで',
   'expected.probe': 'x,y（どちらも [0, 1]、画面の左上からの割合）',
   'expected.tooLong': '{max} 文字以内の{expected}',
   'refusal.ignored': '{name}={value} は使えない（無視した）：{expected}を指定すること。',
@@ -130,6 +133,8 @@ export const JA: Catalogue = {
   'app.title': '分光積分で求めた薄膜干渉の色のシャボン玉',
   'app.fourierAsTable':
     '分散のある薄膜または内側の媒質（{name} = {medium}）にはエアリー級数がないため、計算方法「フーリエ級数」の代わりに「表」で描いている（表は同じスペクトルのビンから作る）。',
+  'app.stackAsTable':
+    '薄膜の積層（{layers} 層）には計算方法 {method} の閉じた式がないため、代わりに「表」で描いている（表は積層の転送行列の漸化式で作る）。',
   'app.heading': '薄膜干渉：シャボン玉',
   'app.noDisplayP3': 'このブラウザには P3 のキャンバスがないため、sRGB で表示している。',
   'app.environmentLoading': '環境 {env} を読み込み中…',
@@ -187,6 +192,13 @@ export const JA: Catalogue = {
   'plots.tableReflectance': '反射率 R',
   'plots.tableIncident': '入射光 I_in',
   'plots.tableReflected': '反射光 I_out',
+  'plots.stackNote': '1 枚の薄膜ではなく {count} 層の多層膜：反射率 R(λ) と色は多層膜全体のもの（転送行列法による）。',
+  'diagram.oneFilm':
+    'この図は 1 枚の薄膜だけを描く。連動しているシャボン玉は {count} 層の多層膜を表示している：多層膜の反射率 R(λ) と色はそのシャボン玉のグラフを見ること。',
+  'materials.stacks': '多層膜（垂直入射と 45° での基準色）：',
+  'materials.coatedLens':
+    '反射防止膜つきのレンズ（ガラスの上にフッ化マグネシウムの 4 分の 1 波長膜 1 層。波長 550 nm での反射率 {coated} %、コートなしのガラスは {bare} %）',
+  'materials.nacre': '真珠層（アラゴナイトの板 10 枚と有機質の薄い層が交互に重なる）',
   'diagram.label': '薄膜干渉の図',
   'diagram.controls': '設定',
   'diagram.figureTitle': '薄膜干渉の原理：反射光',

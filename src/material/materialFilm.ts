@@ -5,6 +5,7 @@ import { type Medium, absorbsInBand } from '../physics/medium.ts';
 import { type SampledIndex } from '../physics/sampledIndex.ts';
 import { type NumberDomain, assertInRange, expectedNumber, isInDomain } from '../input/validate.ts';
 import { filmColorDefines } from '../film/filmColor.ts';
+import { drawnMethod } from '../methods/methods.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { type FilmSettings } from '../settings/filmSettings.ts';
 import { type CheckedOptions } from './spectralIridescenceOptions.ts';
@@ -43,8 +44,26 @@ export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit
   const nInside = baseOf(m, o) ?? limit('ior', m.ior, d.nInside);
   const minNm = limit('iridescenceThicknessMinimum', m.iridescenceThicknessMinimum, d.thicknessNm);
   const maxNm = limit('iridescenceThicknessMaximum', m.iridescenceThicknessMaximum, d.thicknessNm);
-  return { ...DEFAULT_SETTINGS, ...o, field: 'uniform', thicknessNm: Math.max(minNm, maxNm), nOutside: 1, nFilm, nInside };
+  return {
+    ...DEFAULT_SETTINGS,
+    ...o,
+    mode: drawnModeOf(o),
+    field: 'uniform',
+    thicknessNm: Math.max(minNm, maxNm),
+    nOutside: 1,
+    nFilm,
+    nInside,
+  };
 }
+
+/**
+ * The method drawn: the option's, or for a stack of films where that method has none (`fourier`)
+ * the one drawn in its place (drawnMethod, the table). A single film is drawn by the option's method.
+ */
+export const drawnModeOf = (o: CheckedOptions): CheckedOptions['mode'] =>
+  o.layers.length > 0
+    ? (drawnMethod({ ...o, nFilm: DEFAULT_SETTINGS.nFilm, nInside: DEFAULT_SETTINGS.nInside }).mode as CheckedOptions['mode'])
+    : o.mode;
 
 /** Each material's metal from its colours, and the colours it was made from. */
 const metals = new WeakMap<MeshPhysicalMaterial, { readonly key: string; readonly medium: SampledIndex }>();
@@ -74,7 +93,10 @@ const baseOf = (m: MeshPhysicalMaterial, o: CheckedOptions): Medium | null => o.
  * three's iridescenceIOR, a number; the base is `base` (a medium), the metal, or three's ior, a number.
  */
 export const filmDefinesOf = (m: MeshPhysicalMaterial, o: CheckedOptions): Record<string, number> =>
-  filmColorDefines({ ...o, nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: baseOf(m, o) ?? DEFAULT_SETTINGS.nInside }, o.quality);
+  filmColorDefines(
+    { ...o, mode: drawnModeOf(o), nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: baseOf(m, o) ?? DEFAULT_SETTINGS.nInside },
+    o.quality,
+  );
 
 /** What of the program the material's metalness and colour decide: whether the lobe is the metallic one, and over an opaque metal. */
 export function metalStateOf(m: MeshPhysicalMaterial, o: CheckedOptions): string {

@@ -1,5 +1,6 @@
 import { type Material, type MeshPhysicalMaterial } from 'three';
 import { type filmColorUniforms } from '../film/filmColor.ts';
+import { type filmStackUniforms } from '../film/filmStack.ts';
 import { type FilmTable } from '../film/filmTable.ts';
 import { filmKeyOf } from './materialFilm.ts';
 import {
@@ -13,7 +14,7 @@ import {
 /** What a material upgraded by `spectralIridescence` holds: its options, its uniforms, its table, its warnings. */
 export interface SpectralFilm {
   options: CheckedOptions;
-  readonly uniforms: ReturnType<typeof filmColorUniforms>;
+  readonly uniforms: ReturnType<typeof filmColorUniforms> & ReturnType<typeof filmStackUniforms>;
   table: FilmTable | null;
   /** the causes already warned about (once each) */
   readonly warned: Set<string>;

@@ -1,5 +1,6 @@
 import { type Material, type MeshPhysicalMaterial, type Object3D, type WebGLRenderer } from 'three';
 import { filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } from '../film/filmColor.ts';
+import { filmStackUniforms } from '../film/filmStack.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { FilmTable, tableKey } from '../film/filmTable.ts';
 import { methodReads } from '../methods/methods.ts';
@@ -34,7 +35,8 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
     o,
     clampWithWarning((name, message) => warnOnce(film, name, message)),
   );
-  if (methodReads(o.mode, 'table')) {
+  if (s.mode !== o.mode) warnOnce(film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
+  if (methodReads(s.mode, 'table')) {
     const table = tables.hold(JSON.stringify({ quality: o.quality, table: tableKey(s) }), film);
     const restores = restoresOf(renderer);
     if (tableRestores.get(table) !== restores) table.invalidate();
@@ -101,7 +103,8 @@ function patch<M extends MeshPhysicalMaterial>(m: M, options: CheckedOptions): M
     setOptions(m, known, options);
     return m as M & SpectralIridescenceProperties;
   }
-  const film: SpectralFilm = { options, uniforms: filmColorUniforms(), table: null, warned: new Set(), drawnMetal: null };
+  const uniforms = { ...filmColorUniforms(), ...filmStackUniforms() };
+  const film: SpectralFilm = { options, uniforms, table: null, warned: new Set(), drawnMetal: null };
   addFilm(m, film);
   hook(m, film);
   if (!(m as { isThinFilmMaterial?: boolean }).isThinFilmMaterial) addMaterialMethods(m);

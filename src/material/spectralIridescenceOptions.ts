@@ -4,6 +4,8 @@ import { POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts'
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
 import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
 import { type Medium, assertMedium, mediumFromJson, parseMediumText } from '../physics/medium.ts';
+import type { FilmLayer } from '../physics/filmLayers.ts';
+import { layersText, parseLayers } from '../physics/layersText.ts';
 import { ParameterError, isInDomain, oneOf } from '../input/validate.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions, filmQualityFrom } from '../settings/filmQuality.ts';
@@ -14,6 +16,9 @@ export type FilmMode = (typeof MODES)[number];
 
 /** A base or a film as given: a medium, or its text (a name is one: `'Ti'`, `'complex:2.6,3.4'`). */
 export type BaseInput = Exclude<Medium, string> | string;
+
+/** A stack of films as given: its layers, or their text (`'(2.35:56.6/1.46:91.1)*8'`, `'1.68:d/1.43:30'`). */
+export type LayersInput = readonly FilmLayer[] | string;
 
 /** An edge tint as given: a three.js Color, a hex number (sRGB, as three reads one) or linear [r, g, b]. */
 export type EdgeTintInput = Color | number | LinearRgb;
@@ -45,6 +50,13 @@ export interface SpectralIridescenceOptions {
    * [0, 1]; null (the default): the base colour itself.
    */
   readonly edgeTint?: EdgeTintInput | null;
+  /**
+   * A stack of films in place of the one film (docs/physics.md#stacks-of-films): its layers from the
+   * outside in, as the demo's `layers` takes them (`'(2.35:56.6/1.46:91.1)*8'`, or
+   * `[{ n: 1.68, thicknessNm: 'd' }, …]`), over the base. A `d` layer takes the glTF iridescence
+   * thickness (iridescenceThicknessRange, iridescenceThicknessMap); empty (the default): the film.
+   */
+  readonly layers?: LayersInput;
   /** the table's layout and bins: any of the knobs, over the demo's defaults */
   readonly quality?: FilmQualityOptions;
 }
@@ -67,14 +79,18 @@ export interface SpectralIridescenceProperties {
   get edgeTint(): LinearRgb | null;
   /** a metal's edge tint (a Color, a hex number, linear [r, g, b]), or null for the base colour */
   set edgeTint(value: EdgeTintInput | null);
+  get layers(): readonly FilmLayer[];
+  /** the layers or their text; empty for the one film */
+  set layers(value: LayersInput);
   get quality(): FilmQuality;
   /** any of the knobs, over the defaults (not over the current ones) */
   set quality(value: FilmQualityOptions);
 }
 
 /** Every option, checked, with its default. */
-export type CheckedOptions = Required<Omit<SpectralIridescenceOptions, 'quality' | 'base' | 'film' | 'edgeTint'>> & {
+export type CheckedOptions = Required<Omit<SpectralIridescenceOptions, 'quality' | 'base' | 'film' | 'edgeTint' | 'layers'>> & {
   readonly quality: FilmQuality;
+  readonly layers: readonly FilmLayer[];
   readonly base: Medium | null;
   readonly film: Medium | null;
   readonly edgeTint: LinearRgb | null;
@@ -89,6 +105,7 @@ export const OPTION_NAMES = [
   'base',
   'film',
   'edgeTint',
+  'layers',
   'quality',
 ] as const satisfies readonly (keyof SpectralIridescenceProperties)[];
 
@@ -111,6 +128,7 @@ export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): 
     base: mediumOf('base', o.base ?? null, 'inside'),
     film: mediumOf('film', o.film ?? null, 'film'),
     edgeTint: edgeTintOf(o.edgeTint ?? null),
+    layers: layersOf(o.layers ?? []),
     quality: filmQualityFrom(o.quality, MATERIAL_FILM_QUALITY),
   };
 }
@@ -123,6 +141,22 @@ function mediumOf(name: 'base' | 'film', given: BaseInput | null, role: 'inside'
     throw new ParameterError(name, `${name}: ${JSON.stringify(given)} is not a medium (a number, a name or complex:n,k)`);
   assertMedium(name, medium, role);
   return medium;
+}
+
+/**
+ * The layers checked as the demo's `layers` is (parseLayers: each layer's medium and thickness, the
+ * count): a text read, a list written as its text and read back (a ParameterError naming `layers`).
+ */
+function layersOf(given: LayersInput): readonly FilmLayer[] {
+  if (given === '' || (Array.isArray(given) && given.length === 0)) return [];
+  if (typeof given === 'string') return parseLayers('layers', given);
+  const isLayer = (l: unknown) => typeof l === 'object' && l !== null && 'n' in l && 'thicknessNm' in l;
+  if (!Array.isArray(given) || !given.every(isLayer))
+    throw new ParameterError(
+      'layers',
+      `layers: ${JSON.stringify(given)} is not allowed; expected a list of { n, thicknessNm } or its text`,
+    );
+  return parseLayers('layers', layersText(given as readonly FilmLayer[]));
 }
 
 const UNIT = { min: 0, max: 1, unit: '' } as const;

@@ -2,10 +2,11 @@ import type { FilmMethod } from './filmMethod.ts';
 
 /**
  * `exact`: the binned spectral integral per fragment (paper eqs 15–18 over the film reflectance of
- * eqs 1–14), the accuracy reference among the methods.
+ * eqs 1–14), the accuracy reference among the methods; a stack of films by the transfer-matrix
+ * recursion per bin (shaders/physics/transferMatrix.glsl).
  */
 export const exactMethod = {
   glsl: 'exactMethod.glsl',
-  reads: ['polarization', 'media', 'spectralBins'],
+  reads: ['polarization', 'media', 'spectralBins', 'layers'],
   offered: true,
 } as const satisfies FilmMethod;

@@ -1,3 +1,4 @@
+import type { FilmLayer } from '../physics/filmLayers.ts';
 import type { Medium } from '../physics/medium.ts';
 import type { MessageKey } from '../i18n/en.ts';
 
@@ -7,14 +8,17 @@ import type { MessageKey } from '../i18n/en.ts';
  * - `media`: the media's defines and knots (a dispersive film or inside);
  * - `spectralBins`: the light's bin weights (a texture) and the bins' defines;
  * - `spectralTransform`: the light's spectral transform (a texture a worker computes) and the series' defines;
- * - `table`: the film table (built on the GPU when a parameter it depends on changes) and its layout.
+ * - `table`: the film table (built on the GPU when a parameter it depends on changes) and its layout;
+ * - `layers`: a stack of films (its layers' ñ per spectral bin and thicknesses, a texture) and its defines.
  */
-export type FilmMethodInput = 'polarization' | 'media' | 'spectralBins' | 'spectralTransform' | 'table';
+export type FilmMethodInput = 'polarization' | 'media' | 'spectralBins' | 'spectralTransform' | 'table' | 'layers';
 
-/** What a method is asked to draw: the film's media (its fallback may depend on them). */
+/** What a method is asked to draw: the film's media or a stack of films (its fallback may depend on them). */
 export interface FilmMethodSettings {
   readonly nFilm: Medium;
   readonly nInside: Medium;
+  /** A stack of films in place of the film of nFilm (none or empty: that single film). */
+  readonly layers?: readonly FilmLayer[];
 }
 
 /** Another method drawn in a method's place, and the message that says why (with its `{marks}`). */

@@ -1,18 +1,22 @@
 import { isDispersiveMedium, mediumText } from '../physics/medium.ts';
 import type { FilmMethod } from './filmMethod.ts';
+import { stackAsTable } from './stackAsTable.ts';
 
 /**
  * `fourier`: the Airy sum as a Fourier series in the optical path per fragment, a few lookups of
  * the light's spectral transform and nothing to build; the binned integral where the film has no
  * real optical path. A dispersive film or inside has no series in the path alone
  * (docs/physics.md#a-dispersive-film): its bins would cost hundreds of times a plain sphere per
- * fragment, while the table is filled from the same bins once per change, so the table is drawn instead.
+ * fragment, while the table is filled from the same bins once per change, so the table is drawn
+ * instead. A stack of films has no closed-form series either: the table is drawn for it too.
  */
 export const fourierMethod = {
   glsl: 'fourierMethod.glsl',
   reads: ['polarization', 'media', 'spectralBins', 'spectralTransform'],
   offered: true,
   drawnInstead: (s) => {
+    const stack = stackAsTable(s, 'fourier');
+    if (stack) return stack;
     const dispersive = isDispersiveMedium(s.nFilm) ? 'nFilm' : isDispersiveMedium(s.nInside) ? 'nInside' : null;
     if (dispersive === null) return null;
     return { method: 'table', notice: 'app.fourierAsTable', values: { name: dispersive, medium: mediumText(s[dispersive]) } };

@@ -1,11 +1,14 @@
 import type { FilmMethod } from './filmMethod.ts';
+import { stackAsTable } from './stackAsTable.ts';
 
 /**
  * `three-iridescence`: three.js's own iridescence (Belcour–Barla, `evalIridescence`), the
- * benchmark's peer: not offered to users.
+ * benchmark's peer: not offered to users. It models one film on a base: a stack of films is drawn
+ * by the table instead.
  */
 export const threeIridescenceMethod = {
   glsl: 'threeIridescenceMethod.glsl',
   reads: ['polarization'],
   offered: false,
+  drawnInstead: (s) => stackAsTable(s, 'three-iridescence'),
 } as const satisfies FilmMethod;

@@ -1,7 +1,9 @@
 /**
  * The example page (materials.html): three.js's iridescence and the spectral film side by side on
  * meshes that are not spheres, under an HDR environment; a view toggle; the ΔE00 between the two
- * at the probed pixel (the scene drawn once with each material, the pixel read back from each).
+ * at the probed pixel (the scene drawn once with each material, the pixel read back from each);
+ * and two stacks of films, a coated lens and nacre, as the reference's colours at two angles, in
+ * the page's language.
  */
 import { arrowKeyStep } from '../app/arrowKeyStep.ts';
 import { AgXToneMapping, EquirectangularReflectionMapping, type Mesh, Vector3, WebGLRenderer } from 'three';
@@ -10,6 +12,8 @@ import { environmentTexture, loadEnvironmentPixels } from '../bubble/environment
 import { TITANIUM_OXIDE_NM, VIEWS, type View, exampleScene } from './materialsScene.ts';
 import { anodizingText } from './anodizingVoltage.ts';
 import { pixelDeltaE00 } from '../physics/pixelDeltaE.ts';
+import { catalogueFor, message } from '../i18n/messages.ts';
+import { SWATCH_ANGLES_DEG, SWATCH_STACKS, coatedLensPercent, stackSwatchRgb8 } from './stackSwatches.ts';
 
 const element = <T extends HTMLElement>(selector: string): T => {
   const e = document.querySelector<T>(selector);
@@ -22,6 +26,7 @@ const readout = element<HTMLParagraphElement>('#readout');
 const mark = element<HTMLDivElement>('#probe-mark');
 const titanium = element<HTMLInputElement>('#titanium');
 const titaniumValue = element<HTMLOutputElement>('#titanium-value');
+const stacks = element<HTMLDivElement>('#stacks');
 
 const renderer = new WebGLRenderer({ canvas, antialias: true });
 renderer.setPixelRatio(Math.min(devicePixelRatio, 2));
@@ -46,6 +51,28 @@ function setTitanium(): void {
   example.setTitaniumOxideNm(Number(titanium.value));
 }
 setTitanium();
+
+/** The coated lens and nacre: each a swatch per angle (SWATCH_ANGLES_DEG) and its name, in the page's language. */
+function showStacks(): void {
+  const cat = catalogueFor(document.documentElement.lang);
+  const { coated, bare } = coatedLensPercent();
+  const names = {
+    arCoating: message(cat, 'materials.coatedLens', { coated: coated.toFixed(2), bare: bare.toFixed(2) }),
+    nacre: cat['materials.nacre'],
+  };
+  const rows = SWATCH_STACKS.map((name) => {
+    const row = document.createElement('p');
+    for (const angle of SWATCH_ANGLES_DEG) {
+      const rgb8 = stackSwatchRgb8(name, angle);
+      const s = swatch(rgb8);
+      s.title = `${angle}° ${hex(rgb8)}`;
+      row.append(s, ' ');
+    }
+    row.append(names[name]);
+    return row;
+  });
+  stacks.replaceChildren(Object.assign(document.createElement('p'), { textContent: cat['materials.stacks'] }), ...rows);
+}
 
 function resize(): void {
   renderer.setSize(innerWidth, innerHeight, false);
@@ -140,6 +167,7 @@ addEventListener('resize', () => {
   update();
 });
 
+showStacks();
 resize();
 loadEnvironmentPixels('park').then(
   () => {

@@ -1,9 +1,9 @@
 import { type Matrix3, type Rgb, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
-import { type MediumStack } from '../physics/medium.ts';
+import { followsField } from '../physics/filmLayers.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { filmXyz } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
+import { type PlottedFilm, plottedXyz } from './plottedFilm.ts';
 
 /** One film colour of the scale. */
 export interface ScaleColor {
@@ -24,18 +24,20 @@ export interface ScaleOptions {
 /**
  * The interference colour scale: the reference colour (eqs 15–18) of the film at one angle for
  * `count` thicknesses from 0 to `maxThicknessNm` — the strip under the plots and the path in
- * the chromaticity diagram.
+ * the chromaticity diagram. For a stack the thickness is the field's: its FIELD_THICKNESS layers
+ * take it (a stack with none is the same colour all along).
  */
 export function interferenceScale(
-  stack: Omit<MediumStack, 'thicknessNm'>,
+  stack: Omit<PlottedFilm, 'thicknessNm'>,
   maxThicknessNm: number,
   count: number,
   o: ScaleOptions,
 ): ScaleColor[] {
   const colors: ScaleColor[] = [];
+  const fixed = stack.layers?.length && !followsField(stack.layers) ? plottedXyz({ ...stack, thicknessNm: 0 }, o) : null;
   for (let i = 0; i < count; i++) {
     const thicknessNm = (maxThicknessNm * i) / (count - 1);
-    const xyz = filmXyz({ ...stack, thicknessNm }, o);
+    const xyz = fixed ?? plottedXyz({ ...stack, thicknessNm }, o);
     const rgb = mapToGamut(applyMatrix3(o.xyzToLinearRgb, xyz), xyz[1]);
     colors.push({ thicknessNm, xyz, rgb8: [encode8(rgb[0]), encode8(rgb[1]), encode8(rgb[2])] });
   }
@@ -44,7 +46,7 @@ export function interferenceScale(
 
 /** A scale's arguments as one object (what the scale's worker is sent). */
 export interface ScaleRequest {
-  readonly stack: Omit<MediumStack, 'thicknessNm'>;
+  readonly stack: Omit<PlottedFilm, 'thicknessNm'>;
   readonly maxThicknessNm: number;
   readonly count: number;
   readonly options: ScaleOptions;

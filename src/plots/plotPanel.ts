@@ -36,6 +36,8 @@ export class PlotPanel {
   readonly element: HTMLElement;
   private readonly values = new Map<string, HTMLElement>();
   private readonly swatch: HTMLElement;
+  /** Says when the plots show a stack of films rather than one film (hidden for the single film). */
+  private readonly stackNote: HTMLElement;
   private readonly spectrum: HTMLCanvasElement;
   private readonly chromaticity: HTMLCanvasElement;
   private readonly strip: HTMLCanvasElement;
@@ -66,6 +68,8 @@ export class PlotPanel {
       this.values.set(f, value);
     }
     this.swatch = el('span', 'tfb-swatch');
+    this.stackNote = el('p', 'tfb-stack-note');
+    this.stackNote.hidden = true;
     const image = (className: string) => {
       const canvas = el('canvas', className) as HTMLCanvasElement;
       canvas.setAttribute('role', 'img');
@@ -107,7 +111,7 @@ export class PlotPanel {
       return button;
     });
     saves.append(...this.saveButtons);
-    this.element.append(readout, this.spectrum, legend, this.tableButton, this.table, this.chromaticity, this.strip, saves);
+    this.element.append(readout, this.stackNote, this.spectrum, legend, this.tableButton, this.table, this.chromaticity, this.strip, saves);
   }
 
   /** Shows or hides the spectrum's table (built anew from the spectrum shown). */
@@ -156,13 +160,14 @@ export class PlotPanel {
     this.shown = null;
     this.saveButtons.forEach((b) => (b.disabled = !reading));
     if (!reading) {
+      this.stackNote.hidden = true;
       for (const f of FIELDS) show(f, '—');
       show('thickness', this.cat['plots.offBubble']);
       for (const canvas of [this.spectrum, this.chromaticity, this.strip]) canvas.setAttribute('aria-label', this.cat['plots.noReading']);
       this.fillTable();
       return;
     }
-    const stack = { nOutside: s.nOutside, nFilm: s.nFilm, nInside: s.nInside, angleDeg: reading.angleDeg };
+    const stack = { nOutside: s.nOutside, nFilm: s.nFilm, nInside: s.nInside, layers: s.layers, angleDeg: reading.angleDeg };
     const toRgb = displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB;
     const c = probeColor({ ...stack, thicknessNm: reading.thicknessNm }, s, toRgb, reading.renderedXyz);
     const fmt = (xs: readonly number[]) => xs.map((v) => v.toFixed(4)).join(' ');
@@ -178,7 +183,10 @@ export class PlotPanel {
     const spectrum = filmSpectrum({ ...stack, thicknessNm: reading.thicknessNm }, s.illuminant, s.polarization);
     drawSpectrumPlot(this.spectrum, spectrum, this.cat['common.wavelength']);
     this.shown = { view: { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg, illuminant: s.illuminant }, spectrum };
-    this.spectrum.setAttribute('aria-label', spectrumLabel(spectrum, this.cat));
+    const stackText = spectrum.layerCount ? message(this.cat, 'plots.stackNote', { count: spectrum.layerCount }) : '';
+    this.stackNote.hidden = !stackText;
+    this.stackNote.textContent = stackText;
+    this.spectrum.setAttribute('aria-label', [stackText, spectrumLabel(spectrum, this.cat)].filter(Boolean).join(' '));
     this.fillTable();
     const maxNm = Math.max(MIN_SCALE_NM, maxFieldThicknessNm(s));
     this.scalePoint = { thicknessNm: reading.thicknessNm, xyz: c.xyz, rgb8: c.rgb8, maxNm };

@@ -8,6 +8,7 @@ const CSS = `
 .tfb-probe-marker { position: absolute; width: 12px; height: 12px; margin: -7px 0 0 -7px; border: 1px solid #fff;
   border-radius: 50%; box-shadow: 0 0 0 1px #000; pointer-events: none; }
 .tfb-legend { display: flex; flex-wrap: wrap; gap: 0 10px; margin-top: -4px; }
+.tfb-stack-note { margin: 4px 0; color: #ffd27f; }
 .tfb-readout dd { overflow-wrap: anywhere; }
 .tfb-spectrum { width: 100%; height: 110px; }
 .tfb-chromaticity { width: 100%; aspect-ratio: 1 / 1; max-height: 240px; }

@@ -1,10 +1,10 @@
 import { type Matrix3, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
 import { deltaE00 } from '../physics/colorDifference.ts';
-import { type MediumStack } from '../physics/medium.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { filmXyz, whiteXyz } from '../physics/spectralIntegration.ts';
+import { whiteXyz } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
+import { type PlottedFilm, plottedXyz } from './plottedFilm.ts';
 
 /** The reference's account of a probed film, and how far the rendered colour is from it. */
 export interface ProbeColor {
@@ -23,9 +23,9 @@ export interface ProbeLight {
   readonly normalization: Normalization;
 }
 
-/** The reference colour (eqs 15–19) of the probed film, compared with what the shader rendered there. */
-export function probeColor(stack: MediumStack, light: ProbeLight, xyzToLinearRgb: Matrix3, renderedXyz: Xyz): ProbeColor {
-  const xyz = filmXyz(stack, light);
+/** The reference colour (eqs 15–19) of the probed film or stack, compared with what the shader rendered there. */
+export function probeColor(film: PlottedFilm, light: ProbeLight, xyzToLinearRgb: Matrix3, renderedXyz: Xyz): ProbeColor {
+  const xyz = plottedXyz(film, light);
   const linearRgb = applyMatrix3(xyzToLinearRgb, xyz);
   const [r, g, b] = mapToGamut(linearRgb, xyz[1]).map(encode8) as [number, number, number];
   const hex = `#${[r, g, b].map((v) => v.toString(16).padStart(2, '0')).join('')}`;

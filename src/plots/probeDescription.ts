@@ -15,14 +15,21 @@ export function colorNameText(name: ColorName, cat: Catalogue): string {
 /**
  * One sentence on the film at the probe, for a screen reader: where the probe is (per cent of
  * the view), the film's thickness and θ_i, and its reference colour (eqs 15–19) in sRGB as a name
- * and a hex; or that the probe is off the bubble (a null reading).
+ * and a hex, and whether the film is a stack of layers; or that the probe is off the bubble (a null reading).
  */
 export function probeDescription(s: FilmSettings, probe: readonly [number, number], reading: ProbeReading | null, cat: Catalogue): string {
   const [x, y] = probe.map((v) => Math.round(v * 100));
   if (!reading) return message(cat, 'bubble.offBubble', { x: x!, y: y! });
-  const stack = { nOutside: s.nOutside, nFilm: s.nFilm, nInside: s.nInside, angleDeg: reading.angleDeg, thicknessNm: reading.thicknessNm };
-  const c = probeColor(stack, s, XYZ_TO_LINEAR_SRGB, reading.renderedXyz);
-  return message(cat, 'bubble.description', {
+  const film = {
+    nOutside: s.nOutside,
+    nFilm: s.nFilm,
+    nInside: s.nInside,
+    layers: s.layers,
+    angleDeg: reading.angleDeg,
+    thicknessNm: reading.thicknessNm,
+  };
+  const c = probeColor(film, s, XYZ_TO_LINEAR_SRGB, reading.renderedXyz);
+  const sentence = message(cat, 'bubble.description', {
     x: x!,
     y: y!,
     thickness: Math.round(reading.thicknessNm),
@@ -30,4 +37,5 @@ export function probeDescription(s: FilmSettings, probe: readonly [number, numbe
     colour: colorNameText(colorName(c.rgb8), cat),
     hex: c.hex,
   });
+  return s.layers.length ? `${sentence} ${message(cat, 'plots.stackNote', { count: s.layers.length })}` : sentence;
 }

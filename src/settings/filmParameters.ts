@@ -3,6 +3,7 @@ import type { FlowSettings } from '../fields/thicknessField.ts';
 import { FLOW_PARAMETERS } from '../physics/flow/flowParameters.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
+import { layersRow } from './layersRow.ts';
 import { type ParameterRow, choiceRow, defaultsOf, flagRow, illuminantRow, mediumRow, numberRow } from './parameterRow.ts';
 
 type Row = ParameterRow<FilmSettings>;
@@ -24,6 +25,7 @@ export const FILM_PARAMETERS: readonly Row[] = [
   numberRow({ key: 'thicknessRangeNm', url: 'thicknessRange' }, FILM_STACK_DOMAIN.thicknessNm, 800, 'film', 1),
   numberRow({ key: 'swirlSpeed', url: 'speed' }, { min: 0, max: 10, unit: '' }, 0.4, 'film', 0.05),
   mediumRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film' }, SOAP_FILM_IN_AIR.nFilm, 'film', 'film'),
+  layersRow({ key: 'layers', url: 'layers', cli: 'layers' }, 'film'),
   numberRow({ key: 'nOutside', url: 'nOutside', cli: 'n-outside' }, FILM_STACK_DOMAIN.nOutside, SOAP_FILM_IN_AIR.nOutside, 'film', 0.01),
   mediumRow({ key: 'nInside', url: 'nInside', cli: 'n-inside' }, SOAP_FILM_IN_AIR.nInside, 'film', 'inside'),
   illuminantRow({ key: 'illuminant', url: 'illuminant', cli: 'illuminant' }, 'D65', 'light and colour'),

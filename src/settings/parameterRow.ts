@@ -31,7 +31,9 @@ export type PanelControl =
   /** A film index: a constant (slider), a named material, or a Cauchy film (text A,B[,C]). */
   | { readonly folder: PanelFolder; readonly kind: 'filmIndex' }
   /** A medium (medium.ts): a film index's controls, a named medium (a metal, an oxide) or a complex constant (text n,k). */
-  | { readonly folder: PanelFolder; readonly kind: 'medium'; readonly role: Exclude<MediumRole, 'outside'> };
+  | { readonly folder: PanelFolder; readonly kind: 'medium'; readonly role: Exclude<MediumRole, 'outside'> }
+  /** A stack of films as text (layersText.ts); while it holds layers, the film's own index is not used. */
+  | { readonly folder: PanelFolder; readonly kind: 'layers' };
 
 export const PANEL_FOLDERS = ['film', 'flow', 'light and colour', 'view'] as const;
 export type PanelFolder = (typeof PANEL_FOLDERS)[number];
@@ -64,6 +66,8 @@ export interface ParameterRow<S> {
   readonly read: (raw: string) => Partial<S> | null;
   /** Why a refused value is wrong, where the row can say more than `expected` (else undefined). */
   readonly problem?: (raw: string) => string | null;
+  /** The longest value the URL reads, where a row takes more than settingsQuery's MAX_VALUE_LENGTH. */
+  readonly maxLength?: number;
   /** The URL value that `read` turns back into `s`'s value. */
   readonly write: (s: S) => string;
   /** How the panel shows it; null: not in the panel. */
@@ -172,7 +176,7 @@ export function flagRow<S, K extends keyof S & string>(n: RowNames<S, K>, defaul
 }
 
 /** A value of a kind of its own written as text: how it reads (a value, or why not) and writes. */
-interface TextKind<V> {
+export interface TextKind<V> {
   readonly expected: string;
   readonly expects: Expectation;
   readonly parse: (raw: string) => { readonly value: V } | { readonly problem: string | null };
@@ -180,7 +184,7 @@ interface TextKind<V> {
   readonly control: (folder: PanelFolder) => PanelControl;
 }
 
-function textRow<S, K extends keyof S & string, V>(
+export function textRow<S, K extends keyof S & string, V>(
   n: RowNames<S, K>,
   defaultValue: S[K] & V,
   folder: PanelFolder | null,

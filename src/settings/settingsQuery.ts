@@ -4,8 +4,11 @@ import { type ParameterRow, expectationText } from './parameterRow.ts';
 import { type Catalogue, EN } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 
-/** Longer values are refused outright (a mangled link, not a number). */
+/** Longer values are refused outright (a mangled link, not a number), unless a row says it takes more (`maxLength`). */
 export const MAX_VALUE_LENGTH = 64;
+
+/** The longest value a row reads. */
+const maxLengthOf = (row: ParameterRow<ViewSettings>): number => row.maxLength ?? MAX_VALUE_LENGTH;
 
 /** The schema's rows by URL name (own keys only: `?constructor=` must not reach Object.prototype). */
 const BY_URL = new Map(VIEW_PARAMETERS.map((row) => [row.url, row]));
@@ -15,13 +18,13 @@ export const parameterNamed = (name: string): ParameterRow<ViewSettings> | undef
 
 /**
  * One parameter's reading of a raw value, as the URL reads it: its settings, or the refusal (what
- * it expects). A value longer than MAX_VALUE_LENGTH is refused outright.
+ * it expects). A value longer than the row's maximum (MAX_VALUE_LENGTH unless it says) is refused outright.
  */
 export function readParameter(
   row: ParameterRow<ViewSettings>,
   raw: string,
 ): { readonly read: Partial<ViewSettings> } | { readonly expected: string } {
-  if (raw.length > MAX_VALUE_LENGTH) return { expected: `${row.expected} of at most ${MAX_VALUE_LENGTH} characters` };
+  if (raw.length > maxLengthOf(row)) return { expected: `${row.expected} of at most ${maxLengthOf(row)} characters` };
   const read = row.read(raw);
   if (read) return { read };
   const problem = row.problem?.(raw);
@@ -43,14 +46,14 @@ export interface Refusal {
  */
 export function refusalText(r: Refusal, cat: Catalogue = EN): string {
   const accepts = expectationText(r.row.expects, cat);
-  const expected = r.tooLong ? message(cat, 'expected.tooLong', { expected: accepts, max: MAX_VALUE_LENGTH }) : accepts;
+  const expected = r.tooLong ? message(cat, 'expected.tooLong', { expected: accepts, max: maxLengthOf(r.row) }) : accepts;
   const values = { name: r.row.url, value: quoted(r.raw), expected, problem: r.problem ?? '' };
   return message(cat, r.problem ? 'refusal.ignoredProblem' : 'refusal.ignored', values);
 }
 
 /** The refusal of `raw` by `row`, or null when the row reads it. */
 function refusalOf(row: ParameterRow<ViewSettings>, raw: string): Refusal | null {
-  if (raw.length > MAX_VALUE_LENGTH) return { row, raw, tooLong: true, problem: null };
+  if (raw.length > maxLengthOf(row)) return { row, raw, tooLong: true, problem: null };
   return row.read(raw) ? null : { row, raw, tooLong: false, problem: row.problem?.(raw) ?? null };
 }
 

@@ -15,6 +15,14 @@ import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 const CONSTANT = { nFilm: 1.33, nInside: 1 } as const;
 const DISPERSIVE = { nFilm: 'water', nInside: 1 } as const;
 const METAL = { nFilm: 1.38, nInside: 'Au' } as const;
+const STACK = {
+  nFilm: 'water',
+  nInside: 1.52,
+  layers: [
+    { n: 2.35, thicknessNm: 56.6 },
+    { n: 1.46, thicknessNm: 'd' },
+  ],
+} as const;
 
 describe('the table pass programs', () => {
   it('the pass sets exactly the uniforms filmTable.glsl declares, includes and all', () => {
@@ -44,5 +52,16 @@ describe('the table pass programs', () => {
     expect(metal).toBe(constant);
     expect(metal.defines).toHaveProperty('TFC_OPAQUE_INSIDE', 1);
     expect(programs.material(DISPERSIVE)).toBe(dispersive);
+  });
+
+  it("a stack of films takes the recursion's program: its layers' defines, not a dispersive film's, and the finer bins", () => {
+    const programs = new TablePassPrograms(DEFAULT_FILM_QUALITY);
+    const stack = programs.material(STACK);
+    expect(stack.defines).toHaveProperty('TFC_FILM_LAYERS', 1);
+    expect(stack.defines).not.toHaveProperty('TFC_DISPERSIVE');
+    expect(stack.defines).toHaveProperty('TFC_SPECTRAL_BINS', DEFAULT_FILM_QUALITY.dispersiveSpectralBins);
+    // The layers are a texture: another stack of as many or more layers takes the same program.
+    expect(programs.key({ ...STACK, layers: [...STACK.layers, ...STACK.layers] })).toBe(programs.key(STACK));
+    expect(programs.material(CONSTANT).defines).not.toHaveProperty('TFC_FILM_LAYERS');
   });
 });

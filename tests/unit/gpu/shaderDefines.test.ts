@@ -15,6 +15,7 @@ import { airySeriesDefines } from '../../../src/film/spectralTransformTexture.ts
 import { AIRY_ROW } from '../../../src/film/airySeriesRows.ts';
 import { DISPERSIVE_BIN } from '../../../src/film/dispersiveRows.ts';
 import { MEDIA_KNOT } from '../../../src/film/filmMedia.ts';
+import { FILM_LAYER } from '../../../src/film/filmStack.ts';
 import { type FieldWidth, texelRecordDefines } from '../../../src/gpu/texelRecord.ts';
 
 const PREFIX = /^TFC_[A-Z0-9_]+$/;
@@ -29,6 +30,7 @@ const RECORDS = [
   { record: AIRY_ROW, texture: 'uAirySeriesRows' },
   { record: DISPERSIVE_BIN, texture: 'uDispersiveRows' },
   { record: MEDIA_KNOT, texture: 'uMediaKnots' },
+  { record: FILM_LAYER, texture: 'uFilmLayers' },
 ] as const;
 
 /** Each record field's define and its width. */

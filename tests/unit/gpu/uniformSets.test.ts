@@ -28,6 +28,19 @@ const MEDIA = [
   { nFilm: 1.38, nInside: 'Au' },
 ] as const;
 
+/** Stacks of films: one that follows the field's thickness over a dispersive inside, one of fixed layers. */
+const STACKS = [
+  {
+    nFilm: 1.33,
+    nInside: 'water',
+    layers: [
+      { n: 1.68, thicknessNm: 'd' },
+      { n: 'TiO2', thicknessNm: 30 },
+    ],
+  },
+  { nFilm: 1.33, nInside: 1.52, layers: [{ n: 1.38, thicknessNm: 99.6 }] },
+] as const;
+
 /** For each configuration of a material: the uniforms its shaders declare there. */
 function declaredByConfiguration(materials: readonly Pick<ShaderMaterial, 'defines' | 'vertexShader' | 'fragmentShader'>[]): string[][] {
   return materials.map((m) => declaredUniforms(preprocessed(`${m.vertexShader}\n${m.fragmentShader}`, m.defines ?? {})));
@@ -64,13 +77,13 @@ describe('uniform sets', () => {
     expect(declaredUniforms(preprocessed(glsl, { M: 0, M_B: 1, M_C: 2, X: '' }))).toEqual(['uA', 'uC']);
   });
 
-  it('the bubble sets what it declares, for every method, field, environment and kind of medium', () => {
+  it('the bubble sets what it declares, for every method, field, environment, kind of medium and stack', () => {
     const materials: ShaderMaterial[] = [];
     let set: string[] = [];
     for (const mode of FILM_METHODS)
       for (const field of FIELDS)
         for (const env of ENVIRONMENTS)
-          for (const media of MEDIA) {
+          for (const media of [...MEDIA, ...STACKS]) {
             const m = createBubbleMaterial({ ...DEFAULT_SETTINGS, mode, field, env, ...media }, DEFAULT_FILM_QUALITY);
             set = Object.keys(m.uniforms);
             materials.push(m);
@@ -83,13 +96,19 @@ describe('uniform sets', () => {
     expectDeclaredAreSet(declaredByConfiguration(materials), Object.keys(materials[0]!.uniforms));
   });
 
-  it("the spectral iridescence adds to three's shader the uniforms it declares there, for every mode and kind of medium", () => {
+  it("the spectral iridescence adds to three's shader the uniforms it declares there, for every mode, kind of medium and stack", () => {
     const threes = declaredUniforms(ShaderLib.physical.fragmentShader);
     const declared: string[][] = [];
     let set: string[] = [];
     for (const mode of MODES)
-      for (const { nFilm, nInside } of MEDIA) {
-        const m = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }), { mode, film: nFilm, base: nInside });
+      for (const media of [...MEDIA, ...STACKS]) {
+        const layers = 'layers' in media ? media.layers : [];
+        const m = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }), {
+          mode,
+          film: media.nFilm,
+          base: media.nInside,
+          layers,
+        });
         const shader = { fragmentShader: ShaderLib.physical.fragmentShader, vertexShader: '', uniforms: {}, defines: {} };
         m.onBeforeCompile(shader as never, null as never);
         // What three defines for a physical material with iridescence, beside the film's own defines.

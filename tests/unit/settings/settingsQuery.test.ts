@@ -152,8 +152,35 @@ describe('URL parameters', () => {
     ]),
   ];
 
+  /** Bad stacks of films and the rule each breaks (layersText.ts); the value's faulty part is quoted once more in the rule. */
+  const LAYERS_ROWS: [string, string, string][] = [
+    ['1.5', 'has no :NM'],
+    ['unobtainium:100', 'not a medium a film takes'],
+    ['9:100', 'n is 9, above 4'],
+    ['1.5:-1', 'is not a number in [0, 20000] nm or d'],
+    ['1.5:20001', 'is not a number in [0, 20000] nm or d'],
+    ['(1.5:1)*0', 'not an integer in [1, 64]'],
+    ['(1.5:1)*65', 'not an integer in [1, 64]'],
+    ['(1.5:1)*64/1.5:1', 'more than 64 layers after repetition'],
+    ['(1.5:1', 'unbalanced parentheses'],
+    ['1.5:1)*2', 'unbalanced parentheses'],
+    ['1.5:1//1.6:1', 'an empty entry'],
+    ['(1.5:1)', 'must be followed by *N'],
+    [ABSURDLY_LONG, 'of at most 8192 characters'],
+  ].map(([v, rule]) => ['layers', v!, rule!]);
+
   it('the table of bad values covers every parameter', () => {
-    expect(new Set(rows.map(([name]) => name))).toEqual(new Set(VIEW_PARAMETERS.map((row) => row.url)));
+    expect(new Set([...rows, ...LAYERS_ROWS].map(([name]) => name))).toEqual(new Set(VIEW_PARAMETERS.map((row) => row.url)));
+  });
+
+  it.each(LAYERS_ROWS)('refuses %s=%j, names the parameter and the rule (%s), keeps the default', (name, value, rule) => {
+    const { settings, errors } = parseSettings(`?${name}=${encodeURIComponent(value)}`);
+    expect(settings).toEqual(DEFAULT_SETTINGS);
+    expect(errors).toHaveLength(1);
+    expect(errors[0]!.startsWith(`${name}=`)).toBe(true);
+    expect(errors[0]).toContain('INDEX:NM entries separated by /');
+    expect(errors[0]).toContain(rule);
+    expect(errors[0]!.length).toBeLessThan(2 * MAX_ECHOED_CHARS + 240);
   });
 
   it.each(rows)('refuses %s=%s, names the parameter and %s, keeps the default', (name, value, range) => {
@@ -192,6 +219,42 @@ describe('settingsToQuery', () => {
     const query = settingsToQuery(settings);
     expect(parseSettings(`?${query}`)).toEqual({ settings, errors: [], refusals: [] });
     expect(settingsToQuery(DEFAULT_SETTINGS)).toBe('');
+  });
+});
+
+describe('the layers parameter', () => {
+  it('is empty by default (the single film of nFilm), and reads an absent or empty value as that', () => {
+    expect(DEFAULT_SETTINGS.layers).toEqual([]);
+    for (const query of ['?layers=', '?layers=%20%20'])
+      expect(parseSettings(query), query).toEqual({ settings: DEFAULT_SETTINGS, errors: [], refusals: [] });
+    expect(settingsToQuery({ ...DEFAULT_SETTINGS, layers: [] })).toBe('');
+  });
+
+  it('reads a stack with groups and the field thickness d, and round-trips it through the URL', () => {
+    for (const [text, count] of [
+      ['(2.35:56.6/1.46:91.1)*8', 16],
+      ['1.38:d/(TiO2:50/SiO2:90)*3', 7],
+      ['water:d/cauchy:1.45,6000:120/complex:0.2,3.4:10', 3],
+      [Array.from({ length: 64 }, (_, i) => `cauchy:1.45,${i * 97 + 0.123456789},-1.5e7:${i * 311.11}`).join('/'), 64],
+    ] as const) {
+      const read = parseSettings(`?layers=${encodeURIComponent(text)}&nInside=Au`);
+      expect(read.errors, text).toEqual([]);
+      expect(read.settings.layers, text).toHaveLength(count);
+      const query = settingsToQuery(read.settings);
+      expect(parseSettings(`?${query}`), text).toEqual({ ...read, refusals: [] });
+    }
+    expect(parseSettings('?layers=1.38:d/(TiO2:50/SiO2:90)*3').settings.layers.slice(0, 3)).toEqual([
+      { n: 1.38, thicknessNm: 'd' },
+      { n: 'TiO2', thicknessNm: 50 },
+      { n: 'SiO2', thicknessNm: 90 },
+    ]);
+  });
+
+  it('keeps the last good stack of a repeated parameter, and reports the bad one', () => {
+    const { settings, errors } = parseSettings('?layers=1.5:100&layers=(1.5:1');
+    expect(settings.layers).toEqual([{ n: 1.5, thicknessNm: 100 }]);
+    expect(errors).toHaveLength(1);
+    expect(errors[0]).toMatch(/^layers="\(1\.5:1" ignored: .*unbalanced parentheses/);
   });
 });
 

@@ -1,0 +1,123 @@
+import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
+import { SharedTextures } from '../gpu/sharedTextures.ts';
+import { packTexelRecord, texelRecord, texelRecordDefines } from '../gpu/texelRecord.ts';
+import { asComplex } from '../physics/complex.ts';
+import { type FilmLayer, FIELD_THICKNESS, LAYERS_DOMAIN, followsField } from '../physics/filmLayers.ts';
+import { type Medium, mediumIndexAt } from '../physics/medium.ts';
+import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
+import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
+import type { FilmSettings } from '../settings/filmSettings.ts';
+
+/**
+ * A stack of films on the GPU (docs/gpu.md#stacks-of-films): shaders/physics/transferMatrix.glsl
+ * reads each layer's ñ at every spectral bin's centre, its thickness and whether it takes the
+ * thickness field's value from one data texture, `uFilmLayers`, a row per layer from the outside
+ * in and a last row for the inside, a column per bin (ñ in float64 from src/physics/medium.ts).
+ */
+
+/** What carries a stack: `layers` (none or empty: the single film of nFilm). */
+export interface StackedSettings {
+  readonly layers?: readonly FilmLayer[];
+}
+
+/** The texel of a layer (or the inside) at a bin, read by these names in transferMatrix.glsl. */
+export const FILM_LAYER = texelRecord('TFC_FILM_LAYER', { N: 2, THICKNESS_NM: 1, FOLLOWS_FIELD: 1 });
+
+/** Whether the settings draw a stack rather than the single film. */
+export const isStacked = (s: StackedSettings): boolean => (s.layers?.length ?? 0) > 0;
+
+/** The stack's layers (none for a single film). */
+export const stackLayers = (s: StackedSettings): readonly FilmLayer[] => s.layers ?? [];
+
+/**
+ * The spectral bins a film's integral takes. A stack has no closed-form mean over a bin's phase
+ * window, so each bin is sampled at its centre, and the bins are the dispersive film's finer count
+ * (docs/gpu.md#stacks-of-films gives the figures that chose it); a single film: spectralBinsFor.
+ */
+export const filmSpectralBins = (s: StackedSettings & Pick<FilmSettings, 'nFilm' | 'nInside'>, q: FilmQuality, constant: number): number =>
+  isStacked(s) ? q.dispersiveSpectralBins : spectralBinsFor(s, q, constant);
+
+/** The defines of transferMatrix.glsl for a stack (none for a single film). */
+export const filmStackDefines = (s: StackedSettings): Record<string, number> =>
+  isStacked(s) ? { TFC_FILM_LAYERS: 1, TFC_FILM_LAYERS_MAX: LAYERS_DOMAIN.count.max, ...texelRecordDefines(FILM_LAYER) } : {};
+
+/** The uniforms transferMatrix.glsl declares: the stack's texture and its layer count. */
+export const filmStackUniforms = () => ({
+  uFilmLayers: { value: null as DataTexture | null },
+  uFilmLayerCount: { value: 0 },
+});
+
+interface StackKey {
+  readonly layers: readonly FilmLayer[];
+  readonly nInside: Medium;
+  readonly bins: number;
+}
+
+const nk = (m: Medium, lambdaNm: number): [number, number] => {
+  const z = asComplex(mediumIndexAt(m, lambdaNm));
+  return [z.re, z.im];
+};
+
+/** The texels of a stack: row l < layers the layer l (outside in), the last row the inside; column b the bin b's centre. */
+export function filmStackTexels({ layers, nInside, bins }: StackKey): Float32Array {
+  const data = new Float32Array(FILM_LAYER.floats * bins * (layers.length + 1));
+  const width = LAMBDA_SPAN_NM / bins;
+  const rows: readonly FilmLayer[] = [...layers, { n: nInside, thicknessNm: 0 }];
+  rows.forEach((layer, row) => {
+    const field = layer.thicknessNm === FIELD_THICKNESS;
+    for (let b = 0; b < bins; b++)
+      packTexelRecord(FILM_LAYER, data, row * bins + b, {
+        N: nk(layer.n, LAMBDA_MIN_NM + (b + 0.5) * width),
+        THICKNESS_NM: field ? 0 : layer.thicknessNm,
+        FOLLOWS_FIELD: field ? 1 : 0,
+      });
+  });
+  return data;
+}
+
+const shared = new SharedTextures((key) => {
+  const stack = JSON.parse(key) as StackKey;
+  const texture = new DataTexture(filmStackTexels(stack), FILM_LAYER.texels * stack.bins, stack.layers.length + 1, RGBAFormat, FloatType);
+  texture.minFilter = texture.magFilter = NearestFilter;
+  texture.needsUpdate = true;
+  return texture;
+});
+
+/** Points transferMatrix.glsl's uniforms at the stack of `s` over `bins` bins, held for `holder` (shared by the holders of one stack). */
+export function updateFilmStackUniforms(
+  u: Record<string, { value: unknown }>,
+  s: StackedSettings & Pick<FilmSettings, 'nInside'>,
+  bins: number,
+  holder: object,
+): void {
+  if (!isStacked(s)) {
+    releaseFilmStackTexture(holder);
+    u.uFilmLayers!.value = null;
+    u.uFilmLayerCount!.value = 0;
+    return;
+  }
+  const layers = stackLayers(s);
+  u.uFilmLayers!.value = shared.hold(JSON.stringify({ layers, nInside: s.nInside, bins } satisfies StackKey), holder);
+  u.uFilmLayerCount!.value = layers.length;
+}
+
+/** `holder` needs no stack texture any more. */
+export const releaseFilmStackTexture = (holder: object): void => shared.release(holder);
+
+/**
+ * The real index whose fringes in the field's thickness a stack's table resolves: the sum over its
+ * FIELD_THICKNESS layers of each one's largest real index at the bins (the phase turns by all of
+ * them as the field's thickness grows); null for a stack that does not follow the field.
+ */
+export function stackFieldIndex(layers: readonly FilmLayer[], bins: number): number | null {
+  if (!followsField(layers)) return null;
+  const width = LAMBDA_SPAN_NM / bins;
+  let sum = 0;
+  for (const layer of layers) {
+    if (layer.thicknessNm !== FIELD_THICKNESS) continue;
+    let max = 0;
+    for (let b = 0; b < bins; b++) max = Math.max(max, nk(layer.n, LAMBDA_MIN_NM + (b + 0.5) * width)[0]);
+    sum += max;
+  }
+  return sum;
+}

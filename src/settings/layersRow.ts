@@ -1,0 +1,43 @@
+import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN } from '../physics/filmLayers.ts';
+import { LAYERS_EXPECTED, layersText, readLayers } from '../physics/layersText.ts';
+import { type Expectation, type PanelFolder, type ParameterRow, textRow } from './parameterRow.ts';
+
+/**
+ * The longest layers text the URL reads: every one of LAYERS_DOMAIN.count.max layers written out
+ * with a Cauchy film's three coefficients and a thickness, each number at full precision, fits.
+ */
+export const LAYERS_MAX_CHARS = 8192;
+
+/** What a layers text accepts, as a catalogue's values (the catalogue's test holds its English to LAYERS_EXPECTED). */
+const EXPECTS: Expectation = {
+  key: 'expected.layers',
+  values: {
+    ...LAYERS_DOMAIN.thicknessNm,
+    field: FIELD_THICKNESS,
+    nMin: LAYERS_DOMAIN.repeat.min,
+    nMax: LAYERS_DOMAIN.repeat.max,
+    count: LAYERS_DOMAIN.count.max,
+  },
+};
+
+/**
+ * A stack of films (layersText.ts): `INDEX:THICKNESS` entries separated by `/`, groups `(…)*N`.
+ * The empty text is the empty list, the default: no stack, the single film of the row `nFilm`.
+ */
+export const layersRow = <S, K extends keyof S & string>(
+  n: { readonly key: K; readonly url: string; readonly cli?: string },
+  folder: PanelFolder | null,
+): ParameterRow<S> => ({
+  ...textRow<S, K, readonly FilmLayer[]>(n, [] as S[K] & readonly FilmLayer[], folder, {
+    expected: LAYERS_EXPECTED,
+    expects: EXPECTS,
+    parse: (raw) => {
+      if (raw.trim() === '') return { value: [] };
+      const reading = readLayers(raw);
+      return 'layers' in reading ? { value: reading.layers } : reading;
+    },
+    text: layersText,
+    control: (folder) => ({ folder, kind: 'layers' }),
+  }),
+  maxLength: LAYERS_MAX_CHARS,
+});
