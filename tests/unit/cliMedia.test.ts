@@ -5,9 +5,8 @@
  * Sarkar's TiO2 film at 550 nm) and the real-index output the tool already gives (k = 0).
  */
 import { describe, expect, it } from 'vitest';
-import { runColorCommand } from '../../src/cli/runColorCommand.ts';
-import { ParameterError } from '../../src/input/validate.ts';
 import { ALGEBRAIC_TOL, GOLD_GOLDEN_TOL } from '../tolerances.ts';
+import { colorTool } from './cli/colorTool.ts';
 
 type Index = number | { n: number; k: number };
 interface Output {
@@ -27,18 +26,7 @@ const files: Record<string, string> = {
   'unknown-name': '[{ "id": "gold", "nInside": "gold" }]',
   'bad-pair': '[{ "id": "pair", "nInside": { "complex": [1] } }]',
 };
-const read = (path: string): string => {
-  const text = files[path];
-  if (text === undefined) throw new ParameterError('--cases', `--cases: ${path} cannot be read`);
-  return text;
-};
-const run = (...args: string[]) => runColorCommand(args, read);
-const ok = (...args: string[]): Output[] => {
-  const r = run(...args);
-  expect(r.stderr).toBe('');
-  expect(r.exitCode).toBe(0);
-  return JSON.parse(r.stdout) as Output[];
-};
+const { run, ok } = colorTool<Output>(files);
 const bareR = (n: number, k: number) => ((n - 1) ** 2 + k * k) / ((n + 1) ** 2 + k * k);
 
 describe('color CLI, absorbing media', () => {

@@ -6,9 +6,8 @@
  * transfer matrix of one layer is eq (13)).
  */
 import { describe, expect, it } from 'vitest';
-import { runColorCommand } from '../../../src/cli/runColorCommand.ts';
-import { ParameterError } from '../../../src/input/validate.ts';
 import { ALGEBRAIC_TOL, TMM_TOL } from '../../tolerances.ts';
+import { colorTool } from './colorTool.ts';
 
 type Index = number | { n: number; k: number };
 interface Output {
@@ -56,18 +55,7 @@ const files: Record<string, string> = {
     },
   ]),
 };
-const read = (path: string): string => {
-  const text = files[path];
-  if (text === undefined) throw new ParameterError('--cases', `--cases: ${path} cannot be read`);
-  return text;
-};
-const run = (...args: string[]) => runColorCommand(args, read);
-const ok = (...args: string[]): Output[] => {
-  const r = run(...args);
-  expect(r.stderr).toBe('');
-  expect(r.exitCode).toBe(0);
-  return JSON.parse(r.stdout) as Output[];
-};
+const { run, ok } = colorTool<Output>(files);
 const refused = (args: string[], ...words: string[]) => {
   const r = run(...args);
   expect(r.exitCode, args.join(' ')).toBe(2);

@@ -8,23 +8,13 @@ import { describe, expect, it, vi } from 'vitest';
 import { spectralIridescence } from '../../../src/material/spectralIridescence.ts';
 import { isSpectralIridescence } from '../../../src/material/spectralFilm.ts';
 import { ThinFilmMaterial } from '../../../src/material/thinFilmMaterial.ts';
-import { ParameterError } from '../../../src/input/validate.ts';
+import { parameterOf } from './parameterOf.ts';
 import { DEFAULT_FILM_QUALITY, filmQualityFrom } from '../../../src/settings/filmQuality.ts';
 
 /** What three hands onBeforeCompile: the physical material's shaders, uniforms and defines. */
 const shaderObject = () => ({ fragmentShader: ShaderLib.physical.fragmentShader, vertexShader: '', uniforms: {}, defines: {} });
 /** Whether a compiled fragment shader holds the spectral film in place of three's. */
 const isSpectral = (fragment: string) => fragment.includes('tfcSpectralIridescence( material.iridescenceThickness');
-
-const parameterOf = (f: () => unknown): string => {
-  try {
-    f();
-  } catch (e) {
-    if (e instanceof ParameterError) return e.parameter;
-    throw e;
-  }
-  return 'accepted';
-};
 
 describe("the user's hooks", () => {
   it("calls the user's onBeforeCompile first, set before or after the upgrade, and keys the program by it", () => {

@@ -6,7 +6,7 @@
 import { MaterialLoader, ShaderLib } from 'three';
 import { describe, expect, it, vi } from 'vitest';
 import { ThinFilmMaterial } from '../../../src/material/thinFilmMaterial.ts';
-import { ParameterError } from '../../../src/input/validate.ts';
+import { parameterOf } from './parameterOf.ts';
 import { enumCode } from '../../../src/gpu/enumDefines.ts';
 import { FILM_METHODS } from '../../../src/methods/methods.ts';
 
@@ -16,16 +16,6 @@ const NACRE = [
   { n: 1.68, thicknessNm: 'd' },
   { n: 1.43, thicknessNm: 30 },
 ] as const;
-
-const parameterOf = (f: () => unknown): string => {
-  try {
-    f();
-  } catch (e) {
-    if (e instanceof ParameterError) return e.parameter;
-    throw e;
-  }
-  return 'accepted';
-};
 
 describe('a stack of films in the spectral material', () => {
   it('takes its layers as a text or a list, checked as the demo takes them, and none by default', () => {
