@@ -22,6 +22,7 @@ export const LATIN_IN_JAPANESE: ReadonlySet<string> = new Set([
   'cauchy', // the URL's and attribute's keyword for a Cauchy film
   'complex', // the URL's and attribute's keyword for a complex index n,k
   'TiO', // TiO₂, titanium dioxide's formula
+  'SiO', // SiO₂, silica's formula
 ]);
 
 /** The Latin words of `text` that are neither symbols (one or two letters) nor in LATIN_IN_JAPANESE. */
