@@ -280,3 +280,11 @@ export const TMM_SPECTRUM_DE00 = 0.02;
  * just-noticeable difference (~1).
  */
 export const MAX_DELTA_E00_STACK = 0.1;
+
+/**
+ * A stack of films' centre pixel against the transfer matrix's 8-bit colour: MAX_CODE_DIFFERENCE's
+ * rounding, float32 and the table's interpolation, plus a code for the GPU's one sample in each of
+ * 150 bins where the reference samples by its adaptive rule (MAX_DELTA_E00_STACK's share; measured 0
+ * codes on tests/e2e/centerColor.spec.ts's stacks).
+ */
+export const MAX_CODE_DIFFERENCE_STACK = 3;

@@ -195,9 +195,10 @@ export const EN = {
   'plots.stackNote': 'A stack of {count} layers, not one film: R(λ) and the colour are the whole stack’s (the transfer matrix).',
   'diagram.oneFilm':
     'This diagram draws one film. The bubble it follows shows a stack of {count} layers: the stack’s R(λ) and colour are in that bubble’s plots.',
-  'materials.stacks': 'Stacks of films, the reference colour at normal incidence and at 45°:',
+  'materials.stacks':
+    'Middle: stacks of films (the option layers; three.js has none, so they are spectral in every view). Each swatch is the reference colour at normal incidence and at 45°:',
   'materials.coatedLens': 'a coated lens (one quarter wave of MgF₂ on glass, R {coated} % at 550 nm, bare glass {bare} %)',
-  'materials.nacre': 'nacre (10 aragonite tablets between organic sheets)',
+  'materials.nacre': 'a shell lined with nacre (10 aragonite tablets between organic sheets)',
   'diagram.label': 'Thin-film interference diagram',
   'diagram.controls': 'Settings',
   'diagram.figureTitle': 'The principle of thin-film interference: the reflected beams',

@@ -195,10 +195,10 @@ export const JA: Catalogue = {
   'plots.stackNote': '1 枚の薄膜ではなく {count} 層の多層膜：反射率 R(λ) と色は多層膜全体のもの（転送行列法による）。',
   'diagram.oneFilm':
     'この図は 1 枚の薄膜だけを描く。連動しているシャボン玉は {count} 層の多層膜を表示している：多層膜の反射率 R(λ) と色はそのシャボン玉のグラフを見ること。',
-  'materials.stacks': '多層膜（垂直入射と 45° での基準色）：',
+  'materials.stacks': '中央：多層膜。左側の材質には多層膜がないため、どの表示でもスペクトル計算で描く。色見本は垂直入射と 45° での基準色：',
   'materials.coatedLens':
     '反射防止膜つきのレンズ（ガラスの上にフッ化マグネシウムの 4 分の 1 波長膜 1 層。波長 550 nm での反射率 {coated} %、コートなしのガラスは {bare} %）',
-  'materials.nacre': '真珠層（アラゴナイトの板 10 枚と有機質の薄い層が交互に重なる）',
+  'materials.nacre': '内側が真珠層の貝殻（アラゴナイトの板 10 枚と有機質の薄い層が交互に重なる）',
   'diagram.label': '薄膜干渉の図',
   'diagram.controls': '設定',
   'diagram.figureTitle': '薄膜干渉の原理：反射光',

@@ -2,8 +2,8 @@
  * The example page (materials.html): three.js's iridescence and the spectral film side by side on
  * meshes that are not spheres, under an HDR environment; a view toggle; the ΔE00 between the two
  * at the probed pixel (the scene drawn once with each material, the pixel read back from each);
- * and two stacks of films, a coated lens and nacre, as the reference's colours at two angles, in
- * the page's language.
+ * and two stacks of films in the scene, a coated lens and a nacre shell, named with the
+ * reference's colours at two angles, in the page's language.
  */
 import { arrowKeyStep } from '../app/arrowKeyStep.ts';
 import { AgXToneMapping, EquirectangularReflectionMapping, type Mesh, Vector3, WebGLRenderer } from 'three';
@@ -52,7 +52,7 @@ function setTitanium(): void {
 }
 setTitanium();
 
-/** The coated lens and nacre: each a swatch per angle (SWATCH_ANGLES_DEG) and its name, in the page's language. */
+/** The scene's coated lens and nacre shell: each a swatch per angle (SWATCH_ANGLES_DEG) and its name, in the page's language. */
 function showStacks(): void {
   const cat = catalogueFor(document.documentElement.lang);
   const { coated, bare } = coatedLensPercent();

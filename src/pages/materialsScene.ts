@@ -11,6 +11,7 @@ import {
   type MeshPhysicalMaterialParameters,
   PerspectiveCamera,
   Scene,
+  SphereGeometry,
   TorusKnotGeometry,
   Vector2,
 } from 'three';
@@ -19,7 +20,9 @@ import { XYZ_TO_LINEAR_SRGB, applyMatrix3 } from '../physics/colorConversions.ts
 import { type NamedMedium } from '../physics/namedMedia.ts';
 import { transparentIndexAt } from '../physics/medium.ts';
 import { filmXyz } from '../physics/spectralIntegration.ts';
+import { STACK_PRESETS } from '../physics/stackPresets.ts';
 import { SODIUM_D_NM } from '../film/filmMedia.ts';
+import { SWATCH_STACKS } from './stackSwatches.ts';
 
 /** Which iridescence each side shows: three.js's on the left and ours on the right, or one of them on both. */
 export const VIEWS = ['side by side', 'three.js', 'spectral'] as const;
@@ -128,6 +131,43 @@ function metalMaterials(map: DataTexture, fixed: DataTexture) {
   });
 }
 
+type Triple = readonly [number, number, number];
+
+/**
+ * The stacks of films, in a column between the knots below the coins: each a named object of the
+ * spectral material with the preset's `layers` over its inside (`base`). A coated lens is a
+ * flattened sphere, a lens's front element seen in its dark barrel; nacre lines the inside of a
+ * shell, a half sphere open to the camera. three.js's iridescence has no stack of films: they are
+ * spectral in every view.
+ */
+const STACK_OBJECTS: Readonly<
+  Record<(typeof SWATCH_STACKS)[number], { name: string; shape: () => SphereGeometry; y: number; rotation: Triple; scale: Triple }>
+> = {
+  arCoating: { name: 'coated lens', shape: () => new SphereGeometry(0.26, 64, 32), y: 0.32, rotation: [0.2, -0.55, 0], scale: [1, 1, 0.3] },
+  nacre: {
+    name: 'nacre shell',
+    shape: () => new SphereGeometry(0.3, 64, 24, 0, 2 * Math.PI, 0, Math.PI / 2),
+    y: -0.72,
+    rotation: [-Math.PI + 0.85, 0, 0.3],
+    scale: [1.15, 0.45, 0.85],
+  },
+};
+
+/** Each stack's object: a black glossy surface whose reflection is all the stack's. */
+function stackMeshes(): Mesh<SphereGeometry, MeshPhysicalMaterial>[] {
+  return SWATCH_STACKS.map((preset) => {
+    const { layers, nInside } = STACK_PRESETS[preset];
+    const o = STACK_OBJECTS[preset];
+    const surface = new MeshPhysicalMaterial({ color: 0x000000, roughness: 0.08, metalness: 0, iridescence: 1, side: DoubleSide });
+    const mesh = new Mesh(o.shape(), spectralIridescence(surface, { layers, base: nInside }));
+    mesh.name = o.name;
+    mesh.position.set(0, o.y, 0.5);
+    mesh.rotation.set(...o.rotation);
+    mesh.scale.set(...o.scale);
+    return mesh;
+  });
+}
+
 export interface ExampleScene {
   readonly scene: Scene;
   readonly camera: PerspectiveCamera;
@@ -140,7 +180,8 @@ export interface ExampleScene {
 
 /**
  * The example scene: the three shapes twice, left and right of the centre, one material each
- * for three.js's iridescence and for the spectral film, with the same parameters.
+ * for three.js's iridescence and for the spectral film, with the same parameters; between them
+ * the films on metals (METALS) and the stacks of films (STACK_OBJECTS).
  */
 export function exampleScene(aspect: number): ExampleScene {
   const map = thicknessMap();
@@ -174,6 +215,8 @@ export function exampleScene(aspect: number): ExampleScene {
     scene.add(mesh);
     return mesh;
   });
+  const stacks = stackMeshes();
+  scene.add(...stacks);
   const camera = new PerspectiveCamera(38, aspect, 0.1, 50);
   camera.position.set(0, 0.25, 5.2);
   camera.lookAt(0, 0, 0);
@@ -192,7 +235,7 @@ export function exampleScene(aspect: number): ExampleScene {
     },
     dispose() {
       scene.traverse((o) => o instanceof Mesh && (o.geometry as BufferGeometry).dispose());
-      for (const m of [threes, ours, ...metals.flatMap((m) => [m.threes, m.ours])]) m.dispose();
+      for (const m of [threes, ours, ...metals.flatMap((m) => [m.threes, m.ours]), ...stacks.map((s) => s.material)]) m.dispose();
       map.dispose();
       fixed.dispose();
     },

@@ -5,7 +5,7 @@ import { transparentIndexAt } from '../physics/medium.ts';
 import { DESIGN_NM, STACK_PRESETS, type StackPresetName } from '../physics/stackPresets.ts';
 import { type LayerStack, layersReflectance } from '../physics/transferMatrix.ts';
 
-/** The stacks the materials page shows as swatches, and the angles of incidence of each swatch. */
+/** The stacks the materials page shows, in its scene and as swatches, and the angles of incidence of each swatch. */
 export const SWATCH_STACKS = ['arCoating', 'nacre'] as const satisfies readonly StackPresetName[];
 export const SWATCH_ANGLES_DEG = [0, 45] as const;
 

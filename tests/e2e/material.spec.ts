@@ -106,6 +106,25 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
   await page.goto('/materials.html');
   await expect(page.locator('body')).toHaveAttribute('data-frames', /\d+/);
   await expect(page.locator('#readout')).toHaveText(/three\.js\s+#[0-9a-f]{6}, spectral\s+#[0-9a-f]{6}; ΔE00 \d+\.\d/);
+  // Its stacks of films, a coated lens and a nacre shell, drawn by the spectral material with `layers`
+  // in every view (three.js has no stack): the stack's table pass compiled without a diagnostic (any
+  // warning would also be among `problems`); the lens reflects little (R ≈ 1 %: measured #020200
+  // against the bright park behind it), the shell its table's colour (an empty table draws black).
+  const stacks = await page.evaluate(() => {
+    const materials = window.materialsPage!;
+    const pixels = (view: 'three.js' | 'spectral') => {
+      materials.draw(view);
+      return ['coated lens', 'nacre shell'].map((name) => materials.pixelOf(name));
+    };
+    const [threes, ours] = [pixels('three.js'), pixels('spectral')];
+    const passes = materials.renderer.info.programs!.filter((p) => p.cacheKey.includes('TFC_FILM_LAYERS'));
+    return { threes, ours, passes: passes.map((p) => (p as { diagnostics?: unknown }).diagnostics ?? null) };
+  });
+  expect(stacks.threes).toEqual(stacks.ours);
+  const [lens, shell] = stacks.ours;
+  expect(Math.max(...lens!), `coated lens ${lens}`).toBeLessThanOrEqual(16);
+  expect(Math.max(...shell!), `nacre shell ${shell}`).toBeGreaterThan(40);
+  expect(stacks.passes).toEqual([null]);
   expect(problems).toEqual([]);
 });
 
