@@ -1,8 +1,11 @@
 /**
  * `npm run docs`: writes the generated blocks of the docs: the README's URL parameters (from the
- * schema), and the layers of src/ in docs/architecture.md and src/README.md (from SOURCE_LAYERS).
+ * schema), the layers of src/ in docs/architecture.md and src/README.md (from SOURCE_LAYERS), and
+ * the flowing film's cost in docs/flow.md (from its passes, counted as the app draws them). The
+ * cost's module reads the shaders through Vite's `import.meta.glob`, so it runs in Vite's module runner.
  */
 import { readFileSync, writeFileSync } from 'node:fs';
+import { runnerImport } from 'vite';
 import { layerDiagramMermaid, layerListMarkdown } from './docs/layersMarkdown.ts';
 import { urlTableMarkdown } from './docs/urlTable.ts';
 import { withBlock } from './docs/withBlock.ts';
@@ -15,3 +18,8 @@ const writeBlock = (path: string, name: string, content: string): void => {
 writeBlock('README.md', 'url-table', urlTableMarkdown());
 writeBlock('docs/architecture.md', 'layer-diagram', layerDiagramMermaid());
 writeBlock('src/README.md', 'layer-list', layerListMarkdown());
+const flowCost = await runnerImport<typeof import('./docs/flowCost.ts')>(new URL('./docs/flowCost.ts', import.meta.url).pathname, {
+  configFile: false,
+  logLevel: 'error',
+});
+writeBlock('docs/flow.md', 'flow-cost', flowCost.module.flowCostMarkdown());

@@ -19,7 +19,8 @@ import { spectralIridescence } from '../../../src/material/spectralIridescence.t
 import { MODES } from '../../../src/settings/filmSettings.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
-import { declaredUniforms, preprocessed } from './glslUniforms.ts';
+import { preprocessed } from '../../../scripts/harness/glslPreprocessor.ts';
+import { declaredUniforms } from './glslUniforms.ts';
 
 /** A constant film, a dispersive one, a film on a metal: the media pick what a shader reads. */
 const MEDIA = [
