@@ -20,6 +20,14 @@ const CHANGES = 10_000;
 /** A frame is drawn after every this many changes (40 frames: table rebuilds, exact frames, plots). */
 const CHANGES_PER_FRAME = 250;
 const CYCLES = 10;
+/**
+ * ANGLE's warnings when a program is deleted while its parallel link (KHR_parallel_shader_compile,
+ * llvmpipe) is still running, as a bubble removed mid-compile deletes its pending programs. They
+ * come from the browser's own polling of the link: with deleteProgram and getProgramParameter
+ * wrapped, no call of the page's touches a deleted program in a run that shows them. Every other
+ * warning or error still fails the test, and the GPU object counts still hold.
+ */
+const DELETED_MID_LINK = /^warning: .*glGetProgramiv: (Program object expected|Expected a program name, but found a shader name)\.$/;
 
 const SIZE = 'style="display: inline-block; width: 120px; height: 90px"';
 
@@ -155,5 +163,5 @@ test('10 000 panel changes and 10 insert/remove cycles leave GPU objects, heap a
   );
   expect(end).toEqual(start);
   expect(endHeap - startHeap).toBeLessThan(HEAP_GROWTH_BOUND_MB);
-  expect(problems).toEqual([]);
+  expect(problems.filter((p) => !DELETED_MID_LINK.test(p))).toEqual([]);
 });
