@@ -1,10 +1,11 @@
 /**
- * `npm run --silent render -- [view options] --out FILE.png …`: pictures of the demo as PNG files,
- * rendered in headless Chromium (see src/cli/renderUsage.ts or `--help`). Exit status: 0 done,
- * 1 a render failed, 2 bad input (nothing written), 3 no Chromium.
+ * `npm run --silent render -- [view options] --out FILE.png …`: pictures of the demo as PNG files
+ * (or, with `--time-lapse`, one animation of it at many film times), rendered in headless Chromium
+ * (see src/cli/renderUsage.ts or `--help`). Exit status: 0 done, 1 a render failed, 2 bad input
+ * (nothing written), 3 no Chromium.
  */
 import { readCasesFile, outFolderProblem, writeFileAtomically } from '../src/cli/commandFiles.ts';
-import { type RenderView, parseRenderCases, parseRenderCommandLine } from '../src/cli/renderOptions.ts';
+import { type RenderCommand, type RenderView, parseRenderCases, parseRenderCommandLine } from '../src/cli/renderOptions.ts';
 import { RENDER_USAGE } from '../src/cli/renderUsage.ts';
 import { ParameterError } from '../src/input/validate.ts';
 import { findChromium } from './chromium.ts';
@@ -15,11 +16,21 @@ function stop(exitCode: 1 | 2 | 3, message: string): never {
   process.exit(exitCode);
 }
 
-/** The views asked for, every one checked (and every file's folder found) before any is rendered. */
-function viewsAskedFor(): readonly RenderView[] | 'help' {
+type TimeLapse = Extract<RenderCommand, { kind: 'timeLapse' }>;
+
+/**
+ * The views asked for, or a time-lapse, every one checked (and every file's folder found) before
+ * any is rendered.
+ */
+function renderAskedFor(): readonly RenderView[] | TimeLapse | 'help' {
   try {
     const command = parseRenderCommandLine(process.argv.slice(2));
     if (command.kind === 'help') return 'help';
+    if (command.kind === 'timeLapse') {
+      const problem = outFolderProblem('--out', command.out);
+      if (problem) throw new ParameterError('out', problem);
+      return command;
+    }
     const views = command.kind === 'views' ? command.views : parseRenderCases(readCasesFile(command.path), command.path, command.defaults);
     views.forEach((view, index) => {
       const problem = outFolderProblem(command.kind === 'views' ? '--out' : `case at index ${index}: out`, view.out);
@@ -32,8 +43,14 @@ function viewsAskedFor(): readonly RenderView[] | 'help' {
   }
 }
 
-const views = viewsAskedFor();
-if (views === 'help') {
+/** Writes `file` over `out` atomically; a folder that cannot be written to is the user's (exit 2). */
+function write(out: string, file: Buffer): void {
+  const writeError = writeFileAtomically(out, file);
+  if (writeError) throw new ParameterError('--out', writeError);
+}
+
+const asked = renderAskedFor();
+if (asked === 'help') {
   process.stdout.write(RENDER_USAGE);
   process.exit(0);
 }
@@ -41,12 +58,19 @@ const chromiumSearch = findChromium();
 if ('missing' in chromiumSearch) stop(3, chromiumSearch.missing);
 try {
   // Vite and the browser session are loaded only when there is something to render.
-  const { renderViews } = await import('./render/renderViews.ts');
-  await renderViews(views, chromiumSearch.found, (view, { png, width, height, ms }) => {
-    const writeError = writeFileAtomically(view.out, png);
-    if (writeError) throw new ParameterError('--out', writeError);
-    process.stdout.write(`${JSON.stringify({ out: view.out, width, height, ms })}\n`);
-  });
+  if ('kind' in asked) {
+    const { renderTimeLapse } = await import('./render/renderTimeLapse.ts');
+    const { file, width, height, ms } = await renderTimeLapse(asked, chromiumSearch.found);
+    write(asked.out, file);
+    const line = { out: asked.out, format: asked.format, frames: asked.frames.length, frameMs: asked.frameMs, width, height, ms };
+    process.stdout.write(`${JSON.stringify(line)}\n`);
+  } else {
+    const { renderViews } = await import('./render/renderViews.ts');
+    await renderViews(asked, chromiumSearch.found, (view, { png, width, height, ms }) => {
+      write(view.out, png);
+      process.stdout.write(`${JSON.stringify({ out: view.out, width, height, ms })}\n`);
+    });
+  }
 } catch (error) {
   if (error instanceof ParameterError) stop(2, error.message);
   stop(1, `rendering failed: ${error instanceof Error ? error.message : String(error)}`);

@@ -38,6 +38,16 @@ export async function renderViews(
   take: (view: RenderView, rendered: RenderedView) => void,
 ): Promise<void> {
   if (views.length === 0) return;
+  await withDemo(launch, async (browser, base) => {
+    for (const view of views) take(view, await renderView(browser, base, view));
+  });
+}
+
+/**
+ * Runs `use` with the demo served at `base` and one launched (and checked) Chromium; everything
+ * is closed on return and on error.
+ */
+export async function withDemo<T>(launch: ChromiumLaunchOptions, use: (browser: Browser, base: string) => Promise<T>): Promise<T> {
   const server = await createServer({
     root: ROOT,
     logLevel: 'silent',
@@ -47,12 +57,11 @@ export async function renderViews(
     await server.listen();
     const address = server.httpServer?.address();
     if (!address || typeof address === 'string') throw new Error('the demo server has no port');
-    const base = `http://127.0.0.1:${address.port}`;
     const browser = await chromium.launch(launch);
     try {
       // A picture from another backend than TFC_GL names, or a 2-D canvas, would not be the one asked for.
       await checkedRenderer(browser);
-      for (const view of views) take(view, await renderView(browser, base, view));
+      return await use(browser, `http://127.0.0.1:${address.port}`);
     } finally {
       await browser.close();
     }
@@ -61,21 +70,38 @@ export async function renderViews(
   }
 }
 
-async function renderView(browser: Browser, base: string, view: RenderView): Promise<RenderedView> {
-  const started = performance.now();
+/** A page in a window of `view`'s size, each step allowed STEP_TIMEOUT_MS; `use` runs with it, and its context is closed after. */
+export async function withViewPage<T>(browser: Browser, view: RenderView, use: (page: Page) => Promise<T>): Promise<T> {
   const context = await browser.newContext({ viewport: { width: view.widthPx, height: view.heightPx }, deviceScaleFactor: view.scale });
   context.setDefaultTimeout(STEP_TIMEOUT_MS);
   context.setDefaultNavigationTimeout(STEP_TIMEOUT_MS);
   try {
-    const page = await context.newPage();
-    const failed = new Promise<never>((_, reject) => page.on('pageerror', (e) => reject(new Error(`the demo page failed: ${e.message}`))));
-    await Promise.race([showView(page, base, view), failed]);
-    const png = await page.screenshot({ type: 'png', animations: 'disabled', caret: 'hide' });
-    // The size, from the PNG's IHDR chunk (its first, right after the 8-byte signature).
-    return { png, width: png.readUInt32BE(16), height: png.readUInt32BE(20), ms: Math.round(performance.now() - started) };
+    return await use(await context.newPage());
   } finally {
     await context.close();
   }
+}
+
+/** The window as a PNG once the page shows `view` (a page error fails it). */
+export async function capture(page: Page, base: string, view: RenderView): Promise<Buffer> {
+  let onError: (error: Error) => void = () => undefined;
+  const failed = new Promise<never>((_, reject) => {
+    onError = (e) => reject(new Error(`the demo page failed: ${e.message}`));
+  });
+  page.on('pageerror', onError);
+  try {
+    await Promise.race([showView(page, base, view), failed]);
+  } finally {
+    page.off('pageerror', onError);
+  }
+  return page.screenshot({ type: 'png', animations: 'disabled', caret: 'hide' });
+}
+
+async function renderView(browser: Browser, base: string, view: RenderView): Promise<RenderedView> {
+  const started = performance.now();
+  const png = await withViewPage(browser, view, (page) => capture(page, base, view));
+  // The size, from the PNG's IHDR chunk (its first, right after the 8-byte signature).
+  return { png, width: png.readUInt32BE(16), height: png.readUInt32BE(20), ms: Math.round(performance.now() - started) };
 }
 
 /** Opens the demo at the view and waits for its frame; the panel hidden, and the plots unless asked for (their drawer opened). */

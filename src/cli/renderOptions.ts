@@ -4,6 +4,7 @@ import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../se
 import { parseDecimal, describeValue, isInDomain, ParameterError, rejectValue } from '../input/validate.ts';
 import { mediumFromJson, mediumText } from '../physics/medium.ts';
 import { parseJsonArray } from './parseJsonArray.ts';
+import { type TimeLapseFormat, checkTimeLapseSize, frameMs, timeLapseFormat, timeLapseTimes } from './timeLapseOptions.ts';
 
 /** One picture to render: the demo at `query`, in a `widthPx` × `heightPx` CSS-pixel window. */
 export interface RenderView {
@@ -31,7 +32,7 @@ const PICTURE_NUMBERS = Object.keys(PICTURE_OPTIONS) as PictureNumber[];
 
 /** What a view (a command line or one entry of a cases file) may set: the picture's options and the schema's parameters. */
 export const VIEW_FIELDS: readonly string[] = ['out', ...PICTURE_NUMBERS, 'plots', ...VIEW_PARAMETERS.map((row) => row.url)];
-const COMMAND_ONLY = ['cases', 'help'];
+const COMMAND_ONLY = ['cases', 'time-lapse', 'frame-ms', 'help'];
 const clash = [...VIEW_FIELDS, ...COMMAND_ONLY].find((name, i, all) => all.indexOf(name) !== i);
 if (clash) throw new Error(`render: the option --${clash} is both a view parameter and one of the picture's options`);
 
@@ -52,7 +53,19 @@ export type RenderCommand =
   | { readonly kind: 'help' }
   | { readonly kind: 'views'; readonly views: readonly RenderView[] }
   /** `--cases FILE`: the file's views, each over `defaults` (the command line's other options). */
-  | { readonly kind: 'casesFile'; readonly path: string; readonly defaults: RawView };
+  | { readonly kind: 'casesFile'; readonly path: string; readonly defaults: RawView }
+  /**
+   * `--time-lapse START:END:STEP`: one animation written to `out`, frame i the view frozen at
+   * `timesS[i]` (its `frames[i]`, animate 0), each shown for `frameMs`.
+   */
+  | {
+      readonly kind: 'timeLapse';
+      readonly out: string;
+      readonly format: TimeLapseFormat;
+      readonly timesS: readonly number[];
+      readonly frames: readonly RenderView[];
+      readonly frameMs: number;
+    };
 
 /** A view's fields as given: text from the command line, JSON values from a cases file. */
 type RawView = ReadonlyMap<string, unknown>;
@@ -85,6 +98,9 @@ export function parseRenderCommandLine(argv: readonly string[]): RenderCommand {
   if (given.has('help')) return { kind: 'help' };
   const flagName = (name: string) => `--${name}`;
   if (given.has('cases')) {
+    const lapseFlag = ['time-lapse', 'frame-ms'].find((name) => given.has(name));
+    if (lapseFlag)
+      throw new ParameterError(`--${lapseFlag}`, `--${lapseFlag}: not allowed with --cases (a time-lapse is one view at many times)`);
     const { cases: path, ...rest } = Object.fromEntries(given) as { cases: string };
     if (given.has('out')) throw new ParameterError('--out', '--out: not allowed with --cases (each view in the file names its own out)');
     if (path === '') return rejectValue('--cases', path, 'the path of a JSON file');
@@ -92,7 +108,30 @@ export function parseRenderCommandLine(argv: readonly string[]): RenderCommand {
     readView(defaults, flagName, false); // the options every view shares are checked before the file is read
     return { kind: 'casesFile', path, defaults };
   }
+  if (given.has('time-lapse') || given.has('frame-ms')) return timeLapseCommand(given, flagName);
   return { kind: 'views', views: [readView(given, flagName, true)] };
+}
+
+/** A time-lapse: the view of the other options, checked, then frozen (animate 0) at each time of `--time-lapse`. */
+function timeLapseCommand(given: RawView, flagName: (name: string) => string): RenderCommand {
+  const { 'time-lapse': lapse, 'frame-ms': ms, ...rest } = Object.fromEntries(given) as { 'time-lapse'?: string; 'frame-ms'?: string };
+  if (lapse === undefined) {
+    throw new ParameterError('--frame-ms', '--frame-ms: not allowed without --time-lapse (it is the time each frame is shown)');
+  }
+  if (given.has('time')) {
+    throw new ParameterError('--time-lapse', '--time-lapse: not allowed with --time (each frame is frozen at its own time)');
+  }
+  if (given.get('animate') === '1') {
+    throw new ParameterError('--time-lapse', '--time-lapse: not allowed with --animate 1 (each frame is a frozen view, animate 0)');
+  }
+  const fields = new Map(Object.entries(rest));
+  const { out, widthPx, heightPx, scale } = readView(fields, flagName, true);
+  const format = timeLapseFormat(out);
+  const timesS = timeLapseTimes(lapse);
+  checkTimeLapseSize(timesS.length, Math.round(widthPx * scale) * Math.round(heightPx * scale));
+  const shownMs = frameMs(ms);
+  const frames = timesS.map((t) => readView(new Map([...fields, ['animate', '0'], ['time', String(t)]]), flagName, true));
+  return { kind: 'timeLapse', out, format, timesS, frames, frameMs: shownMs };
 }
 
 /**

@@ -1,6 +1,7 @@
 import { VIEW_PARAMETERS } from '../settings/viewParameters.ts';
 import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
 import { PICTURE_OPTIONS, VIEW_FIELDS, expectedOf } from './renderOptions.ts';
+import { FRAME_MS, FRAME_MS_EXPECTED, TIME_LAPSE_EXPECTED } from './timeLapseOptions.ts';
 import { optionLines } from './usage.ts';
 
 /** The view's options, one per schema row: the URL parameter's name, label, range and default. */
@@ -35,6 +36,15 @@ Many views, one browser:
                         fields ${PICTURE_FIELDS} and the view options' names (values as
                         in the URL, as JSON numbers or text; plots true or false). The other options
                         given apply to every view. Nested at most ${MAX_CASES_NESTING_DEPTH} levels deep.
+
+A bubble's life, one animation (not with --time or --cases):
+  --time-lapse START:END:STEP
+                        one frame per film time START, START + STEP, … up to END (seconds), each
+                        the view frozen at that time (animate 0), written as an animated PNG
+                        (--out FILE.png) or an animated WebP (--out FILE.webp). Expected:
+                        ${TIME_LAPSE_EXPECTED}
+  --frame-ms MS         how long each frame is shown: ${FRAME_MS_EXPECTED} (${FRAME_MS.fallback})
+                        Output: one JSON line { out, format, frames, frameMs, width, height, ms }.
 
 Output: one JSON line per view, in input order: { out, width, height, ms } (the PNG's pixels; ms to render and write it).
 Bad input: exit status 2, one line on stderr naming the option, nothing written.

@@ -38,6 +38,9 @@ describe('render command: exit statuses', () => {
           'render: case at index 1: nFilm: 5 is not allowed; expected a number in [1, 4], water, cauchy:A,B[,C], Au, Ag, Cu, Al, Ti, Fe, Cr, Ni, TiO2, Fe3O4, SiO2 or complex:n,k (n in [0.01, 10], k in [0, 100]) (here n is 5, above 4)\n',
         ],
         [['--out', join(dir, 'no-such-folder', 'view.png')], 'render: --out: '],
+        [['--time-lapse', '3:1:1', '--out', out], 'render: --time-lapse: "3:1:1" is not allowed; expected START:END:STEP'],
+        [['--time-lapse', '0:3:1', '--time', '1', '--out', out], 'render: --time-lapse: not allowed with --time'],
+        [['--time-lapse', '0:3:1', '--out', join(dir, 'no-such-folder', 'life.png')], 'render: --out: '],
       ];
       for (const [args, line] of runs) {
         const r = render(args);
@@ -48,7 +51,7 @@ describe('render command: exit statuses', () => {
       }
       expect(readdirSync(dir)).toEqual(['views.json']);
     },
-    SPAWN_TIMEOUT_MS * 4,
+    SPAWN_TIMEOUT_MS * 7,
   );
 
   it(
@@ -76,6 +79,8 @@ describe('render command: exit statuses', () => {
       expect(r.status).toBe(0);
       expect(r.stdout).toContain('--thickness           thickness (nm): a number in [0, 20000] nm (550)');
       expect(r.stdout).toContain('--probe');
+      expect(r.stdout).toContain('--time-lapse START:END:STEP');
+      expect(r.stdout).toContain('--frame-ms MS         how long each frame is shown: a whole number in [20, 10000] ms (100)');
     },
     SPAWN_TIMEOUT_MS,
   );

@@ -8,6 +8,7 @@ import { parseSettings, settingsToQuery } from '../../src/settings/settingsQuery
 import { VIEW_PARAMETERS } from '../../src/settings/viewParameters.ts';
 import { PICTURE_OPTIONS, type RenderView, parseRenderCases, parseRenderCommandLine } from '../../src/cli/renderOptions.ts';
 import { ParameterError } from '../../src/input/validate.ts';
+import { FRAME_MS, MAX_TIME_LAPSE_FRAMES, TIME_LAPSE_EXPECTED } from '../../src/cli/timeLapseOptions.ts';
 import { NOT_NUMBERS, outsideRange } from './fixtures/badValues.ts';
 
 /** Texts of every kind the schema's rows take, and some no row takes. */
@@ -161,5 +162,84 @@ describe('render options: --cases', () => {
   it('refuses --out beside --cases, and checks the shared options before the file is read', () => {
     expect(() => parseRenderCommandLine(['--cases', 'v.json', '--out', 'a.png'])).toThrow('--out: not allowed with --cases');
     expect(() => parseRenderCommandLine(['--cases', 'v.json', '--mode', 'fast'])).toThrow('--mode: "fast" is not allowed');
+  });
+});
+
+describe('render options: --time-lapse', () => {
+  const lapse = (...args: string[]) => {
+    const command = parseRenderCommandLine(args);
+    if (command.kind !== 'timeLapse') throw new Error(`expected a time-lapse, got ${command.kind}`);
+    return command;
+  };
+
+  it('one frame per time from START to END in steps of STEP, each the view frozen at its time', () => {
+    const command = lapse(
+      '--field',
+      'flow',
+      '--grid',
+      '16',
+      '--seed',
+      '3',
+      '--width',
+      '160',
+      '--time-lapse',
+      '0:0.3:0.1',
+      '--out',
+      'life.png',
+    );
+    expect(command.timesS).toEqual([0, 0.1, 0.2, 0.3]);
+    expect(command).toMatchObject({ out: 'life.png', format: 'apng', frameMs: FRAME_MS.fallback });
+    // Each frame's query is the one a still at that time has: the URL's own writer, animate 0.
+    command.frames.forEach((frame, i) => {
+      const stillAt = parseRenderCommandLine([
+        ...['--field', 'flow', '--grid', '16', '--seed', '3', '--width', '160', '--animate', '0'],
+        ...['--time', String(command.timesS[i]), '--out', 'life.png'],
+      ]);
+      expect(stillAt.kind === 'views' && stillAt.views[0]).toEqual(frame);
+    });
+    expect(new Set(command.frames.map((f) => f.query)).size).toBe(4);
+  });
+
+  it('takes .webp for an animated WebP, --frame-ms, and an END the step does not land on', () => {
+    const command = lapse('--time-lapse', '1:2.5:1', '--frame-ms', '250', '--out', 'life.WEBP');
+    expect(command).toMatchObject({ format: 'webp', frameMs: 250, timesS: [1, 2] });
+    expect(lapse('--time-lapse', '4:4:1', '--out', 'a.png').timesS).toEqual([4]);
+    expect(lapse('--time-lapse', `0:${MAX_TIME_LAPSE_FRAMES - 1}:1`, '--out', 'a.png').frames).toHaveLength(MAX_TIME_LAPSE_FRAMES);
+  });
+
+  const rule = TIME_LAPSE_EXPECTED;
+  const refusals: [string[], string][] = [
+    [['--time-lapse', '5:1:1'], `--time-lapse: "5:1:1" is not allowed; expected ${rule} (1 is not allowed; expected a number ≥ the start`],
+    [['--time-lapse', '0:1:0'], `--time-lapse: "0:1:0" is not allowed; expected ${rule} (0 is not allowed; expected a number > 0)`],
+    [['--time-lapse', '0:1:-1'], `--time-lapse: "0:1:-1" is not allowed; expected ${rule}`],
+    [['--time-lapse', `0:${MAX_TIME_LAPSE_FRAMES}:1`], `expected ${rule} (here ${MAX_TIME_LAPSE_FRAMES + 1} frames)`],
+    [['--time-lapse', '0:3:0.00001'], `--time-lapse: "0:3:0.00001" is not allowed; expected ${rule}`],
+    [['--time-lapse', 'a:b:c'], `--time-lapse: "a:b:c" is not allowed; expected ${rule}`],
+    [['--time-lapse', '0:30'], `--time-lapse: "0:30" is not allowed; expected ${rule}`],
+    [['--time-lapse', '-1:3:1'], `--time-lapse: "-1:3:1" is not allowed; expected ${rule}`],
+    [['--time-lapse', '0:2e6:1e5'], `--time-lapse: "0:2e6:1e5" is not allowed; expected ${rule}`],
+    [['--time-lapse', ''], `--time-lapse: "" is not allowed; expected ${rule}`],
+    [
+      ['--time-lapse', '0:599:1', '--width', '1000', '--height', '1000'],
+      '--time-lapse: 600 frames of 1000000 pixels are not allowed; expected at most 268435456 pixels in all',
+    ],
+    [['--time-lapse', '0:3:1', '--time', '2'], '--time-lapse: not allowed with --time (each frame is frozen at its own time)'],
+    [['--time-lapse', '0:3:1', '--animate', '1'], '--time-lapse: not allowed with --animate 1'],
+    [['--frame-ms', '50'], '--frame-ms: not allowed without --time-lapse'],
+    [['--time-lapse', '0:3:1', '--frame-ms', '19'], '--frame-ms: "19" is not allowed; expected a whole number in [20, 10000] ms'],
+    [['--time-lapse', '0:3:1', '--frame-ms', '100.5'], '--frame-ms: "100.5" is not allowed; expected a whole number in [20, 10000] ms'],
+  ];
+  for (const [args, message] of refusals) {
+    it(`refuses ${args.join(' ')}`, () => {
+      expect(() => parseRenderCommandLine([...args, '--out', 'a.png'])).toThrow(message);
+    });
+  }
+
+  it('refuses an --out that is not .png or .webp, and --time-lapse with --cases', () => {
+    expect(() => lapse('--time-lapse', '0:3:1', '--out', 'life.gif')).toThrow(
+      '--out: "life.gif" is not allowed; expected with --time-lapse, a file ending in .png or .webp',
+    );
+    expect(() => lapse('--time-lapse', '0:3:1', '--out', '.png')).toThrow('--out: ".png" is not allowed');
+    expect(() => parseRenderCommandLine(['--cases', 'v.json', '--time-lapse', '0:3:1'])).toThrow('--time-lapse: not allowed with --cases');
   });
 });
