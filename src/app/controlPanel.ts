@@ -4,22 +4,19 @@ import { FILM_MATERIALS } from '../physics/filmIndex.ts';
 import type { FilmLayer } from '../physics/filmLayers.ts';
 import { layersText } from '../physics/layersText.ts';
 import { readLayersField } from './layersField.ts';
+import { CAUCHY_INDEX, COMPLEX_INDEX, CONSTANT_INDEX, TEXT_KINDS, mediumKind, shownControls } from './shownControls.ts';
 import { type Medium, type MediumRole, mediumExpected, mediumText, readMedium } from '../physics/medium.ts';
 import { NAMED_MEDIA } from '../physics/namedMedia.ts';
 import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS, daylightCctOf } from '../physics/illuminants.ts';
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
-import { PANEL_FOLDERS, type ParameterRow, choiceKey, labelKey } from '../settings/parameterRow.ts';
+import { PANEL_FOLDERS, type PanelFolder, type ParameterRow, choiceKey, labelKey } from '../settings/parameterRow.ts';
 import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 
 /** The panel's choice for an illuminant given by its CCT. */
 const DAYLIGHT_CCT = 'daylight';
 /** The CCT slider's step. */
 const CCT_STEP_K = 10;
-/** A medium's kinds in the panel besides the names: a constant (the slider), a Cauchy film (a text A,B[,C]), a complex constant (a text n,k). */
-const CONSTANT_INDEX = 'constant';
-const CAUCHY_INDEX = 'cauchy';
-const COMPLEX_INDEX = 'complex';
 const INDEX_STEP = 0.01;
 /** The Cauchy text a constant or a material starts with: a glass-like film (n 1.49 at 400 nm, 1.46 at 700 nm). */
 const CAUCHY_START = '1.45,6000';
@@ -29,6 +26,18 @@ const COMPLEX_START = '0.43,2.455';
 /** A parameter whose panel controls are several: they write their own object, and `join` reads the setting off it. */
 type Joined = () => Partial<ViewSettings>;
 
+/** A medium's list and text fields: the kind chosen in the list, and the text field of each kind it offers as text. */
+interface MediumControls {
+  readonly kind: () => string;
+  readonly texts: readonly { readonly kind: string; readonly field: Controller }[];
+}
+
+/** What a row adds to the panel besides its controllers: its join, and a medium's list and text fields. */
+interface RowParts {
+  readonly join?: Joined;
+  readonly medium?: MediumControls;
+}
+
 /** A list's options for lil-gui: each value under its label in the catalogue (`choice.<key>.<value>`). */
 const options = (cat: Catalogue, key: string, values: readonly string[]): Record<string, string> =>
   Object.fromEntries(values.map((v) => [cat[choiceKey(key, v)] ?? v, v]));
@@ -36,8 +45,9 @@ const options = (cat: Catalogue, key: string, values: readonly string[]): Record
 /**
  * A lil-gui panel over every parameter the schema (VIEW_PARAMETERS) gives a control, grouped in
  * its folders. Sliders span each parameter's whole domain, so the panel cannot produce an invalid
- * setting and reaches every valid one. `onChange` receives the new settings; `blow`, if given, is
- * the flow folder's button (what B on the bubble does).
+ * setting and reaches every valid one. It shows only what applies to the settings
+ * (shownControls.ts), after every change; what it hides keeps its value. `onChange` receives the
+ * new settings; `blow`, if given, is the flow folder's button (what B on the bubble does).
  */
 export function createControlPanel(
   initial: ViewSettings,
@@ -47,51 +57,53 @@ export function createControlPanel(
   blow?: () => void,
 ): GUI {
   const state: Record<string, unknown> = { ...initial };
-  const joins: Joined[] = [];
-  /** Each row's controllers, for a row that greys out another's. */
-  const controllersOf = new Map<string, readonly Controller[]>();
+  const rows: { readonly key: keyof ViewSettings; readonly controllers: readonly Controller[]; readonly parts: RowParts }[] = [];
+  const folders = new Map<PanelFolder, GUI>();
+  /** Shows what applies to `s` (with each medium's kind as its list has it), hides the rest. */
+  const show = (s: ViewSettings) => {
+    const kinds = Object.fromEntries(rows.flatMap(({ key, parts }) => (parts.medium ? [[key, parts.medium.kind()]] : [])));
+    const shown = shownControls(s, kinds);
+    for (const { key, controllers, parts } of rows) {
+      const texts = new Map(parts.medium?.texts.map((t) => [t.field, t.kind]));
+      for (const c of controllers) c.show(texts.has(c) ? shown.texts[key] === texts.get(c) : shown.rows[key]);
+    }
+    for (const [name, folder] of folders) folder.show(shown.folders[name]);
+  };
   const emit = () => {
     let next: ViewSettings = { ...initial, ...(state as Partial<ViewSettings>) };
-    for (const join of joins) next = { ...next, ...join() };
+    for (const { parts } of rows) if (parts.join) next = { ...next, ...parts.join() };
+    show(next);
     onChange(next);
   };
   const gui = new GUI({ title: cat['panel.title'], ...(container ? { container } : {}) });
   for (const folderName of PANEL_FOLDERS) {
     const folder = gui.addFolder(cat[`panel.folder.${folderName}` as MessageKey]);
+    folders.set(folderName, folder);
     for (const row of VIEW_PARAMETERS.filter((r) => r.control?.folder === folderName)) {
       const before = folder.controllers.length;
-      const join = addControl(folder, row, state, cat, (key) => controllersOf.get(key) ?? []);
-      controllersOf.set(row.key, folder.controllers.slice(before));
-      if (join) joins.push(join);
+      const parts = addControl(folder, row, state, cat);
+      rows.push({ key: row.key, controllers: folder.controllers.slice(before), parts });
     }
     if (folderName === 'flow' && blow) folder.add({ blow }, 'blow').name(cat['panel.blow']);
   }
+  show(initial);
   gui.onChange(emit);
   return gui;
 }
 
-/** A row's controllers, by its settings key. */
-type ControllersOf = (key: keyof ViewSettings) => readonly Controller[];
-
-function addControl(
-  folder: GUI,
-  row: ParameterRow<ViewSettings>,
-  state: Record<string, unknown>,
-  cat: Catalogue,
-  controllersOf: ControllersOf,
-): Joined | null {
+function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<string, unknown>, cat: Catalogue): RowParts {
   const control = row.control!;
   const label = cat[labelKey(row.key)];
   switch (control.kind) {
     case 'slider':
       folder.add(state, row.key, control.min, control.max, control.step).name(label);
-      return null;
+      return {};
     case 'choice':
       folder.add(state, row.key, options(cat, row.key, control.choices)).name(label);
-      return null;
+      return {};
     case 'toggle':
       folder.add(state, row.key).name(label);
-      return null;
+      return {};
     case 'illuminant': {
       const spec = state[row.key] as IlluminantSpec;
       const pair = {
@@ -101,7 +113,7 @@ function addControl(
       };
       folder.add(pair, 'name', options(cat, row.key, [...NAMED_ILLUMINANTS, DAYLIGHT_CCT])).name(label);
       folder.add(pair, 'cct', DAYLIGHT_CCT_DOMAIN_K.min, DAYLIGHT_CCT_DOMAIN_K.max, CCT_STEP_K).name(cat['panel.daylightCct']);
-      return () => ({ [row.key]: pair.name === DAYLIGHT_CCT ? { daylightCct: pair.cct } : (pair.name as IlluminantSpec) });
+      return { join: () => ({ [row.key]: pair.name === DAYLIGHT_CCT ? { daylightCct: pair.cct } : (pair.name as IlluminantSpec) }) };
     }
     case 'filmIndex':
       return addMediumControls(folder, row, state[row.key] as Medium, cat, FILM_INDEX_KINDS, 'film');
@@ -115,32 +127,23 @@ function addControl(
         control.role,
       );
     case 'layers':
-      return addLayersControl(folder, row, state[row.key] as readonly FilmLayer[], cat, controllersOf('nFilm'));
+      return { join: addLayersControl(folder, row, state[row.key] as readonly FilmLayer[], cat) };
   }
 }
 
 /**
  * A stack of films as text (layersText.ts; empty: the single film). A text that is not one is not
  * taken: the last good stack stays, and the field says why in its title. While a stack is set, the
- * film index's controls are greyed out: the stack's layers carry their own indices.
+ * film index's controls are hidden (shownControls.ts): the stack's layers carry their own indices.
  */
-function addLayersControl(
-  folder: GUI,
-  row: ParameterRow<ViewSettings>,
-  initial: readonly FilmLayer[],
-  cat: Catalogue,
-  filmIndexControls: readonly Controller[],
-): Joined {
+function addLayersControl(folder: GUI, row: ParameterRow<ViewSettings>, initial: readonly FilmLayer[], cat: Catalogue): Joined {
   const controls = { text: layersText(initial) };
   let good = initial;
   const field = folder.add(controls, 'text').name(cat[labelKey(row.key)]);
-  const showUse = () => filmIndexControls.forEach((c) => c.disable(good.length > 0));
-  showUse();
   return () => {
     const reading = readLayersField(row, controls.text, good, cat);
     good = reading.layers;
     field.domElement.title = reading.title;
-    showUse();
     return { [row.key]: good };
   };
 }
@@ -154,20 +157,12 @@ function addLayersControl(
 const FILM_INDEX_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, CAUCHY_INDEX];
 const FILM_MEDIUM_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, ...NAMED_MEDIA, CAUCHY_INDEX];
 const INSIDE_MEDIUM_KINDS = [CONSTANT_INDEX, ...FILM_MATERIALS, ...NAMED_MEDIA, COMPLEX_INDEX];
-const TEXT_KINDS: readonly string[] = [CAUCHY_INDEX, COMPLEX_INDEX];
-
-/** The kind of the list a medium is shown as. */
-function mediumKind(m: Medium): string {
-  if (typeof m === 'number') return CONSTANT_INDEX;
-  if (typeof m === 'string') return m;
-  return 'cauchy' in m ? CAUCHY_INDEX : COMPLEX_INDEX;
-}
 
 /**
  * A medium: a list (constant, the materials, the named media, cauchy, complex: those of `kinds`),
- * the constant's slider, and the Cauchy film's A,B[,C] and the complex constant's n,k as text. A
- * text that is not one, or leaves its domain, is not taken: the last good medium stays (and the
- * text field says why in its title).
+ * the constant's slider, and the Cauchy film's A,B[,C] and the complex constant's n,k as text, each
+ * text field shown while its kind is chosen (shownControls.ts). A text that is not one, or leaves
+ * its domain, is not taken: the last good medium stays (and the text field says why in its title).
  */
 function addMediumControls(
   folder: GUI,
@@ -176,7 +171,7 @@ function addMediumControls(
   cat: Catalogue,
   kinds: readonly string[],
   role: MediumRole,
-): Joined {
+): RowParts {
   const { min, max } = FILM_STACK_DOMAIN.nFilm;
   const kind = mediumKind(initial);
   const tail = (prefix: string, start: string) => (kind === prefix ? mediumText(initial).slice(`${prefix}:`.length) : start);
@@ -193,7 +188,7 @@ function addMediumControls(
     kind: k,
     field: folder.add(controls, k as typeof CAUCHY_INDEX).name(cat[k === CAUCHY_INDEX ? 'panel.cauchy' : 'panel.complex']),
   }));
-  return () => {
+  const join = () => {
     const text = texts.find((t) => t.kind === controls.kind);
     if (controls.kind === CONSTANT_INDEX) good = controls.n;
     else if (!TEXT_KINDS.includes(controls.kind)) good = controls.kind as Medium;
@@ -205,4 +200,5 @@ function addMediumControls(
     }
     return { [row.key]: good };
   };
+  return { join, medium: { kind: () => controls.kind, texts } };
 }

@@ -8,5 +8,6 @@ export const drainageField: ThicknessField = {
   update: updateDrainedFilmUniforms,
   thicknessAt: ([, y], s) => drainedThicknessNm(y, y, s),
   maxThicknessNm: drainedFilmMaxNm,
+  reads: ['thicknessNm', 'thicknessRangeNm'],
   animates: false,
 };

@@ -18,6 +18,16 @@ export const THICKNESS_FIELDS = {
 export type FieldName = keyof typeof THICKNESS_FIELDS;
 export const FIELDS = Object.keys(THICKNESS_FIELDS) as FieldName[];
 
+/** Every setting some field reads (each field's `reads`). */
+const FIELD_READS: ReadonlySet<string> = new Set(FIELDS.flatMap((name) => THICKNESS_FIELDS[name].reads));
+
+/**
+ * Whether the setting `key` applies under the field `name`: a setting no field reads is not the
+ * fields' (it applies under each); one some field reads applies only under the fields that read it.
+ */
+export const settingApplies = (key: string, name: FieldName): boolean =>
+  !FIELD_READS.has(key) || (THICKNESS_FIELDS[name].reads as readonly string[]).includes(key);
+
 /** The thickness in nm at `p` of the field `s.field` (the TypeScript twin of the shader's `tfcThicknessAt`). */
 export const thicknessAt = (p: Vec3, s: FieldSettings & { readonly field: FieldName }): number =>
   THICKNESS_FIELDS[s.field].thicknessAt(p, s);

@@ -5,7 +5,7 @@ import { cubeSphereHalo, padField, paddedSampler } from '../physics/flow/cubeSph
 import { flowNumbers } from '../physics/flow/flowNumbers.ts';
 import { FLOW_PARAMETERS, type FlowParameterKey, type FlowParameters } from '../physics/flow/flowParameters.ts';
 import { initialFilm } from '../physics/flow/initialFilm.ts';
-import type { FieldSettings, ThicknessField, Vec3 } from './thicknessField.ts';
+import { FLOW_SETTING_KEYS, type FieldSettings, type ThicknessField, type Vec3 } from './thicknessField.ts';
 
 /** The flow's mean thickness: the view's, at least the model's lowest (its numbers divide by η0). */
 const THICKNESS_MIN_NM = FLOW_PARAMETERS.find((r) => r.key === 'thicknessNm')!.domain.min;
@@ -76,6 +76,7 @@ export const flowField = {
     return Math.min(flowMaxNm(s), Math.max(0, thicknessNm * out[0]!));
   },
   maxThicknessNm: flowMaxNm,
+  reads: ['thicknessNm', ...FLOW_SETTING_KEYS],
   animates: true,
   evolves: true,
 } as const satisfies ThicknessField;

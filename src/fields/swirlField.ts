@@ -23,5 +23,6 @@ export const swirlField: ThicknessField = {
   },
   // The swirl moves h by at most 0.24 beyond ±1, where the drained film is clamped.
   maxThicknessNm: drainedFilmMaxNm,
+  reads: ['thicknessNm', 'thicknessRangeNm', 'swirlSpeed', 'timeSeconds'],
   animates: true,
 };

@@ -4,14 +4,22 @@ import type { FlowParameters } from '../physics/flow/flowParameters.ts';
 export type Vec3 = readonly [number, number, number];
 
 /**
- * The flowing film's settings (field `flow`): bubble radius, Γ0, evaporation, wind, seed, simulated
- * seconds per second, grid (src/physics/flow/flowParameters.ts names them and holds their ranges),
- * and whether a new bubble follows a burst (the GPU's own, src/flow/renewFilm.ts).
+ * The flowing film's own settings (field `flow`): bubble radius, Γ0, evaporation, wind, seed,
+ * simulated seconds per second, grid (src/physics/flow/flowParameters.ts names them and holds their
+ * ranges), and whether a new bubble follows a burst (the GPU's own, src/flow/renewFilm.ts).
  */
-export type FlowSettings = Pick<
-  FlowParameters,
-  'radiusMm' | 'surfactantMolM2' | 'evaporationNmS' | 'windMps' | 'seed' | 'simSpeed' | 'gridN'
-> & { readonly renew: boolean };
+export const FLOW_SETTING_KEYS = [
+  'radiusMm',
+  'surfactantMolM2',
+  'evaporationNmS',
+  'windMps',
+  'seed',
+  'simSpeed',
+  'gridN',
+  'renew',
+] as const;
+
+export type FlowSettings = Pick<FlowParameters, Exclude<(typeof FLOW_SETTING_KEYS)[number], 'renew'>> & { readonly renew: boolean };
 
 /** What a field reads of the settings (the schema's rows in src/settings/filmParameters.ts). */
 export interface FieldSettings extends FlowSettings {
@@ -43,6 +51,11 @@ export interface ThicknessField {
   readonly thicknessAt: (p: Vec3, s: FieldSettings) => number;
   /** The largest thickness it reaches, in nm, at least 1 (the field is clamped to the domain's 20 µm). */
   readonly maxThicknessNm: (s: FieldSettings) => number;
+  /**
+   * The settings it reads (for its thickness, its uniforms, its simulation): a setting that some
+   * field reads applies only under the fields that read it (the panel shows it only under those).
+   */
+  readonly reads: readonly (keyof FieldSettings)[];
   /** Whether it changes with time (the view animates only such a field). */
   readonly animates: boolean;
   /**

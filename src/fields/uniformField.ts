@@ -10,5 +10,6 @@ export const uniformField: ThicknessField = {
   },
   thicknessAt: (_, s) => s.thicknessNm,
   maxThicknessNm: (s) => Math.min(FILM_STACK_DOMAIN.thicknessNm.max, Math.max(s.thicknessNm, 1)),
+  reads: ['thicknessNm'],
   animates: false,
 };

@@ -77,7 +77,29 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
   expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 
-  // A medium's list: a name from it, then a kind typed in its text field; each shows in the URL.
+  // The panel shows only what applies: the swirl's speed and range under the swirl, the flow folder
+  // under the flow; what it hides keeps its value in the URL.
+  const controller = (label: string) => page.locator('.lil-controller', { hasText: label });
+  const flowFolder = page.locator('.lil-gui .lil-title', { hasText: /^flow$/ });
+  await field.selectOption('swirl');
+  await expect(controller('swirl speed')).toBeVisible();
+  await expect(controller('range (nm)')).toBeVisible();
+  await expect(flowFolder).toBeHidden();
+  await field.selectOption('flowing film');
+  await expect(page).toHaveURL(/field=flow/);
+  await expect(controller('swirl speed')).toBeHidden();
+  await expect(controller('range (nm)')).toBeHidden();
+  await expect(flowFolder).toBeVisible();
+  expect(page.url()).toMatch(/thickness=300/);
+  await field.selectOption('swirl');
+  await expect(controller('swirl speed')).toBeVisible();
+  await expect(controller('range (nm)')).toBeVisible();
+  await expect(flowFolder).toBeHidden();
+  await field.selectOption('uniform');
+  await expect(page).toHaveURL(/field=uniform/);
+
+  // A medium's list: a name from it, then a kind chosen and typed in its text field, which shows
+  // only while its kind is chosen; each shows in the URL.
   const pickThenType = async (
     list: string,
     name: string,
@@ -91,9 +113,11 @@ test('the panel changes the view and the URL, and the URL restores the state', a
     await combobox.selectOption(name);
     await expect(page).toHaveURL(nameInUrl);
     const field = page.locator('.lil-controller', { hasText: textLabel }).locator('input');
+    await expect(field).toBeHidden();
+    await combobox.selectOption(kind);
+    await expect(field).toBeVisible();
     await field.fill(text);
     await field.press('Enter');
-    await combobox.selectOption(kind);
     await expect(page).toHaveURL(inUrl);
     return field;
   };
