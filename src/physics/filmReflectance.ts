@@ -12,7 +12,7 @@ import {
   realIndex,
   sameIndex,
 } from './complex.ts';
-import { type InterfaceCoefficients, fresnelCoefficients } from './fresnel.ts';
+import { type InterfaceCoefficients, fresnelCoefficients, transmittedFluxRatio } from './fresnel.ts';
 import { cosDeg, refractedCos } from './snell.ts';
 import { type NumberDomain, ParameterError, assertInRange, isInDomain } from '../input/validate.ts';
 
@@ -178,8 +178,7 @@ export function filmOptics(stack: AbsorbingFilmStack, polarization: Polarization
   // paper mode keeps eq (13) at d = 0, whose t_ab = 0 at grazing reflects everything there too.
   // An absorbing inside is opaque: what crosses into it is absorbed there, so T = 0.
   const noInterface = sameIndex(na, nc) && ((d === 0 && polarization !== 'paper') || sameIndex(na, nb));
-  const ncReal = realIndex(nc);
-  const fluxRatio = ncReal === null ? 0 : cos > 0 ? (ncReal * cosT.re) / (na * cosI.re) : noInterface ? 1 : 0;
+  const fluxRatio = transmittedFluxRatio(na, cosI, nc, cosT, noInterface);
   // Δ = 2 ñ_b d cos θ_r, complex for an absorbing film (Im Δ > 0: the round trip's attenuation).
   const realFilm = realIndex(nb);
   const opticalPathNm = realFilm === null ? cScale(cTimesIndex(cosR, nb), 2 * d) : cScale(cosR, 2 * realFilm * d);

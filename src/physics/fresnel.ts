@@ -1,4 +1,4 @@
-import { type Complex, type RefractiveIndex, cAdd, cDiv, cScale, cSub, cTimesIndex, sameIndex } from './complex.ts';
+import { type Complex, type RefractiveIndex, cAdd, cDiv, cScale, cSub, cTimesIndex, realIndex, sameIndex } from './complex.ts';
 
 /** Amplitude coefficients of one interface, medium 1 → medium 2. */
 export interface InterfaceCoefficients {
@@ -43,4 +43,16 @@ export function fresnelCoefficients(n1: RefractiveIndex, cos1: Complex, n2: Refr
     ts: cDiv(cScale(n1c1, 2), sDen),
     tp: cDiv(cScale(n1c1, 2), pDen),
   };
+}
+
+/**
+ * Re(ñ_c cos θ_t) / (n_a cos θ_i), the ratio of normal energy fluxes that turns |t|² into T, for
+ * light from a transparent n_a into the far side ñ_c: 0 where ñ_c absorbs (it is opaque, T = 0);
+ * at exact grazing incidence (cos θ_i = 0) its limit, 1 where the light meets no interface at all
+ * (`noInterface`) and 0 otherwise, since no energy crosses a real interface there.
+ */
+export function transmittedFluxRatio(na: number, cosI: Complex, nc: RefractiveIndex, cosT: Complex, noInterface: boolean): number {
+  const ncReal = realIndex(nc);
+  if (ncReal === null) return 0;
+  return cosI.re > 0 ? (ncReal * cosT.re) / (na * cosI.re) : noInterface ? 1 : 0;
 }

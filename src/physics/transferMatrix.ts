@@ -1,20 +1,7 @@
-import {
-  type Complex,
-  type RefractiveIndex,
-  cAbs2,
-  cAdd,
-  cDiv,
-  cExpI,
-  cMul,
-  cScale,
-  cSub,
-  cTimesIndex,
-  realIndex,
-  sameIndex,
-} from './complex.ts';
+import { type Complex, type RefractiveIndex, cAbs2, cAdd, cDiv, cExpI, cMul, cScale, cSub, cTimesIndex, sameIndex } from './complex.ts';
 import { LAYERS_DOMAIN, type ResolvedLayer } from './filmLayers.ts';
 import { FILM_STACK_DOMAIN, type Polarization, channelCoefficients, channelsOf } from './filmReflectance.ts';
-import { fresnelCoefficients } from './fresnel.ts';
+import { fresnelCoefficients, transmittedFluxRatio } from './fresnel.ts';
 import { type Medium, assertMedium, mediumIndexAt } from './medium.ts';
 import { cosDeg, refractedCos } from './snell.ts';
 import { assertInRange } from '../input/validate.ts';
@@ -95,11 +82,8 @@ export function layersOpticsUnchecked(stack: LayerStack, lambdaNm: number, polar
   );
   const opticalPathsNm = layers.map((l, i) => cScale(cTimesIndex(cos[i + 1]!, indices[i + 1]!), 2 * l.thicknessNm));
   // As for the single film: at exact grazing incidence only a stack with no interface at all passes light.
-  const nInside = indices[indices.length - 1]!;
-  const insideReal = realIndex(nInside);
   const noInterface = indices.every((n) => sameIndex(n, n0));
-  const cosInside = cos[cos.length - 1]!;
-  const fluxRatio = insideReal === null ? 0 : cosIncidence > 0 ? (insideReal * cosInside.re) / (n0 * cos[0]!.re) : noInterface ? 1 : 0;
+  const fluxRatio = transmittedFluxRatio(n0, cos[0]!, indices[indices.length - 1]!, cos[cos.length - 1]!, noInterface);
   return { channels, opticalPathsNm, fluxRatio };
 }
 
