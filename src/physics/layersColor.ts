@@ -1,7 +1,7 @@
 import { type Complex, cMul } from './complex.ts';
-import type { FilmOptics, Polarization } from './filmReflectance.ts';
+import type { Polarization } from './filmReflectance.ts';
 import { isDispersiveMedium } from './medium.ts';
-import { type ColorOptions, dispersiveStepsPerNm, integrateXyz } from './spectralIntegration.ts';
+import { type ColorOptions, type Fringes, fringeStepsPerNm, integrateXyz } from './spectralIntegration.ts';
 import { LAMBDA_MIN_NM, type Xyz, spectralWeights } from './spectralWeights.ts';
 import {
   type InterfaceAmplitudes,
@@ -46,14 +46,14 @@ function layerRoundTrips(interfaces: readonly InterfaceAmplitudes[], halfPhases:
 }
 
 /**
- * The single film whose fringes are as dense and as sharp as the stack's at λ, for the sampling
- * rule of docs/physics.md#sampling: its path is the sum of Re Δ_j over the layers the light
- * reaches (the phases add, so R(λ) turns no faster than one film of the whole path), and its round
- * trip the largest gain |Γ_j Γ'_j e^{iφ_j}| of those layers whose wave propagates (Re Δ_j > 0).
- * For one lossless layer this is |r_ba r_bc|, the film's own rule exactly; for an absorbing one at
- * most that (the film's rule leaves out the loss).
+ * The stack's fringes at λ for the sampling rule of docs/physics.md#sampling, as dense and as
+ * sharp as one film's would be: their path is the sum of Re Δ_j over the layers the light reaches
+ * (the phases add, so R(λ) turns no faster than one film of the whole path), and their round trip
+ * the largest gain |Γ_j Γ'_j e^{iφ_j}| of those layers whose wave propagates (Re Δ_j > 0). For one
+ * lossless layer this is |r_ba r_bc|, the film's own rule exactly; for an absorbing one at most
+ * that (the film's rule leaves out the loss).
  */
-function fringeFilm(optics: LayersOptics, lambdaNm: number): FilmOptics {
+function layerFringes(optics: LayersOptics, lambdaNm: number): Fringes {
   const halfPhases = halfPhaseFactors(optics, lambdaNm);
   const roundTrips = optics.channels.map((c) => layerRoundTrips(c, halfPhases));
   let pathNm = 0;
@@ -65,12 +65,7 @@ function fringeFilm(optics: LayersOptics, lambdaNm: number): FilmOptics {
     reach *= Math.exp((-2 * Math.PI * path.im) / lambdaNm);
     if (path.re !== 0) for (const trips of roundTrips) rho = Math.max(rho, trips[j]!);
   });
-  const zero = { re: 0, im: 0 };
-  return {
-    channels: [{ rab: zero, multiple: zero, roundTrip: { re: rho, im: 0 }, through: zero }],
-    opticalPathNm: { re: pathNm, im: 0 },
-    fluxRatio: optics.fluxRatio,
-  };
+  return { pathNm, rho };
 }
 
 const isDispersiveStack = (stack: LayerStack): boolean =>
@@ -83,11 +78,11 @@ function opticsOf(stack: LayerStack, polarization: Polarization): (lambdaNm: num
   return () => fixed;
 }
 
-const stepsPerNmOf = (opticsAt: (lambdaNm: number) => LayersOptics): number => dispersiveStepsPerNm((l) => fringeFilm(opticsAt(l), l));
+const stepsPerNmOf = (opticsAt: (lambdaNm: number) => LayersOptics): number => fringeStepsPerNm((l) => layerFringes(opticsAt(l), l));
 
 /**
- * Sub-steps per nm of the adaptive rule for a stack: dispersiveStepsPerNm of the equivalent film
- * (fringeFilm) at every probe wavelength, so a dispersive layer is taken at its group path. Cost
+ * Sub-steps per nm of the adaptive rule for a stack: fringeStepsPerNm of its fringes
+ * (layerFringes) at every probe wavelength, so a dispersive layer is taken at its group path. Cost
  * grows with the stack's total optical path: a few thousand R evaluations for stacks a few µm
  * thick, far more for tens of layers each many µm thick.
  */

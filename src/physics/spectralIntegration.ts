@@ -65,27 +65,41 @@ function stepsPerNmFor(pathNm: number, rho: number): number {
 /** Where a dispersive film's fringe density is sampled: every 10 nm of the band. */
 const DISPERSION_PROBE_STEP_NM = 10;
 
+/** What the sampling rule reads of a film's fringes at one λ: their path Re Δ (nm) and the round trip's magnitude ρ. */
+export interface Fringes {
+  readonly pathNm: number;
+  readonly rho: number;
+}
+
 /**
- * The same rule for a film whose index depends on λ. The phase φ = 2πΔ(λ)/λ then turns by
- * 2πΔ_g/λ² per nm with the group path Δ_g = Δ − λ dΔ/dλ, so the rule takes the largest Δ_g (dΔ/dλ
- * by central differences over DISPERSION_PROBE_STEP_NM) and the largest ρ over the band. For an
- * index that does not vary, dΔ/dλ is exactly 0 and this is adaptiveStepsPerNm of the one optics.
+ * The same rule for fringes whose path depends on λ (a dispersive film, a stack of films). The
+ * phase φ = 2πΔ(λ)/λ then turns by 2πΔ_g/λ² per nm with the group path Δ_g = Δ − λ dΔ/dλ, so the
+ * rule takes the largest Δ_g (dΔ/dλ by central differences over DISPERSION_PROBE_STEP_NM) and the
+ * largest ρ over the band. For a path that does not vary, dΔ/dλ is exactly 0 and this is the rule
+ * of the one path.
  */
-export function dispersiveStepsPerNm(opticsAt: (lambdaNm: number) => FilmOptics): number {
+export function fringeStepsPerNm(fringesAt: (lambdaNm: number) => Fringes): number {
   const lambdas = Array.from(
     { length: LAMBDA_SPAN_NM / DISPERSION_PROBE_STEP_NM + 1 },
     (_, k) => LAMBDA_MIN_NM + k * DISPERSION_PROBE_STEP_NM,
   );
-  const optics = lambdas.map(opticsAt);
-  const path = optics.map((o) => o.opticalPathNm.re);
+  const fringes = lambdas.map(fringesAt);
+  const path = fringes.map((f) => f.pathNm);
   let groupPath = 0;
   path.forEach((p, k) => {
     const [lo, hi] = [Math.max(0, k - 1), Math.min(path.length - 1, k + 1)];
     const slope = (path[hi]! - path[lo]!) / (lambdas[hi]! - lambdas[lo]!);
     groupPath = Math.max(groupPath, Math.abs(p - lambdas[k]! * slope));
   });
-  return stepsPerNmFor(groupPath, Math.max(...optics.map(roundTripMagnitude)));
+  return stepsPerNmFor(groupPath, Math.max(...fringes.map((f) => f.rho)));
 }
+
+/** fringeStepsPerNm of a film whose index depends on λ: for a constant index, adaptiveStepsPerNm of the one optics. */
+export const dispersiveStepsPerNm = (opticsAt: (lambdaNm: number) => FilmOptics): number =>
+  fringeStepsPerNm((l) => {
+    const optics = opticsAt(l);
+    return { pathNm: optics.opticalPathNm.re, rho: roundTripMagnitude(optics) };
+  });
 
 export interface ColorOptions {
   readonly illuminant?: IlluminantSpec;
