@@ -76,7 +76,8 @@ export const flowField = {
     return Math.min(flowMaxNm(s), Math.max(0, thicknessNm * out[0]!));
   },
   maxThicknessNm: flowMaxNm,
-  reads: ['thicknessNm', ...FLOW_SETTING_KEYS],
+  // Its film is simulated to the time timeSeconds × simSpeed (src/flow/flowFieldState.ts).
+  reads: ['thicknessNm', 'timeSeconds', ...FLOW_SETTING_KEYS],
   animates: true,
   evolves: true,
 } as const satisfies ThicknessField;

@@ -91,9 +91,20 @@ describe('thickness fields', () => {
     }
   });
 
-  it('the flowing film reads its thickness and every setting of its own, and none of the swirl', () => {
+  it('the flowing film reads its thickness, the time it is simulated to and every setting of its own, and none of the swirl', () => {
     expect([...THICKNESS_FIELDS.flow.reads].sort()).toEqual(
-      ['thicknessNm', 'radiusMm', 'surfactantMolM2', 'evaporationNmS', 'windMps', 'seed', 'simSpeed', 'gridN', 'renew'].sort(),
+      [
+        'thicknessNm',
+        'timeSeconds',
+        'radiusMm',
+        'surfactantMolM2',
+        'evaporationNmS',
+        'windMps',
+        'seed',
+        'simSpeed',
+        'gridN',
+        'renew',
+      ].sort(),
     );
     expect(settingApplies('swirlSpeed', 'flow')).toBe(false);
     expect(settingApplies('thicknessRangeNm', 'flow')).toBe(false);
