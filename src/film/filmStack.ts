@@ -1,10 +1,10 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { packTexelRecord, texelRecord, texelRecordDefines } from '../gpu/texelRecord.ts';
+import { binCenterNm } from '../physics/binnedIntegration.ts';
 import { asComplex } from '../physics/complex.ts';
 import { type FilmLayer, FIELD_THICKNESS, LAYERS_DOMAIN, followsField } from '../physics/filmLayers.ts';
 import { type Medium, mediumIndexAt } from '../physics/medium.ts';
-import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 
@@ -61,13 +61,12 @@ const nk = (m: Medium, lambdaNm: number): [number, number] => {
 /** The texels of a stack: row l < layers the layer l (outside in), the last row the inside; column b the bin b's centre. */
 export function filmStackTexels({ layers, nInside, bins }: StackKey): Float32Array {
   const data = new Float32Array(FILM_LAYER.floats * bins * (layers.length + 1));
-  const width = LAMBDA_SPAN_NM / bins;
   const rows: readonly FilmLayer[] = [...layers, { n: nInside, thicknessNm: 0 }];
   rows.forEach((layer, row) => {
     const field = layer.thicknessNm === FIELD_THICKNESS;
     for (let b = 0; b < bins; b++)
       packTexelRecord(FILM_LAYER, data, row * bins + b, {
-        N: nk(layer.n, LAMBDA_MIN_NM + (b + 0.5) * width),
+        N: nk(layer.n, binCenterNm(b, bins)),
         THICKNESS_NM: field ? 0 : layer.thicknessNm,
         FOLLOWS_FIELD: field ? 1 : 0,
       });
@@ -111,12 +110,11 @@ export const releaseFilmStackTexture = (holder: object): void => shared.release(
  */
 export function stackFieldIndex(layers: readonly FilmLayer[], bins: number): number | null {
   if (!followsField(layers)) return null;
-  const width = LAMBDA_SPAN_NM / bins;
   let sum = 0;
   for (const layer of layers) {
     if (layer.thicknessNm !== FIELD_THICKNESS) continue;
     let max = 0;
-    for (let b = 0; b < bins; b++) max = Math.max(max, nk(layer.n, LAMBDA_MIN_NM + (b + 0.5) * width)[0]);
+    for (let b = 0; b < bins; b++) max = Math.max(max, nk(layer.n, binCenterNm(b, bins))[0]);
     sum += max;
   }
   return sum;

@@ -27,6 +27,9 @@ export interface SpectralBins {
   readonly end: number;
 }
 
+/** The centre in nm of bin `b` of `count` equal bins over the band. */
+export const binCenterNm = (b: number, count: number): number => LAMBDA_MIN_NM + (b + 0.5) * (LAMBDA_SPAN_NM / count);
+
 export function spectralBins(w: SpectralWeights, count: number): SpectralBins {
   if (!Number.isInteger(count) || LAMBDA_SPAN_NM % count !== 0) throw new RangeError(`bins: ${count} must divide ${LAMBDA_SPAN_NM}`);
   const perBin = LAMBDA_SPAN_NM / count;
