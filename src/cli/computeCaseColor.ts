@@ -9,11 +9,10 @@ import {
   mapToGamut,
 } from '../physics/colorConversions.ts';
 import type { IlluminantSpec } from '../physics/illuminants.ts';
-import { resolveLayers } from '../physics/filmLayers.ts';
-import { layersXyz } from '../physics/layersColor.ts';
+import { layerStackOf, layeredFilmXyz } from '../physics/layeredFilm.ts';
 import { type IndexJson, type Medium, indexJson, mediumIndexAt } from '../physics/medium.ts';
-import { type LayerStack, layersReflectance } from '../physics/transferMatrix.ts';
-import { dispersiveReflectance, filmXyz } from '../physics/spectralIntegration.ts';
+import { layersReflectance } from '../physics/transferMatrix.ts';
+import { dispersiveReflectance } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 import type { ColorCase } from './colorCase.ts';
 
@@ -48,25 +47,15 @@ const to8Bit = (linear: Rgb, luminance: number, gamut: GamutMapping): Rgb => {
   return [encode8(r), encode8(g), encode8(b)];
 };
 
-/** The case's stack of films, its FIELD_THICKNESS layers at the case's thickness; null for a single film. */
-const layerStackOf = (c: ColorCase): LayerStack | null =>
-  c.layers.length === 0
-    ? null
-    : {
-        nOutside: c.stack.nOutside,
-        layers: resolveLayers(c.layers, c.stack.thicknessNm),
-        nInside: c.stack.nInside,
-        angleDeg: c.stack.angleDeg,
-      };
-
 /**
  * The colour of one case: eqs (15)–(18) for XYZ, then the paper's matrices and display encodings;
  * R(λ) of the single film (eqs 1–14), or of a stack of films by the transfer matrix (transferMatrix.ts).
  */
 export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
   const options = { illuminant: c.illuminant, polarization: c.polarization, normalization: c.normalization };
-  const stack = layerStackOf(c);
-  const xyz = stack ? layersXyz(stack, options) : filmXyz(c.stack, options);
+  const film = { ...c.stack, layers: c.layers };
+  const stack = layerStackOf(film);
+  const xyz = layeredFilmXyz(film, options);
   const indicesAt = (m: Medium) => c.wavelengthsNm.map((lambdaNm) => indexJson(mediumIndexAt(m, lambdaNm)));
   const linearSrgb = applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz);
   return {

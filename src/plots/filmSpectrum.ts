@@ -4,7 +4,7 @@ import { type IlluminantSpec, illuminantSpd } from '../physics/illuminants.ts';
 import { type MediumStack, isDispersiveMedium, mediumIndexAt, mediumStackAt } from '../physics/medium.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
 import { layersReflectanceSpectrum } from '../physics/transferMatrix.ts';
-import { type PlottedFilm, layerStackOf } from './plottedFilm.ts';
+import { type LayeredFilm, layerStackOf } from '../physics/layeredFilm.ts';
 
 /** The spectra behind a film's colour, sampled over the integration range (eqs 15–18's integrand). */
 export interface FilmSpectrum {
@@ -25,7 +25,7 @@ export interface FilmSpectrum {
  * Samples R, I_in and I_out every `stepNm` from 380 to 830 nm: R of the single film (eqs 11–14),
  * or of the stack of `stack.layers` (the transfer matrix) when there is one.
  */
-export function filmSpectrum(stack: PlottedFilm, illuminant: IlluminantSpec, polarization: Polarization, stepNm = 1): FilmSpectrum {
+export function filmSpectrum(stack: LayeredFilm, illuminant: IlluminantSpec, polarization: Polarization, stepNm = 1): FilmSpectrum {
   const count = Math.floor((LAMBDA_MAX_NM - LAMBDA_MIN_NM) / stepNm) + 1;
   const lambdasNm = Float64Array.from({ length: count }, (_, i) => LAMBDA_MIN_NM + i * stepNm);
   const layers = layerStackOf(stack);

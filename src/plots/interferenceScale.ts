@@ -3,7 +3,7 @@ import { followsField } from '../physics/filmLayers.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
-import { type PlottedFilm, plottedXyz } from './plottedFilm.ts';
+import { type LayeredFilm, layeredFilmXyz } from '../physics/layeredFilm.ts';
 
 /** One film colour of the scale. */
 export interface ScaleColor {
@@ -28,16 +28,16 @@ export interface ScaleOptions {
  * take it (a stack with none is the same colour all along).
  */
 export function interferenceScale(
-  stack: Omit<PlottedFilm, 'thicknessNm'>,
+  stack: Omit<LayeredFilm, 'thicknessNm'>,
   maxThicknessNm: number,
   count: number,
   o: ScaleOptions,
 ): ScaleColor[] {
   const colors: ScaleColor[] = [];
-  const fixed = stack.layers?.length && !followsField(stack.layers) ? plottedXyz({ ...stack, thicknessNm: 0 }, o) : null;
+  const fixed = stack.layers?.length && !followsField(stack.layers) ? layeredFilmXyz({ ...stack, thicknessNm: 0 }, o) : null;
   for (let i = 0; i < count; i++) {
     const thicknessNm = (maxThicknessNm * i) / (count - 1);
-    const xyz = fixed ?? plottedXyz({ ...stack, thicknessNm }, o);
+    const xyz = fixed ?? layeredFilmXyz({ ...stack, thicknessNm }, o);
     const rgb = mapToGamut(applyMatrix3(o.xyzToLinearRgb, xyz), xyz[1]);
     colors.push({ thicknessNm, xyz, rgb8: [encode8(rgb[0]), encode8(rgb[1]), encode8(rgb[2])] });
   }
@@ -46,7 +46,7 @@ export function interferenceScale(
 
 /** A scale's arguments as one object (what the scale's worker is sent). */
 export interface ScaleRequest {
-  readonly stack: Omit<PlottedFilm, 'thicknessNm'>;
+  readonly stack: Omit<LayeredFilm, 'thicknessNm'>;
   readonly maxThicknessNm: number;
   readonly count: number;
   readonly options: ScaleOptions;
