@@ -185,7 +185,7 @@ export function flowCostMarkdown(): string {
       count(g.step.draws),
       count(g.step.fragments),
       count(g.step.fetches),
-      `${g.stepsPerFrame} (${g.realTimeStepsPerFrame.toFixed(1)})`,
+      `${Number(g.stepsPerFrame.toFixed(2))} (${g.realTimeStepsPerFrame.toFixed(1)})`,
       count(g.frame.draws),
       count(g.frame.fragments),
       count(g.frame.fetches),

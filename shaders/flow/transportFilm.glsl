@@ -1,9 +1,12 @@
 // GPU pass 6 of the step (mirrors src/physics/flow/transportFilm.ts): Dη/Dt = −η∇·u and
 // DΓ/Dt = −Γ∇·u in conservation form by first-order upwind finite volumes, as three passes: each
 // cell's limiter (the fraction of its outflow allowed, so no cell sends more than it holds), each
-// edge's fluxes Δt L_e u_e q_upwind × limiter, and each cell's update, which keeps η, Γ ≥ 0.
+// edge's fluxes Δt_s L_e u_e q_upwind × limiter, and each cell's update, which keeps η, Γ ≥ 0;
+// drawn once per sub-step of Δt_s = Δt/S (transportSubsteps in src/physics/flow/timeStep.ts).
 #include "cubeSphereGrid.glsl"
 #include "filmStep_pars.glsl"
+/** Δt_s, the transport's sub-step (R/U). */
+uniform float uTransportDt;
 
 /** The cell's limiter (r): 1, or its content over its outflow in one step. */
 vec4 tfcTransportLimiter() {
@@ -14,7 +17,7 @@ vec4 tfcTransportLimiter() {
     int e = tfcEdgeOf(edges[s]);
     outflow += tfcEdgeCells(e).z * max(0.0, sign(edges[s]) * texelFetch(uEdgeVelocity, tfcEdgeTexel(e), 0).r);
   }
-  outflow *= uDt;
+  outflow *= uTransportDt;
   float area = tfcCellGeometry(c).w;
   return vec4(outflow > area ? area / outflow : 1.0, 0.0, 0.0, 0.0);
 }
@@ -27,7 +30,7 @@ vec4 tfcTransportFlux() {
   vec4 cells = tfcEdgeCells(e);
   float u = texelFetch(uEdgeVelocity, tfcEdgeTexel(e), 0).r;
   ivec2 upwind = tfcCellTexel(tfcIndex(u >= 0.0 ? cells.x : cells.y));
-  float volume = uDt * cells.z * u * texelFetch(uLimiter, upwind, 0).r;
+  float volume = uTransportDt * cells.z * u * texelFetch(uLimiter, upwind, 0).r;
   return vec4(volume * texelFetch(uFilm, upwind, 0).rg, 0.0, 0.0);
 }
 

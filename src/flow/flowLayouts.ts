@@ -24,19 +24,22 @@ export const HOLE_TABLE: AtlasSize = { width: HOLE_RAYS + HOLE_FRAME.length, hei
 
 /**
  * The channels of the surfactant solve's cell texels (shaders/flow/solveSurfactant.glsl), in order
- * from r: the system's right side b, its diagonal and the starting guess Γ; a Jacobi sweep's next x
- * and the (b − Ax)² of the x it read.
+ * from r: the system's right side b − AΓ and its diagonal; a Chebyshev sweep's next iterate
+ * x_{k+1}, the iterate x_k it read (the next sweep's x_{k−1}) and the (b − Ax_k)² of it (x the
+ * increment δ = Γ' − Γ).
  */
-export const SURFACTANT_SYSTEM_TEXEL = ['rhs', 'diagonal', 'gamma'] as const;
-export const JACOBI_SWEEP_TEXEL = ['x', 'residualSquared'] as const;
+export const SURFACTANT_SYSTEM_TEXEL = ['rhs', 'diagonal'] as const;
+export const SURFACTANT_SWEEP_TEXEL = ['x', 'previousX', 'residualSquared'] as const;
 
 /** The one-hot mask that picks channel `channel` of a texel by a dot product. */
 const channelMask = (channel: number): readonly number[] => [0, 1, 2, 3].map((k) => (k === channel ? 1 : 0));
 
-/** The first sweep's guess (uGuessChannel): the system's Γ. */
-export const SYSTEM_GUESS = channelMask(SURFACTANT_SYSTEM_TEXEL.indexOf('gamma'));
-/** A later sweep's guess: the x of the sweep before. */
-export const SWEEP_GUESS = channelMask(JACOBI_SWEEP_TEXEL.indexOf('x'));
+/** The first sweep's x_0 and x_{−1} (uGuessChannel, uPreviousGuessChannel): no channel, so 0 (δ starts at none). */
+export const ZERO_GUESS: readonly number[] = [0, 0, 0, 0];
+/** A later sweep's x_k: the x of the sweep before. */
+export const SWEEP_GUESS = channelMask(SURFACTANT_SWEEP_TEXEL.indexOf('x'));
+/** A later sweep's x_{k−1}: the iterate the sweep before read. */
+export const SWEEP_PREVIOUS_GUESS = channelMask(SURFACTANT_SWEEP_TEXEL.indexOf('previousX'));
 
 /** `residualSquared` → `RESIDUAL_SQUARED`. */
 const constantCase = (name: string): string => name.replace(/([a-z0-9])([A-Z])/g, '$1_$2').toUpperCase();
@@ -47,7 +50,7 @@ const namedPlaces = (prefix: string, names: readonly string[], first: number, un
 
 /**
  * Every layout above as the defines its GLSL reads (`TFC_HOLE_E1_TEXEL`,
- * `TFC_SURFACTANT_SYSTEM_GAMMA_CHANNEL`, …), with the sizes of the hole table and the halo's tap table.
+ * `TFC_SURFACTANT_SYSTEM_DIAGONAL_CHANNEL`, …), with the sizes of the hole table and the halo's tap table.
  */
 export const flowLayoutDefines = (): Record<string, number> => ({
   TFC_HALO_TAP_TEXELS: HALO_TAP_TEXELS,
@@ -55,5 +58,5 @@ export const flowLayoutDefines = (): Record<string, number> => ({
   TFC_MAX_HOLES: MAX_HOLES,
   ...namedPlaces('HOLE', HOLE_FRAME, HOLE_RAYS, 'TEXEL'),
   ...namedPlaces('SURFACTANT_SYSTEM', SURFACTANT_SYSTEM_TEXEL, 0, 'CHANNEL'),
-  ...namedPlaces('JACOBI_SWEEP', JACOBI_SWEEP_TEXEL, 0, 'CHANNEL'),
+  ...namedPlaces('SURFACTANT_SWEEP', SURFACTANT_SWEEP_TEXEL, 0, 'CHANNEL'),
 });

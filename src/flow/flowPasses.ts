@@ -38,7 +38,7 @@ export const PASSES = {
   predict: ['predictEdgeVelocity.glsl', 'tfcPredictEdgeVelocity()'],
   weights: ['solveSurfactant.glsl', 'tfcSurfactantWeights()'],
   system: ['solveSurfactant.glsl', 'tfcSurfactantSystem()'],
-  sweep: ['solveSurfactant.glsl', 'tfcJacobiSweep()'],
+  sweep: ['solveSurfactant.glsl', 'tfcChebyshevSweep()'],
   correct: ['solveSurfactant.glsl', 'tfcCorrectEdgeVelocity()'],
   limiter: ['transportFilm.glsl', 'tfcTransportLimiter()'],
   flux: ['transportFilm.glsl', 'tfcTransportFlux()'],

@@ -1,18 +1,20 @@
 import { Color, type ShaderMaterial, type Texture, type WebGLRenderTarget, type WebGLRenderer } from 'three';
-import { SURFACTANT_JACOBI_SWEEPS } from '../physics/flow/solveSurfactant.ts';
+import type { ChebyshevSchedule } from '../physics/flow/chebyshevSchedule.ts';
 import { FullscreenPass } from '../gpu/fullscreenPass.ts';
-import { SWEEP_GUESS, SYSTEM_GUESS } from './flowLayouts.ts';
+import { SWEEP_GUESS, SWEEP_PREVIOUS_GUESS, ZERO_GUESS } from './flowLayouts.ts';
 import { type PassName, passMaterials } from './flowPasses.ts';
 import { type FlowTargets, allTargets, flowTargets } from './flowTargets.ts';
 import { type FlowUniformName, type FlowUniformSets, NO_PUNCTURE, allFlowUniforms } from './flowUniforms.ts';
 
 /** What a draw points its uniforms at: the targets the passes before it wrote, and values. */
-type DrawInputs = Partial<Record<FlowUniformName, Texture | readonly number[]>>;
+type DrawInputs = Partial<Record<FlowUniformName, Texture | readonly number[] | number>>;
 
 /**
  * The twin's step as draws (docs/flow.md#the-gpu-port): each pass of flowPasses.ts one fullscreen
  * draw into the RGBA float targets of a grid of side n (flowTargets.ts), in the renderer it is
- * given. It holds the film's state in its targets and knows nothing of time or steps taken.
+ * given: the surfactant solve's sweeps with the twin's Chebyshev schedule, the transport's passes
+ * once per sub-step. It holds the film's state in its targets and knows nothing of time or steps
+ * taken.
  */
 export class FlowStep {
   private current: FlowTargets;
@@ -27,6 +29,8 @@ export class FlowStep {
     private readonly renderer: WebGLRenderer,
     sets: FlowUniformSets,
     private readonly n: number,
+    private readonly schedule: Pick<ChebyshevSchedule, 'momentum' | 'step'>,
+    private readonly transportSubsteps: number,
   ) {
     this.current = flowTargets(n);
     this.uniforms = allFlowUniforms(sets);
@@ -96,19 +100,36 @@ export class FlowStep {
     this.draw('weights', t.weights, { uPrediction: t.prediction.texture });
     this.draw('system', t.system, { uSurfactantWeights: t.weights.texture });
     const [first, one, other] = t.sweeps;
-    this.draw('sweep', first, { uSurfactantRhs: t.system.texture, uGuess: t.system.texture, uGuessChannel: SYSTEM_GUESS });
+    const { momentum, step } = this.schedule;
+    const iterations = step.length;
+    const coefficients = (k: number) => ({ uChebyshevMomentum: momentum[k]!, uChebyshevStep: step[k]! });
+    this.draw('sweep', first, {
+      uSurfactantRhs: t.system.texture,
+      uGuess: t.system.texture,
+      uGuessChannel: ZERO_GUESS,
+      uPreviousGuessChannel: ZERO_GUESS,
+      ...coefficients(0),
+    });
     let x = first;
-    for (let k = 1; k <= SURFACTANT_JACOBI_SWEEPS; k++) {
-      // The sweep after the last measures the residual at the solution (the twin's extra sweep).
+    for (let k = 1; k <= iterations; k++) {
+      // The sweep after the last measures the residual at the solution (the twin's extra sweep; its x is not used).
       const next = x === one ? other : one;
-      this.draw('sweep', next, { uGuess: x.texture, uGuessChannel: SWEEP_GUESS });
-      if (k < SURFACTANT_JACOBI_SWEEPS) x = next;
+      const measuring = k === iterations;
+      this.draw('sweep', next, {
+        uGuess: x.texture,
+        uGuessChannel: SWEEP_GUESS,
+        uPreviousGuessChannel: SWEEP_PREVIOUS_GUESS,
+        ...(measuring ? { uChebyshevMomentum: 0, uChebyshevStep: 1 } : coefficients(k)),
+      });
+      if (!measuring) x = next;
       else this.sweepsMeasured = [first, next];
     }
-    this.draw('correct', t.edgeVelocity, { uSolvedGamma: x.texture });
-    this.draw('limiter', t.limiter, { uEdgeVelocity: t.edgeVelocity.texture });
-    this.draw('flux', t.flux, { uFilm: t.film.read.texture, uLimiter: t.limiter.texture });
-    this.drawFilm('update', { uFlux: t.flux.texture });
+    this.draw('correct', t.edgeVelocity, { uFilm: t.film.read.texture, uSolvedGamma: x.texture });
+    for (let k = 0; k < this.transportSubsteps; k++) {
+      this.draw('limiter', t.limiter, { uEdgeVelocity: t.edgeVelocity.texture });
+      this.draw('flux', t.flux, { uFilm: t.film.read.texture, uLimiter: t.limiter.texture });
+      this.drawFilm('update', { uFlux: t.flux.texture });
+    }
     if (evaporates) this.drawFilm('evaporate', {});
     this.rupture();
   }

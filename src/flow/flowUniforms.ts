@@ -7,7 +7,7 @@ import type { FlowParameters } from '../physics/flow/flowParameters.ts';
 import { rimLeadRad, rimThicknessFloorNm } from '../physics/flow/ruptureFilm.ts';
 import { WIND_SURFACE_FACTOR } from '../physics/flow/timeStep.ts';
 import type { FlowGridTextures } from './flowGridTextures.ts';
-import { SWEEP_GUESS } from './flowLayouts.ts';
+import { SWEEP_GUESS, SWEEP_PREVIOUS_GUESS } from './flowLayouts.ts';
 
 /** What the uniforms' values are made of: the simulation's parameters, numbers, grid, step and grid textures. */
 export interface FlowUniformInputs {
@@ -16,6 +16,8 @@ export interface FlowUniformInputs {
   readonly grid: CubeSphereGrid;
   /** The fixed step Δt, in R/U. */
   readonly dt: number;
+  /** The transport's sub-steps per step (transportSubsteps). */
+  readonly transportSubsteps: number;
   /** The burst's count of steps at which the film renews (renewFilm.ts), 0 for never. */
   readonly renewSteps: number;
   readonly textures: FlowGridTextures;
@@ -67,9 +69,16 @@ export const FLOW_UNIFORM_SETS = {
     uSurfactantRhs: input(),
     uGuess: input(),
     uGuessChannel: value(SWEEP_GUESS),
+    uPreviousGuessChannel: value(SWEEP_PREVIOUS_GUESS),
+    uChebyshevMomentum: value(0),
+    uChebyshevStep: value(1),
     uSolvedGamma: input(),
   }),
-  'transportFilm.glsl': () => ({ uLimiter: input(), uFlux: input() }),
+  'transportFilm.glsl': ({ dt, transportSubsteps }: FlowUniformInputs) => ({
+    uTransportDt: value(dt / transportSubsteps),
+    uLimiter: input(),
+    uFlux: input(),
+  }),
   'renewFilm.glsl': ({ renewSteps }: FlowUniformInputs) => ({ uBurst: input(), uRenewSteps: value(renewSteps), uHoles: input() }),
   'ruptureFilm.glsl': ({ parameters, numbers, grid }: FlowUniformInputs) => ({
     uRuptureEta: value(numbers.ruptureEta),

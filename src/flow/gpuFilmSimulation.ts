@@ -5,7 +5,9 @@ import { VELOCITY_SCALE_M_S } from '../physics/flow/flowConstants.ts';
 import { type FlowNumbers, flowNumbers } from '../physics/flow/flowNumbers.ts';
 import { type FlowParameters, validateFlowParameters } from '../physics/flow/flowParameters.ts';
 import { initialFilm } from '../physics/flow/initialFilm.ts';
-import { timeStep } from '../physics/flow/timeStep.ts';
+import type { ChebyshevSchedule } from '../physics/flow/chebyshevSchedule.ts';
+import { surfactantSolveSchedule } from '../physics/flow/solveSurfactant.ts';
+import { type TimeStepRule, timeStep, transportSubsteps } from '../physics/flow/timeStep.ts';
 import { floatTexture } from '../gpu/floatRow.ts';
 import { cellTexelIndex, faceAtlasSize } from './flowAtlas.ts';
 import { type FlowGridTextures, flowGridTextures } from './flowGridTextures.ts';
@@ -40,6 +42,10 @@ export class GpuFilmSimulation {
   /** The fixed step in R/U, and in seconds. */
   readonly dt: number;
   readonly stepSeconds: number;
+  /** The surfactant solve's Chebyshev iterations, the twin's for the same parameters and Δt. */
+  readonly solveSchedule: ChebyshevSchedule;
+  /** The transport's sub-steps per step, the twin's. */
+  readonly transportSubsteps: number;
   /** Steps taken since the start. */
   steps = 0;
   private textures: FlowGridTextures;
@@ -51,12 +57,21 @@ export class GpuFilmSimulation {
   /** The steps the padded film was made for. */
   private paddedAt = -1;
 
-  /** A film at its start, every parameter checked first (validateFlowParameters). */
-  constructor(renderer: WebGLRenderer, given: Partial<Record<string, unknown>> = {}, options: { readonly renew?: boolean } = {}) {
+  /**
+   * A film at its start, every parameter checked first (validateFlowParameters); Δt sized by the
+   * twin's rule `timeStep` (the flow's unless given, as createFilmSimulation's).
+   */
+  constructor(
+    renderer: WebGLRenderer,
+    given: Partial<Record<string, unknown>> = {},
+    options: { readonly renew?: boolean; readonly timeStep?: TimeStepRule } = {},
+  ) {
     this.parameters = validateFlowParameters(given);
     this.numbers = flowNumbers(this.parameters);
     this.grid = cubeSphereGrid(this.parameters.gridN);
-    this.dt = timeStep(this.grid, this.numbers);
+    this.dt = (options.timeStep ?? timeStep)(this.grid, this.numbers);
+    this.solveSchedule = surfactantSolveSchedule(this.grid, this.numbers, this.dt);
+    this.transportSubsteps = transportSubsteps(this.grid, this.numbers, this.dt);
     this.stepSeconds = this.dt * this.numbers.timeScaleS;
     this.textures = flowGridTextures(this.grid, cubeSphereHalo(this.grid));
     this.start = this.startTexture();
@@ -65,10 +80,11 @@ export class GpuFilmSimulation {
       numbers: this.numbers,
       grid: this.grid,
       dt: this.dt,
+      transportSubsteps: this.transportSubsteps,
       renewSteps: renewSteps(options.renew ?? false, this.stepSeconds),
       textures: this.textures,
     });
-    this.passes = new FlowStep(renderer, sets, this.grid.n);
+    this.passes = new FlowStep(renderer, sets, this.grid.n, this.solveSchedule, this.transportSubsteps);
   }
 
   private startTexture(): DataTexture {

@@ -15,8 +15,8 @@ import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './we
 const GRID_N = 16;
 const FROZEN = `/?field=flow&grid=${GRID_N}&seed=5&wind=0.5&animate=0&time=0.06&env=none`;
 /**
- * The wind thins that film to its rupture thickness at 0.125 s; the rims then sweep the sphere in a
- * few steps, and with renew the film is new again 0.25 s (RENEW_DELAY_S) after that.
+ * The wind thins that film to its rupture thickness at 0.126 s; the rims sweep the sphere within
+ * that 4.9 ms step, and with renew the film is new again 0.25 s (RENEW_DELAY_S) after that.
  */
 const RENEWED_S = 0.45;
 

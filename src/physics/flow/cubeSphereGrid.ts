@@ -30,8 +30,10 @@ export interface CubeSphereGrid {
   readonly cellEdgeSign: Float64Array;
   /** The cell across each of the 4 edges. */
   readonly cellNeighbor: Int32Array;
-  /** The smallest distance between neighbouring centres (sets the time step). */
+  /** The smallest distance between neighbouring centres (bounds the time step by the elastic waves). */
   readonly minSpacing: number;
+  /** The mean distance between neighbouring centres over the edges (bounds the time step by advection). */
+  readonly meanSpacing: number;
 }
 
 const QUARTER_PI = Math.PI / 4;
@@ -161,7 +163,11 @@ function buildGrid(n: number): CubeSphereGrid {
   }
   if (edges !== edgeCount) throw new Error(`cube-sphere grid ${n}: ${edges} edges, expected ${edgeCount}`);
   let minSpacing = Infinity;
-  for (let e = 0; e < edgeCount; e++) minSpacing = Math.min(minSpacing, edgeDistance[e]!);
+  let spacingSum = 0;
+  for (let e = 0; e < edgeCount; e++) {
+    minSpacing = Math.min(minSpacing, edgeDistance[e]!);
+    spacingSum += edgeDistance[e]!;
+  }
   return {
     n,
     cellCount,
@@ -178,5 +184,6 @@ function buildGrid(n: number): CubeSphereGrid {
     cellEdgeSign,
     cellNeighbor,
     minSpacing,
+    meanSpacing: spacingSum / edgeCount,
   };
 }

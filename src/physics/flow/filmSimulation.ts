@@ -7,8 +7,9 @@ import { initialFilm } from './initialFilm.ts';
 import { type EdgePrediction, predictEdgeVelocity } from './predictEdgeVelocity.ts';
 import { reconstructCellVelocity } from './reconstructCellVelocity.ts';
 import { openHole, ruptureFilm } from './ruptureFilm.ts';
-import { type SurfactantWork, correctEdgeVelocity, solveSurfactant, surfactantWork } from './solveSurfactant.ts';
-import { WIND_SURFACE_FACTOR, timeStep } from './timeStep.ts';
+import type { ChebyshevSchedule } from './chebyshevSchedule.ts';
+import { type SurfactantWork, correctEdgeVelocity, solveSurfactant, surfactantSolveSchedule, surfactantWork } from './solveSurfactant.ts';
+import { type TimeStepRule, WIND_SURFACE_FACTOR, timeStep, transportSubsteps } from './timeStep.ts';
 import { type TransportWork, transportFilm, transportWork } from './transportFilm.ts';
 
 /** The evolving fields, in the units of eq. (17) (docs/flow.md#the-model). */
@@ -38,6 +39,10 @@ export interface FilmSimulation {
   /** The fixed step in R/U, and in seconds. */
   readonly dt: number;
   readonly stepSeconds: number;
+  /** The surfactant solve's Chebyshev iterations, fixed by the parameters and Δt (surfactantSolveSchedule). */
+  readonly solveSchedule: ChebyshevSchedule;
+  /** The transport's sub-steps of Δt/S each (transportSubsteps). */
+  readonly transportSubsteps: number;
   readonly state: FilmState;
   readonly work: StepWork;
 }
@@ -52,13 +57,18 @@ interface StepWork {
   readonly sampleVector: ReturnType<typeof paddedSampler>;
 }
 
+export interface FilmSimulationOptions {
+  /** The rule that sizes Δt: the flow's (timeStep, the default) or, for comparison runs, elasticWaveTimeStep. */
+  readonly timeStep?: TimeStepRule;
+}
+
 /** A film at rest on a bubble, every parameter checked first (validateFlowParameters). */
-export function createFilmSimulation(given: Partial<Record<string, unknown>> = {}): FilmSimulation {
+export function createFilmSimulation(given: Partial<Record<string, unknown>> = {}, options: FilmSimulationOptions = {}): FilmSimulation {
   const parameters = validateFlowParameters(given);
   const numbers = flowNumbers(parameters);
   const grid = cubeSphereGrid(parameters.gridN);
   const halo = cubeSphereHalo(grid);
-  const dt = timeStep(grid, numbers);
+  const dt = (options.timeStep ?? timeStep)(grid, numbers);
   const { eta, gamma } = initialFilm(grid, parameters.seed);
   const windAlongNormal = new Float64Array(grid.edgeCount);
   // The air at the surface: WIND_SURFACE_FACTOR × the wind (along +x) projected onto the tangent plane.
@@ -70,6 +80,8 @@ export function createFilmSimulation(given: Partial<Record<string, unknown>> = {
     halo,
     dt,
     stepSeconds: dt * numbers.timeScaleS,
+    solveSchedule: surfactantSolveSchedule(grid, numbers, dt),
+    transportSubsteps: transportSubsteps(grid, numbers, dt),
     state: {
       eta,
       gamma,
@@ -95,7 +107,7 @@ export function createFilmSimulation(given: Partial<Record<string, unknown>> = {
 /**
  * One fixed step Δt of eq. (17), as the passes a GPU mirrors (docs/flow.md#the-step): reconstruct
  * cell velocities, halo, advect + force at edges, surfactant solve, edge correction, conservative
- * transport of η and Γ, evaporation, rupture and rims.
+ * transport of η and Γ (in sub-steps), evaporation, rupture and rims.
  */
 export function stepFilm(sim: FilmSimulation): void {
   const { grid, halo, numbers, dt, state, work } = sim;
@@ -115,9 +127,10 @@ export function stepFilm(sim: FilmSimulation): void {
     },
     work.prediction,
   );
-  state.surfactantResidual = solveSurfactant(grid, dt, state.gamma, work.prediction, work.surfactant);
-  correctEdgeVelocity(grid, work.prediction, work.surfactant.solution, state.edgeVelocity);
-  transportFilm(grid, dt, state.edgeVelocity, state.eta, state.gamma, work.transport);
+  state.surfactantResidual = solveSurfactant(grid, dt, state.gamma, work.prediction, work.surfactant, sim.solveSchedule);
+  correctEdgeVelocity(grid, work.prediction, state.gamma, work.surfactant.solution, state.edgeVelocity);
+  const substeps = sim.transportSubsteps;
+  for (let k = 0; k < substeps; k++) transportFilm(grid, dt / substeps, state.edgeVelocity, state.eta, state.gamma, work.transport);
   evaporate(state, numbers.evaporation * dt);
   ruptureFilm(
     { halo, parameters: sim.parameters, numbers, eta: state.eta, gamma: state.gamma, intact: state.intact, holes: state.holes },

@@ -7,7 +7,7 @@
 import type { WebGLRenderTarget, WebGLRenderer } from 'three';
 import { HOLE_RAYS, MAX_HOLES } from '../../../src/physics/flow/filmHoles.ts';
 import { cellTexelIndex } from '../../../src/flow/flowAtlas.ts';
-import { HOLE_TABLE, JACOBI_SWEEP_TEXEL, holeFrameTexel } from '../../../src/flow/flowLayouts.ts';
+import { HOLE_TABLE, SURFACTANT_SWEEP_TEXEL, holeFrameTexel } from '../../../src/flow/flowLayouts.ts';
 import type { GpuFilmSimulation } from '../../../src/flow/gpuFilmSimulation.ts';
 
 /** A target's RGBA float texels, row-major. */
@@ -37,10 +37,10 @@ export function openHoles(texels: Float32Array): { center: number[]; radius: num
     .map((s) => ({ center: [...texel(s, center).subarray(0, 3)], radius: Array.from({ length: HOLE_RAYS }, (_, k) => texel(s, k)[0]!) }));
 }
 
-/** √Σ (b − Ax)² over the cells of a Jacobi sweep's texels. */
+/** √Σ (b − Ax)² over the cells of a surfactant sweep's texels. */
 function residualNorm(texels: Float32Array): number {
   let sum = 0;
-  for (let t = JACOBI_SWEEP_TEXEL.indexOf('residualSquared'); t < texels.length; t += 4) sum += texels[t]!;
+  for (let t = SURFACTANT_SWEEP_TEXEL.indexOf('residualSquared'); t < texels.length; t += 4) sum += texels[t]!;
   return Math.sqrt(sum);
 }
 

@@ -9,10 +9,11 @@ import { HOLE_RAYS } from '../../../src/physics/flow/filmHoles.ts';
 import {
   HOLE_FRAME,
   HOLE_TABLE,
-  JACOBI_SWEEP_TEXEL,
+  SURFACTANT_SWEEP_TEXEL,
   SURFACTANT_SYSTEM_TEXEL,
   SWEEP_GUESS,
-  SYSTEM_GUESS,
+  SWEEP_PREVIOUS_GUESS,
+  ZERO_GUESS,
   flowLayoutDefines,
   holeFrameTexel,
 } from '../../../src/flow/flowLayouts.ts';
@@ -42,7 +43,7 @@ describe('flow layouts', () => {
   it("the solve's channels are distinct channels of a texel, and each sweep's guess picks the named one", () => {
     for (const [prefix, names] of [
       ['TFC_SURFACTANT_SYSTEM', SURFACTANT_SYSTEM_TEXEL],
-      ['TFC_JACOBI_SWEEP', JACOBI_SWEEP_TEXEL],
+      ['TFC_SURFACTANT_SWEEP', SURFACTANT_SWEEP_TEXEL],
     ] as const) {
       const channels = Object.entries(defines)
         .filter(([k]) => k.startsWith(prefix) && k.endsWith('_CHANNEL'))
@@ -51,8 +52,9 @@ describe('flow layouts', () => {
       expect(new Set(channels).size).toBe(names.length);
       expect(channels.every((c) => c >= 0 && c < 4)).toBe(true);
     }
-    expect(SYSTEM_GUESS).toEqual([0, 1, 2, 3].map((c) => Number(c === defines.TFC_SURFACTANT_SYSTEM_GAMMA_CHANNEL)));
-    expect(SWEEP_GUESS).toEqual([0, 1, 2, 3].map((c) => Number(c === defines.TFC_JACOBI_SWEEP_X_CHANNEL)));
+    expect(ZERO_GUESS).toEqual([0, 0, 0, 0]);
+    expect(SWEEP_GUESS).toEqual([0, 1, 2, 3].map((c) => Number(c === defines.TFC_SURFACTANT_SWEEP_X_CHANNEL)));
+    expect(SWEEP_PREVIOUS_GUESS).toEqual([0, 1, 2, 3].map((c) => Number(c === defines.TFC_SURFACTANT_SWEEP_PREVIOUS_X_CHANNEL)));
   });
 
   it('the GLSL reads every layout define, and no TFC_ name the passes are not given or it does not declare', () => {

@@ -26,6 +26,7 @@ const inputs: FlowUniformInputs = {
   numbers: flowNumbers(parameters),
   grid,
   dt: 1e-3,
+  transportSubsteps: 2,
   renewSteps: 0,
   textures: flowGridTextures(grid, cubeSphereHalo(grid)),
 };
