@@ -1,6 +1,7 @@
 import { parseArgs } from 'node:util';
 import { parameterNamed, readParameter, settingsToQuery } from '../settings/settingsQuery.ts';
-import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
+import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
+import { DEMO_VIEW_SETTINGS } from '../settings/demoView.ts';
 import { parseDecimal, describeValue, isInDomain, ParameterError, rejectValue } from '../input/validate.ts';
 import { mediumFromJson, mediumText } from '../physics/medium.ts';
 import { parseJsonArray } from './parseJsonArray.ts';
@@ -176,7 +177,8 @@ function jsonMediumText(value: unknown): string | null {
 function readView(fields: RawView, field: (name: string) => string, needsOut: true): RenderView;
 function readView(fields: RawView, field: (name: string) => string, needsOut: false): null;
 function readView(fields: RawView, field: (name: string) => string, needsOut: boolean): RenderView | null {
-  let settings: ViewSettings = DEFAULT_VIEW_SETTINGS;
+  // The demo's default view, which its URL leaves out (demoView.ts).
+  let settings: ViewSettings = DEMO_VIEW_SETTINGS;
   for (const row of VIEW_PARAMETERS) {
     if (!fields.has(row.url)) continue;
     const value = fields.get(row.url);
@@ -193,7 +195,7 @@ function readView(fields: RawView, field: (name: string) => string, needsOut: bo
   const out = fields.get('out');
   if (out === undefined && !needsOut) return null;
   if (typeof out !== 'string' || out === '') return rejectValue(field('out'), out, expectedOf('out'));
-  return { out, widthPx: widthPx!, heightPx: heightPx!, scale: scale!, plots, query: settingsToQuery(settings) };
+  return { out, widthPx: widthPx!, heightPx: heightPx!, scale: scale!, plots, query: settingsToQuery(settings, DEMO_VIEW_SETTINGS) };
 }
 
 function pictureNumber(name: PictureNumber, value: unknown, field: string): number {

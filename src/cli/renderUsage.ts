@@ -1,11 +1,12 @@
 import { VIEW_PARAMETERS } from '../settings/viewParameters.ts';
+import { DEMO_VIEW_SETTINGS } from '../settings/demoView.ts';
 import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
 import { PICTURE_OPTIONS, VIEW_FIELDS, expectedOf } from './renderOptions.ts';
 import { FRAME_MS, FRAME_MS_EXPECTED, TIME_LAPSE_EXPECTED } from './timeLapseOptions.ts';
 import { optionLines } from './usage.ts';
 
-/** The view's options, one per schema row: the URL parameter's name, label, range and default. */
-const viewLines = optionLines(VIEW_PARAMETERS.map((row) => ({ flag: row.url, ...row })));
+/** The view's options, one per schema row: the URL parameter's name, label, range and the demo's default (demoView.ts). */
+const viewLines = optionLines(VIEW_PARAMETERS.map((row) => ({ flag: row.url, ...row, defaultText: row.write(DEMO_VIEW_SETTINGS) })));
 const pictureLines = optionLines(
   Object.entries(PICTURE_OPTIONS).map(([name, o]) => ({
     flag: name,

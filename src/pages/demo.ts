@@ -5,6 +5,7 @@ import { FRAME_MARKS } from './frameMarks.ts';
 import { startsClosed } from '../app/startsClosed.ts';
 import { pageLanguage, prefersReducedMotion } from '../app/pagePreferences.ts';
 import type { ViewSettings } from '../settings/viewParameters.ts';
+import { DEMO_VIEW_SETTINGS } from '../settings/demoView.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
 import { createBubbleRenderer } from '../scene/bubbleRenderer.ts';
 
@@ -21,8 +22,9 @@ const { lang, cat, error: langError } = pageLanguage(query, document.documentEle
 document.documentElement.lang = lang;
 document.title = cat['app.title'];
 heading.textContent = cat['app.heading'];
-const parsed = parseSettings(location.search);
-// Less motion asked for: the swirl stands still unless the URL says animate=1.
+// What the URL leaves out is the demo's default view (a bubble's life, demoView.ts), read and written alike.
+const parsed = parseSettings(location.search, DEMO_VIEW_SETTINGS);
+// Less motion asked for: the film stands still unless the URL says animate=1.
 const settings = prefersReducedMotion() && !query.has('animate') ? { ...parsed.settings, animate: false } : parsed.settings;
 function say(text: string) {
   const line = document.createElement('p');
@@ -40,7 +42,7 @@ let urlTimer = 0;
 function followInUrl(s: ViewSettings) {
   clearTimeout(urlTimer);
   urlTimer = window.setTimeout(() => {
-    const shown = new URLSearchParams(settingsToQuery({ ...s, timeSeconds: s.animate ? 0 : s.timeSeconds }));
+    const shown = new URLSearchParams(settingsToQuery({ ...s, timeSeconds: s.animate ? 0 : s.timeSeconds }, DEMO_VIEW_SETTINGS));
     if (query.has('lang')) shown.set('lang', lang); // the page's own parameter stays
     const text = shown.toString();
     history.replaceState(null, '', text ? `?${text}` : location.pathname);

@@ -83,8 +83,11 @@ export function parseSettings(query: string, base: ViewSettings = DEFAULT_VIEW_S
   return { settings, errors: refusals.map((r) => refusalText(r)), refusals };
 }
 
-/** The query string that `parseSettings` turns back into these settings (defaults left out). */
-export function settingsToQuery(s: ViewSettings): string {
-  const pairs = VIEW_PARAMETERS.map((row) => [row.url, row.write(s), row.defaultText] as const);
+/**
+ * The query string that `parseSettings` with the same `base` turns back into these settings: what
+ * equals `base` (a page's default view) is left out.
+ */
+export function settingsToQuery(s: ViewSettings, base: ViewSettings = DEFAULT_VIEW_SETTINGS): string {
+  const pairs = VIEW_PARAMETERS.map((row) => [row.url, row.write(s), row.write(base)] as const);
   return new URLSearchParams(pairs.filter(([, v, d]) => v !== d).map(([k, v]) => [k, v])).toString();
 }

@@ -160,7 +160,7 @@ test("reduced motion leaves the swirl still on the demo and in the element unles
   page,
 }) => {
   await page.emulateMedia({ reducedMotion: 'reduce' });
-  await page.goto('/?mode=table&env=none');
+  await page.goto('/?mode=table&env=none&field=swirl');
   await ready(page);
   const animate = () =>
     page.evaluate(() => (window as unknown as { bubbleApp: { current: { animate: boolean } } }).bubbleApp.current.animate);

@@ -74,10 +74,10 @@ test('without WebGL2, an HDR environment is fetched and the CPU image reflects i
       return [at(5, 5), at(image.width - 5, 5), at(5, image.height - 5), at(image.width - 5, image.height - 5)];
     });
   };
-  await page.goto('/?env=park&envRotation=90&animate=0');
+  await page.goto('/?field=swirl&env=park&envRotation=90&animate=0');
   const park = await corners();
   await expect(page.locator('.environment-status')).toHaveCount(0);
-  await page.goto('/?env=sky&animate=0');
+  await page.goto('/?field=swirl&env=sky&animate=0');
   const sky = await corners();
   console.log(`fallback corners: park ${JSON.stringify(park)}, sky ${JSON.stringify(sky)}`);
   expect(park).not.toEqual(sky);

@@ -14,11 +14,12 @@ const PIXEL_THRESHOLD = 0.03;
 /** Pixels allowed to differ: the sphere's antialiased rim. */
 const MAX_DIFF_PIXEL_RATIO = 0.01;
 
+/** The painted fields in the procedural sky, each named in full (the demo's own default view is the flow on black). */
 const VIEWS = {
-  default: '/?animate=0&time=0',
-  'drainage-d93': '/?field=drainage&illuminant=D93&animate=0&time=0',
-  'uniform-350nm': '/?field=uniform&thickness=350&animate=0&time=0',
-  'swirl-t5': '/?field=swirl&animate=0&time=5',
+  'swirl-t0': '/?field=swirl&env=sky&animate=0&time=0',
+  'drainage-d93': '/?field=drainage&env=sky&illuminant=D93&animate=0&time=0',
+  'uniform-350nm': '/?field=uniform&env=sky&thickness=350&animate=0&time=0',
+  'swirl-t5': '/?field=swirl&env=sky&animate=0&time=5',
 };
 
 /** Draws a frame and sums up the middle 160×160 pixels, where the bubble is, from the drawing buffer. */

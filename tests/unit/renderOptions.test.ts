@@ -2,10 +2,12 @@
  * The render command's options (src/cli/renderOptions.ts). The view's options must be the URL's
  * parameters with the URL's refusals, so the URL parser (src/settings/settingsQuery.ts) is the
  * reference: every schema row, given the same texts, accepts and refuses exactly what the URL does.
+ * The command renders the demo, so the defaults are the demo's (DEMO_VIEW_SETTINGS), read and written alike.
  */
 import { describe, expect, it } from 'vitest';
 import { parseSettings, settingsToQuery } from '../../src/settings/settingsQuery.ts';
 import { VIEW_PARAMETERS } from '../../src/settings/viewParameters.ts';
+import { DEMO_VIEW_SETTINGS } from '../../src/settings/demoView.ts';
 import { PICTURE_OPTIONS, type RenderView, parseRenderCases, parseRenderCommandLine } from '../../src/cli/renderOptions.ts';
 import { ParameterError } from '../../src/input/validate.ts';
 import { FRAME_MS, MAX_TIME_LAPSE_FRAMES, TIME_LAPSE_EXPECTED } from '../../src/cli/timeLapseOptions.ts';
@@ -34,10 +36,11 @@ function verdict(...args: string[]): { query: string } | { error: string } {
 describe('render options: the URL parameters', () => {
   for (const row of VIEW_PARAMETERS) {
     it(`--${row.url} takes and refuses what ?${row.url}= does`, () => {
-      for (const text of [row.defaultText, ...CANDIDATES]) {
-        const url = parseSettings(new URLSearchParams([[row.url, text]]).toString());
+      for (const text of [row.defaultText, row.write(DEMO_VIEW_SETTINGS), ...CANDIDATES]) {
+        const url = parseSettings(new URLSearchParams([[row.url, text]]).toString(), DEMO_VIEW_SETTINGS);
         const got = verdict(`--${row.url}`, text);
-        if (url.errors.length === 0) expect(got, `--${row.url} ${text.slice(0, 40)}`).toEqual({ query: settingsToQuery(url.settings) });
+        if (url.errors.length === 0)
+          expect(got, `--${row.url} ${text.slice(0, 40)}`).toEqual({ query: settingsToQuery(url.settings, DEMO_VIEW_SETTINGS) });
         else {
           expect(got, `--${row.url} ${text.slice(0, 40)}`).toHaveProperty('error');
           const { error } = got as { error: string };
@@ -50,9 +53,11 @@ describe('render options: the URL parameters', () => {
     });
   }
 
-  it('leaves every default out of the query, so no options is the default view', () => {
+  it("leaves every one of the demo's defaults out of the query, so no options is the demo's default view", () => {
     expect(verdict()).toEqual({ query: '' });
-    expect(verdict(...VIEW_PARAMETERS.flatMap((row) => [`--${row.url}`, row.defaultText]))).toEqual({ query: '' });
+    expect(verdict(...VIEW_PARAMETERS.flatMap((row) => [`--${row.url}`, row.write(DEMO_VIEW_SETTINGS)]))).toEqual({ query: '' });
+    // The schema's own default (the element's swirl in the sky) is not the demo's: the query names it.
+    expect(verdict('--field', 'swirl', '--env', 'sky')).toEqual({ query: 'field=swirl&env=sky' });
   });
 });
 
@@ -115,11 +120,11 @@ describe('render options: --cases', () => {
       '--width',
       '200',
       '--env',
-      'none',
+      'sky',
     );
     expect(views).toEqual([
-      { out: 'a.png', widthPx: 200, heightPx: 480, scale: 1, plots: false, query: 'field=uniform&thickness=450&env=none&animate=0' },
-      { out: 'b.png', widthPx: 320, heightPx: 480, scale: 1, plots: true, query: 'illuminant=D93&env=none&probe=0.25%2C0.5' },
+      { out: 'a.png', widthPx: 200, heightPx: 480, scale: 1, plots: false, query: 'field=uniform&thickness=450&env=sky&animate=0' },
+      { out: 'b.png', widthPx: 320, heightPx: 480, scale: 1, plots: true, query: 'illuminant=D93&env=sky&probe=0.25%2C0.5' },
     ]);
   });
 

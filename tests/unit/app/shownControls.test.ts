@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { shownControls } from '../../../src/app/shownControls.ts';
 import { FIELDS } from '../../../src/fields/fields.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../../../src/settings/viewParameters.ts';
+import { DEMO_VIEW_SETTINGS } from '../../../src/settings/demoView.ts';
 
 const view = (changes: Partial<ViewSettings>): ViewSettings => ({ ...DEFAULT_VIEW_SETTINGS, ...changes });
 const FLOW_FOLDER_KEYS = VIEW_PARAMETERS.filter((r) => r.control?.folder === 'flow').map((r) => r.key);
@@ -10,7 +11,7 @@ const FIELD_OWN_KEYS = ['thicknessRangeNm', 'swirlSpeed', ...FLOW_FOLDER_KEYS];
 const STACK = [{ n: 2.35, thicknessNm: 56.6 }] as const;
 
 describe("the panel's shown controls", () => {
-  it('with the swirl (the default): its speed and range shown, the flow folder hidden, every other row shown', () => {
+  it("with the swirl (the schema's default, the element's): its speed and range shown, the flow folder hidden, every other row shown", () => {
     const shown = shownControls(DEFAULT_VIEW_SETTINGS);
     expect(DEFAULT_VIEW_SETTINGS.field).toBe('swirl');
     expect(shown.rows).toMatchObject({ swirlSpeed: true, thicknessRangeNm: true, thicknessNm: true, field: true });
@@ -26,6 +27,18 @@ describe("the panel's shown controls", () => {
     expect(shown.rows).toMatchObject({ swirlSpeed: false, thicknessRangeNm: false, thicknessNm: true, field: true });
     expect(FLOW_FOLDER_KEYS).toEqual(expect.arrayContaining(['radiusMm', 'windMps', 'gridN', 'renew']));
     for (const key of FLOW_FOLDER_KEYS) expect(shown.rows[key], key).toBe(true);
+    expect(shown.folders.flow).toBe(true);
+  });
+
+  it("the demo's default view (the flow): the swirl speed and range hidden, the flow folder shown", () => {
+    const shown = shownControls(DEMO_VIEW_SETTINGS);
+    expect(shown.rows).toMatchObject({
+      swirlSpeed: false,
+      thicknessRangeNm: false,
+      thicknessNm: true,
+      windMps: true,
+      evaporationNmS: true,
+    });
     expect(shown.folders.flow).toBe(true);
   });
 
