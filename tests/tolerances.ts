@@ -293,3 +293,14 @@ export const FLOW_GPU_FLOW_STEP_FIELD_TOL = 1e-4;
  * in the twin (float32 adds nothing visible).
  */
 export const FLOW_GPU_CHEBYSHEV_RESIDUAL_MAX = 2e-3;
+/**
+ * The noise on every timing fed to the frame governor's tests: ±30 % per frame, as frames vary on
+ * a busy machine (a garbage collection, another tab); the governor must not follow it.
+ */
+export const GOVERNOR_NOISE = 0.3;
+
+/**
+ * A settled governor's mean frame may exceed its budget by this factor: the overrun it tolerates
+ * before going down (frameBudget.ts's OVERRUN), so a frame mean within it is one it keeps.
+ */
+export const GOVERNOR_OVERRUN = 1.25;

@@ -4,7 +4,12 @@ import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import { type Catalogue, EN } from '../i18n/en.ts';
 import type { BubbleView } from '../scene/bubbleView.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import type { AppSettings, ViewSettings } from '../settings/viewParameters.ts';
+import { AUTO } from '../settings/parameterRow.ts';
+import { type AppSettings, type GovernedSettings, type ViewSettings, filmSettingsOf, governedValue } from '../settings/viewParameters.ts';
+import { message } from '../i18n/messages.ts';
+import type { BudgetChoice } from './frameBudget.ts';
+import { FilmRate } from './filmRate.ts';
+import { type GovernedView, FrameGovernor, devicePixelRatioShown } from './frameGovernor.ts';
 import { addAccessStyles } from './accessStyles.ts';
 import { createControlPanel } from './controlPanel.ts';
 import { FilmAtProbe } from './filmAtProbe.ts';
@@ -63,17 +68,23 @@ export class BubbleApp {
   private readonly stopListening: () => void;
   /** The surface's size the view was last fitted to. */
   private fitted = '';
-  /** The page's own settings (the view holds the film's, but for the method asked for). */
-  private app: AppSettings;
+  /** The page's own settings and the governed knobs as asked (the view holds the film's, but for the method asked for). */
+  private app: AppSettings & GovernedSettings;
   private askedMode: ViewSettings['mode'];
+  /** The document's frame governor, this app's place in it while it animates, and its choice then. */
+  private readonly governor: FrameGovernor;
+  private governed: GovernedView | null = null;
+  private choice: BudgetChoice | null = null;
+  private readonly filmRate = new FilmRate();
 
   constructor(
     private readonly parts: BubbleAppParts,
-    initial: AppSettings,
+    initial: ViewSettings,
   ) {
     const { view, surface } = parts;
-    this.app = { animate: initial.animate, probe: initial.probe };
+    this.app = appSettingsOf(initial);
     this.askedMode = view.current.mode;
+    this.governor = FrameGovernor.of(surface.ownerDocument);
     this.cat = parts.catalogue ?? EN;
     addAccessStyles(surface.ownerDocument);
     this.film = new FilmAtProbe({
@@ -83,18 +94,20 @@ export class BubbleApp {
       cat: this.cat,
       settings: () => this.current,
       looping: () => this.loop.looping,
+      filmTime: () => this.filmTimeText('governor.sentence'),
     });
     this.status = new StatusLines(surface.ownerDocument, parts.messages, this.cat);
-    this.showMethod(view.current);
+    this.showMethod(filmSettingsOf(initial));
     this.loop = new FrameLoop(
       view,
       surface,
       () => this.animating,
-      () => this.draw(),
+      (now, follows) => this.draw(now, follows),
     );
     view.onEnvironmentChange = () => this.redraw();
     this.buildControls();
     this.stopListening = this.listen();
+    this.govern();
     this.fit();
     this.loop.start();
   }
@@ -110,15 +123,19 @@ export class BubbleApp {
 
   /** Shows new (validated) settings; the panel follows when `rebuildControls`. */
   set(s: ViewSettings, rebuildControls = false): void {
-    const { animate, probe, ...film } = s;
-    this.app = { animate, probe };
-    this.showMethod(film);
+    this.app = appSettingsOf(s);
+    this.showMethod(this.filmSettings(s));
+    this.filmRate.reset();
+    this.govern();
+    this.fit();
     this.film.settingsChanged();
     if (rebuildControls) this.buildControls();
     this.loop.request();
   }
 
   dispose(): void {
+    if (this.governed) this.governor.leave(this.governed);
+    this.governed = null;
     this.loop.dispose();
     this.film.dispose();
     this.stopListening();
@@ -158,10 +175,16 @@ export class BubbleApp {
    * a change complete it). A frame drawn while the HDR environment is on its way, or with a flowing
    * film short of its frozen time, is not complete either. The plots follow a complete frame.
    */
-  private draw(): void {
+  private draw(now: number, follows: boolean): void {
     const view = this.parts.view;
     // A shared renderer's canvas holds another view's frame when this one did not draw.
     if (view.render(true)) this.parts.present?.();
+    const cost = view.takeFrameCost();
+    if (this.governed && this.loop.looping) {
+      this.governor.drawn(now, cost, view.film.flowGrid, follows);
+      const filmSeconds = view.film.timeSeconds;
+      if (filmSeconds !== null) this.filmRate.frame(now, filmSeconds * view.current.simSpeed);
+    }
     this.status.showEnvironment(view.environmentStatus);
     // A flowing film short of a frozen time is not complete (the frames after bring it there); while
     // the film animates, every frame shows its film time and is.
@@ -180,6 +203,59 @@ export class BubbleApp {
 
   private get animating(): boolean {
     return this.app.animate && THICKNESS_FIELDS[this.parts.view.current.field].animates;
+  }
+
+  /** The film settings the view draws: the governed knobs as asked, else as the governor chose, else their defaults (a frozen view's). */
+  private filmSettings(s: ViewSettings): FilmSettings {
+    return filmSettingsOf(s, this.choice ? { gridN: this.choice.gridN } : {});
+  }
+
+  /**
+   * Joins the document's frame governor while the film animates (with what the user fixed), leaves
+   * it otherwise: a frozen view draws the same pixels on every machine.
+   */
+  private govern(): void {
+    const { gridN, pixelRatio, simSpeed } = this.app;
+    const field = THICKNESS_FIELDS[this.parts.view.current.field];
+    const wanted = this.animating
+      ? {
+          gridN: gridN === AUTO ? undefined : gridN,
+          pixelRatio: pixelRatio === AUTO ? undefined : pixelRatio,
+          simSpeedGiven: simSpeed !== AUTO,
+          flows: field.evolves === true,
+          baseStepsPerFrame: this.parts.view.quality.flowStepsPerFrame,
+        }
+      : null;
+    const g = this.governed;
+    // The same knobs fixed as before (JSON leaves out `apply`): it stays where it is.
+    if (g && wanted && JSON.stringify(g) === JSON.stringify(wanted)) return;
+    if (g) this.governor.leave(g);
+    this.governed = wanted && { ...wanted, apply: (choice) => this.applyChoice(choice) };
+    if (this.governed) this.governor.join(this.governed);
+    else this.applyChoice(null);
+  }
+
+  /** The governor's choice (null: none, a frozen view) for the knobs the user left: the grid, the steps per frame, the pixel ratio. */
+  private applyChoice(choice: BudgetChoice | null): void {
+    this.choice = choice;
+    const view = this.parts.view;
+    const given = this.app.simSpeed !== AUTO;
+    view.flowStepsPerFrame = !choice ? view.quality.flowStepsPerFrame : given ? Infinity : choice.stepsPerFrame;
+    const film = this.filmSettings(this.current);
+    if (film.gridN !== view.current.gridN) {
+      this.filmRate.reset();
+      this.showMethod(film);
+    }
+    this.fit();
+    this.loop.request();
+  }
+
+  /** The film's rate and grid as a text of the catalogue (`key`), or null while it is not governed or not yet measured. */
+  private filmTimeText(key: 'governor.line' | 'governor.sentence'): string | null {
+    const rate = this.filmRate.rate;
+    const grid = this.parts.view.film.flowGrid;
+    if (!this.governed || rate === null || !grid) return null;
+    return message(this.cat, key, { rate: +rate.toPrecision(2), grid: grid.gridN });
   }
 
   /** The user changed the settings (the panel, or the pointer or keys on the bubble). */
@@ -207,16 +283,20 @@ export class BubbleApp {
           controls,
           this.cat,
           () => this.blowAtProbe(),
+          () => this.filmTimeText('governor.line') ?? '',
         )
       : null;
     if (closed) this.gui?.close();
   }
 
-  /** Sizes the view to the surface; a frame follows only if the size changed. */
+  /**
+   * Sizes the view to the surface, at the pixel ratio given, else the governor's, else the
+   * device's (at most 2); a frame follows only if the size changed.
+   */
   private fit(): void {
     const { clientWidth, clientHeight } = this.parts.surface;
     if (clientWidth === 0 || clientHeight === 0) return; // hidden (display: none): nothing to draw
-    const pixelRatio = Math.min(2, globalThis.devicePixelRatio || 1);
+    const pixelRatio = governedValue(this.app.pixelRatio, this.choice?.pixelRatio, devicePixelRatioShown());
     const size = `${clientWidth}×${clientHeight}@${pixelRatio}`;
     if (size === this.fitted) return;
     this.fitted = size;
@@ -230,3 +310,12 @@ export class BubbleApp {
     this.loop.request();
   }
 }
+
+/** The page's own settings and the governed knobs as asked. */
+const appSettingsOf = ({ animate, probe, gridN, simSpeed, pixelRatio }: ViewSettings): AppSettings & GovernedSettings => ({
+  animate,
+  probe,
+  gridN,
+  simSpeed,
+  pixelRatio,
+});

@@ -10,7 +10,7 @@ import { NAMED_MEDIA } from '../physics/namedMedia.ts';
 import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS, daylightCctOf } from '../physics/illuminants.ts';
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
-import { PANEL_FOLDERS, type PanelFolder, type ParameterRow, choiceKey, labelKey } from '../settings/parameterRow.ts';
+import { AUTO, type Auto, PANEL_FOLDERS, type PanelFolder, type ParameterRow, choiceKey, labelKey } from '../settings/parameterRow.ts';
 import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 
 /** The panel's choice for an illuminant given by its CCT. */
@@ -36,6 +36,8 @@ interface MediumControls {
 interface RowParts {
   readonly join?: Joined;
   readonly medium?: MediumControls;
+  /** Whether a controller of the row is shown while the row is (an `auto` row's slider only while `auto` is off). */
+  readonly shows?: (c: Controller) => boolean;
 }
 
 /** A list's options for lil-gui: each value under its label in the catalogue (`choice.<key>.<value>`). */
@@ -47,7 +49,9 @@ const options = (cat: Catalogue, key: string, values: readonly string[]): Record
  * its folders. Sliders span each parameter's whole domain, so the panel cannot produce an invalid
  * setting and reaches every valid one. It shows only what applies to the settings
  * (shownControls.ts), after every change; what it hides keeps its value. `onChange` receives the
- * new settings; `blow`, if given, is the flow folder's button (what B on the bubble does).
+ * new settings; `blow`, if given, is the flow folder's button (what B on the bubble does);
+ * `filmTime`, if given, the flow folder's read-only line on the film's time and grid as the frame
+ * governor keeps them (followed while the panel is shown).
  */
 export function createControlPanel(
   initial: ViewSettings,
@@ -55,6 +59,7 @@ export function createControlPanel(
   container?: HTMLElement,
   cat: Catalogue = EN,
   blow?: () => void,
+  filmTime?: () => string,
 ): GUI {
   const state: Record<string, unknown> = { ...initial };
   const rows: { readonly key: keyof ViewSettings; readonly controllers: readonly Controller[]; readonly parts: RowParts }[] = [];
@@ -65,7 +70,9 @@ export function createControlPanel(
     const shown = shownControls(s, kinds);
     for (const { key, controllers, parts } of rows) {
       const texts = new Map(parts.medium?.texts.map((t) => [t.field, t.kind]));
-      for (const c of controllers) c.show(texts.has(c) ? shown.texts[key] === texts.get(c) : shown.rows[key]);
+      for (const c of controllers) {
+        c.show(texts.has(c) ? shown.texts[key] === texts.get(c) : shown.rows[key] && (parts.shows?.(c) ?? true));
+      }
     }
     for (const [name, folder] of folders) folder.show(shown.folders[name]);
   };
@@ -85,6 +92,11 @@ export function createControlPanel(
       rows.push({ key: row.key, controllers: folder.controllers.slice(before), parts });
     }
     if (folderName === 'flow' && blow) folder.add({ blow }, 'blow').name(cat['panel.blow']);
+    if (folderName === 'flow' && filmTime) {
+      // A read-only line followed while shown (lil-gui's listen), never a setting.
+      const status = Object.defineProperty({}, 'line', { get: filmTime, set: () => {}, enumerable: true }) as { line: string };
+      folder.add(status, 'line').name(cat['panel.governor']).disable().listen();
+    }
   }
   show(initial);
   gui.onChange(emit);
@@ -128,7 +140,27 @@ function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<
       );
     case 'layers':
       return { join: addLayersControl(folder, row, state[row.key] as readonly FilmLayer[], cat) };
+    case 'auto':
+      return addAutoControl(folder, row, control, state[row.key] as Auto<number>, cat);
   }
+}
+
+/**
+ * `auto` or a number: a toggle (on: `auto`, the frame governor's) and a slider over the whole
+ * domain, shown while the toggle is off; it starts at the value given, else at the row's start.
+ */
+function addAutoControl(
+  folder: GUI,
+  row: ParameterRow<ViewSettings>,
+  control: { readonly min: number; readonly max: number; readonly step: number; readonly start: number },
+  initial: Auto<number>,
+  cat: Catalogue,
+): RowParts {
+  const label = cat[labelKey(row.key)];
+  const controls = { auto: initial === AUTO, value: initial === AUTO ? control.start : initial };
+  folder.add(controls, 'auto').name(message(cat, 'panel.auto', { label }));
+  const slider = folder.add(controls, 'value', control.min, control.max, control.step).name(label);
+  return { join: () => ({ [row.key]: controls.auto ? AUTO : controls.value }), shows: (c) => c !== slider || !controls.auto };
 }
 
 /**

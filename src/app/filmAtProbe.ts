@@ -19,6 +19,8 @@ export interface FilmAtProbeParts {
   readonly settings: () => ViewSettings;
   /** Whether the film's time follows the clock (FrameLoop.looping): the plots then follow it every PLOT_INTERVAL_MS. */
   readonly looping: () => boolean;
+  /** A sentence on the film's time against the clock and its grid while the frame governor keeps them (the live description adds it), or null. */
+  readonly filmTime?: () => string | null;
 }
 
 /**
@@ -134,9 +136,13 @@ export class FilmAtProbe {
       .then(
         (reading) => {
           if (this.disposed || set !== this.settingsSet) return;
-          this.panel?.update(s, s.probe, reading, view.displayIsP3);
+          // The film as drawn (its governed knobs as the view has them), under the method asked for.
+          const film = { ...view.current, mode: s.mode };
+          this.panel?.update(film, s.probe, reading, view.displayIsP3);
           // Said after the user's changes only, not on each animation step (a screen reader would never rest).
-          if (this.live.started && changed) this.live.say(probeDescription(s, s.probe, reading, cat));
+          const filmTime = this.parts.filmTime?.() ?? null;
+          const said = probeDescription(film, s.probe, reading, cat);
+          if (this.live.started && changed) this.live.say(filmTime ? `${said} ${filmTime}` : said);
         },
         // The context was lost before the pixel came back: the plots follow the restored view.
         () => (this.due = true),

@@ -16,17 +16,22 @@ export class FrameLoop {
   private clockRunning = false;
   private clockOrigin = 0;
   private readonly screen: IntersectionObserver;
-  private readonly onVisibility = () => this.wake();
+  private readonly onVisibility = () => {
+    // A hidden page draws nothing: shown again, the film goes on from the time it showed.
+    if (document.hidden) this.clockRunning = false;
+    this.wake();
+  };
 
   /**
    * `animating` says whether the film's time should follow the clock; `draw` draws one frame of
-   * the view as it is.
+   * the view as it is, at the animation frame's time `now` (ms), `follows` saying whether the
+   * film's time followed the clock in this loop's frame just before too (the time between is then a frame's).
    */
   constructor(
     private readonly view: BubbleView,
     surface: HTMLElement,
     private readonly animating: () => boolean,
-    private readonly draw: () => void,
+    private readonly draw: (now: number, follows: boolean) => void,
   ) {
     this.screen = new IntersectionObserver((entries) => this.setOnScreen(entries.some((e) => e.isIntersecting)));
     this.screen.observe(surface);
@@ -84,6 +89,7 @@ export class FrameLoop {
       return;
     }
     const view = this.view;
+    const follows = this.clockRunning;
     if (this.animating()) {
       if (!this.clockRunning) this.clockOrigin = now - view.current.timeSeconds * 1000;
       this.clockRunning = true;
@@ -91,7 +97,7 @@ export class FrameLoop {
     } else {
       this.clockRunning = false;
     }
-    this.draw();
+    this.draw(now, follows && this.clockRunning);
     const filmTime = view.film.timeSeconds;
     if (this.clockRunning && view.film.behind && filmTime !== null) {
       // A film simulated slower than the clock: the clock waits for it, so the time shown (and a

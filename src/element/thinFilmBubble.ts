@@ -6,7 +6,7 @@ import { prefersReducedMotion } from '../app/pagePreferences.ts';
 import type { Catalogue } from '../i18n/en.ts';
 import { catalogueFor, catalogueLang } from '../i18n/messages.ts';
 import { startsClosed } from '../app/startsClosed.ts';
-import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
+import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings, filmSettingsOf } from '../settings/viewParameters.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
 import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import type { ProbedFilm } from '../scene/probe.ts';
@@ -135,11 +135,11 @@ export class ThinFilmBubble extends HTMLElement {
       prefersReducedMotion(this.ownerDocument.defaultView ?? window) && !this.hasAttribute('animate') ? { ...read, animate: false } : read;
     if (!hasWebGL2()) {
       // The page still teaches: a message and a still image computed on the CPU.
-      showCpuFallback(this.canvas, settings, () => (this.dataset.frames = 'fallback'), cat);
+      showCpuFallback(this.canvas, filmSettingsOf(settings), () => (this.dataset.frames = 'fallback'), cat);
       return;
     }
     const renderer = acquireSharedRenderer();
-    const view = new BubbleView(renderer, settings);
+    const view = new BubbleView(renderer, filmSettingsOf(settings));
     const frames = new FrameCanvases(this.canvas);
     this.app = new BubbleApp(
       {

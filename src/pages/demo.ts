@@ -4,7 +4,7 @@ import { parseSettings, refusalText, settingsToQuery } from '../settings/setting
 import { FRAME_MARKS } from './frameMarks.ts';
 import { startsClosed } from '../app/startsClosed.ts';
 import { pageLanguage, prefersReducedMotion } from '../app/pagePreferences.ts';
-import type { ViewSettings } from '../settings/viewParameters.ts';
+import { type ViewSettings, filmSettingsOf } from '../settings/viewParameters.ts';
 import { DEMO_VIEW_SETTINGS } from '../settings/demoView.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
 import { createBubbleRenderer } from '../scene/bubbleRenderer.ts';
@@ -53,7 +53,7 @@ function followInUrl(s: ViewSettings) {
 function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: HTMLElement, panel: HTMLElement): void {
   const drawer = plots.closest('details');
   if (drawer) drawer.open = !startsClosed(drawer, 'plots'); // a small view starts with the drawer closed (index.html's CSS)
-  const view = new BubbleView(createBubbleRenderer(canvas), settings);
+  const view = new BubbleView(createBubbleRenderer(canvas), filmSettingsOf(settings));
   document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
   if (settings.space !== 'srgb' && !view.displayIsP3) say(cat['app.noDisplayP3']);
   // Whether a frame, and a frame in full, have been drawn: the User Timing marks of the first of each.
@@ -87,5 +87,5 @@ else {
   // Without WebGL2 the page still teaches: a still image computed on the CPU, no plots.
   plots.closest('details')?.remove();
   document.body.dataset.webgl2 = 'no';
-  showCpuFallback(canvas, settings, () => (document.body.dataset.frames = 'fallback'), cat);
+  showCpuFallback(canvas, filmSettingsOf(settings), () => (document.body.dataset.frames = 'fallback'), cat);
 }

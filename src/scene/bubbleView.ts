@@ -11,6 +11,7 @@ import type { FilmSettings } from '../settings/filmSettings.ts';
 import { blowOnBubble } from './blowOnBubble.ts';
 import { EvolvingFilm } from './evolvingFilm.ts';
 import { FilmLight } from './filmLight.ts';
+import { FrameCost, type FrameCostReading } from './frameCost.ts';
 import { compileFramePrograms, compilesInParallel } from './framePrograms.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
 import { ProgramsInParallel } from './programsInParallel.ts';
@@ -46,6 +47,12 @@ export class BubbleView {
   private settings: FilmSettings;
   /** The evolving film, for a field whose film evolves (its time, and whether the last frame left it behind). */
   readonly film: EvolvingFilm;
+  /**
+   * The most steps the flowing film takes in an app's frame (`render(true)`): the quality's
+   * `flowStepsPerFrame` unless the page's frame governor sets it (Infinity: all the time asks).
+   */
+  flowStepsPerFrame: number;
+  private readonly cost: FrameCost;
   private disposed = false;
 
   constructor(
@@ -56,6 +63,8 @@ export class BubbleView {
     this.settings = settings;
     this.table = new FilmTable(quality);
     this.film = new EvolvingFilm(renderer);
+    this.flowStepsPerFrame = quality.flowStepsPerFrame;
+    this.cost = new FrameCost(renderer);
     this.camera.position.set(0, 0, CAMERA_DISTANCE);
     this.bubble = new Mesh(new SphereGeometry(1, 128, 64), createBubbleMaterial(settings, quality));
     this.background = new Mesh(new SphereGeometry(50, 64, 32), createBackgroundMaterial());
@@ -70,6 +79,7 @@ export class BubbleView {
     this.programs.forget();
     this.table.invalidate();
     this.film.invalidate();
+    this.cost.invalidate();
   };
 
   /** The evolving field's simulation, if the field shown evolves. */
@@ -219,9 +229,25 @@ export class BubbleView {
       this.apply(this.settings);
     }
     this.syncTable(quick);
-    this.film.advance(this.bubble.material.uniforms, this.settings, quick ? this.quality.flowStepsPerFrame : Infinity);
-    r.render(this.scene, this.camera);
+    const uniforms = this.bubble.material.uniforms;
+    if (quick) {
+      // The app's frames are measured (FrameCost) for the page's frame governor.
+      this.cost.simulate(
+        () => this.film.advance(uniforms, this.settings, this.flowStepsPerFrame),
+        () => this.film.finish(),
+        this.film.flowGrid?.gridN,
+      );
+      this.cost.draw(() => r.render(this.scene, this.camera));
+    } else {
+      this.film.advance(uniforms, this.settings, Infinity);
+      r.render(this.scene, this.camera);
+    }
     return true;
+  }
+
+  /** What the app's frame drawn last cost (FrameCost): the simulation's part and the bubble's draw, apart. */
+  takeFrameCost(): FrameCostReading {
+    return this.cost.take();
   }
 
   /**
@@ -239,6 +265,7 @@ export class BubbleView {
     this.environment.dispose();
     this.renderer.domElement.removeEventListener('webglcontextrestored', this.rebuildTable);
     this.filmProbe.dispose();
+    this.cost.dispose();
     this.table.dispose();
     this.film.dispose();
     this.bubble.geometry.dispose();

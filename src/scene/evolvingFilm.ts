@@ -2,6 +2,11 @@ import type { WebGLRenderer } from 'three';
 import { createFieldState } from '../bubble/fieldStates.ts';
 import type { FieldName } from '../fields/fields.ts';
 import type { FieldSettings, FieldUniforms, FieldState, Vec3 } from '../fields/thicknessField.ts';
+import { FlowFieldState } from '../flow/flowFieldState.ts';
+import type { GpuFilmSimulation } from '../flow/gpuFilmSimulation.ts';
+
+/** Where `finish` reads its texel (the film's targets are RGBA float). */
+const TEXEL = new Float32Array(4);
 
 /**
  * The simulation of a view's evolving film: made when a field whose film evolves is shown,
@@ -33,9 +38,37 @@ export class EvolvingFilm {
     return this.current?.state.timeSeconds ?? null;
   }
 
-  /** Brings the film towards the settings' time by at most `maxSteps` steps (FieldState.advance). */
-  advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): void {
-    if (this.current) this.behind = !this.current.state.advance(u, s, maxSteps);
+  /** The flowing film's grid (cells per cube face side) and step (film seconds) as simulated now, or null (no flowing film, or none simulated yet). */
+  get flowGrid(): { readonly gridN: number; readonly stepSeconds: number } | null {
+    const sim = this.flowSimulation;
+    return sim && { gridN: sim.grid.n, stepSeconds: sim.stepSeconds };
+  }
+
+  /** Waits for the flowing film's GPU work done so far (a one-texel read of its film; nothing for another field). */
+  finish(): void {
+    const sim = this.flowSimulation;
+    if (sim) this.renderer.readRenderTargetPixels(sim.stateTargets.film, 0, 0, 1, 1, TEXEL);
+  }
+
+  /** Brings the film towards the settings' time by at most `maxSteps` steps (FieldState.advance); returns the steps taken. */
+  advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): number {
+    if (!this.current) return 0;
+    const before = this.stepsTaken;
+    this.behind = !this.current.state.advance(u, s, maxSteps);
+    const after = this.stepsTaken;
+    // A film made anew or started again counts its steps from its start.
+    return after >= before ? after - before : after;
+  }
+
+  /** The flowing film's steps since its start (0 for another field). */
+  private get stepsTaken(): number {
+    return this.flowSimulation?.steps ?? 0;
+  }
+
+  /** The flowing film's simulation, if the field shown is the flow and it has been made. */
+  private get flowSimulation(): GpuFilmSimulation | null {
+    const state = this.current?.state;
+    return state instanceof FlowFieldState ? state.current : null;
   }
 
   /** Blows air on the film where it evolves and takes a blow (FieldState.blow); nothing for `null` (off the bubble). */

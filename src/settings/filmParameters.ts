@@ -8,9 +8,12 @@ import { type ParameterRow, choiceRow, defaultsOf, flagRow, illuminantRow, mediu
 
 type Row = ParameterRow<FilmSettings>;
 
-/** A row of the flowing film's (a settings field named as its FLOW_PARAMETERS row), its domain and default from there, in the panel's flow folder. */
+/** The FLOW_PARAMETERS row of a flowing film's setting (a settings field of the same name). */
+export const flowParameterRow = (key: Exclude<keyof FlowSettings, 'renew'>) => FLOW_PARAMETERS.find((r) => r.key === key)!;
+
+/** A row of the flowing film's, its domain and default from its FLOW_PARAMETERS row, in the panel's flow folder. */
 function flowRow(key: Exclude<keyof FlowSettings, 'renew'>, url: string, step: number): Row {
-  const flow = FLOW_PARAMETERS.find((r) => r.key === key)!;
+  const flow = flowParameterRow(key);
   return numberRow({ key, url }, flow.domain, flow.defaultValue, 'flow', flow.integer ? 'integer' : step);
 }
 
@@ -44,6 +47,7 @@ export const FILM_PARAMETERS: readonly Row[] = [
   flowRow('evaporationNmS', 'evaporation', 1),
   flowRow('windMps', 'wind', 0.01),
   flowRow('seed', 'seed', 1),
+  // What a view draws when the page leaves them to it (a frozen view; the page's own rows, viewParameters.ts, take `auto`).
   flowRow('simSpeed', 'simSpeed', 0.01),
   flowRow('gridN', 'grid', 1),
   // A new bubble after a burst (src/flow/renewFilm.ts).

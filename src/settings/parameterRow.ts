@@ -33,7 +33,16 @@ export type PanelControl =
   /** A medium (medium.ts): a film index's controls, a named medium (a metal, an oxide) or a complex constant (text n,k). */
   | { readonly folder: PanelFolder; readonly kind: 'medium'; readonly role: Exclude<MediumRole, 'outside'> }
   /** A stack of films as text (layersText.ts); while it holds layers, the film's own index is not used. */
-  | { readonly folder: PanelFolder; readonly kind: 'layers' };
+  | { readonly folder: PanelFolder; readonly kind: 'layers' }
+  /** `auto` (a toggle) or a number (a slider over the whole domain, shown while the toggle is off, starting at `start`). */
+  | {
+      readonly folder: PanelFolder;
+      readonly kind: 'auto';
+      readonly min: number;
+      readonly max: number;
+      readonly step: number;
+      readonly start: number;
+    };
 
 export const PANEL_FOLDERS = ['film', 'flow', 'light and colour', 'view'] as const;
 export type PanelFolder = (typeof PANEL_FOLDERS)[number];
@@ -145,6 +154,34 @@ export function numberRow<S, K extends keyof S & string>(
       return isInDomain(v, domain) && (!integer || Number.isInteger(v)) ? ({ [n.key]: v } as Partial<S>) : null;
     },
     control: folder && { folder, kind: 'slider', min: domain.min, max: domain.max, step: integer ? 1 : step },
+  };
+}
+
+/** A knob a user may leave to the page (the frame governor, docs/governor.md) or give a value honoured exactly. */
+export const AUTO = 'auto';
+export type Auto<T> = T | typeof AUTO;
+
+/**
+ * `auto` (the default) or a number in a closed domain (a whole number if `step` is 'integer'); the
+ * panel shows a toggle for `auto` and a slider over the whole domain in steps of `step`, starting
+ * at `start` (what a view draws with `auto` and no governor).
+ */
+export function autoNumberRow<S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  domain: NumberDomain,
+  folder: PanelFolder | null,
+  step: number | 'integer',
+  start: number,
+): ParameterRow<S> {
+  const integer = step === 'integer';
+  const number = numberRow<S, K>(n, domain, AUTO as S[K], null, step);
+  const values = { auto: AUTO, min: domain.min, max: domain.max };
+  return {
+    ...named(n, AUTO as S[K], (s) => String(s[n.key])),
+    expected: `${AUTO} or ${number.expected}`,
+    expects: { key: integer ? 'expected.autoInteger' : 'expected.autoNumber', values, unit: domain.unit },
+    read: (raw) => (raw === AUTO ? ({ [n.key]: AUTO } as Partial<S>) : number.read(raw)),
+    control: folder && { folder, kind: 'auto', min: domain.min, max: domain.max, step: integer ? 1 : step, start },
   };
 }
 

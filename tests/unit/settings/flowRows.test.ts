@@ -2,11 +2,13 @@
 import { describe, expect, it } from 'vitest';
 import { flowParametersOf } from '../../../src/fields/flowField.ts';
 import { parseSettings } from '../../../src/settings/settingsQuery.ts';
-import { DEFAULT_VIEW_SETTINGS } from '../../../src/settings/viewParameters.ts';
+import { DEFAULT_VIEW_SETTINGS, filmSettingsOf } from '../../../src/settings/viewParameters.ts';
 
 describe('flow rows', () => {
   it("default to the simulation's defaults (R 40 mm, Γ0 6.67e-8 mol/m², still air, the uniform start, N 128, real time), a new bubble after a burst", () => {
-    const { radiusMm, surfactantMolM2, evaporationNmS, windMps, seed, simSpeed, gridN, renew } = DEFAULT_VIEW_SETTINGS;
+    // The grid and speed are the frame governor's (`auto`) on a page; a view drawn without it takes the simulation's.
+    expect([DEFAULT_VIEW_SETTINGS.gridN, DEFAULT_VIEW_SETTINGS.simSpeed]).toEqual(['auto', 'auto']);
+    const { radiusMm, surfactantMolM2, evaporationNmS, windMps, seed, simSpeed, gridN, renew } = filmSettingsOf(DEFAULT_VIEW_SETTINGS);
     expect({ radiusMm, surfactantMolM2, evaporationNmS, windMps, seed, simSpeed, gridN, renew }).toEqual({
       radiusMm: 40,
       surfactantMolM2: 6.67e-8,
@@ -27,8 +29,10 @@ describe('flow rows', () => {
     ['evaporation', '-1', 'evaporation="-1" ignored: expected a number in [0, 100] nm/s'],
     ['wind', '2.5', 'wind="2.5" ignored: expected a number in [0, 2] m/s'],
     ['seed', '1.5', 'seed="1.5" ignored: expected an integer in [0, 2147483647]'],
-    ['simSpeed', '11', 'simSpeed="11" ignored: expected a number in [0, 10]'],
-    ['grid', '300', 'grid="300" ignored: expected an integer in [4, 256]'],
+    ['simSpeed', '11', 'simSpeed="11" ignored: expected auto or a number in [0, 10]'],
+    ['grid', '300', 'grid="300" ignored: expected auto or an integer in [4, 256]'],
+    ['grid', '3', 'grid="3" ignored: expected auto or an integer in [4, 256]'],
+    ['grid', 'Auto', 'grid="Auto" ignored: expected auto or an integer in [4, 256]'],
     ['renew', 'yes', 'renew="yes" ignored: expected 0 or 1'],
   ])('refuses %s=%s, naming it and its range', (name, value, message) => {
     const { settings, errors } = parseSettings(`?field=flow&${name}=${value}`);
@@ -38,7 +42,7 @@ describe('flow rows', () => {
 
   it("gives the simulation the view's values, the mean thickness h̄ at least the model's 1 nm", () => {
     const { settings } = parseSettings('?field=flow&radius=25&surfactant=2e-7&evaporation=3&wind=0.5&seed=42&grid=32&thickness=0');
-    expect(flowParametersOf(settings)).toEqual({
+    expect(flowParametersOf(filmSettingsOf(settings))).toEqual({
       radiusMm: 25,
       thicknessNm: 1,
       surfactantMolM2: 2e-7,

@@ -10,7 +10,7 @@ describe('URL parameters', () => {
     const { settings, errors } = parseSettings(
       '?thickness=420&thicknessRange=300&speed=2&field=drainage&nFilm=1.4&nOutside=1.1&nInside=1.2&illuminant=7500' +
         '&polarization=s&normalization=paper&space=display-p3&mode=exact&sides=front&env=park&envRotation=90&tonemap=neutral&exposure=1.5&animate=0&time=12.5' +
-        '&radius=25&surfactant=2e-7&evaporation=3&wind=0.5&seed=42&simSpeed=2&grid=32&renew=0',
+        '&radius=25&surfactant=2e-7&evaporation=3&wind=0.5&seed=42&simSpeed=2&grid=32&renew=0&pixelRatio=1.5',
     );
     expect(errors).toEqual([]);
     expect(settings).toEqual({
@@ -42,6 +42,7 @@ describe('URL parameters', () => {
       simSpeed: 2,
       gridN: 32,
       renew: false,
+      pixelRatio: 1.5,
     });
   });
 
@@ -108,6 +109,7 @@ describe('URL parameters', () => {
     evaporation: [0, 100],
     wind: [0, 2],
     simSpeed: [0, 10],
+    pixelRatio: [0.25, 4],
   };
   /** The whole-number parameters: a fraction is refused as well. */
   const INTEGER: Record<string, [number, number]> = {
