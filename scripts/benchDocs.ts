@@ -27,7 +27,7 @@ try {
 const rowOf = (name: string) => ROWS.find((r) => r.name === name) ?? { kind: 'bubble' as const, measuresError: true };
 const problems = [
   ...ROWS.filter((row) => !results.rows.some((r) => r.name === row.name)).map((row) => `row not run: ${row.name}`),
-  ...resultProblems(results, rowOf, true),
+  ...resultProblems(results, rowOf, { materials: true, flowSpeed: true }),
 ];
 if (problems.length > 0) {
   console.error(`${source} is not a complete run; ${DOC} left as it is:\n${problems.map((p) => `- ${p}`).join('\n')}`);
@@ -50,7 +50,8 @@ with exit status 2 and the list of rows and flags. A row whose frame outlasts th
 the first size only, without its changes (a frame far over it is fitted from two smaller ones instead of drawn); stderr has a line per row with the time left. \`npm run bench:smoke\` (part
 of \`npm test\`) runs every row and figure once, tiny, two at a time beside the builds and the demo page, and fails if one throws or is missing or not finite; its
 results go to \`.scratch/\`. The bench serves the pages itself: a Vite dev server on port ${FULL_PLAN.devPort} and a
-vite preview of the build on ${FULL_PLAN.previewPort} (the smoke ${SMOKE_PLAN.devPort} and ${SMOKE_PLAN.previewPort}).
+vite preview of the build on ${FULL_PLAN.previewPort} (the smoke ${SMOKE_PLAN.devPort} and ${SMOKE_PLAN.previewPort}; \`--port <port>\` moves
+them to that port and the next).
 
 ${benchMarkdown(results)}
 `;

@@ -1,7 +1,9 @@
 /** A run's results as the Markdown that `npm run bench` prints and docs/benchmarks.md holds. */
 import type { BenchResults } from './benchResults.ts';
 import { ELEMENT_BUNDLE } from './bundleSize.ts';
+import { defaultViewMarkdown } from './defaultView.ts';
 import { LONG_TASK_MS, PANEL_CHANGES } from './demoPage.ts';
+import { flowSpeedMarkdown } from './flowSpeed.ts';
 import { referenceSpeedMarkdown } from './referenceSpeed.ts';
 import { MATERIALS_ROW } from './rows.ts';
 import { rowsMarkdown } from './rowsMarkdown.ts';
@@ -65,7 +67,9 @@ export function benchMarkdown(r: BenchResults): string {
   return [
     r.reference ? referenceSpeedMarkdown(r.reference, r.machine.node) : '',
     r.rows.length > 0 ? rowsMarkdown(r.rows, r.plan) : '',
+    r.flowGpu || r.flowTwin ? flowSpeedMarkdown(r.flowGpu, r.flowTwin, r.plan.flowSpeed) : '',
     builtMarkdown(r),
+    r.defaultView ? defaultViewMarkdown(r.defaultView, r.plan.defaultView) : '',
     materialsMarkdown(r),
     stagesMarkdown(r),
     r.machine.webgl,

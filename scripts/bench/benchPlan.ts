@@ -2,10 +2,12 @@
  * How much the benchmark measures: the full run (the figures in docs/benchmarks.md) or the smoke
  * run (`--smoke`: every row and figure once, at a small size, to show that each one runs and gives
  * finite figures; its times mean nothing). Its own ports: 5173 is the dev server's, 5180 and 5181
- * the browser tests' (tests/e2e/servers.ts), so the bench runs beside either.
+ * the browser tests' (tests/e2e/servers.ts), so the bench runs beside either; `--port` moves them.
  */
 import type { ParityGroup } from '../harness/parityCase.ts';
 import type { FilmQuality } from '../../src/settings/filmQuality.ts';
+import type { DefaultViewPlan } from './defaultView.ts';
+import type { FlowSpeedPlan } from './flowSpeed.ts';
 
 export interface BenchPlan {
   readonly smoke: boolean;
@@ -22,6 +24,10 @@ export interface BenchPlan {
   readonly materials: { readonly width: number; readonly height: number; readonly frames: number };
   /** the built demo's viewport, and how long after a panel change's frame in full its tasks are still counted */
   readonly demo: { readonly width: number; readonly height: number; readonly windowMs: number };
+  /** the built demo's default view against the swirl: their size, how long each animates, and how long the governor's settling is left out of the frame interval */
+  readonly defaultView: DefaultViewPlan;
+  /** the flowing film's simulation speed, on the GPU and in the twin (flowSpeed.ts) */
+  readonly flowSpeed: FlowSpeedPlan;
   /**
    * How many stages run at once: 1 in the full run, whose times are its figures; 2 in the smoke,
    * whose times mean nothing, so that its pages compile on both cores and the builds overlap them.
@@ -52,6 +58,8 @@ export const FULL_PLAN: BenchPlan = {
   gridStride: 1,
   materials: { width: 1280, height: 720, frames: 10 },
   demo: { width: 1280, height: 720, windowMs: 1000 },
+  defaultView: { width: 1280, height: 720, seconds: 30, settlingMs: 3000 },
+  flowSpeed: { grids: [64, 128], warmUpSteps: 3, batchSteps: 4, batches: 5 },
   concurrency: 1,
   pagePerLane: false,
   devPort: 5192,
@@ -69,12 +77,18 @@ export const SMOKE_PLAN: BenchPlan = {
   gridStride: 16,
   materials: { width: 160, height: 90, frames: 1 },
   demo: { width: 320, height: 180, windowMs: 400 },
+  defaultView: { width: 320, height: 180, seconds: 2, settlingMs: 500 },
+  flowSpeed: { grids: [8, 16], warmUpSteps: 1, batchSteps: 1, batches: 1 },
   concurrency: 2,
   pagePerLane: true,
   devPort: 5194,
   previewPort: 5195,
   resultsFile: '.scratch/bench-smoke-results.json',
 };
+
+/** The plan with the benchmark's own servers on `devPort` and the port after it (`--port`). */
+export const withPorts = (plan: BenchPlan, devPort: number | null): BenchPlan =>
+  devPort === null ? plan : { ...plan, devPort, previewPort: devPort + 1 };
 
 /** The plan's share of a grid: every `stride`-th film. */
 export const thinnedGrid = (g: ParityGroup, stride: number): ParityGroup =>

@@ -4,7 +4,9 @@
  */
 import type { BenchPlan } from './benchPlan.ts';
 import type { BundleSizes } from './bundleSize.ts';
+import type { DefaultViewFigures } from './defaultView.ts';
 import type { DemoPageFigures } from './demoPage.ts';
+import type { GpuSimulationSpeed, SimulationSpeed } from './flowSpeed.ts';
 import type { MaterialFigures } from './materialFigures.ts';
 import type { PackageSize } from './packageSize.ts';
 import type { ReferenceSpeed } from './referenceSpeed.ts';
@@ -23,11 +25,15 @@ export interface BenchResults {
   };
   readonly reference: ReferenceSpeed | null;
   readonly rows: readonly MeasuredRow[];
+  /** the flowing film's simulation speed per grid of plan.flowSpeed, on the GPU and in the twin; null: not run (rows picked without it) or failed */
+  readonly flowGpu: readonly GpuSimulationSpeed[] | null;
+  readonly flowTwin: readonly SimulationSpeed[] | null;
   /** null: not run (rows picked without it) or failed */
   readonly materials: MaterialFigures | null;
   readonly bundle: BundleSizes | null;
   readonly package: PackageSize | null;
   readonly demo: DemoPageFigures | null;
+  readonly defaultView: DefaultViewFigures | null;
   /** each stage's time, s */
   readonly stageSeconds: Readonly<Record<string, number>>;
   readonly seconds: number;
@@ -36,7 +42,7 @@ export interface BenchResults {
 }
 
 /** The fields that may be null (not measured, or not applicable), or hold entries that may be. */
-const NULLABLE = new Set(['tableBuildMs', 'errors', 'elementGzipBytes', 'frames', 'changeToFrameMs']);
+const NULLABLE = new Set(['tableBuildMs', 'errors', 'elementGzipBytes', 'frames', 'changeToFrameMs', 'gridN']);
 
 /**
  * Every number under `value` that is not finite, every undefined, and every null but in NULLABLE,
@@ -58,14 +64,35 @@ function nonFinite(value: unknown, path: string, key: string, parentKey: string)
 export function resultProblems(
   r: BenchResults,
   rowOf: (rowName: string) => Pick<BenchRow, 'kind' | 'measuresError' | 'timesChanges'>,
-  expectMaterials: boolean,
+  expect: { readonly materials: boolean; readonly flowSpeed: boolean },
 ): string[] {
   const problems = r.failures.map((f) => `${f.stage} threw: ${f.message}`);
-  const figures = { reference: r.reference, rows: r.rows, materials: r.materials, bundle: r.bundle, package: r.package, demo: r.demo };
+  const figures = {
+    reference: r.reference,
+    rows: r.rows,
+    flowGpu: r.flowGpu,
+    flowTwin: r.flowTwin,
+    materials: r.materials,
+    bundle: r.bundle,
+    package: r.package,
+    demo: r.demo,
+    defaultView: r.defaultView,
+  };
   for (const [name, f] of Object.entries(figures)) if (f !== null) problems.push(...nonFinite(f, `results.${name}`, name, ''));
-  for (const [name, figures] of Object.entries({ reference: r.reference, bundle: r.bundle, package: r.package, demo: r.demo }))
+  for (const [name, figures] of Object.entries({
+    reference: r.reference,
+    bundle: r.bundle,
+    package: r.package,
+    demo: r.demo,
+    defaultView: r.defaultView,
+  }))
     if (figures === null) problems.push(`no ${name} figures`);
-  if (expectMaterials && r.materials === null) problems.push('no materials figures');
+  if (expect.materials && r.materials === null) problems.push('no materials figures');
+  if (expect.flowSpeed)
+    for (const [name, speeds] of Object.entries({ 'flow GPU': r.flowGpu, 'flow twin': r.flowTwin })) {
+      const grids = speeds?.map((s) => s.gridN) ?? [];
+      if (r.plan.flowSpeed.grids.some((n) => !grids.includes(n))) problems.push(`no ${name} figures at every grid of the plan`);
+    }
   for (const row of r.rows) {
     const { kind, measuresError, timesChanges } = rowOf(row.name);
     if (row.frames[0] == null) problems.push(`${row.name}: no frame time at the first size`);

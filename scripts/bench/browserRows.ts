@@ -1,6 +1,7 @@
 /**
  * Runs the benchmark rows in headless Chromium: one fresh page (and WebGL context) per row, or
- * (`plan.pagePerLane`) one page per lane, each of the lane's rows run in it in turn.
+ * (`plan.pagePerLane`) one page per lane, each of the lane's rows run in it in turn; and the
+ * flowing film's GPU simulation in a page of its own.
  */
 import { smokeQuality } from './benchPlan.ts';
 import type { Browser, Page } from '@playwright/test';
@@ -8,6 +9,7 @@ import type { ParityGroup } from '../harness/parityCase.ts';
 import type { BenchPlan } from './benchPlan.ts';
 import type { BenchRowResult } from './benchRow.ts';
 import type { BenchRow } from './rows.ts';
+import type { FlowSpeedPlan, GpuSimulationSpeed } from './flowSpeed.ts';
 import { openPage } from './openPage.ts';
 
 const BENCH_PAGE = '/scripts/bench/page/bench.html';
@@ -66,4 +68,14 @@ export class RowLane {
 /** Loads the page once so the dev server has transformed every module before the first-frame times. */
 export async function warmUp(browser: Browser, baseUrl: string): Promise<void> {
   await (await openBenchPage(browser, baseUrl)).close();
+}
+
+/** The flowing film's GPU simulation timed in a fresh benchmark page (page/gpuFlowSpeed.ts). */
+export async function gpuFlowSpeedInPage(browser: Browser, baseUrl: string, plan: FlowSpeedPlan): Promise<GpuSimulationSpeed[]> {
+  const page = await openBenchPage(browser, baseUrl);
+  try {
+    return await page.evaluate((p) => window.benchFlowSpeed!(p), plan);
+  } finally {
+    await page.close();
+  }
 }

@@ -182,16 +182,19 @@ async function countOneSecond(page: Page): Promise<FrameCounts> {
   }, WINDOW_MS);
 }
 
-async function open(
+/** The built demo at `url` in a fresh page of the plan's size (each animation frame running `eachFrame`), once its first frame in full is shown: the page and when its first frame, and its first in full, were shown (ms from navigation). */
+export async function openDemo(
   browser: Browser,
   url: string,
   how: DemoPlan,
+  /** what each animation frame also runs, from the first (JavaScript source, a statement; `t` is the frame's time) */
+  eachFrame = '',
 ): Promise<{ page: Page; firstFrameMs: number; firstCompleteFrameMs: number }> {
   const page = await openPage(browser, { viewport: { width: how.width, height: how.height } });
   // tsx names the functions it compiles with a helper (__name) that pages evaluated from here lack.
   // From before any script runs, the timestamp of every animation frame shown.
   await page.addInitScript({
-    content: `${COUNTERS_SCRIPT}\nwindow.shownFrames = []; (function tick(t) { window.shownFrames.push(t); requestAnimationFrame(tick); })(0);`,
+    content: `${COUNTERS_SCRIPT}\nwindow.shownFrames = []; (function tick(t) { window.shownFrames.push(t); ${eachFrame} requestAnimationFrame(tick); })(0);`,
   });
   await page.goto(url);
   await page.waitForSelector('body[data-frames="ready"]');
@@ -211,7 +214,7 @@ async function open(
 const SWIRL_VIEW = 'field=swirl&env=sky';
 
 export async function demoPageFigures(browser: Browser, baseUrl: string, how: DemoPlan): Promise<DemoPageFigures> {
-  const still = await open(browser, `${baseUrl}/?${SWIRL_VIEW}&animate=0`, how);
+  const still = await openDemo(browser, `${baseUrl}/?${SWIRL_VIEW}&animate=0`, how);
   const stillCounts = await countOneSecond(still.page);
   const parallelCompile = await still.page.evaluate(() =>
     (window as unknown as { bubbleView: { renderer: { extensions: { has(name: string): boolean } } } }).bubbleView.renderer.extensions.has(
@@ -221,7 +224,7 @@ export async function demoPageFigures(browser: Browser, baseUrl: string, how: De
   await still.page.locator('.lil-gui.lil-root > .lil-title').click(); // the panel starts closed on a small view
   const panel = await panelChanges(still.page, how);
   await still.page.close();
-  const { page, firstFrameMs, firstCompleteFrameMs } = await open(browser, `${baseUrl}/?${SWIRL_VIEW}`, how);
+  const { page, firstFrameMs, firstCompleteFrameMs } = await openDemo(browser, `${baseUrl}/?${SWIRL_VIEW}`, how);
   const animating = await countOneSecond(page);
   await page.evaluate(() => (document.querySelector<HTMLCanvasElement>('#bubble')!.style.display = 'none'));
   const canvasHidden = await countOneSecond(page);

@@ -7,6 +7,7 @@
  */
 import { createFilmSimulation, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
 import { sphereIntegral } from '../../src/physics/flow/filmMeasures.ts';
+import { SPEED_FILM } from './flowSpeed.ts';
 
 /** Steps timed per grid after a few untimed ones (a seeded, gently blown film, so every pass has work). */
 const RUNS = [
@@ -19,7 +20,7 @@ console.log(
 );
 console.log('|---|---|---|---|---|---|---|---|---|---|');
 for (const { gridN, warmUp, steps } of RUNS) {
-  const sim = createFilmSimulation({ gridN, seed: 1, windMps: 0.05 });
+  const sim = createFilmSimulation({ gridN, ...SPEED_FILM });
   const volume0 = sphereIntegral(sim, sim.state.eta);
   for (let s = 0; s < warmUp; s++) stepFilm(sim);
   let worstResidual = 0;

@@ -11,11 +11,13 @@ export interface Stage {
 }
 
 /**
- * A row's expected cost against a fast row's, from what its frame computes per fragment (the
- * full run on SwiftShader: a row whose frame outlasts the budget is trimmed to one frame, so
- * even the slowest stays within a few fast rows).
+ * A row's expected cost against a fast row's, from what its frame computes per fragment, or the
+ * flowing film's steps (the full run on SwiftShader: a row whose frame outlasts the budget is
+ * trimmed to one frame, so even the slowest stays within a few fast rows).
  */
 export function rowCost(row: BenchRow): number {
+  // The flow rows, grid 32 to 128, took 1.3–3 times the floor's time in a full run.
+  if (row.settings.field === 'flow') return 2;
   const dispersive = typeof row.settings.nFilm !== 'number';
   switch (row.settings.mode) {
     case 'exact':

@@ -9,6 +9,10 @@ import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
 import { type FilmSettings, HDR_ENVIRONMENTS } from '../../src/settings/filmSettings.ts';
 import type { FilmTableLayout } from '../../src/settings/filmTableLayout.ts';
 import type { FilmLayer } from '../../src/physics/filmLayers.ts';
+import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
+import { flowNumbers } from '../../src/physics/flow/flowNumbers.ts';
+import { validateFlowParameters } from '../../src/physics/flow/flowParameters.ts';
+import { timeStep } from '../../src/physics/flow/timeStep.ts';
 
 export interface BenchRow {
   readonly name: string;
@@ -60,6 +64,28 @@ const sceneStep = (name: string, more: Partial<FilmSettings>, ownTable = false):
   measuresError: false,
   ...(ownTable ? {} : { timesChanges: false as const }),
 });
+
+/** The display rate whose frames the flow rows draw: the page's frames advance the film time by 1/60 s each. */
+const FRAME_HZ = 60;
+/** The flow rows' grids (cells per cube face side). */
+const FLOW_ROW_GRIDS = [32, 64, 128] as const;
+
+/**
+ * The flowing film at a fixed grid, drawn as the app draws it while animating: each frame advances
+ * the film time by 1/60 s at simSpeed 1, so it takes the whole steps Δt that real time asks (the
+ * mean below; a frame takes the whole number below or above it), under the app's flowStepsPerFrame
+ * at these grids. Δt is the twin's rule for the grid, every other parameter at its default.
+ */
+function flowRow(gridN: number): BenchRow {
+  const parameters = validateFlowParameters({ gridN });
+  const numbers = flowNumbers(parameters);
+  const stepMs = timeStep(cubeSphereGrid(gridN), numbers) * numbers.timeScaleS * 1e3;
+  const stepsPerFrame = 1000 / FRAME_HZ / stepMs;
+  return sceneStep(
+    `default table, flow field, grid ${gridN} (6×${gridN}² cells; simSpeed 1, real time: a ${FRAME_HZ} Hz frame takes ${stepsPerFrame.toFixed(1)} steps of ${stepMs.toPrecision(3)} ms film time)`,
+    { field: 'flow', gridN, simSpeed: 1 },
+  );
+}
 
 /** 16-layer stacks of films: a TiO₂/SiO₂-like Bragg mirror of fixed layers on glass, and a nacre-like stack whose 1.68 layers follow the field. */
 const stack16 = (layers: readonly FilmLayer[]): FilmLayer[] => Array.from({ length: 8 }, () => layers).flat();
@@ -124,9 +150,8 @@ export const ROWS: readonly BenchRow[] = [
   table({}, ' (default layout)', 'half'),
   sceneStep('default table, uniform field (swirl off)', { field: 'uniform' }),
   sceneStep('default table, drainage field (swirl off)', { field: 'drainage' }),
-  // The flowing film simulated on the GPU each frame (6 × 128² cells, ~30 passes a step): simSpeed
-  // 0.05 makes a frame's 1/60 s about 5 fixed steps of 0.17 ms film time, close to the app's 8 a frame.
-  sceneStep('default table, flow field (6×128² cells, ~5 steps a frame, simSpeed 0.05)', { field: 'flow', simSpeed: 0.05 }),
+  // The flowing film simulated on the GPU each frame, at each fixed grid, in real time.
+  ...FLOW_ROW_GRIDS.map(flowRow),
   sceneStep('default table, front wall only', { sides: 'front' }),
   // What the environment costs: none reflects the light's white and draws no background; the
   // default sky; each HDR map (three lookups a fragment, AgX).
@@ -157,6 +182,9 @@ export const ROWS: readonly BenchRow[] = [
     measuresError: false,
   },
 ];
+
+/** The flowing film's simulation speed, on the GPU and in the float64 twin (flowSpeed.ts): with every row, or when this name is picked. */
+export const FLOW_SPEED_ROW = 'flow simulation: steps per second on the GPU and of the float64 twin, draws per step';
 
 /** The spectral material's figures (the example page, the app bundle): they run with every row, or when this name is picked. */
 export const MATERIALS_ROW = 'materials page: spectral film against three.js iridescence';

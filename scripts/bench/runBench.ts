@@ -1,6 +1,7 @@
 /**
- * One benchmark run: the reference's speed in Node, the picked rows in headless Chromium (a Vite
- * dev server), the material's figures, the builds' sizes and the built demo page (vite preview).
+ * One benchmark run: the reference's and the flow twin's speed in Node, the picked rows and the
+ * flow's GPU simulation in headless Chromium (a Vite dev server), the material's figures, the
+ * builds' sizes and the built demo page (vite preview).
  * A stage that throws is recorded and the run goes on; the caller reports it.
  */
 import { cpus, loadavg } from 'node:os';
@@ -12,25 +13,31 @@ import { checkedRenderer, chromiumLaunchOptions } from '../chromium.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import { type BenchPlan, thinnedGrid } from './benchPlan.ts';
 import type { BenchResults } from './benchResults.ts';
-import { RowLane, warmUp } from './browserRows.ts';
+import { RowLane, gpuFlowSpeedInPage, warmUp } from './browserRows.ts';
 import { type BundleSizes, buildAndMeasure } from './bundleSize.ts';
+import { type DefaultViewFigures, defaultViewFigures } from './defaultView.ts';
 import { type DemoPageFigures, demoPageFigures } from './demoPage.ts';
 import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './errorGrids.ts';
+import type { GpuSimulationSpeed } from './flowSpeed.ts';
 import { type MaterialFigures, materialFigures } from './materialFigures.ts';
 import { type PackageSize, packageSize } from './packageSize.ts';
 import { Progress, type Stage, rowCost } from './progress.ts';
 import { referenceSpeed } from './referenceSpeed.ts';
-import { type BenchRow, MATERIALS_ROW } from './rows.ts';
+import { type BenchRow, FLOW_SPEED_ROW, MATERIALS_ROW } from './rows.ts';
 import type { MeasuredRow } from './rowsMarkdown.ts';
 import { runAtOnce } from './runAtOnce.ts';
+import { twinSpeed } from './twinSpeed.ts';
 
 const REFERENCE_STAGE = 'reference speed';
 const BUNDLE_STAGE = 'demo and element builds';
 const PACKAGE_STAGE = 'package (npm pack)';
 const DEMO_STAGE = 'built demo page';
+const DEFAULT_VIEW_STAGE = 'built demo: its default view (the flow, governed) against the swirl';
+const FLOW_TWIN_STAGE = `${FLOW_SPEED_ROW}: the twin in Node`;
+const FLOW_GPU_STAGE = `${FLOW_SPEED_ROW}: the GPU`;
 
 /** Expected costs of the stages other than the rows, against a fast row's (the full run). */
-const STAGE_COSTS = { reference: 0.5, materials: 3, bundle: 1.5, package: 1.5, demo: 5 };
+const STAGE_COSTS = { reference: 0.5, flowTwin: 1, flowGpu: 3, materials: 3, bundle: 1.5, package: 1.5, demo: 5, defaultView: 3 };
 
 /** The error grids of a film (the soap film, or a row's own index) and their reference colours, computed once per film. */
 class ErrorGrids {
@@ -69,16 +76,25 @@ async function measureRow(lane: RowLane, row: BenchRow, grids: ErrorGrids): Prom
   return { name: row.name, settings: row.settings, quality: row.quality, ...result, errors, seconds: (performance.now() - t0) / 1000 };
 }
 
-export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withMaterials: boolean): Promise<BenchResults> {
+/** The stages that run with every row, or where picked by name. */
+export interface BenchExtras {
+  readonly materials: boolean;
+  readonly flowSpeed: boolean;
+}
+
+export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], extras: BenchExtras): Promise<BenchResults> {
   const started = performance.now();
   const load = [loadavg()[0]!];
   const stages: Stage[] = [
     { name: REFERENCE_STAGE, cost: STAGE_COSTS.reference },
+    ...(extras.flowSpeed ? [{ name: FLOW_TWIN_STAGE, cost: STAGE_COSTS.flowTwin }] : []),
     ...rows.map((r) => ({ name: r.name, cost: rowCost(r) })),
-    ...(withMaterials ? [{ name: MATERIALS_ROW, cost: STAGE_COSTS.materials }] : []),
+    ...(extras.flowSpeed ? [{ name: FLOW_GPU_STAGE, cost: STAGE_COSTS.flowGpu }] : []),
+    ...(extras.materials ? [{ name: MATERIALS_ROW, cost: STAGE_COSTS.materials }] : []),
     { name: BUNDLE_STAGE, cost: STAGE_COSTS.bundle },
     { name: PACKAGE_STAGE, cost: STAGE_COSTS.package },
     { name: DEMO_STAGE, cost: STAGE_COSTS.demo },
+    { name: DEFAULT_VIEW_STAGE, cost: STAGE_COSTS.defaultView },
   ];
   const progress = new Progress(stages);
   const failures: { stage: string; message: string }[] = [];
@@ -100,6 +116,8 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
   };
 
   const reference = await stage(REFERENCE_STAGE, referenceSpeed);
+  // In Node, before the browser: the twin's steps hold the process, which drives the pages.
+  const flowTwin = extras.flowSpeed ? await stage(FLOW_TWIN_STAGE, () => twinSpeed(plan.flowSpeed)) : null;
   const grids = new ErrorGrids(plan.gridStride);
   const devUrl = `http://127.0.0.1:${plan.devPort}`;
   const browser = await chromium.launch(chromiumLaunchOptions());
@@ -108,9 +126,11 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
     console.error(webgl);
     const measured: (MeasuredRow | null)[] = [];
     let materials: MaterialFigures | null = null;
+    let flowGpu: GpuSimulationSpeed[] | null = null;
     let bundle: BundleSizes | null = null;
     let pack: PackageSize | null = null;
     let demo: DemoPageFigures | null = null;
+    let defaultView: DefaultViewFigures | null = null;
     // The builds, then the built demo page in a preview server of its own. The package is a task
     // of its own: its build (dist-lib) is not the demo's (dist).
     const builtPage = async () => {
@@ -118,6 +138,9 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
       const previewServer = await preview({ logLevel: 'silent', preview: { port: plan.previewPort, strictPort: true, host: '127.0.0.1' } });
       try {
         demo = await stage(DEMO_STAGE, () => demoPageFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.demo));
+        defaultView = await stage(DEFAULT_VIEW_STAGE, () =>
+          defaultViewFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.defaultView),
+        );
       } finally {
         await new Promise((resolve) => previewServer.httpServer.close(resolve));
       }
@@ -140,7 +163,17 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
             measured[i] = await stage(row.name, () => measureRow(lane, row, grids));
           },
         })),
-        ...(withMaterials
+        ...(extras.flowSpeed
+          ? [
+              {
+                cost: STAGE_COSTS.flowGpu,
+                run: async () => {
+                  flowGpu = await stage(FLOW_GPU_STAGE, () => gpuFlowSpeedInPage(browser, devUrl, plan.flowSpeed));
+                },
+              },
+            ]
+          : []),
+        ...(extras.materials
           ? [
               {
                 cost: STAGE_COSTS.materials,
@@ -159,7 +192,7 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
             pack = await stage(PACKAGE_STAGE, packageSize);
           },
         },
-        { cost: STAGE_COSTS.bundle + STAGE_COSTS.demo, run: builtPage },
+        { cost: STAGE_COSTS.bundle + STAGE_COSTS.demo + STAGE_COSTS.defaultView, run: builtPage },
       ];
       const lanes = Array.from({ length: plan.concurrency }, () => new RowLane(browser, devUrl, plan));
       try {
@@ -176,10 +209,13 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], withM
       machine: { node: process.version, cpus: cpus().length, cpuModel: cpus()[0]?.model ?? 'unknown', load, webgl },
       reference,
       rows: measured.filter((m) => m !== null),
+      flowGpu,
+      flowTwin,
       materials,
       bundle,
       package: pack,
       demo,
+      defaultView,
       stageSeconds,
       seconds: (performance.now() - started) / 1000,
       failures,

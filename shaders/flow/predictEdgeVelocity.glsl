@@ -2,7 +2,7 @@
 // velocity traced back along the great circle for Δt (semi-Lagrangian, sampled from the padded cell
 // velocity and parallel-transported to the edge), then the semi-implicit force step of eq. (17)
 //   u* = (η_e u_adv/Δt + η_e g_e + Cr u_air) / (η_e/Δt + Cr),   c_e = M/(η_e/Δt + Cr),
-// u_air the wind's air at the surface plus a blow's,
+// u_air the wind's air at the surface (its direction the step's) plus a blow's,
 // η_e the logarithmic mean. Edges beside a ruptured cell are closed. An edge-atlas pass: (u*, c_e).
 #include "cubeSphereGrid.glsl"
 #include "cubeSphereSampler.glsl"
@@ -13,8 +13,11 @@ uniform sampler2D uPaddedCellVelocity;
 uniform float uAirFriction;
 uniform float uGravity;
 uniform float uMarangoni;
-/** The air at the surface along +x: WIND_SURFACE_FACTOR × the wind (in U). */
-uniform float uSurfaceWind;
+/**
+ * The air at the surface: the x and y components of WIND_SURFACE_FACTOR × the wind (in U) at the
+ * step's direction (src/physics/flow/windDirection.ts), set before each step.
+ */
+uniform vec2 uSurfaceWind;
 /**
  * A blow, the app's interaction (the twin has none): air at uBlowVelocity (in U, tangent at
  * uBlowCenter) in a Gaussian patch exp(−(1 − x·c)/w²), w = TFC_BLOW_WIDTH_RAD; 0 when still.
@@ -55,7 +58,7 @@ vec4 tfcPredictEdgeVelocity() {
   float gravityAlongNormal = -uGravity * normal.w;
   float denominator = etaEdge / uDt + uAirFriction;
   float blow = exp(-(1.0 - dot(m, uBlowCenter)) / (TFC_BLOW_WIDTH_RAD * TFC_BLOW_WIDTH_RAD)) * dot(uBlowVelocity, n);
-  float air = uSurfaceWind * n.x + blow;
+  float air = dot(uSurfaceWind, n.xy) + blow;
   float predicted = (etaEdge * advected / uDt + etaEdge * gravityAlongNormal + uAirFriction * air) / denominator;
   return vec4(predicted, uMarangoni / denominator, 0.0, 0.0);
 }

@@ -4,7 +4,7 @@ import type { FlowParameters } from '../physics/flow/flowParameters.ts';
 export type Vec3 = readonly [number, number, number];
 
 /**
- * The flowing film's own settings (field `flow`): bubble radius, Γ0, evaporation, wind, seed,
+ * The flowing film's own settings (field `flow`): bubble radius, Γ0, evaporation, wind and its turn, seed,
  * simulated seconds per second, grid (src/physics/flow/flowParameters.ts names them and holds their
  * ranges), and whether a new bubble follows a burst (the GPU's own, src/flow/renewFilm.ts).
  */
@@ -13,6 +13,7 @@ export const FLOW_SETTING_KEYS = [
   'surfactantMolM2',
   'evaporationNmS',
   'windMps',
+  'windTurnDegS',
   'seed',
   'simSpeed',
   'gridN',

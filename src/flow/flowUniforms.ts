@@ -5,7 +5,7 @@ import { PURE_SURFACE_TENSION_N_M, VELOCITY_SCALE_M_S } from '../physics/flow/fl
 import { type FlowNumbers, taylorCulickSpeedMps } from '../physics/flow/flowNumbers.ts';
 import type { FlowParameters } from '../physics/flow/flowParameters.ts';
 import { rimLeadRad, rimThicknessFloorNm } from '../physics/flow/ruptureFilm.ts';
-import { WIND_SURFACE_FACTOR } from '../physics/flow/timeStep.ts';
+import { surfaceWind } from '../physics/flow/windDirection.ts';
 import type { FlowGridTextures } from './flowGridTextures.ts';
 import { SWEEP_GUESS, SWEEP_PREVIOUS_GUESS } from './flowLayouts.ts';
 
@@ -59,7 +59,8 @@ export const FLOW_UNIFORM_SETS = {
     uAirFriction: value(numbers.airFriction),
     uGravity: value(numbers.gravity),
     uMarangoni: value(numbers.marangoni),
-    uSurfaceWind: value(WIND_SURFACE_FACTOR * numbers.wind),
+    // The wind at the film's start, along +x; a turning wind's is set before each step (gpuFilmSimulation.ts).
+    uSurfaceWind: value(surfaceWind(numbers, 0)),
     uBlowCenter: value([0, 0, 1]),
     uBlowVelocity: value([0, 0, 0]),
   }),

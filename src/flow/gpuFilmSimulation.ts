@@ -8,6 +8,7 @@ import { initialFilm } from '../physics/flow/initialFilm.ts';
 import type { ChebyshevSchedule } from '../physics/flow/chebyshevSchedule.ts';
 import { surfactantSolveSchedule } from '../physics/flow/solveSurfactant.ts';
 import { type TimeStepRule, timeStep, transportSubsteps } from '../physics/flow/timeStep.ts';
+import { surfaceWind, windAngleRad } from '../physics/flow/windDirection.ts';
 import { floatTexture } from '../gpu/floatRow.ts';
 import { cellTexelIndex, faceAtlasSize } from './flowAtlas.ts';
 import { type FlowGridTextures, flowGridTextures } from './flowGridTextures.ts';
@@ -116,12 +117,14 @@ export class GpuFilmSimulation {
     );
   }
 
-  /** Runs `count` whole steps Δt. */
+  /** Runs `count` whole steps Δt, each in the wind's direction at its start (the twin's). */
   step(count = 1): void {
     if (count <= 0) return;
+    const turns = this.parameters.windTurnDegS !== 0;
     this.passes.withTargets(() => {
       this.ensureStarted();
       for (let k = 0; k < count; k++) {
+        if (turns) this.passes.set('uSurfaceWind', surfaceWind(this.numbers, windAngleRad(this.parameters, this.steps * this.stepSeconds)));
         this.passes.step(this.numbers.evaporation > 0);
         this.steps++;
       }

@@ -3,7 +3,8 @@ import { DEFAULT_VIEW_SETTINGS, type ViewSettings } from './viewParameters.ts';
 /**
  * Where the demo page's default view differs from the schema's (DEFAULT_VIEW_SETTINGS, which the
  * element keeps): a bubble's life rather than the painted swirl. The film flows; a draught sweeps it
- * into a lopsided roll and evaporation thins its top to black within the first half minute, then
+ * into a lopsided roll that turns with the draught's direction, once in 30 s, and evaporation
+ * thins its top to black within the first half minute, then
  * it bursts and a new one follows; it is shown on black, where its colours are vivid
  * (docs/demo.md#the-default-view, where the numbers behind each value are). The float64 twin's
  * defaults (FLOW_PARAMETERS) stay still air, as its check against the analytic settled film needs.
@@ -11,6 +12,7 @@ import { DEFAULT_VIEW_SETTINGS, type ViewSettings } from './viewParameters.ts';
 export const DEMO_VIEW_CHANGES = {
   field: 'flow',
   windMps: 0.05,
+  windTurnDegS: 12,
   evaporationNmS: 20,
   seed: 3,
   env: 'none',

@@ -46,6 +46,7 @@ export const FILM_PARAMETERS: readonly Row[] = [
   flowRow('surfactantMolM2', 'surfactant', 1e-9),
   flowRow('evaporationNmS', 'evaporation', 1),
   flowRow('windMps', 'wind', 0.01),
+  flowRow('windTurnDegS', 'windTurn', 1),
   flowRow('seed', 'seed', 1),
   // What a view draws when the page leaves them to it (a frozen view; the page's own rows, viewParameters.ts, take `auto`).
   flowRow('simSpeed', 'simSpeed', 0.01),

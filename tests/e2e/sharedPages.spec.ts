@@ -1,4 +1,5 @@
 import type { ParityGroup } from '../../scripts/harness/parityCase.ts';
+import { DEMO_VIEW_SETTINGS } from '../../src/settings/demoView.ts';
 import { parseSettings } from '../../src/settings/settingsQuery.ts';
 import { recordCentreFrames } from './centreFrames.ts';
 import { centrePixel } from './drawingBuffer.ts';
@@ -25,7 +26,8 @@ test.describe('the shared demo page', () => {
   });
 
   test('the next test gets the page as a fresh load of the neutral URL leaves it', async ({ demoPage: page }) => {
-    const neutral = parseSettings(NEUTRAL_VIEW.slice(1)).settings;
+    // What the URL leaves out is the demo's default view.
+    const neutral = parseSettings(NEUTRAL_VIEW.slice(1), DEMO_VIEW_SETTINGS).settings;
     const current = await page.evaluate(() => (window as unknown as { bubbleApp: { current: object } }).bubbleApp.current);
     expect(current).toEqual(neutral);
     expect(page.viewportSize()).toEqual(VIEWPORT);

@@ -1,6 +1,7 @@
 /**
  * The benchmark page: `benchRow` runs one row, once in a fresh page or (the smoke's
- * `pagePerLane`) once per row of a lane in the same page. It builds the demo's BubbleView with the
+ * `pagePerLane`) once per row of a lane in the same page; `benchFlowSpeed` times the flowing
+ * film's GPU simulation (gpuFlowSpeed.ts). It builds the demo's BubbleView with the
  * row's settings and quality, times frames synced with a 1-pixel readPixels, and renders the error
  * grids through the same film shader (FilmXyzProbe) on a renderer of their own. A row disposes all
  * it made on the page's renderer and checks that nothing is left there, so that a later row finds
@@ -22,6 +23,8 @@ import {
   fitSizes,
   fittedFrameMs,
 } from '../benchRow.ts';
+import type { FlowSpeedPlan } from '../flowSpeed.ts';
+import { gpuFlowSpeed } from './gpuFlowSpeed.ts';
 import { rowScene } from './rowScene.ts';
 import { TableWatch } from './tableWatch.ts';
 
@@ -187,5 +190,11 @@ window.benchRow = async (spec: BenchRowSpec) => {
     xyz = gridProbe.render(spec.grids, spec.settings.mode, spec.quality);
   }
   return { ...timed, xyz };
+};
+window.benchFlowSpeed = (plan: FlowSpeedPlan) => {
+  const speeds = gpuFlowSpeed(renderer, plan);
+  const left = leftOnRenderer();
+  if (left) throw new Error(`the flow's simulations left ${left} on the page's renderer`);
+  return speeds;
 };
 document.body.dataset.ready = 'yes';

@@ -11,6 +11,7 @@ import type { ChebyshevSchedule } from './chebyshevSchedule.ts';
 import { type SurfactantWork, correctEdgeVelocity, solveSurfactant, surfactantSolveSchedule, surfactantWork } from './solveSurfactant.ts';
 import { type TimeStepRule, WIND_SURFACE_FACTOR, timeStep, transportSubsteps } from './timeStep.ts';
 import { type TransportWork, transportFilm, transportWork } from './transportFilm.ts';
+import { windAngleRad } from './windDirection.ts';
 
 /** The evolving fields, in the units of eq. (17) (docs/flow.md#the-model). */
 export interface FilmState {
@@ -50,6 +51,10 @@ export interface FilmSimulation {
 interface StepWork {
   readonly cellVelocity: Float64Array;
   readonly paddedCellVelocity: Float64Array;
+  /** The air at the surface along each edge's normal for the wind along +x and along +y (φ = 0 and 90°). */
+  readonly windAlongX: Float64Array;
+  readonly windAlongY: Float64Array;
+  /** The air at the surface along each edge's normal at the step's wind direction (windDirection.ts). */
   readonly windAlongNormal: Float64Array;
   readonly prediction: EdgePrediction;
   readonly surfactant: SurfactantWork;
@@ -70,9 +75,14 @@ export function createFilmSimulation(given: Partial<Record<string, unknown>> = {
   const halo = cubeSphereHalo(grid);
   const dt = (options.timeStep ?? timeStep)(grid, numbers);
   const { eta, gamma } = initialFilm(grid, parameters.seed);
-  const windAlongNormal = new Float64Array(grid.edgeCount);
-  // The air at the surface: WIND_SURFACE_FACTOR × the wind (along +x) projected onto the tangent plane.
-  for (let e = 0; e < grid.edgeCount; e++) windAlongNormal[e] = WIND_SURFACE_FACTOR * numbers.wind * grid.edgeNormal[3 * e]!;
+  // The air at the surface: WIND_SURFACE_FACTOR × the wind projected onto the tangent plane, for
+  // the wind along +x and along +y; the wind at angle φ is cos φ × the first + sin φ × the second.
+  const windAlongX = new Float64Array(grid.edgeCount);
+  const windAlongY = new Float64Array(grid.edgeCount);
+  for (let e = 0; e < grid.edgeCount; e++) {
+    windAlongX[e] = WIND_SURFACE_FACTOR * numbers.wind * grid.edgeNormal[3 * e]!;
+    windAlongY[e] = WIND_SURFACE_FACTOR * numbers.wind * grid.edgeNormal[3 * e + 1]!;
+  }
   return {
     parameters,
     numbers,
@@ -95,7 +105,9 @@ export function createFilmSimulation(given: Partial<Record<string, unknown>> = {
     work: {
       cellVelocity: new Float64Array(3 * grid.cellCount),
       paddedCellVelocity: new Float64Array(3 * halo.paddedCell.length),
-      windAlongNormal,
+      windAlongX,
+      windAlongY,
+      windAlongNormal: new Float64Array(grid.edgeCount),
       prediction: { predicted: new Float64Array(grid.edgeCount), marangoniCoefficient: new Float64Array(grid.edgeCount) },
       surfactant: surfactantWork(grid),
       transport: transportWork(grid),
@@ -105,12 +117,28 @@ export function createFilmSimulation(given: Partial<Record<string, unknown>> = {
 }
 
 /**
- * One fixed step Δt of eq. (17), as the passes a GPU mirrors (docs/flow.md#the-step): reconstruct
- * cell velocities, halo, advect + force at edges, surfactant solve, edge correction, conservative
- * transport of η and Γ (in sub-steps), evaporation, rupture and rims.
+ * The air at the surface along each edge's normal for the step from the film time of `sim`: the
+ * wind along +x when it does not turn, else turned to the angle φ at the step's start
+ * (windDirection.ts), u_air,e = cos φ u_air,e(+x) + sin φ u_air,e(+y).
+ */
+function windAlongNormal(sim: FilmSimulation): Float64Array {
+  const { work } = sim;
+  if (sim.parameters.windTurnDegS === 0) return work.windAlongX;
+  const angle = windAngleRad(sim.parameters, filmSeconds(sim));
+  const [c, s] = [Math.cos(angle), Math.sin(angle)];
+  for (let e = 0; e < work.windAlongNormal.length; e++) work.windAlongNormal[e] = c * work.windAlongX[e]! + s * work.windAlongY[e]!;
+  return work.windAlongNormal;
+}
+
+/**
+ * One fixed step Δt of eq. (17), as the passes a GPU mirrors (docs/flow.md#the-step): the wind's
+ * direction at the step's start, reconstruct cell velocities, halo, advect + force at edges,
+ * surfactant solve, edge correction, conservative transport of η and Γ (in sub-steps),
+ * evaporation, rupture and rims.
  */
 export function stepFilm(sim: FilmSimulation): void {
   const { grid, halo, numbers, dt, state, work } = sim;
+  const air = windAlongNormal(sim);
   reconstructCellVelocity(grid, state.edgeVelocity, work.cellVelocity);
   padField(halo, work.cellVelocity, 3, work.paddedCellVelocity);
   predictEdgeVelocity(
@@ -123,7 +151,7 @@ export function stepFilm(sim: FilmSimulation): void {
       sample: work.sampleVector,
       eta: state.eta,
       intact: state.intact,
-      windAlongNormal: work.windAlongNormal,
+      windAlongNormal: air,
     },
     work.prediction,
   );

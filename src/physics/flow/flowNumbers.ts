@@ -29,7 +29,7 @@ export interface FlowNumbers {
   readonly gravity: number;
   /** e: the loss of η per unit time by evaporation (η0 per R/U). */
   readonly evaporation: number;
-  /** The wind's speed in U (blowing along +x). */
+  /** The wind's speed in U (blowing along +x at t = 0, its direction turning about +z: windDirection.ts). */
   readonly wind: number;
   /** η below which the film ruptures: rupture thickness / mean thickness. */
   readonly ruptureEta: number;

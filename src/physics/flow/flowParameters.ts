@@ -22,6 +22,7 @@ export type FlowParameterKey =
   | 'surfactantMolM2'
   | 'evaporationNmS'
   | 'windMps'
+  | 'windTurnDegS'
   | 'seed'
   | 'ruptureThicknessNm'
   | 'rimSpeedFactor'
@@ -53,6 +54,8 @@ export const FLOW_PARAMETERS: readonly FlowParameterRow[] = [
   row('surfactantMolM2', 'surfactant', 'surfactant Γ0 (mol/m²)', { min: 1e-8, max: 1e-6, unit: 'mol/m²' }, 6.67e-8),
   row('evaporationNmS', 'evaporation', 'evaporation (nm/s)', { min: 0, max: 100, unit: 'nm/s' }, 0),
   row('windMps', 'wind', 'wind (m/s)', { min: 0, max: 2, unit: 'm/s' }, 0),
+  // Up to a turn a second: a draught that veers faster than the film settles (~1 s) only stirs it.
+  row('windTurnDegS', 'wind-turn', 'wind turn (°/s)', { min: 0, max: 360, unit: 'degrees/s' }, 0),
   row('seed', 'seed', 'perturbation seed', { min: 0, max: 2_147_483_647, unit: '' }, 0, true),
   row('ruptureThicknessNm', 'rupture-nm', 'rupture thickness (nm)', { min: 0, max: 100, unit: 'nm' }, 10),
   row('rimSpeedFactor', 'rim-speed-factor', 'rim speed / Taylor–Culick', { min: 0.01, max: 1, unit: '' }, 1),

@@ -14,9 +14,23 @@ const ROWS = ['plain textured sphere (the floor)', 'exact, 45 bins', 'exact, 90 
 
 describe('bench command line', () => {
   it('takes --smoke and a list of texts each picking a row', () => {
-    expect(parseBenchArgs([], ROWS)).toEqual({ args: { help: false, smoke: false, only: null } });
-    expect(parseBenchArgs(['--smoke', 'exact|default'], ROWS)).toEqual({ args: { help: false, smoke: true, only: ['exact', 'default'] } });
+    expect(parseBenchArgs([], ROWS)).toEqual({ args: { help: false, smoke: false, only: null, port: null } });
+    expect(parseBenchArgs(['--smoke', 'exact|default'], ROWS)).toEqual({
+      args: { help: false, smoke: true, only: ['exact', 'default'], port: null },
+    });
     expect(parseBenchArgs(['--help'], ROWS)).toEqual({ args: { help: true } });
+  });
+
+  it('--port moves the servers: an integer port, the next one free for the preview', () => {
+    for (const argv of [
+      ['--port', '5196', 'exact'],
+      ['--port=5196', 'exact'],
+    ])
+      expect(parseBenchArgs(argv, ROWS)).toEqual({ args: { help: false, smoke: false, only: ['exact'], port: 5196 } });
+    for (const bad of [['--port'], ['--port', 'x'], ['--port=80'], ['--port=65535'], ['--port=5196.5']]) {
+      const r = parseBenchArgs(bad, ROWS);
+      expect('error' in r && r.error).toMatch(/^--port must be an integer from 1024 to 65534/);
+    }
   });
 
   it('an unknown flag is an error naming it and listing the flags and rows', () => {

@@ -33,10 +33,13 @@ const results = (rows: MeasuredRow[], more: Partial<BenchResults> = {}): BenchRe
     sink: 3,
   },
   rows,
+  flowGpu: null,
+  flowTwin: null,
   materials: null,
   bundle: { files: {}, demoGzipBytes: 1000, elementGzipBytes: 900, environmentGzipBytes: [100] },
   package: { tarballBytes: 100, unpackedBytes: 300, files: 5 },
   demo: null,
+  defaultView: null,
   stageSeconds: {},
   seconds: 600,
   failures: [],
@@ -47,29 +50,56 @@ const measures = (name: string) => ({
   measuresError: name !== 'floor',
 });
 
+/** A run of rows picked without the materials and the flow speed. */
+const NONE = { materials: false, flowSpeed: false } as const;
+
 describe('bench results check', () => {
   const good = [row('floor'), row('table', { errors: [stats, stats] })];
 
   it('a complete run has no problems but the figures it lacks', () => {
-    expect(resultProblems(results(good), measures, false)).toEqual(['no demo figures']);
+    expect(resultProblems(results(good), measures, NONE)).toEqual(['no demo figures', 'no defaultView figures']);
   });
 
   it('names a figure that is not finite, by its path', () => {
     const bad = [good[0]!, row('table', { errors: [stats, stats], frames: [{ medianMs: NaN, count: 30 }] })];
-    expect(resultProblems(results(bad), measures, false)).toContain('results.rows.1.frames.0.medianMs is NaN');
+    expect(resultProblems(results(bad), measures, NONE)).toContain('results.rows.1.frames.0.medianMs is NaN');
   });
 
   it('finds it again in the results read back from JSON (where NaN is null), and accepts the nulls that mean not measured', () => {
     const bad = [good[0]!, row('table', { errors: [stats, stats], frames: [{ medianMs: NaN, count: 30 }] })];
     const readBack = JSON.parse(JSON.stringify(results(bad))) as BenchResults;
-    expect(resultProblems(readBack, measures, false)).toEqual(['results.rows.1.frames.0.medianMs is null', 'no demo figures']);
-    expect(resultProblems(JSON.parse(JSON.stringify(results(good))) as BenchResults, measures, false)).toEqual(['no demo figures']);
+    expect(resultProblems(readBack, measures, NONE)).toEqual([
+      'results.rows.1.frames.0.medianMs is null',
+      'no demo figures',
+      'no defaultView figures',
+    ]);
+    expect(resultProblems(JSON.parse(JSON.stringify(results(good))) as BenchResults, measures, NONE)).toEqual([
+      'no demo figures',
+      'no defaultView figures',
+    ]);
   });
 
   it('error columns exist exactly where a row measures error', () => {
-    const problems = resultProblems(results([row('floor', { errors: [stats, stats] }), row('table')]), measures, false);
+    const problems = resultProblems(results([row('floor', { errors: [stats, stats] }), row('table')]), measures, NONE);
     expect(problems).toContain('floor: error columns, though the row measures no error');
     expect(problems).toContain('table: no error columns, though the row measures error');
+  });
+
+  it('the flow speed figures at every grid of the plan, each finite', () => {
+    const speed = (gridN: number, stepsPerSecond = 10) => ({ gridN, stepSeconds: 0.004, stepsPerSecond, filmSecondsPerSecond: 0.04 });
+    const all = FULL_PLAN.flowSpeed.grids;
+    const r = results(good, {
+      flowGpu: all.map((n) => ({ ...speed(n), drawsPerStep: 103 })),
+      flowTwin: [speed(all[0]!, NaN)],
+    });
+    expect(resultProblems(r, measures, { materials: false, flowSpeed: true })).toEqual([
+      'results.flowTwin.0.stepsPerSecond is NaN',
+      'no demo figures',
+      'no defaultView figures',
+      'no flow twin figures at every grid of the plan',
+    ]);
+    // Not asked for (rows picked without it): none is missing.
+    expect(resultProblems(results(good), measures, NONE)).toEqual(['no demo figures', 'no defaultView figures']);
   });
 
   it('a stage that threw, missing materials, a size or a change not timed where the budget does not trim them', () => {
@@ -79,10 +109,11 @@ describe('bench results check', () => {
       changeToFrameMs: [300, null, 320, 330],
     });
     const r = results([good[0]!, untimed], { plan: SMOKE_PLAN, failures: [{ stage: 'exact, 90 bins', message: 'lost context' }] });
-    expect(resultProblems(r, measures, true)).toEqual(
+    expect(resultProblems(r, measures, { materials: true, flowSpeed: true })).toEqual(
       expect.arrayContaining([
         'exact, 90 bins threw: lost context',
         'no materials figures',
+        'no flow GPU figures at every grid of the plan',
         'table: size 2 not timed',
         'table: a change not timed',
       ]),
@@ -95,6 +126,6 @@ describe('bench results check', () => {
       frames: [{ medianMs: FULL_PLAN.frameBudgetMs + 1, count: 1 }, null],
       changeToFrameMs: [null, null, null, null],
     });
-    expect(resultProblems(results([good[0]!, slow]), measures, false)).toEqual(['no demo figures']);
+    expect(resultProblems(results([good[0]!, slow]), measures, NONE)).toEqual(['no demo figures', 'no defaultView figures']);
   });
 });

@@ -108,6 +108,7 @@ describe('URL parameters', () => {
     surfactant: [1e-8, 1e-6],
     evaporation: [0, 100],
     wind: [0, 2],
+    windTurn: [0, 360],
     simSpeed: [0, 10],
     pixelRatio: [0.25, 4],
   };

@@ -20,6 +20,7 @@ describe('flow parameters', () => {
       surfactantMolM2: 6.67e-8,
       evaporationNmS: 0,
       windMps: 0,
+      windTurnDegS: 0,
       seed: 0,
       ruptureThicknessNm: 10,
       rimSpeedFactor: 1,
