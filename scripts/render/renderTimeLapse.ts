@@ -1,12 +1,15 @@
 /**
- * A time-lapse of the demo: its frames rendered in one browser launch and one page (each frame
- * opened at its view's URL in the same window, waited on until drawn, captured), then encoded as
- * one animation.
+ * A time-lapse of the demo: its frames rendered in one browser launch and one page, then encoded as
+ * one animation. The first frame is the page opened at its view's URL; each later one is the same
+ * view given its later time in place, waited on until drawn in full, and captured. A flowing film
+ * then runs on from the frame before rather than from its start: the same fixed steps in the same
+ * order, so each frame is the still a fresh load at its time draws, and the work grows with the
+ * film time, not with its square.
  */
 import type { RenderCommand } from '../../src/cli/renderOptions.ts';
 import type { ChromiumLaunchOptions } from '../chromium.ts';
 import { encodeAnimation } from './encodeAnimation.ts';
-import { capture, withDemo, withViewPage } from './renderViews.ts';
+import { capture, captureAtTime, withDemo, withViewPage } from './renderViews.ts';
 
 type TimeLapse = Extract<RenderCommand, { kind: 'timeLapse' }>;
 
@@ -24,8 +27,8 @@ export async function renderTimeLapse(lapse: TimeLapse, launch: ChromiumLaunchOp
   if (!first) throw new Error('a time-lapse has at least one frame');
   const pngs = await withDemo(launch, (browser, base) =>
     withViewPage(browser, first, async (page) => {
-      const captured: Buffer[] = [];
-      for (const frame of lapse.frames) captured.push(await capture(page, base, frame));
+      const captured = [await capture(page, base, first)];
+      for (const timeSeconds of lapse.timesS.slice(1)) captured.push(await captureAtTime(page, timeSeconds));
       return captured;
     }),
   );

@@ -97,6 +97,21 @@ export async function capture(page: Page, base: string, view: RenderView): Promi
   return page.screenshot({ type: 'png', animations: 'disabled', caret: 'hide' });
 }
 
+/**
+ * The window as a PNG once the page shown by `capture` shows its view at another film time: the
+ * time given to the page's app in place, and waited on until a frame at it is drawn in full.
+ */
+export async function captureAtTime(page: Page, timeSeconds: number): Promise<Buffer> {
+  await page.evaluate((t) => {
+    type App = { current: object; set(s: object): void };
+    const app = (window as unknown as { bubbleApp: App }).bubbleApp;
+    delete document.body.dataset.frames;
+    app.set({ ...app.current, timeSeconds: t });
+  }, timeSeconds);
+  await page.waitForSelector(FRAME_DRAWN, { state: 'attached' });
+  return page.screenshot({ type: 'png', animations: 'disabled', caret: 'hide' });
+}
+
 async function renderView(browser: Browser, base: string, view: RenderView): Promise<RenderedView> {
   const started = performance.now();
   const png = await withViewPage(browser, view, (page) => capture(page, base, view));
