@@ -82,35 +82,40 @@ export async function withViewPage<T>(browser: Browser, view: RenderView, use: (
   }
 }
 
-/** The window as a PNG once the page shows `view` (a page error fails it). */
-export async function capture(page: Page, base: string, view: RenderView): Promise<Buffer> {
+/** The window as a PNG once `shown` resolves (a page error meanwhile fails it). */
+async function captureWhenShown(page: Page, shown: () => Promise<void>): Promise<Buffer> {
   let onError: (error: Error) => void = () => undefined;
   const failed = new Promise<never>((_, reject) => {
     onError = (e) => reject(new Error(`the demo page failed: ${e.message}`));
   });
   page.on('pageerror', onError);
   try {
-    await Promise.race([showView(page, base, view), failed]);
+    await Promise.race([shown(), failed]);
   } finally {
     page.off('pageerror', onError);
   }
   return page.screenshot({ type: 'png', animations: 'disabled', caret: 'hide' });
 }
 
+/** The window as a PNG once the page shows `view` (a page error fails it). */
+export const capture = (page: Page, base: string, view: RenderView): Promise<Buffer> =>
+  captureWhenShown(page, () => showView(page, base, view));
+
 /**
  * The window as a PNG once the page shown by `capture` shows its view at another film time: the
- * time given to the page's app in place, and waited on until a frame at it is drawn in full.
+ * time given to the page's app in place, and waited on until a frame at it is drawn in full (a
+ * page error fails it).
  */
-export async function captureAtTime(page: Page, timeSeconds: number): Promise<Buffer> {
-  await page.evaluate((t) => {
-    type App = { current: object; set(s: object): void };
-    const app = (window as unknown as { bubbleApp: App }).bubbleApp;
-    delete document.body.dataset.frames;
-    app.set({ ...app.current, timeSeconds: t });
-  }, timeSeconds);
-  await page.waitForSelector(FRAME_DRAWN, { state: 'attached' });
-  return page.screenshot({ type: 'png', animations: 'disabled', caret: 'hide' });
-}
+export const captureAtTime = (page: Page, timeSeconds: number): Promise<Buffer> =>
+  captureWhenShown(page, async () => {
+    await page.evaluate((t) => {
+      type App = { current: object; set(s: object): void };
+      const app = (window as unknown as { bubbleApp: App }).bubbleApp;
+      delete document.body.dataset.frames;
+      app.set({ ...app.current, timeSeconds: t });
+    }, timeSeconds);
+    await page.waitForSelector(FRAME_DRAWN, { state: 'attached' });
+  });
 
 async function renderView(browser: Browser, base: string, view: RenderView): Promise<RenderedView> {
   const started = performance.now();
