@@ -181,7 +181,7 @@ export class BubbleApp {
     if (view.render(true)) this.parts.present?.();
     const cost = view.takeFrameCost();
     if (this.governed && this.loop.looping) {
-      this.governor.drawn(now, cost, view.film.flowGrid, follows);
+      this.governor.drawn(now, { ...cost, settling: view.film.settling }, view.film.flowGrid, follows);
       const filmSeconds = view.film.timeSeconds;
       if (filmSeconds !== null) this.filmRate.frame(now, filmSeconds * view.current.simSpeed);
     }

@@ -4,10 +4,18 @@
  * of the timings it is fed and its previous state; FrameGovernor measures and applies.
  */
 
-/** A frame at 60 Hz (ms): the budget where the machine holds it at full quality. */
+/** A frame at 60 Hz (ms): the budget where the machine holds it. */
 export const FAST_BUDGET_MS = 1000 / 60;
-/** 4 frames a second (ms): the budget elsewhere, with quality lowered only as far as needed. */
+/** 4 frames a second (ms): the most the budget is anywhere. */
 export const SLOW_BUDGET_MS = 250;
+/**
+ * Elsewhere the budget is this many times the bubble's own frame at the ladder's pixel ratio (its
+ * frame with the film left out: what a painted field's frame costs there), within FAST_BUDGET_MS
+ * and SLOW_BUDGET_MS: the simulated film adds at most a quarter to a frame.
+ */
+export const DRAW_SHARE = 1.25;
+/** The grid the governor starts on (the largest of its grids not above it): cheap to make and to step on any machine, and two of its steps tell what larger grids cost. */
+export const START_GRID = 32;
 /** The grids the governor chooses among (cells per cube face side), within GOVERNED_GRID: each about √2 times the one before, so a step's 6N² fragments about double from one to the next. */
 export const GOVERNED_GRIDS = [16, 24, 32, 48, 64, 96, 128, 192, 256] as const;
 /** The governor's grid range (a user may ask for any grid of FLOW_PARAMETERS, 4–256). */
@@ -25,7 +33,7 @@ export const GOVERNED_MAX_STEPS = 64;
  */
 const MIN_FRAMES = 2;
 const MIN_WINDOW_MS = 500;
-const SLOW_WINDOW_MS = 1500;
+const SLOW_WINDOW_MS = 1000;
 /**
  * A window's mean frame above this many budgets is an overrun: the choice goes down after two in a
  * row (a busy moment of the machine is not the machine), or after one above CLEAR_OVERRUN budgets,
@@ -38,6 +46,12 @@ const HOLDS = 1.1;
 /** The steps fill this share of the budget (less the draw): a frame planned at 0.8 budgets overruns only 1.5 times as long. */
 const STEP_FILL = 0.8;
 /**
+ * Under the 60 Hz budget the steps real time asks for may take this share of it. A frame held at
+ * vsync shows no headroom, so the draw's own part is not known there without a GPU timer: a rung
+ * whose draw and steps do not fit overruns, and the governor goes back.
+ */
+const FAST_SIM_SHARE = 0.5;
+/**
  * The choice goes up only to a rung predicted within this share of the budget, after a window
  * this long (ms), and only once in a governor's life: a second rise would follow the noise of the
  * costs measured, not the machine.
@@ -45,9 +59,9 @@ const STEP_FILL = 0.8;
 const UP_MARGIN = 0.6;
 const UP_WINDOW_MS = 1000;
 /**
- * The share of a measured cost taken to stay when the grid or the pixels shrink: a fixed cost
- * per draw (a CPU rasteriser's) that a smaller target does not save. Smaller than the truth
- * errs on the side of slower frames; a second grid measured replaces it with the fit.
+ * The share of a measured cost taken as fixed when carried to another grid or pixel ratio: a cost
+ * per draw (a CPU rasteriser's, or a GPU's per pass) that the target's size does not change. A
+ * second grid measured replaces it with the fit.
  */
 const FIXED_SHARE = 0.5;
 
@@ -82,7 +96,7 @@ export interface BudgetChoice {
   readonly gridN: number;
   readonly stepsPerFrame: number;
   readonly pixelRatio: number;
-  /** The budget chosen (ms): FAST_BUDGET_MS or SLOW_BUDGET_MS. */
+  /** The budget chosen (ms): FAST_BUDGET_MS, or DRAW_SHARE times the bubble's own frame within FAST_BUDGET_MS–SLOW_BUDGET_MS. */
   readonly budgetMs: number;
 }
 
@@ -139,11 +153,14 @@ export function ladder(limits: Pick<BudgetLimits, 'grids' | 'pixelRatios'>): rea
   return rungs.sort((a, b) => score(b) - score(a) || b.gridN - a.gridN);
 }
 
-/** The first choice: full quality, one step a frame until frames are measured. */
+/**
+ * The first choice: START_GRID (the grid given, or the smallest if none is as small) at the
+ * largest pixel ratio, one step a frame until frames are measured, the 60 Hz budget.
+ */
 export function initialBudget(limits: BudgetLimits): BudgetState {
-  const top = ladder(limits)[0]!;
+  const gridN = Math.max(...limits.grids.filter((n) => n <= START_GRID), Math.min(...limits.grids));
   return {
-    choice: { ...top, stepsPerFrame: limits.fixedStepsPerFrame ?? 1, budgetMs: FAST_BUDGET_MS },
+    choice: { gridN, pixelRatio: Math.max(...limits.pixelRatios), stepsPerFrame: limits.fixedStepsPerFrame ?? 1, budgetMs: FAST_BUDGET_MS },
     banned: [],
     window: EMPTY_WINDOW,
     stepMs: {},
@@ -154,33 +171,27 @@ export function initialBudget(limits: BudgetLimits): BudgetState {
   };
 }
 
-/**
- * A cost measured at `at` (the nearest measured), carried to `x` by cells or pixels (x²): in full
- * going up (an upper bound, as a fixed part does not grow), FIXED_SHARE kept going down.
- */
+/** A cost measured at `at` (the nearest measured), carried to `x` by cells or pixels (x²), FIXED_SHARE of it fixed. */
 function carried(measured: Costs, x: number): number | undefined {
   const known = Object.keys(measured).map(Number);
   if (known.length === 0) return undefined;
   const at = known.reduce((a, b) => (Math.abs(b - x) < Math.abs(a - x) || (Math.abs(b - x) === Math.abs(a - x) && b > a) ? b : a));
-  const ms = meanOf(measured, at);
-  const s = (x / at) ** 2;
-  return x >= at ? ms * s : ms * (FIXED_SHARE + (1 - FIXED_SHARE) * s);
+  return meanOf(measured, at) * (FIXED_SHARE + (1 - FIXED_SHARE) * (x / at) ** 2);
 }
 
 /**
  * A step's cost at a grid (docs/flow.md's cost model: a + b·N², a fixed cost per pass and one per
- * cell): measured; between two grids measured, the fit through the nearest below and above; below
- * them all, the fit through the two smallest; above them all (or with one grid measured), carried
- * (an upper bound going up).
+ * cell): measured; with two grids measured, the fit through the nearest two (below and above, or
+ * the two nearest on its side); with one, carried.
  */
 function predictedStepMs(stepMs: Costs, gridN: number): number | undefined {
   if (stepMs[gridN] !== undefined) return meanOf(stepMs, gridN);
   const known = Object.keys(stepMs)
     .map(Number)
     .sort((a, b) => a - b);
+  if (known.length < 2) return carried(stepMs, gridN);
   const above = known.findIndex((n) => n > gridN);
-  if (known.length < 2 || above < 0) return carried(stepMs, gridN);
-  const [n1, n2] = above === 0 ? [known[0]!, known[1]!] : [known[above - 1]!, known[above]!];
+  const [n1, n2] = above === 0 ? [known[0]!, known[1]!] : above < 0 ? [known.at(-2)!, known.at(-1)!] : [known[above - 1]!, known[above]!];
   const [m1, m2] = [meanOf(stepMs, n1), meanOf(stepMs, n2)];
   const b = Math.max(0, (m1 - m2) / (n1 * n1 - n2 * n2));
   const a = Math.max(0, m1 - b * n1 * n1);
@@ -210,6 +221,26 @@ function predictedFrameMs(s: BudgetState, rung: Rung, steps: number, limits: Bud
   return draw + Math.min(steps, GOVERNED_MAX_STEPS) * step * limits.views;
 }
 
+/** The steps real time asks of a frame of `frameMs` at a grid (n·Δt ≥ the frame), at least one. */
+const realTimeSteps = (limits: BudgetLimits, gridN: number, frameMs: number): number =>
+  Math.min(limits.maxStepsPerFrame, Math.max(1, Math.ceil((frameMs * limits.simSpeed) / (1000 * limits.stepSeconds(gridN)))));
+
+/**
+ * Whether a rung is predicted within `share` of the budget: under the 60 Hz budget, the steps real
+ * time asks for within FAST_SIM_SHARE of it; elsewhere its frame with one step.
+ */
+function fits(s: BudgetState, rung: Rung, budgetMs: number, share: number, limits: BudgetLimits): boolean {
+  if (budgetMs > FAST_BUDGET_MS) return predictedFrameMs(s, rung, 1, limits) <= share * budgetMs;
+  const step = predictedStepMs(s.stepMs, rung.gridN) ?? 0;
+  return step * limits.views * realTimeSteps(limits, rung.gridN, budgetMs) <= share * FAST_SIM_SHARE * budgetMs;
+}
+
+/** The budget where the 60 Hz one is overrun: DRAW_SHARE times the bubble's own frame at the largest pixel ratio, within FAST_BUDGET_MS–SLOW_BUDGET_MS. */
+function slowBudgetMs(s: BudgetState, limits: BudgetLimits): number {
+  const draw = carried(s.drawMs, Math.max(...limits.pixelRatios)) ?? SLOW_BUDGET_MS;
+  return Math.min(SLOW_BUDGET_MS, Math.max(FAST_BUDGET_MS, DRAW_SHARE * draw));
+}
+
 const rungIndex = (rungs: readonly Rung[], x: Rung): number => rungs.findIndex((r) => r.gridN === x.gridN && r.pixelRatio === x.pixelRatio);
 
 const changed = (a: BudgetChoice, b: BudgetChoice): boolean =>
@@ -218,12 +249,13 @@ const changed = (a: BudgetChoice, b: BudgetChoice): boolean =>
 /**
  * The governor's next state after a frame (docs/governor.md). Frames gather into a window; once it
  * holds MIN_FRAMES frames over MIN_WINDOW_MS it is judged by its mean, and its costs join those
- * measured before. An overrun (above OVERRUN budgets) bans the rung with every rung above it and
- * goes down to the best rung left whose frame with one step is predicted within the budget (the
- * lowest if none is). The first window that holds sets the steps per frame; a window held for
- * UP_WINDOW_MS goes up, once in the governor's life, to a rung not banned predicted within
- * UP_MARGIN of the budget. The budget is FAST_BUDGET_MS until full quality overruns it, then
- * SLOW_BUDGET_MS for good. The steps fill what the draw leaves of the budget, no more than real time asks.
+ * measured before. The first window judged decides from the costs at the start: one over the
+ * 60 Hz budget takes the slow budget (slowBudgetMs) and the best rung of the whole ladder predicted
+ * within it; one that holds goes up to the best rung whose steps are predicted within it. Later, an
+ * overrun (above OVERRUN budgets) bans the rung with every rung above it and goes down to the best
+ * rung left predicted within the budget (the lowest if none is); a window held for UP_WINDOW_MS goes
+ * up, once in the governor's life, to a rung not banned predicted within UP_MARGIN of the budget.
+ * The steps fill what the draw leaves of the budget, no more than real time asks.
  */
 export function nextBudget(state: BudgetState, sample: FrameSample, limits: BudgetLimits): BudgetState {
   const w = {
@@ -235,7 +267,7 @@ export function nextBudget(state: BudgetState, sample: FrameSample, limits: Budg
     drawMs: state.window.drawMs === null || sample.drawMs === undefined ? null : state.window.drawMs + sample.drawMs,
   };
   const s: BudgetState = { ...state, window: w };
-  const windowMs = state.choice.budgetMs === SLOW_BUDGET_MS ? SLOW_WINDOW_MS : MIN_WINDOW_MS;
+  const windowMs = state.choice.budgetMs > FAST_BUDGET_MS ? SLOW_WINDOW_MS : MIN_WINDOW_MS;
   const ready = state.probing
     ? w.ms >= 2 * SLOW_BUDGET_MS || (w.frames >= MIN_FRAMES && w.ms >= MIN_WINDOW_MS)
     : w.frames >= MIN_FRAMES && w.ms >= windowMs;
@@ -252,35 +284,50 @@ export function nextBudget(state: BudgetState, sample: FrameSample, limits: Budg
   const here = Math.max(0, rungIndex(rungs, choice));
   const overruns = frameMs > OVERRUN * choice.budgetMs ? s.overruns + 1 : 0;
   const over = overruns >= 2 || (overruns > 0 && (s.probing || frameMs > CLEAR_OVERRUN * choice.budgetMs));
-  const budgetMs = over && here === 0 ? SLOW_BUDGET_MS : choice.budgetMs;
+  // The start overran the 60 Hz budget: the machine cannot hold it, and the slow budget is taken for good.
+  const leavesFast = over && s.probing && choice.budgetMs === FAST_BUDGET_MS;
+  const budgetMs = leavesFast ? slowBudgetMs(measured, limits) : choice.budgetMs;
+  const fast = budgetMs === FAST_BUDGET_MS;
   const holds = frameMs <= HOLDS * budgetMs;
-  // The best rung whose frame with one step is predicted within `limitMs`; its steps fill the budget.
-  const pick = (candidates: readonly Rung[], limitMs: number): BudgetChoice | undefined => {
-    const rung = candidates.find((r) => predictedFrameMs(measured, r, 1, limits) <= limitMs);
-    return rung && { ...rung, stepsPerFrame: stepsAt(measured, rung, budgetMs, limits, false), budgetMs };
+  // A rung with the steps it takes; the best rung predicted within `share` of the budget (under the 60 Hz budget it is expected to hold).
+  const withSteps = (rung: Rung, holdsThere: boolean): BudgetChoice => ({
+    ...rung,
+    stepsPerFrame: stepsAt(measured, rung, budgetMs, limits, holdsThere),
+    budgetMs,
+  });
+  const pick = (candidates: readonly Rung[], share: number): BudgetChoice | undefined => {
+    const rung = candidates.find((r) => fits(measured, r, budgetMs, share, limits));
+    return rung && withSteps(rung, fast);
   };
+  const notBelow = (r: Rung) => r.gridN >= choice.gridN && r.pixelRatio >= choice.pixelRatio;
   let next: BudgetChoice | undefined;
   let banned = measured.banned;
-  if (over) {
-    // Too slow for its budget (the slow one, or the fast one below full quality): banned with every rung above it.
-    if (budgetMs === choice.budgetMs) banned = [...banned, ...rungs.slice(0, here + 1).map(key)];
+  if (leavesFast) {
+    // Up or down the whole ladder, as the costs at the start predict.
+    next = pick(rungs, 1) ?? withSteps(rungs.at(-1)!, false);
+  } else if (over) {
+    // Too slow for its budget: banned with every rung above it.
+    banned = [...banned, ...rungs.slice(0, here + 1).map(key)];
     // Down: neither the grid nor the pixel ratio goes up.
     const allowed = rungs.filter((r) => !banned.includes(key(r)) && r.gridN <= choice.gridN && r.pixelRatio <= choice.pixelRatio);
-    const lowest = allowed.at(-1) ?? rungs.at(-1)!;
     // The rung risen to overran: back to the one it rose from, which held.
     const back = s.rose?.to === key(choice) ? s.rose.from : undefined;
-    next = back ?? pick(allowed, budgetMs) ?? { ...lowest, stepsPerFrame: stepsAt(measured, lowest, budgetMs, limits, false), budgetMs };
+    next = back ?? pick(allowed, 1) ?? withSteps(allowed.at(-1) ?? rungs.at(-1)!, false);
   } else if (measured.probing) {
-    // The first window held: the steps this rung affords.
-    next = { ...choice, stepsPerFrame: stepsAt(measured, choice, budgetMs, limits, holds), budgetMs };
+    // The start held the 60 Hz budget: up to the best rung predicted within it, else the steps the start affords.
+    next = pick(rungs.slice(0, here).filter(notBelow), 1) ?? withSteps(choice, holds);
   } else if (w.ms >= UP_WINDOW_MS && holds && !measured.rose) {
-    // Up: neither the grid nor the pixel ratio goes down.
-    const above = rungs
-      .slice(0, here)
-      .filter((r) => !banned.includes(key(r)) && r.gridN >= choice.gridN && r.pixelRatio >= choice.pixelRatio);
-    next = pick(above, UP_MARGIN * budgetMs);
+    // Up: neither the grid nor the pixel ratio goes down; else more steps here, if the frames measured afford them.
+    const above = pick(
+      rungs.slice(0, here).filter((r) => !banned.includes(key(r)) && notBelow(r)),
+      UP_MARGIN,
+    );
+    const more = withSteps(choice, fast);
+    next = above ?? (more.stepsPerFrame > choice.stepsPerFrame ? more : undefined);
   }
-  const rose = measured.rose ?? (next && rungIndex(rungs, next) < here ? { from: choice, to: key(next) } : null);
+  // A move up after the start's decision (to a finer rung, or more steps) is the governor's one rise.
+  const up = next !== undefined && !s.probing && (rungIndex(rungs, next) < here || next.stepsPerFrame > choice.stepsPerFrame);
+  const rose = measured.rose ?? (up ? { from: choice, to: key(next!) } : null);
   // A window judged in full (an overrun, the first one, or one as long as going up needs) starts anew.
   const judged = next !== undefined || w.ms >= UP_WINDOW_MS || overruns > 0;
   const after = { ...measured, banned, probing: false, overruns: over ? 0 : overruns };

@@ -55,8 +55,11 @@ export class FrameGovernor {
   private state: BudgetState | null = null;
   private limitsKey = '';
   private limits: BudgetLimits | null = null;
-  /** The animation frame being gathered: its time, its views' simulation ms and steps, and their draws' GPU ms (null where one has no timer). */
-  private frame: { now: number; simMs: number; steps: number; drawMs: number | null } | null = null;
+  /**
+   * The animation frame being gathered: its time, its views' simulation ms and steps, their draws'
+   * GPU ms (null where one has no timer), and whether a view's film was settling in it.
+   */
+  private frame: { now: number; simMs: number; steps: number; drawMs: number | null; settling: boolean } | null = null;
   /** A flowing film's grid and step as last measured (for the step at other grids). */
   private step: { readonly gridN: number; readonly stepSeconds: number } | null = null;
   /**
@@ -102,12 +105,13 @@ export class FrameGovernor {
 
   /**
    * A governed view drew a frame of the animation frame at `now` (rAF's time), its simulation taking
-   * `simMs` for `steps` steps at `flowGrid`; `follows` says whether its frame before was the one just
-   * before (else the time between is not a frame's).
+   * `simMs` for `steps` steps at `flowGrid`; `settling` says its film was made anew, waited for its
+   * programs or compiled them in it (the frame is not measured); `follows` says whether its frame
+   * before was the one just before (else the time between is not a frame's).
    */
   drawn(
     now: number,
-    cost: { readonly simMs: number; readonly drawMs: number | null; readonly steps: number },
+    cost: { readonly simMs: number; readonly drawMs: number | null; readonly steps: number; readonly settling: boolean },
     flowGrid: { readonly gridN: number; readonly stepSeconds: number } | null,
     follows: boolean,
   ): void {
@@ -117,10 +121,11 @@ export class FrameGovernor {
       f.simMs += cost.simMs;
       f.steps += cost.steps;
       f.drawMs = f.drawMs === null || cost.drawMs === null ? null : f.drawMs + cost.drawMs;
+      f.settling ||= cost.settling;
       return;
     }
-    this.frame = { now, simMs: cost.simMs, steps: cost.steps, drawMs: cost.drawMs };
-    if (!f || !follows || !this.state || !this.limits) return;
+    this.frame = { now, simMs: cost.simMs, steps: cost.steps, drawMs: cost.drawMs, settling: cost.settling };
+    if (!f || !follows || f.settling || !this.state || !this.limits) return;
     if (this.skip > 0) {
       this.skip--;
       return;

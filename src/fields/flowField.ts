@@ -26,15 +26,26 @@ export function flowParametersOf(s: FieldSettings): FlowParameters {
 export const flowDirection = ([x, y, z]: Vec3): Vec3 => [x, -z, y];
 
 /** The film's start (η per cell, padded for sampling) for the last grid and seed asked for. */
-let start: { key: string; padded: Float64Array; maxEta: number } | null = null;
+let start: { key: string; padded: Float64Array } | null = null;
 function startFilm(gridN: number, seed: number) {
   const key = `${gridN} ${seed}`;
   if (start?.key !== key) {
     const grid = cubeSphereGrid(gridN);
-    const { eta } = initialFilm(grid, seed);
-    start = { key, padded: padField(cubeSphereHalo(grid), eta, 1), maxEta: Math.max(...eta) };
+    start = { key, padded: padField(cubeSphereHalo(grid), initialFilm(grid, seed).eta, 1) };
   }
   return start;
+}
+
+/**
+ * The grid the film's start is sampled on to size the table, whatever grid it is simulated on: its
+ * bumps are smooth over many cells of any grid, and the table need not change with the grid.
+ */
+const RANGE_GRID_N = 32;
+/** The thickest the film's start is (in η0) for the last seed asked for, on RANGE_GRID_N. */
+let startMax: { seed: number; maxEta: number } | null = null;
+function startMaxEta(seed: number): number {
+  if (startMax?.seed !== seed) startMax = { seed, maxEta: Math.max(...initialFilm(cubeSphereGrid(RANGE_GRID_N), seed).eta) };
+  return startMax.maxEta;
 }
 
 /**
@@ -47,7 +58,7 @@ function flowMaxNm(s: FieldSettings): number {
   const numbers = flowNumbers(p);
   const a = numbers.gravity / numbers.marangoni;
   const settledBottom = (2 * a) / -Math.expm1(-2 * a);
-  const factor = Math.max(settledBottom, startFilm(p.gridN, p.seed).maxEta);
+  const factor = Math.max(settledBottom, startMaxEta(p.seed));
   return Math.min(FILM_STACK_DOMAIN.thicknessNm.max, Math.max(1, TABLE_MARGIN * factor * p.thicknessNm));
 }
 

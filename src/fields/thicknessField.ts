@@ -71,11 +71,18 @@ export interface FieldState {
   /**
    * Brings the film to the settings' time by at most `maxSteps` fixed steps (from its start if its
    * parameters changed or the time went back) and points the uniforms at it; returns whether it
-   * reached that time. Nothing runs when it is there already.
+   * reached that time. Nothing runs when it is there already. With a finite `maxSteps` (an
+   * animating app's frame) a film made anew is shown at its start first, and its steps may wait
+   * for their programs; with Infinity (a frame that must show the time) it reaches the time.
    */
   advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean;
   /** The settings' time (s) its film shows: the last advance's, or less while the film is behind it. */
   readonly timeSeconds: number;
+  /**
+   * Whether the last advance made the film anew, waited for its programs or took its first steps
+   * (which compile them where the GPU cannot in parallel): its cost is not the film's pace.
+   */
+  readonly settling: boolean;
   /**
    * Blows air at a point of the bubble (unit, the view's frame, y up) with a velocity in m/s (its
    * part tangent there counts), over the film's next steps (a moment of film time): the film moves

@@ -1,6 +1,7 @@
 import type { WebGLRenderer } from 'three';
 import { flowDirection, flowParametersOf } from '../fields/flowField.ts';
 import type { FieldSettings, FieldState, FieldUniforms, Vec3 } from '../fields/thicknessField.ts';
+import type { FlowParameters } from '../physics/flow/flowParameters.ts';
 import { GpuFilmSimulation } from './gpuFilmSimulation.ts';
 
 /** Film seconds a blow lasts (a drag blows anew with each move). */
@@ -21,6 +22,10 @@ const STEP_SLACK = 1e-9;
 export class FlowFieldState implements FieldState {
   private simulation: GpuFilmSimulation | null = null;
   private key = '';
+  /** Whether the simulation's step programs are compiled (or left to its first steps to compile), and whether it has stepped. */
+  private programsReady = false;
+  private stepped = false;
+  settling = false;
   /** The time shown, in the settings' seconds. */
   timeSeconds = 0;
   /** The blow the next steps take (the simulation's frame) and the film seconds it has left. */
@@ -35,26 +40,47 @@ export class FlowFieldState implements FieldState {
 
   advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean {
     const parameters = flowParametersOf(s);
-    const key = JSON.stringify([parameters, s.renew]);
-    if (!this.simulation || key !== this.key) {
-      this.simulation?.dispose();
-      this.simulation = new GpuFilmSimulation(this.renderer, parameters, { renew: s.renew });
-      this.key = key;
-    }
-    const sim = this.simulation;
+    const made = !this.simulation || JSON.stringify([parameters, s.renew]) !== this.key;
+    if (made) this.make(parameters, s.renew, Number.isFinite(maxSteps));
+    const sim = this.simulation!;
     const wanted = Math.floor(((s.timeSeconds * s.simSpeed) / sim.stepSeconds) * (1 + STEP_SLACK));
     if (wanted < sim.steps) {
       // The film starts again: a blow still under way was on the film given up, not on its start.
       sim.reset();
       this.blowing = null;
     }
-    this.step(sim, Math.min(wanted - sim.steps, maxSteps));
-    u.uFlowFilm!.value = sim.paddedFilm;
+    // A frame that must show the time steps at once, compiling what it has to.
+    const ready = this.programsReady || !Number.isFinite(maxSteps);
+    const count = ready ? Math.min(wanted - sim.steps, maxSteps) : 0;
+    this.settling = made || !ready || (!this.stepped && count > 0);
+    this.step(sim, count);
+    this.stepped ||= count > 0;
+    // Before its programs are ready, the film's start as made on the CPU.
+    u.uFlowFilm!.value = ready ? sim.paddedFilm : sim.startPaddedFilm;
     u.uFlowGridN!.value = sim.grid.n;
     const reached = sim.steps === wanted;
     // Short of the time: the time of the steps taken, which gives back exactly these steps.
     this.timeSeconds = reached ? s.timeSeconds : (sim.steps * sim.stepSeconds) / s.simSpeed;
     return reached;
+  }
+
+  /**
+   * A simulation of `parameters` at its start. For an animating frame (`shownFirst`) its start is
+   * drawn first, with no step: the step's programs compile meanwhile without blocking the page
+   * where the GPU compiles in parallel, and elsewhere in the frame of its first steps, so the
+   * frame that shows the film first costs little more than the bubble's own.
+   */
+  private make(parameters: FlowParameters, renew: boolean, shownFirst: boolean): void {
+    this.simulation?.dispose();
+    const sim = new GpuFilmSimulation(this.renderer, parameters, { renew });
+    this.simulation = sim;
+    this.key = JSON.stringify([parameters, renew]);
+    this.stepped = false;
+    this.programsReady = !shownFirst;
+    if (shownFirst)
+      void sim.compile().then(() => {
+        if (this.simulation === sim) this.programsReady = true;
+      });
   }
 
   blow(point: Vec3, velocityMps: Vec3): void {

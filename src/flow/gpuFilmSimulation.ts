@@ -1,6 +1,6 @@
 import type { DataTexture, Texture, WebGLRenderTarget, WebGLRenderer } from 'three';
 import { type CubeSphereGrid, cubeSphereGrid } from '../physics/flow/cubeSphereGrid.ts';
-import { cubeSphereHalo } from '../physics/flow/cubeSphereSampler.ts';
+import { cubeSphereHalo, padField } from '../physics/flow/cubeSphereSampler.ts';
 import { VELOCITY_SCALE_M_S } from '../physics/flow/flowConstants.ts';
 import { type FlowNumbers, flowNumbers } from '../physics/flow/flowNumbers.ts';
 import { type FlowParameters, validateFlowParameters } from '../physics/flow/flowParameters.ts';
@@ -10,7 +10,7 @@ import { surfactantSolveSchedule } from '../physics/flow/solveSurfactant.ts';
 import { type TimeStepRule, timeStep, transportSubsteps } from '../physics/flow/timeStep.ts';
 import { surfaceWind, windAngleRad } from '../physics/flow/windDirection.ts';
 import { floatTexture } from '../gpu/floatRow.ts';
-import { cellTexelIndex, faceAtlasSize } from './flowAtlas.ts';
+import { cellTexelIndex, faceAtlasSize, paddedTexelIndex } from './flowAtlas.ts';
 import { type FlowGridTextures, flowGridTextures } from './flowGridTextures.ts';
 import { FlowStep } from './flowStep.ts';
 import { flowUniformSets } from './flowUniforms.ts';
@@ -18,12 +18,14 @@ import { renewSteps } from './renewFilm.ts';
 
 /**
  * The targets that hold the film's state, for reading it back: the film (η, Γ, intact, 0) per cell
- * of the cell atlas, u·n per edge of the edge atlas (r), the hole table (flowLayouts.ts), and the
+ * of the cell atlas, and padded, u·n per edge of the edge atlas (r), the hole table (flowLayouts.ts), and the
  * two sweeps of the last step's surfactant solve whose residuals measure it (the first and the one
  * at its solution; null before a step).
  */
 export interface FilmStateTargets {
   readonly film: WebGLRenderTarget;
+  /** The padded film as `paddedFilm` last made it. */
+  readonly paddedFilm: WebGLRenderTarget;
   readonly edgeVelocity: WebGLRenderTarget;
   readonly holes: WebGLRenderTarget;
   readonly residualSweeps: readonly [WebGLRenderTarget, WebGLRenderTarget] | null;
@@ -50,8 +52,9 @@ export class GpuFilmSimulation {
   /** Steps taken since the start. */
   steps = 0;
   private textures: FlowGridTextures;
-  /** The start's (η, Γ) per cell, in float64 from initialFilm, rounded once. */
+  /** The start's (η, Γ) per cell, in float64 from initialFilm, rounded once; its padded film made on the CPU (startPaddedFilm). */
   private start: DataTexture;
+  private startPadded: DataTexture | null = null;
   private readonly passes: FlowStep;
   /** Whether the film target holds the start (false until the first draw after creation, reset or a lost context). */
   private started = false;
@@ -94,6 +97,31 @@ export class GpuFilmSimulation {
     const data = new Float32Array(4 * size.width * size.height);
     for (let c = 0; c < this.grid.cellCount; c++) data.set([eta[c]!, gamma[c]!], 4 * cellTexelIndex(this.grid.n, c));
     return floatTexture(data, size.width, size.height);
+  }
+
+  /**
+   * The padded film at its start (η, Γ, intact, 0), made on the CPU: the start and halo passes'
+   * twin (padField), to draw before any of the simulation's programs is compiled. Made once, on
+   * first use.
+   */
+  get startPaddedFilm(): Texture {
+    if (!this.startPadded) {
+      const { eta, gamma } = initialFilm(this.grid, this.parameters.seed);
+      const film = new Float64Array(4 * this.grid.cellCount);
+      for (let c = 0; c < this.grid.cellCount; c++) film.set([eta[c]!, gamma[c]!, 1, 0], 4 * c);
+      const padded = padField(cubeSphereHalo(this.grid), film, 4);
+      const n = this.grid.n;
+      const size = faceAtlasSize(n + 2);
+      const data = new Float32Array(4 * size.width * size.height);
+      for (let p = 0; p < padded.length / 4; p++) data.set(padded.subarray(4 * p, 4 * p + 4), 4 * paddedTexelIndex(n, p));
+      this.startPadded = floatTexture(data, size.width, size.height);
+    }
+    return this.startPadded;
+  }
+
+  /** Compiles the programs of a step, without blocking the page where the GPU compiles in parallel; resolves when they are ready. */
+  compile(): Promise<unknown> {
+    return this.passes.compile();
   }
 
   /** Back to the start (drawn with the next step or padded film). */
@@ -159,7 +187,13 @@ export class GpuFilmSimulation {
   get stateTargets(): FilmStateTargets {
     this.passes.withTargets(() => this.ensureStarted());
     const t = this.passes.targets;
-    return { film: t.film.read, edgeVelocity: t.edgeVelocity, holes: t.holes.read, residualSweeps: this.passes.residualSweeps };
+    return {
+      film: t.film.read,
+      paddedFilm: t.paddedFilm,
+      edgeVelocity: t.edgeVelocity,
+      holes: t.holes.read,
+      residualSweeps: this.passes.residualSweeps,
+    };
   }
 
   private ensureStarted(): void {
@@ -176,6 +210,7 @@ export class GpuFilmSimulation {
   invalidate(): void {
     this.textures = flowGridTextures(this.grid, cubeSphereHalo(this.grid));
     this.start = this.startTexture();
+    this.startPadded = null;
     for (const [name, texture] of Object.entries(this.textures)) this.passes.set(name as keyof FlowGridTextures, texture);
     this.passes.invalidate();
     this.reset();
@@ -183,6 +218,6 @@ export class GpuFilmSimulation {
 
   dispose(): void {
     this.passes.dispose();
-    for (const texture of [this.start, ...Object.values(this.textures)]) texture.dispose();
+    for (const texture of [this.start, this.startPadded, ...Object.values(this.textures)]) texture?.dispose();
   }
 }

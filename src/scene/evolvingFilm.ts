@@ -38,6 +38,11 @@ export class EvolvingFilm {
     return this.current?.state.timeSeconds ?? null;
   }
 
+  /** Whether the last advance made its film anew, waited for its programs or took its first steps (FieldState.settling): a frame whose cost is not the film's pace. */
+  get settling(): boolean {
+    return this.current?.state.settling ?? false;
+  }
+
   /** The flowing film's grid (cells per cube face side) and step (film seconds) as simulated now, or null (no flowing film, or none simulated yet). */
   get flowGrid(): { readonly gridN: number; readonly stepSeconds: number } | null {
     const sim = this.flowSimulation;

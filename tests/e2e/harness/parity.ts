@@ -1,11 +1,11 @@
 /** The parity page: film XYZ (FilmXyzProbe) and film thickness of the given cases through the real shaders. */
-import { WebGLRenderer } from 'three';
+import { type DataTexture, WebGLRenderer } from 'three';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/settings/filmQuality.ts';
 import type { ParityGroup, ParityMode } from '../../../scripts/harness/parityCase.ts';
 import { FilmXyzProbe } from '../../../scripts/harness/filmXyzProbe.ts';
 import { renderThickness } from './thicknessFieldProbe.ts';
 import { GpuFilmSimulation } from '../../../src/flow/gpuFilmSimulation.ts';
-import { readFilmState } from './filmReadback.ts';
+import { readFilmState, readTexels } from './filmReadback.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');
 if (!canvas) throw new Error('parity.html must hold #gl');
@@ -32,6 +32,14 @@ window.runFlow = (parameters, steps, blow, puncture, renew = false) => {
   sim.dispose();
   return result;
 };
+window.startPaddedFilms = (parameters) => {
+  const sim = new GpuFilmSimulation(renderer, parameters);
+  const cpu = [...((sim.startPaddedFilm as DataTexture).image.data as Float32Array)];
+  void sim.paddedFilm;
+  const gpu = [...readTexels(renderer, sim.stateTargets.paddedFilm)];
+  sim.dispose();
+  return { cpu, gpu };
+};
 document.body.dataset.ready = 'yes';
 
 declare global {
@@ -43,6 +51,8 @@ declare global {
      * first, renewed after a burst): per cell η, Γ, intact; per edge u·n_e; the open holes; the last
      * solve's residual.
      */
+    /** A film's padded start as made on the CPU (drawn before the simulation's programs are compiled) and by the GPU's start and halo passes, texel for texel. */
+    startPaddedFilms?: (parameters: Record<string, number>) => { cpu: number[]; gpu: number[] };
     runFlow?: (
       parameters: Record<string, number>,
       steps: number,

@@ -13,7 +13,7 @@ import {
   nextBudget,
 } from '../../../src/app/frameBudget.ts';
 import { mulberry32 } from '../../seededRandom.ts';
-import { GOVERNOR_NOISE, GOVERNOR_OVERRUN } from '../../tolerances.ts';
+import { GOVERNED_FRAME_RATIO, GOVERNOR_NOISE } from '../../tolerances.ts';
 
 /**
  * A machine the governor is fed timings of, its costs written independently of the governor's
@@ -25,24 +25,29 @@ interface Machine {
   readonly drawFixedMs: number;
   /** ms per unit of pixel ratio² (the drawing buffer's pixels). */
   readonly drawPixelMs: number;
-  /** ms per pass (29 passes a step) and per cell per step. */
+  /** ms per pass (PASSES a step) and per cell per step. */
   readonly passMs: number;
   readonly cellMs: number;
   /** The device's pixel ratio. */
   readonly dpr: number;
 }
 
-const PASSES = 29;
+/** Draws a step at the flow's defaults (docs/flow.md#what-a-step-costs), at every grid: the surfactant solve's sweeps are most of them. */
+const PASSES = 103;
 /** The ladder's grids up to full quality's, N = 128 (the flow's default). */
 const LADDER = GOVERNED_GRIDS.filter((n) => n <= 128);
-/** 60 Hz, a real GPU: a step at N = 128 ≈ 0.3 ms, the draw a few ms. */
+/** 60 Hz, a real GPU: a step at N = 128 ≈ 0.45 ms, the draw a few ms. */
 const GPU: Machine = { vsyncMs: FAST_BUDGET_MS, drawFixedMs: 1, drawPixelMs: 1.5, passMs: 0.002, cellMs: 2.5e-6, dpr: 2 };
-/** The issue's SwiftShader figures at 1280×720, pixel ratio 1: the swirl 232 ms; a step ≈ 0.5 s at N = 128, ≈ 66 ms at 32. */
-const SWIFTSHADER: Machine = { vsyncMs: 0, drawFixedMs: 30, drawPixelMs: 200, passMs: 1.28, cellMs: 0.0047, dpr: 1 };
-/** An integrated GPU at pixel ratio 2 that cannot hold 60 fps at full quality (≈ 30 ms a frame there). */
+/** SwiftShader at 1280×720, pixel ratio 1, as measured on a 2-core machine: the bubble's frame 93 ms, a step 79 ms at N = 32 and 283 ms at 64. */
+const SWIFTSHADER: Machine = { vsyncMs: 0, drawFixedMs: 20, drawPixelMs: 73, passMs: 0.107, cellMs: 0.0111, dpr: 1 };
+/** llvmpipe at 1280×720, pixel ratio 1, as measured there: the bubble's frame 54 ms (most of it the page's compositing), a step 20 ms at N = 16 and 91 ms at 48. */
+const LLVMPIPE: Machine = { vsyncMs: 0, drawFixedMs: 14, drawPixelMs: 40, passMs: 0.107, cellMs: 0.0058, dpr: 1 };
+/** An integrated GPU at pixel ratio 2 whose bubble alone cannot hold 60 fps (28 ms a frame). */
 const LAPTOP: Machine = { vsyncMs: FAST_BUDGET_MS, drawFixedMs: 4, drawPixelMs: 6, passMs: 0.02, cellMs: 2e-5, dpr: 2 };
 
 const stepMsOf = (m: Machine, n: number) => PASSES * m.passMs + 6 * n * n * m.cellMs;
+/** The bubble's own frame at the device's pixel ratio (a painted field's frame, without a film to simulate). */
+const ownFrameMs = (m: Machine) => Math.max(m.vsyncMs, m.drawFixedMs + m.drawPixelMs * m.dpr ** 2);
 
 function limitsFor(m: Machine, over: Partial<BudgetLimits> = {}): BudgetLimits {
   return {
@@ -51,8 +56,8 @@ function limitsFor(m: Machine, over: Partial<BudgetLimits> = {}): BudgetLimits {
     maxStepsPerFrame: GOVERNED_MAX_STEPS,
     baseStepsPerFrame: 8,
     fixedStepsPerFrame: null,
-    // The flow's step shrinks with the cell (an advective Courant bound): 0.17 ms at N = 128.
-    stepSeconds: (n) => (0.17e-3 * 128) / n,
+    // The flow's step shrinks with the cell (an advective Courant bound): 3.98 ms at N = 128.
+    stepSeconds: (n) => (3.98e-3 * 128) / n,
     simSpeed: 1,
     views: 1,
     ...over,
@@ -94,7 +99,9 @@ function run(m: Machine, limits: BudgetLimits, seconds: number, noise = 0, seed 
 const mean = (xs: readonly number[]) => xs.reduce((a, b) => a + b, 0) / xs.length;
 const last = (r: Run) => r.choices.at(-1)!.choice;
 const SEEDS = Array.from({ length: 20 }, (_, i) => i + 1);
-const MACHINES = { GPU, SWIFTSHADER, LAPTOP };
+const MACHINES = { GPU, SWIFTSHADER, LLVMPIPE, LAPTOP };
+/** The machines whose bubble alone cannot hold 60 Hz. */
+const SLOW_MACHINES = { SWIFTSHADER, LLVMPIPE, LAPTOP };
 
 describe('the frame budget (fed timings)', () => {
   it('orders the ladder from full quality down, a halved grid side counting as a halved pixel ratio', () => {
@@ -115,17 +122,23 @@ describe('the frame budget (fed timings)', () => {
     expect(last(r).stepsPerFrame).toBeGreaterThan(1);
   });
 
-  it('on a CPU rasteriser takes the 4-frames-a-second budget with a smaller grid, and keeps it', () => {
-    const r = run(SWIFTSHADER, limitsFor(SWIFTSHADER), 30);
-    const c = last(r);
-    expect(c.budgetMs).toBe(SLOW_BUDGET_MS);
-    expect(c.gridN).toBeLessThan(128);
-    expect(mean(r.settledFrames)).toBeLessThanOrEqual(SLOW_BUDGET_MS * GOVERNOR_OVERRUN);
-  });
+  for (const [name, m] of Object.entries(SLOW_MACHINES)) {
+    it(`${name}: where the bubble alone cannot hold 60 Hz, the flowing film’s frames stay within ${GOVERNED_FRAME_RATIO} times the bubble’s own, film time running`, () => {
+      for (const seed of SEEDS) {
+        const r = run(m, limitsFor(m), 30, GOVERNOR_NOISE, seed);
+        const c = last(r);
+        expect(c.budgetMs, `seed ${seed}`).toBeGreaterThan(FAST_BUDGET_MS);
+        expect(mean(r.settledFrames), `seed ${seed}`).toBeLessThanOrEqual(GOVERNED_FRAME_RATIO * ownFrameMs(m));
+        expect(c.stepsPerFrame).toBeGreaterThanOrEqual(1);
+      }
+    });
+  }
 
-  it('lowers quality only as far as needed: a machine at 30 fps at full quality keeps it under the slow budget', () => {
-    const c = last(run(LAPTOP, limitsFor(LAPTOP), 30));
-    expect(c).toMatchObject({ gridN: 128, pixelRatio: 2, budgetMs: SLOW_BUDGET_MS });
+  it('lowers quality only as far as needed: a laptop whose draw leaves room keeps a finer grid and more pixels than a CPU rasteriser', () => {
+    const laptop = last(run(LAPTOP, limitsFor(LAPTOP), 30));
+    const cpu = last(run(SWIFTSHADER, limitsFor(SWIFTSHADER), 30));
+    expect(laptop.gridN).toBeGreaterThan(cpu.gridN);
+    expect(laptop.pixelRatio).toBeGreaterThan(cpu.pixelRatio);
   });
 
   for (const [name, m] of Object.entries(MACHINES)) {
@@ -143,8 +156,8 @@ describe('the frame budget (fed timings)', () => {
           if (next && next.gridN * next.pixelRatio < choice.gridN * choice.pixelRatio)
             expect(rungs.slice(i + 1), trail).not.toContain(rungs[i]);
         });
-        // A move never trades one knob for the other: both go down, or both go up.
-        for (const [{ choice: a }, { choice: b }] of r.choices.slice(1).map((c, i) => [r.choices[i]!, c] as const)) {
+        // After the start's decision (a place on the whole ladder), a move never trades one knob for the other: both go down, or both go up.
+        for (const [{ choice: a }, { choice: b }] of r.choices.slice(2).map((c, i) => [r.choices[i + 1]!, c] as const)) {
           const down = b.gridN <= a.gridN && b.pixelRatio <= a.pixelRatio;
           const up = b.gridN >= a.gridN && b.pixelRatio >= a.pixelRatio;
           expect(down || up, `seed ${seed}: ${a.gridN}@${a.pixelRatio} → ${b.gridN}@${b.pixelRatio}`).toBe(true);
@@ -158,14 +171,15 @@ describe('the frame budget (fed timings)', () => {
     let state = initialBudget(limits);
     // Two slow frames at full quality without steps: too slow for 60 Hz, and nothing known of a step.
     for (let i = 0; i < 2; i++) state = nextBudget(state, { intervalMs: 600, simMs: 0, steps: 0 }, limits);
+    // The bubble's own frame of 600 ms: the slow budget at its most.
     expect(state.choice.budgetMs).toBe(SLOW_BUDGET_MS);
     expect(state.choice.stepsPerFrame).toBe(1);
   });
 
   it('three bubbles share one budget: each takes fewer steps, and the frames stay within it', () => {
-    const one = last(run(SWIFTSHADER, limitsFor(SWIFTSHADER), 30));
-    const r = run(SWIFTSHADER, limitsFor(SWIFTSHADER, { views: 3 }), 30);
-    expect(mean(r.settledFrames)).toBeLessThanOrEqual(SLOW_BUDGET_MS * GOVERNOR_OVERRUN);
+    const one = last(run(LAPTOP, limitsFor(LAPTOP), 30));
+    const r = run(LAPTOP, limitsFor(LAPTOP, { views: 3 }), 30);
+    expect(mean(r.settledFrames)).toBeLessThanOrEqual(GOVERNED_FRAME_RATIO * ownFrameMs(LAPTOP));
     expect(last(r).gridN * last(r).stepsPerFrame).toBeLessThanOrEqual(one.gridN * one.stepsPerFrame);
   });
 
@@ -191,7 +205,8 @@ describe('the frame budget (fed timings)', () => {
         expect(Number.isInteger(choice.stepsPerFrame)).toBe(true);
         expect(choice.stepsPerFrame).toBeGreaterThanOrEqual(1);
         expect(choice.stepsPerFrame).toBeLessThanOrEqual(GOVERNED_MAX_STEPS);
-        expect([FAST_BUDGET_MS, SLOW_BUDGET_MS]).toContain(choice.budgetMs);
+        expect(choice.budgetMs).toBeGreaterThanOrEqual(FAST_BUDGET_MS);
+        expect(choice.budgetMs).toBeLessThanOrEqual(SLOW_BUDGET_MS);
       }
     }
   });

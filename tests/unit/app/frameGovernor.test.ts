@@ -25,7 +25,8 @@ function animate(governor: FrameGovernor, views: readonly GovernedView[], second
   // A step of 0.01 ms of film for 0.5 ms of work: real time is out of reach, the budget bounds the steps.
   const grid = { gridN: 128, stepSeconds: 1e-5 };
   for (let now = 0; now < seconds * 1000; now += 1000 / 60) {
-    for (let i = 0; i < views.length; i++) governor.drawn(now, { simMs: 0.5 * stepsOf(), drawMs: 2, steps: stepsOf() }, grid, now > 0);
+    for (let i = 0; i < views.length; i++)
+      governor.drawn(now, { simMs: 0.5 * stepsOf(), drawMs: 2, steps: stepsOf(), settling: false }, grid, now > 0);
   }
 }
 
@@ -53,6 +54,20 @@ describe('the frame governor of a page', () => {
     // Each step costs 0.5 ms and each draw 2 ms: the steps fill what the draws leave of 80 % of 16.7 ms, shared.
     expect(alone.choice!.stepsPerFrame).toBe(Math.floor((0.8 * (1000 / 60) - 2) / 0.5));
     expect(shared.choice!.stepsPerFrame).toBe(Math.floor((0.8 * (1000 / 60) - 2 * 2) / (2 * 0.5)));
+  });
+
+  it('does not measure a frame in which a film was made, waited for its programs or compiled them', () => {
+    const governor = FrameGovernor.of(fakeDocument());
+    const { view, choices } = flowingView();
+    governor.join(view);
+    const given = choices.length;
+    const grid = { gridN: 32, stepSeconds: 1e-3 };
+    // Two seconds of frames a second long, each settling: were they measured, the 60 Hz budget would be left at the first judged window.
+    for (let now = 0; now < 2000; now += 1000) governor.drawn(now, { simMs: 900, drawMs: null, steps: 1, settling: true }, grid, now > 0);
+    expect(choices).toHaveLength(given);
+    // The same frames, measured: the budget is left.
+    for (let now = 2000; now < 6000; now += 1000) governor.drawn(now, { simMs: 900, drawMs: null, steps: 1, settling: false }, grid, true);
+    expect(governor.choice!.budgetMs).toBeGreaterThan(1000 / 60);
   });
 
   it('keeps to the grid and pixel ratio a user gave when every view gave them, and starts anew when a view leaves', () => {
