@@ -107,6 +107,8 @@ export class FlowFieldState implements FieldState {
 
   invalidate(): void {
     this.simulation?.invalidate();
+    // The programs compiling were the lost context's: the steps compile theirs as they draw.
+    this.programsReady = true;
   }
 
   dispose(): void {

@@ -101,8 +101,8 @@ export class GpuFilmSimulation {
 
   /**
    * The padded film at its start (η, Γ, intact, 0), made on the CPU: the start and halo passes'
-   * twin (padField), to draw before any of the simulation's programs is compiled. Made once, on
-   * first use.
+   * twin (padField), to draw before any of the simulation's programs is compiled. Made on first
+   * use, and let go once the simulation pads its own film.
    */
   get startPaddedFilm(): Texture {
     if (!this.startPadded) {
@@ -179,6 +179,9 @@ export class GpuFilmSimulation {
         this.passes.pad(t.film.read, t.paddedFilm);
       });
       this.paddedAt = this.steps;
+      // The start padded on the CPU is drawn no more.
+      this.startPadded?.dispose();
+      this.startPadded = null;
     }
     return t.paddedFilm.texture;
   }
