@@ -4,6 +4,7 @@
  * few grids, with the GPU's draws per step; the median of timed batches after untimed steps.
  * The timing and the Markdown; the page (page/gpuFlowSpeed.ts) and Node (twinSpeed.ts) run it.
  */
+import { median } from './median.ts';
 
 /** What the flow's speed figures measure: the grids (cells per cube face side), the untimed steps first, then `batches` timed batches of `batchSteps` steps each. */
 export interface FlowSpeedPlan {
@@ -33,8 +34,6 @@ export interface GpuSimulationSpeed extends SimulationSpeed {
   /** draws of one step, counted by the renderer (renderer.info.render.calls) */
   readonly drawsPerStep: number;
 }
-
-const median = (xs: readonly number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
 
 /**
  * Steps per wall second: `step(k)` runs k steps, `sync()` waits until the steps asked are done (a

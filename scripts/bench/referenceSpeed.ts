@@ -1,8 +1,8 @@
 /** Speed of the float64 reference in Node: medians of repeated runs on a shared machine. */
 import { filmOptics, filmReflectance, reflectanceAt } from '../../src/physics/filmReflectance.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
+import { median } from './median.ts';
 
-const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)] as number;
 const soap = { nOutside: 1, nFilm: 1.33, nInside: 1, thicknessNm: 500, angleDeg: 30 };
 
 function timeMs(run: () => void, repeats: number): number {

@@ -139,7 +139,7 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], extra
       try {
         demo = await stage(DEMO_STAGE, () => demoPageFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.demo));
         defaultView = await stage(DEFAULT_VIEW_STAGE, () =>
-          defaultViewFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.defaultView),
+          defaultViewFigures(() => chromium.launch(chromiumLaunchOptions()), `http://127.0.0.1:${plan.previewPort}`, plan.defaultView),
         );
       } finally {
         await new Promise((resolve) => previewServer.httpServer.close(resolve));

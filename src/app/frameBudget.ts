@@ -14,7 +14,7 @@ export const SLOW_BUDGET_MS = 250;
  * and SLOW_BUDGET_MS: the simulated film adds at most a quarter to a frame.
  */
 export const DRAW_SHARE = 1.25;
-/** The grid the governor starts on (the largest of its grids not above it): cheap to make and to step on any machine, and two of its steps tell what larger grids cost. */
+/** The grid the governor starts on (the largest of its grids not above it): cheap to make and to step on any machine, and its step's cost, measured, predicts the other grids'. */
 export const START_GRID = 32;
 /** The grids the governor chooses among (cells per cube face side), within GOVERNED_GRID: each about √2 times the one before, so a step's 6N² fragments about double from one to the next. */
 export const GOVERNED_GRIDS = [16, 24, 32, 48, 64, 96, 128, 192, 256] as const;

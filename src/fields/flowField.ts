@@ -37,14 +37,16 @@ function startFilm(gridN: number, seed: number) {
 }
 
 /**
- * The grid the film's start is sampled on to size the table, whatever grid it is simulated on: its
- * bumps are smooth over many cells of any grid, and the table need not change with the grid.
+ * The coarse grid the film's start is sampled on where the grid it is simulated on is not needed:
+ * to size the table (which then need not change with the grid), and to show a film in the frame
+ * before its simulation is made (src/flow/flowFieldState.ts). Its bumps are smooth over several
+ * cells of it, and it is cheap to make.
  */
-const RANGE_GRID_N = 32;
-/** The thickest the film's start is (in η0) for the last seed asked for, on RANGE_GRID_N. */
+export const COARSE_START_GRID_N = 16;
+/** The thickest the film's start is (in η0) for the last seed asked for, on COARSE_START_GRID_N. */
 let startMax: { seed: number; maxEta: number } | null = null;
 function startMaxEta(seed: number): number {
-  if (startMax?.seed !== seed) startMax = { seed, maxEta: Math.max(...initialFilm(cubeSphereGrid(RANGE_GRID_N), seed).eta) };
+  if (startMax?.seed !== seed) startMax = { seed, maxEta: Math.max(...initialFilm(cubeSphereGrid(COARSE_START_GRID_N), seed).eta) };
   return startMax.maxEta;
 }
 

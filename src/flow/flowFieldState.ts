@@ -1,8 +1,10 @@
-import type { WebGLRenderer } from 'three';
-import { flowDirection, flowParametersOf } from '../fields/flowField.ts';
+import type { DataTexture, WebGLRenderer } from 'three';
+import { COARSE_START_GRID_N, flowDirection, flowParametersOf } from '../fields/flowField.ts';
 import type { FieldSettings, FieldState, FieldUniforms, Vec3 } from '../fields/thicknessField.ts';
+import { cubeSphereGrid } from '../physics/flow/cubeSphereGrid.ts';
 import type { FlowParameters } from '../physics/flow/flowParameters.ts';
 import { GpuFilmSimulation } from './gpuFilmSimulation.ts';
+import { paddedStartTexture } from './paddedStart.ts';
 
 /** Film seconds a blow lasts (a drag blows anew with each move). */
 const BLOW_FILM_SECONDS = 0.05;
@@ -17,7 +19,9 @@ const STEP_SLACK = 1e-9;
  * settings' parameters, advanced in whole fixed steps to the film time timeSeconds × simSpeed, so
  * the same settings give the same film on every load whatever the display rate; made anew from its
  * start when a parameter changes or the time goes back. With the settings' `renew` a new bubble
- * follows a burst (src/flow/renewFilm.ts).
+ * follows a burst (src/flow/renewFilm.ts). An animating frame shows a new film at its start on the
+ * coarse grid (COARSE_START_GRID_N, cheap to make) and makes its simulation in the next frame, so
+ * the first frame of a page costs little more than the bubble's own.
  */
 export class FlowFieldState implements FieldState {
   private simulation: GpuFilmSimulation | null = null;
@@ -25,6 +29,8 @@ export class FlowFieldState implements FieldState {
   /** Whether the simulation's step programs are compiled (or left to its first steps to compile), and whether it has stepped. */
   private programsReady = false;
   private stepped = false;
+  /** The start on the coarse grid, shown in the frame before a simulation is made. */
+  private preview: DataTexture | null = null;
   settling = false;
   /** The time shown, in the settings' seconds. */
   timeSeconds = 0;
@@ -40,8 +46,23 @@ export class FlowFieldState implements FieldState {
 
   advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean {
     const parameters = flowParametersOf(s);
-    const made = !this.simulation || JSON.stringify([parameters, s.renew]) !== this.key;
-    if (made) this.make(parameters, s.renew, Number.isFinite(maxSteps));
+    const key = JSON.stringify([parameters, s.renew]);
+    const shownFirst = Number.isFinite(maxSteps);
+    if (key !== this.key && shownFirst) {
+      // A new film in an animating frame: its start on the coarse grid now, its simulation in the next frame.
+      this.simulation?.dispose();
+      this.simulation = null;
+      this.key = key;
+      this.preview?.dispose();
+      this.preview = paddedStartTexture(cubeSphereGrid(COARSE_START_GRID_N), parameters.seed);
+      u.uFlowFilm!.value = this.preview;
+      u.uFlowGridN!.value = COARSE_START_GRID_N;
+      this.settling = true;
+      this.timeSeconds = 0;
+      return false;
+    }
+    const made = !this.simulation || key !== this.key;
+    if (made) this.make(parameters, s.renew, shownFirst);
     const sim = this.simulation!;
     const wanted = Math.floor(((s.timeSeconds * s.simSpeed) / sim.stepSeconds) * (1 + STEP_SLACK));
     if (wanted < sim.steps) {
@@ -65,13 +86,15 @@ export class FlowFieldState implements FieldState {
   }
 
   /**
-   * A simulation of `parameters` at its start. For an animating frame (`shownFirst`) its start is
-   * drawn first, with no step: the step's programs compile meanwhile without blocking the page
-   * where the GPU compiles in parallel, and elsewhere in the frame of its first steps, so the
-   * frame that shows the film first costs little more than the bubble's own.
+   * A simulation of `parameters` at its start. For an animating frame (`shownFirst`) its start, made
+   * on the CPU, is drawn until the step's programs are compiled: without blocking the page where
+   * the GPU compiles in parallel, and elsewhere in the frame of its first steps.
    */
   private make(parameters: FlowParameters, renew: boolean, shownFirst: boolean): void {
     this.simulation?.dispose();
+    // The coarse start is drawn no more (the simulation draws its own start until it steps).
+    this.preview?.dispose();
+    this.preview = null;
     const sim = new GpuFilmSimulation(this.renderer, parameters, { renew });
     this.simulation = sim;
     this.key = JSON.stringify([parameters, renew]);
@@ -107,11 +130,15 @@ export class FlowFieldState implements FieldState {
 
   invalidate(): void {
     this.simulation?.invalidate();
+    // The lost context's texture is let go, not disposed (three would delete it in the new context).
+    this.preview = null;
     // The programs compiling were the lost context's: the steps compile theirs as they draw.
     this.programsReady = true;
   }
 
   dispose(): void {
+    this.preview?.dispose();
+    this.preview = null;
     this.simulation?.dispose();
     this.simulation = null;
     this.key = '';

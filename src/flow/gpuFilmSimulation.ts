@@ -1,6 +1,6 @@
 import type { DataTexture, Texture, WebGLRenderTarget, WebGLRenderer } from 'three';
 import { type CubeSphereGrid, cubeSphereGrid } from '../physics/flow/cubeSphereGrid.ts';
-import { cubeSphereHalo, padField } from '../physics/flow/cubeSphereSampler.ts';
+import { cubeSphereHalo } from '../physics/flow/cubeSphereSampler.ts';
 import { VELOCITY_SCALE_M_S } from '../physics/flow/flowConstants.ts';
 import { type FlowNumbers, flowNumbers } from '../physics/flow/flowNumbers.ts';
 import { type FlowParameters, validateFlowParameters } from '../physics/flow/flowParameters.ts';
@@ -10,9 +10,10 @@ import { surfactantSolveSchedule } from '../physics/flow/solveSurfactant.ts';
 import { type TimeStepRule, timeStep, transportSubsteps } from '../physics/flow/timeStep.ts';
 import { surfaceWind, windAngleRad } from '../physics/flow/windDirection.ts';
 import { floatTexture } from '../gpu/floatRow.ts';
-import { cellTexelIndex, faceAtlasSize, paddedTexelIndex } from './flowAtlas.ts';
+import { cellTexelIndex, faceAtlasSize } from './flowAtlas.ts';
 import { type FlowGridTextures, flowGridTextures } from './flowGridTextures.ts';
 import { FlowStep } from './flowStep.ts';
+import { paddedStartTexture } from './paddedStart.ts';
 import { flowUniformSets } from './flowUniforms.ts';
 import { renewSteps } from './renewFilm.ts';
 
@@ -100,22 +101,12 @@ export class GpuFilmSimulation {
   }
 
   /**
-   * The padded film at its start (η, Γ, intact, 0), made on the CPU: the start and halo passes'
-   * twin (padField), to draw before any of the simulation's programs is compiled. Made on first
-   * use, and let go once the simulation pads its own film.
+   * The padded film at its start, made on the CPU (paddedStartTexture), to draw before any of the
+   * simulation's programs is compiled. Made on first use, and let go once the simulation pads its
+   * own film.
    */
   get startPaddedFilm(): Texture {
-    if (!this.startPadded) {
-      const { eta, gamma } = initialFilm(this.grid, this.parameters.seed);
-      const film = new Float64Array(4 * this.grid.cellCount);
-      for (let c = 0; c < this.grid.cellCount; c++) film.set([eta[c]!, gamma[c]!, 1, 0], 4 * c);
-      const padded = padField(cubeSphereHalo(this.grid), film, 4);
-      const n = this.grid.n;
-      const size = faceAtlasSize(n + 2);
-      const data = new Float32Array(4 * size.width * size.height);
-      for (let p = 0; p < padded.length / 4; p++) data.set(padded.subarray(4 * p, 4 * p + 4), 4 * paddedTexelIndex(n, p));
-      this.startPadded = floatTexture(data, size.width, size.height);
-    }
+    this.startPadded ??= paddedStartTexture(this.grid, this.parameters.seed);
     return this.startPadded;
   }
 

@@ -27,6 +27,7 @@ import type { FlowSpeedPlan } from '../flowSpeed.ts';
 import { gpuFlowSpeed } from './gpuFlowSpeed.ts';
 import { rowScene } from './rowScene.ts';
 import { TableWatch } from './tableWatch.ts';
+import { median } from '../median.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 if (!canvas) throw new Error('bench.html must hold #bubble');
@@ -43,8 +44,6 @@ let rowsRun = 0;
 
 /** A frame four times the pixels taking at least this many times as long is mostly a cost per pixel. */
 const PIXEL_BOUND = 2;
-
-const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
 
 /**
  * The textures a row may leave on the page's renderer once the grids' probe is made: a light's bin
