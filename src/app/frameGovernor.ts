@@ -105,8 +105,8 @@ export class FrameGovernor {
 
   /**
    * A governed view drew a frame of the animation frame at `now` (rAF's time), its simulation taking
-   * `simMs` for `steps` steps at `flowGrid`; `settling` says its film was made anew, waited for its
-   * programs or compiled them in it (the frame is not measured); `follows` says whether its frame
+   * `simMs` for `steps` steps at `flowGrid`; `settling` says its film was shown before its
+   * simulation, made, or compiled its programs in it (the frame is not measured); `follows` says whether its frame
    * before was the one just before (else the time between is not a frame's).
    */
   drawn(

@@ -79,8 +79,8 @@ export interface FieldState {
   /** The settings' time (s) its film shows: the last advance's, or less while the film is behind it. */
   readonly timeSeconds: number;
   /**
-   * Whether the last advance made the film anew, waited for its programs or took its first steps
-   * (which compile them where the GPU cannot in parallel): its cost is not the film's pace.
+   * Whether the last advance showed a film before its simulation, made the simulation, or took its
+   * first steps (which compile its programs): its cost is not the film's pace.
    */
   readonly settling: boolean;
   /**

@@ -26,7 +26,7 @@ const STEP_SLACK = 1e-9;
 export class FlowFieldState implements FieldState {
   private simulation: GpuFilmSimulation | null = null;
   private key = '';
-  /** Whether the simulation's step programs are compiled (or left to its first steps to compile), and whether it has stepped. */
+  /** Whether the simulation may step (from the frame after the one that made it), and whether it has stepped. */
   private programsReady = false;
   private stepped = false;
   /** The start on the coarse grid, shown in the frame before a simulation is made. */
@@ -63,6 +63,8 @@ export class FlowFieldState implements FieldState {
     }
     const made = !this.simulation || key !== this.key;
     if (made) this.make(parameters, s.renew, shownFirst);
+    // The frame after the one that made the simulation steps, compiling its programs.
+    else this.programsReady = true;
     const sim = this.simulation!;
     const wanted = Math.floor(((s.timeSeconds * s.simSpeed) / sim.stepSeconds) * (1 + STEP_SLACK));
     if (wanted < sim.steps) {
@@ -76,7 +78,7 @@ export class FlowFieldState implements FieldState {
     this.settling = made || !ready || (!this.stepped && count > 0);
     this.step(sim, count);
     this.stepped ||= count > 0;
-    // Before its programs are ready, the film's start as made on the CPU.
+    // In the frame that made it, the film's start as made on the CPU.
     u.uFlowFilm!.value = ready ? sim.paddedFilm : sim.startPaddedFilm;
     u.uFlowGridN!.value = sim.grid.n;
     const reached = sim.steps === wanted;
@@ -87,8 +89,9 @@ export class FlowFieldState implements FieldState {
 
   /**
    * A simulation of `parameters` at its start. For an animating frame (`shownFirst`) its start, made
-   * on the CPU, is drawn until the step's programs are compiled: without blocking the page where
-   * the GPU compiles in parallel, and elsewhere in the frame of its first steps.
+   * on the CPU, is drawn in the frame that makes it; its steps, which compile its programs, begin in
+   * the frame after. (Three's compileAsync is not used here: its polling of programs outlives a lost
+   * context and queries the restored one with names it no longer has.)
    */
   private make(parameters: FlowParameters, renew: boolean, shownFirst: boolean): void {
     this.simulation?.dispose();
@@ -100,10 +103,6 @@ export class FlowFieldState implements FieldState {
     this.key = JSON.stringify([parameters, renew]);
     this.stepped = false;
     this.programsReady = !shownFirst;
-    if (shownFirst)
-      void sim.compile().then(() => {
-        if (this.simulation === sim) this.programsReady = true;
-      });
   }
 
   blow(point: Vec3, velocityMps: Vec3): void {
@@ -132,7 +131,7 @@ export class FlowFieldState implements FieldState {
     this.simulation?.invalidate();
     // The lost context's texture is let go, not disposed (three would delete it in the new context).
     this.preview = null;
-    // The programs compiling were the lost context's: the steps compile theirs as they draw.
+    // The steps compile the restored context's programs as they draw.
     this.programsReady = true;
   }
 

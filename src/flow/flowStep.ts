@@ -52,19 +52,6 @@ export class FlowStep {
     this.uniforms[name].value = value;
   }
 
-  /**
-   * Compiles every pass's program for the float targets, without blocking the page where the GPU
-   * compiles in parallel (KHR_parallel_shader_compile); resolves when they are ready to draw with.
-   */
-  compile(): Promise<unknown> {
-    let done: Promise<unknown> = Promise.resolve();
-    this.withTargets(() => {
-      this.renderer.setRenderTarget(this.targets.film.read);
-      done = Promise.all(Object.values(this.materials).map((m) => this.fullscreen.compileAsync(this.renderer, m)));
-    });
-    return done;
-  }
-
   /** Draws with the renderer's target put back afterwards. */
   withTargets(draw: () => void): void {
     const previous = this.renderer.getRenderTarget();

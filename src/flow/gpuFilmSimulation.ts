@@ -110,11 +110,6 @@ export class GpuFilmSimulation {
     return this.startPadded;
   }
 
-  /** Compiles the programs of a step, without blocking the page where the GPU compiles in parallel; resolves when they are ready. */
-  compile(): Promise<unknown> {
-    return this.passes.compile();
-  }
-
   /** Back to the start (drawn with the next step or padded film). */
   reset(): void {
     this.started = false;

@@ -38,7 +38,7 @@ export class EvolvingFilm {
     return this.current?.state.timeSeconds ?? null;
   }
 
-  /** Whether the last advance made its film anew, waited for its programs or took its first steps (FieldState.settling): a frame whose cost is not the film's pace. */
+  /** Whether the last advance showed its film before its simulation, made the simulation or took its first steps (FieldState.settling): a frame whose cost is not the film's pace. */
   get settling(): boolean {
     return this.current?.state.settling ?? false;
   }

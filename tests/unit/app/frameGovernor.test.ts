@@ -56,7 +56,7 @@ describe('the frame governor of a page', () => {
     expect(shared.choice!.stepsPerFrame).toBe(Math.floor((0.8 * (1000 / 60) - 2 * 2) / (2 * 0.5)));
   });
 
-  it('does not measure a frame in which a film was made, waited for its programs or compiled them', () => {
+  it('does not measure a frame in which a film was shown before its simulation, made, or compiled its programs', () => {
     const governor = FrameGovernor.of(fakeDocument());
     const { view, choices } = flowingView();
     governor.join(view);
