@@ -18,6 +18,8 @@ export function linkFailures(renderer: WebGLRenderer): string[] {
     const { program, name } = held as { program: WebGLProgram; name: string };
     if (checked.has(program)) continue;
     checked.add(program);
+    // A program of a context lost since (its compile resolved after the restore) is no program of this one: asking its status would be a GL error.
+    if (!gl.isProgram(program)) continue;
     if (gl.getProgramParameter(program, gl.LINK_STATUS) !== false) continue;
     const shaders = gl.getAttachedShaders(program) ?? [];
     const logs = [gl.getProgramInfoLog(program), ...shaders.map((s) => gl.getShaderInfoLog(s))].filter((log) => log?.trim());
