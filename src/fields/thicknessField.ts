@@ -72,8 +72,8 @@ export interface FieldState {
    * Brings the film to the settings' time by at most `maxSteps` fixed steps (from its start if its
    * parameters changed or the time went back) and points the uniforms at it; returns whether it
    * reached that time. Nothing runs when it is there already. With a finite `maxSteps` (an
-   * animating app's frame) a film made anew is shown at its start first, and its steps may wait
-   * for their programs; with Infinity (a frame that must show the time) it reaches the time.
+   * animating app's frame) a film made anew is shown at its start first, its steps beginning in a
+   * later frame; with Infinity (a frame that must show the time) it reaches the time.
    */
   advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean;
   /** The settings' time (s) its film shows: the last advance's, or less while the film is behind it. */

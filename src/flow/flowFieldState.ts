@@ -26,8 +26,7 @@ const STEP_SLACK = 1e-9;
 export class FlowFieldState implements FieldState {
   private simulation: GpuFilmSimulation | null = null;
   private key = '';
-  /** Whether the simulation may step (from the frame after the one that made it), and whether it has stepped. */
-  private programsReady = false;
+  /** Whether the simulation has stepped since it was made. */
   private stepped = false;
   /** The start on the coarse grid, shown in the frame before a simulation is made. */
   private preview: DataTexture | null = null;
@@ -62,9 +61,7 @@ export class FlowFieldState implements FieldState {
       return false;
     }
     const made = !this.simulation || key !== this.key;
-    if (made) this.make(parameters, s.renew, shownFirst);
-    // The frame after the one that made the simulation steps, compiling its programs.
-    else this.programsReady = true;
+    if (made) this.make(parameters, s.renew, key);
     const sim = this.simulation!;
     const wanted = Math.floor(((s.timeSeconds * s.simSpeed) / sim.stepSeconds) * (1 + STEP_SLACK));
     if (wanted < sim.steps) {
@@ -72,10 +69,11 @@ export class FlowFieldState implements FieldState {
       sim.reset();
       this.blowing = null;
     }
-    // A frame that must show the time steps at once, compiling what it has to.
-    const ready = this.programsReady || !Number.isFinite(maxSteps);
+    // An animating frame that made the simulation shows its start; its steps, compiling its programs,
+    // begin in the frame after. A frame that must show the time steps at once.
+    const ready = !(made && shownFirst);
     const count = ready ? Math.min(wanted - sim.steps, maxSteps) : 0;
-    this.settling = made || !ready || (!this.stepped && count > 0);
+    this.settling = made || (!this.stepped && count > 0);
     this.step(sim, count);
     this.stepped ||= count > 0;
     // In the frame that made it, the film's start as made on the CPU.
@@ -88,21 +86,19 @@ export class FlowFieldState implements FieldState {
   }
 
   /**
-   * A simulation of `parameters` at its start. For an animating frame (`shownFirst`) its start, made
-   * on the CPU, is drawn in the frame that makes it; its steps, which compile its programs, begin in
-   * the frame after. (Three's compileAsync is not used here: its polling of programs outlives a lost
+   * A simulation of `parameters` at its start, for the settings' `key`. (Its programs compile in
+   * the frame of its first steps, not with three's compileAsync: that one's polling outlives a lost
    * context and queries the restored one with names it no longer has.)
    */
-  private make(parameters: FlowParameters, renew: boolean, shownFirst: boolean): void {
+  private make(parameters: FlowParameters, renew: boolean, key: string): void {
     this.simulation?.dispose();
     // The coarse start is drawn no more (the simulation draws its own start until it steps).
     this.preview?.dispose();
     this.preview = null;
     const sim = new GpuFilmSimulation(this.renderer, parameters, { renew });
     this.simulation = sim;
-    this.key = JSON.stringify([parameters, renew]);
+    this.key = key;
     this.stepped = false;
-    this.programsReady = !shownFirst;
   }
 
   blow(point: Vec3, velocityMps: Vec3): void {
@@ -131,8 +127,6 @@ export class FlowFieldState implements FieldState {
     this.simulation?.invalidate();
     // The lost context's texture is let go, not disposed (three would delete it in the new context).
     this.preview = null;
-    // The steps compile the restored context's programs as they draw.
-    this.programsReady = true;
   }
 
   dispose(): void {
