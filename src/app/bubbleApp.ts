@@ -105,11 +105,12 @@ export class BubbleApp {
       (now, follows) => this.draw(now, follows),
     );
     view.onEnvironmentChange = () => this.redraw();
-    this.buildControls();
-    this.stopListening = this.listen();
     this.govern();
     this.fit();
+    // The GPU compiles the first frame's programs while the panel is built.
     this.loop.start();
+    this.buildControls();
+    this.stopListening = this.listen();
   }
 
   /** The settings asked for (the view may draw another method: shownMethod). */

@@ -9,7 +9,9 @@ const checked = new WeakSet<WebGLProgram>();
  * a CPU rasteriser), a stall the parallel compile was meant to spare. Such a renderer leaves that
  * check off (src/scene/bubbleRenderer.ts) and its programs are checked here once compiled: the link status
  * is at hand without a wait then, and the logs are asked for only of a program that failed.
- * Returns one message per program that failed to link, each said once.
+ * Returns one message per program that failed to link, each said once. The caller asks only of
+ * programs of the context as it is (none compiled before a loss since): asking whether a program
+ * is one (isProgram) would itself be a round trip that waits for the GPU.
  */
 export function linkFailures(renderer: WebGLRenderer): string[] {
   const gl = renderer.getContext();
@@ -18,8 +20,6 @@ export function linkFailures(renderer: WebGLRenderer): string[] {
     const { program, name } = held as { program: WebGLProgram; name: string };
     if (checked.has(program)) continue;
     checked.add(program);
-    // A program of a context lost since (its compile resolved after the restore) is no program of this one: asking its status would be a GL error.
-    if (!gl.isProgram(program)) continue;
     if (gl.getProgramParameter(program, gl.LINK_STATUS) !== false) continue;
     const shaders = gl.getAttachedShaders(program) ?? [];
     const logs = [gl.getProgramInfoLog(program), ...shaders.map((s) => gl.getShaderInfoLog(s))].filter((log) => log?.trim());

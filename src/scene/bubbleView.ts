@@ -142,6 +142,8 @@ export class BubbleView {
   async prepare(): Promise<void> {
     // Without the extension (SwiftShader) compiling is blocking however it is asked for: the first frame does it.
     if (!compilesInParallel(this.renderer)) return;
+    // The drawing buffer as the frame draws it: sized after the compile is queued, it would wait for it.
+    this.output.fit(this.renderer, this.size);
     this.output.toneMap(this.renderer);
     this.output.setSpace(this.renderer);
     await this.programs.compile(this.programsKey(), () => this.compilePrograms());

@@ -9,7 +9,8 @@ export const compilesInParallel = (renderer: WebGLRenderer): boolean => renderer
  * parallel, beside the other compiles a frame waits for (`others`); where three's own check is off
  * (src/scene/bubbleRenderer.ts), reports the programs that failed to link once they are compiled.
  * Only the meshes drawn: three compiles hidden meshes too, making a program no frame would use and
- * one a restored context would not make again.
+ * one a restored context would not make again. Nothing is checked after a loss of the context
+ * while they compiled.
  */
 export async function compileFramePrograms(
   renderer: WebGLRenderer,
@@ -18,6 +19,14 @@ export async function compileFramePrograms(
   meshes: readonly Object3D[],
   others: readonly (Promise<unknown> | null)[],
 ): Promise<void> {
-  await Promise.all([...meshes.map((mesh) => renderer.compileAsync(mesh, camera, scene)), ...others]);
-  if (!renderer.debug.checkShaderErrors) for (const failure of linkFailures(renderer)) console.error(failure);
+  // A context lost while they compile has none of these programs: the compile after its restore checks its own.
+  let lost = false;
+  const onLost = () => (lost = true);
+  renderer.domElement.addEventListener('webglcontextlost', onLost);
+  try {
+    await Promise.all([...meshes.map((mesh) => renderer.compileAsync(mesh, camera, scene)), ...others]);
+  } finally {
+    renderer.domElement.removeEventListener('webglcontextlost', onLost);
+  }
+  if (!lost && !renderer.debug.checkShaderErrors) for (const failure of linkFailures(renderer)) console.error(failure);
 }
