@@ -1,6 +1,6 @@
 /**
  * The built demo's default view (the flowing film, governed) against the painted swirl at the same
- * size, each in a fresh browser of the same run: the first frame shown, the mean interval between
+ * size, each in a fresh browser of the same run: the first frame drawn, the mean interval between
  * animation frames, whether the film visibly evolves (its thickness at a probe 1 s apart), and what
  * the frame governor chose and when (docs/governor.md). Counts and ratios, not a rasteriser's pace.
  */
@@ -19,7 +19,7 @@ export interface DefaultViewPlan {
   readonly firstFrameLoads: number;
 }
 
-/** One governor choice, from the first frame shown: the flow's grid, the pixel ratio, the steps a frame. */
+/** One governor choice, from the first frame drawn: the flow's grid, the pixel ratio, the steps a frame. */
 export interface GovernorChoice {
   readonly atMs: number;
   readonly gridN: number | null;
@@ -28,7 +28,7 @@ export interface GovernorChoice {
 }
 
 export interface AnimatedView {
-  /** navigation start → first frame shown, the median over the plan's loads (ms) */
+  /** navigation start → first frame drawn (read back as the page marks it), the median over the plan's loads (ms) */
   readonly firstFrameMs: number;
   /** mean interval between animation frames shown after the plan's settling (ms) */
   readonly meanFrameMs: number;
@@ -154,7 +154,7 @@ export function defaultViewMarkdown(f: DefaultViewFigures, how: DefaultViewPlan)
   return [
     `| the built demo's default view (the flowing film, governed) against \`${SWIRL_VIEW}\`, ${how.width}×${how.height}, each animating ${how.seconds} s in a fresh browser | value |`,
     '|---|---|',
-    `| navigation start → first frame shown (median of ${how.firstFrameLoads} fresh browsers each, taking turns): default / swirl | ${ms(f.flow.firstFrameMs)} / ${ms(f.swirl.firstFrameMs)} (${(f.flow.firstFrameMs / f.swirl.firstFrameMs).toFixed(2)}×; goal ≤ 1.2×) |`,
+    `| navigation start → first frame drawn, read back as the page marks it (median of ${how.firstFrameLoads} fresh browsers each, taking turns): default / swirl | ${ms(f.flow.firstFrameMs)} / ${ms(f.swirl.firstFrameMs)} (${(f.flow.firstFrameMs / f.swirl.firstFrameMs).toFixed(2)}×; goal ≤ 1.2×) |`,
     `| mean interval between animation frames after the first ${how.settlingMs / 1000} s: default / swirl | ${ms(f.flow.meanFrameMs)} / ${ms(f.swirl.meanFrameMs)} (${(f.flow.meanFrameMs / f.swirl.meanFrameMs).toFixed(2)}×; goal ≤ 1.3×) |`,
     `| the film's thickness at the probe (${PROBE.join(', ')} of the view), read 1 s apart | ${f.flow.probeNm.map((nm) => nm.toFixed(1)).join(' → ')} nm |`,
     `| film seconds per second of the clock after the first ${how.settlingMs / 1000} s | ${f.flow.filmRate.toFixed(3)} |`,
