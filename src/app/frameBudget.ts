@@ -53,8 +53,8 @@ const STEP_FILL = 0.8;
 const FAST_SIM_SHARE = 0.5;
 /**
  * The choice goes up only to a rung predicted within this share of the budget, after a window
- * this long (ms), and only once in a governor's life: a second rise would follow the noise of the
- * costs measured, not the machine.
+ * this long (ms), and only in the first window judged after the start's decision: a later rise
+ * would follow the noise and the warming up of the costs measured, not the machine.
  */
 const UP_MARGIN = 0.6;
 const UP_WINDOW_MS = 1000;
@@ -125,6 +125,8 @@ export interface BudgetState {
   readonly probing: boolean;
   /** The governor's one rise, once made: the choice it rose from (known to hold) and the rung it rose to. */
   readonly rose: { readonly from: BudgetChoice; readonly to: string } | null;
+  /** Whether a window may still go up: until the first one judged after the start's decision. */
+  readonly mayRise: boolean;
   /** The windows in a row that overran. */
   readonly overruns: number;
 }
@@ -167,6 +169,7 @@ export function initialBudget(limits: BudgetLimits): BudgetState {
     drawMs: {},
     probing: true,
     rose: null,
+    mayRise: true,
     overruns: 0,
   };
 }
@@ -253,8 +256,9 @@ const changed = (a: BudgetChoice, b: BudgetChoice): boolean =>
  * 60 Hz budget takes the slow budget (slowBudgetMs) and the best rung of the whole ladder predicted
  * within it; one that holds goes up to the best rung whose steps are predicted within it. Later, an
  * overrun (above OVERRUN budgets) bans the rung with every rung above it and goes down to the best
- * rung left predicted within the budget (the lowest if none is); a window held for UP_WINDOW_MS goes
- * up, once in the governor's life, to a rung not banned predicted within UP_MARGIN of the budget.
+ * rung left predicted within the budget (the lowest if none is); the first window judged after the
+ * start's decision, held for UP_WINDOW_MS, goes up to a rung not banned predicted within UP_MARGIN
+ * of the budget; no window after it goes up.
  * The steps fill what the draw leaves of the budget, no more than real time asks.
  */
 export function nextBudget(state: BudgetState, sample: FrameSample, limits: BudgetLimits): BudgetState {
@@ -316,7 +320,7 @@ export function nextBudget(state: BudgetState, sample: FrameSample, limits: Budg
   } else if (measured.probing) {
     // The start held the 60 Hz budget: up to the best rung predicted within it, else the steps the start affords.
     next = pick(rungs.slice(0, here).filter(notBelow), 1) ?? withSteps(choice, holds);
-  } else if (w.ms >= UP_WINDOW_MS && holds && !measured.rose) {
+  } else if (w.ms >= UP_WINDOW_MS && holds && measured.mayRise) {
     // Up: neither the grid nor the pixel ratio goes down; else more steps here, if the frames measured afford them.
     const above = pick(
       rungs.slice(0, here).filter((r) => !banned.includes(key(r)) && notBelow(r)),
@@ -330,7 +334,7 @@ export function nextBudget(state: BudgetState, sample: FrameSample, limits: Budg
   const rose = measured.rose ?? (up ? { from: choice, to: key(next!) } : null);
   // A window judged in full (an overrun, the first one, or one as long as going up needs) starts anew.
   const judged = next !== undefined || w.ms >= UP_WINDOW_MS || overruns > 0;
-  const after = { ...measured, banned, probing: false, overruns: over ? 0 : overruns };
+  const after = { ...measured, banned, probing: false, mayRise: s.probing || (measured.mayRise && !judged), overruns: over ? 0 : overruns };
   if (!next || !changed(next, choice)) return { ...after, window: judged ? EMPTY_WINDOW : w };
   return { ...after, choice: next, rose, window: EMPTY_WINDOW };
 }

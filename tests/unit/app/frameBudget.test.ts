@@ -71,14 +71,18 @@ interface Run {
   readonly settledFrames: readonly number[];
 }
 
-/** Feeds the governor `seconds` of simulated frames of machine `m`, each cost times 1 ± `noise` (seeded). */
-function run(m: Machine, limits: BudgetLimits, seconds: number, noise = 0, seed = 1): Run {
+/**
+ * Feeds the governor `seconds` of simulated frames of machine `m`, each cost times 1 ± `noise`
+ * (seeded) and times `slowness` at the frame's time (ms from the first frame).
+ */
+function run(m: Machine, limits: BudgetLimits, seconds: number, noise = 0, seed = 1, slowness = (_tMs: number) => 1): Run {
   const random = mulberry32(seed);
-  const jitter = () => 1 + noise * (2 * random() - 1);
+  let t = 0;
+  const jitter = () => (1 + noise * (2 * random() - 1)) * slowness(t);
   let state = initialBudget(limits);
   const choices = [{ atMs: 0, choice: state.choice }];
   let settledFrames: number[] = [];
-  for (let t = 0; t < seconds * 1000;) {
+  while (t < seconds * 1000) {
     const { gridN, pixelRatio, stepsPerFrame } = state.choice;
     const steps = Math.min(stepsPerFrame, GOVERNED_MAX_STEPS) * limits.views;
     const simMs = steps * stepMsOf(m, gridN) * jitter();
@@ -162,6 +166,18 @@ describe('the frame budget (fed timings)', () => {
           const up = b.gridN >= a.gridN && b.pixelRatio >= a.pixelRatio;
           expect(down || up, `seed ${seed}: ${a.gridN}@${a.pixelRatio} → ${b.gridN}@${b.pixelRatio}`).toBe(true);
         }
+      }
+    });
+  }
+
+  for (const [name, m] of Object.entries(SLOW_MACHINES)) {
+    it(`${name}: a page warming up (its first frames twice as slow, as fast as the machine by 10 s) settles within 3 s all the same`, () => {
+      const warmingUp = (tMs: number) => 1 + Math.max(0, 1 - tMs / 10_000);
+      for (const seed of SEEDS) {
+        const r = run(m, limitsFor(m), 30, GOVERNOR_NOISE, seed, warmingUp);
+        const trail = `seed ${seed}: ${r.choices.map(({ atMs, choice }) => `${choice.gridN}@${choice.pixelRatio}×${choice.stepsPerFrame} at ${atMs.toFixed(0)} ms`).join(' → ')}`;
+        expect(r.choices.length - 1, trail).toBeLessThanOrEqual(2);
+        expect(r.choices.at(-1)!.atMs, trail).toBeLessThanOrEqual(3000);
       }
     });
   }
