@@ -104,7 +104,7 @@ const probeThickness = (page: Page): Promise<number> =>
  * Each load in a browser of its own, launched by `launch` and closed after: every first frame is a
  * first visit's (no script, program or file cached by a page loaded before in the same browser).
  * The first frames: the median of the plan's loads of each view, the views taking turns; then each
- * view animates once.
+ * view animates once, its frames timed from its first-frame mark with nothing read back.
  */
 export async function defaultViewFigures(
   launch: () => Promise<Browser>,
@@ -126,7 +126,7 @@ export async function defaultViewFigures(
     for (const view of ['flow', 'swirl'] as const)
       firstFrames[view].push(await inBrowser(async (browser) => (await openDemo(browser, urls[view], size)).firstFrameMs));
   const flow = await inBrowser(async (browser) => {
-    const { page, firstFrameMs } = await openDemo(browser, urls.flow, size, RECORD_CHOICES);
+    const { page, firstFrameMs } = await openDemo(browser, urls.flow, size, RECORD_CHOICES, false);
     const animated = await animate(page, how, firstFrameMs);
     const before = await probeThickness(page);
     await page.waitForTimeout(1000);
@@ -134,7 +134,7 @@ export async function defaultViewFigures(
     return { ...animated, probeNm: [before, after] as const };
   });
   const swirl = await inBrowser(async (browser) => {
-    const { page, firstFrameMs } = await openDemo(browser, urls.swirl, size, RECORD_CHOICES);
+    const { page, firstFrameMs } = await openDemo(browser, urls.swirl, size, RECORD_CHOICES, false);
     return animate(page, how, firstFrameMs);
   });
   return {

@@ -220,25 +220,33 @@ async function countOneSecond(page: Page): Promise<FrameCounts> {
   }, WINDOW_MS);
 }
 
-/** The built demo at `url` in a fresh page of the plan's size (each animation frame running `eachFrame`), once its first frame in full is drawn: the page and when its first frame, and its first in full, were drawn (ms from navigation, FRAME_DRAWN_SCRIPT). */
+/**
+ * The built demo at `url` in a fresh page of the plan's size (each animation frame running
+ * `eachFrame`), once its first frame in full is drawn: the page and when its first frame, and its
+ * first in full, were drawn (ms from navigation, FRAME_DRAWN_SCRIPT). Unless `readBack`: when the
+ * page marked them, nothing read back, for a page whose frames are measured after (a read back
+ * waits for the GPU within a frame, and would lengthen it).
+ */
 export async function openDemo(
   browser: Browser,
   url: string,
   how: DemoPlan,
   /** what each animation frame also runs, from the first (JavaScript source, a statement; `t` is the frame's time) */
   eachFrame = '',
+  readBack = true,
 ): Promise<{ page: Page; firstFrameMs: number; firstCompleteFrameMs: number }> {
   const page = await openPage(browser, { viewport: { width: how.width, height: how.height } });
   // tsx names the functions it compiles with a helper (__name) that pages evaluated from here lack.
   // From before any script runs, the timestamp of every animation frame shown.
   await page.addInitScript({
-    content: `${COUNTERS_SCRIPT}\n${FRAME_DRAWN_SCRIPT}\nwindow.shownFrames = []; (function tick(t) { window.shownFrames.push(t); ${eachFrame} requestAnimationFrame(tick); })(0);`,
+    content: `${COUNTERS_SCRIPT}\n${readBack ? FRAME_DRAWN_SCRIPT : ''}\nwindow.shownFrames = []; (function tick(t) { window.shownFrames.push(t); ${eachFrame} requestAnimationFrame(tick); })(0);`,
   });
   await page.goto(url);
   await page.waitForSelector('body[data-frames="ready"]');
   const [firstFrameMs, firstCompleteFrameMs] = await page.evaluate((marks) => {
-    const drawn = (window as unknown as { framesDrawn: Record<string, number> }).framesDrawn;
-    return [drawn[marks.first]!, drawn[marks.firstComplete]!];
+    const drawn = (window as unknown as { framesDrawn?: Record<string, number> }).framesDrawn;
+    const at = (mark: string) => drawn?.[mark] ?? performance.getEntriesByName(mark)[0]!.startTime;
+    return [at(marks.first), at(marks.firstComplete)];
   }, FRAME_MARKS);
   return { page, firstFrameMs, firstCompleteFrameMs };
 }

@@ -52,7 +52,7 @@ const STEP_FILL = 0.8;
  */
 const FAST_SIM_SHARE = 0.5;
 /**
- * The choice goes up only to a rung predicted within this share of the budget, after a window
+ * The choice goes up only to a rung (or to more steps) predicted within this share of the budget, after a window
  * this long (ms), and only in the first window judged after the start's decision: a later rise
  * would follow the noise and the warming up of the costs measured, not the machine.
  */
@@ -229,14 +229,18 @@ const realTimeSteps = (limits: BudgetLimits, gridN: number, frameMs: number): nu
   Math.min(limits.maxStepsPerFrame, Math.max(1, Math.ceil((frameMs * limits.simSpeed) / (1000 * limits.stepSeconds(gridN)))));
 
 /**
- * Whether a rung is predicted within `share` of the budget: under the 60 Hz budget, the steps real
- * time asks for within FAST_SIM_SHARE of it; elsewhere its frame with one step.
+ * Whether a rung with `steps` steps a frame is predicted within `share` of the budget: under the
+ * 60 Hz budget, its steps within FAST_SIM_SHARE of it; elsewhere its frame.
  */
-function fits(s: BudgetState, rung: Rung, budgetMs: number, share: number, limits: BudgetLimits): boolean {
-  if (budgetMs > FAST_BUDGET_MS) return predictedFrameMs(s, rung, 1, limits) <= share * budgetMs;
+function affords(s: BudgetState, rung: Rung, steps: number, budgetMs: number, share: number, limits: BudgetLimits): boolean {
+  if (budgetMs > FAST_BUDGET_MS) return predictedFrameMs(s, rung, steps, limits) <= share * budgetMs;
   const step = predictedStepMs(s.stepMs, rung.gridN) ?? 0;
-  return step * limits.views * realTimeSteps(limits, rung.gridN, budgetMs) <= share * FAST_SIM_SHARE * budgetMs;
+  return step * limits.views * steps <= share * FAST_SIM_SHARE * budgetMs;
 }
+
+/** Whether a rung is predicted within `share` of the budget: under the 60 Hz budget with the steps real time asks for, elsewhere with one step. */
+const fits = (s: BudgetState, rung: Rung, budgetMs: number, share: number, limits: BudgetLimits): boolean =>
+  affords(s, rung, budgetMs > FAST_BUDGET_MS ? 1 : realTimeSteps(limits, rung.gridN, budgetMs), budgetMs, share, limits);
 
 /** The budget where the 60 Hz one is overrun: DRAW_SHARE times the bubble's own frame at the largest pixel ratio, within FAST_BUDGET_MS–SLOW_BUDGET_MS. */
 function slowBudgetMs(s: BudgetState, limits: BudgetLimits): number {
@@ -327,7 +331,9 @@ export function nextBudget(state: BudgetState, sample: FrameSample, limits: Budg
       UP_MARGIN,
     );
     const more = withSteps(choice, fast);
-    next = above ?? (more.stepsPerFrame > choice.stepsPerFrame ? more : undefined);
+    const affordsMore =
+      more.stepsPerFrame > choice.stepsPerFrame && affords(measured, choice, more.stepsPerFrame, budgetMs, UP_MARGIN, limits);
+    next = above ?? (affordsMore ? more : undefined);
   }
   // A move up after the start's decision (to a finer rung, or more steps) is the governor's one rise.
   const up = next !== undefined && !s.probing && (rungIndex(rungs, next) < here || next.stepsPerFrame > choice.stepsPerFrame);
