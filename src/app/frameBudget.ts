@@ -52,9 +52,9 @@ const STEP_FILL = 0.8;
  */
 const FAST_SIM_SHARE = 0.5;
 /**
- * The choice goes up only to a rung (or to more steps) predicted within this share of the budget, after a window
- * this long (ms), and only in the first window judged after the start's decision: a later rise
- * would follow the noise and the warming up of the costs measured, not the machine.
+ * The choice goes up only to a rung (or to more steps) predicted within this share of the budget,
+ * after a window this long (ms), and only in the first window judged after the start's decision: a
+ * later rise would follow the noise and the warming up of the costs measured, not the machine.
  */
 const UP_MARGIN = 0.6;
 const UP_WINDOW_MS = 1000;
