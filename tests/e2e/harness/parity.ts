@@ -51,8 +51,6 @@ declare global {
      * first, renewed after a burst): per cell η, Γ, intact; per edge u·n_e; the open holes; the last
      * solve's residual.
      */
-    /** A film's padded start as made on the CPU (drawn before the simulation's programs are compiled) and by the GPU's start and halo passes, texel for texel. */
-    startPaddedFilms?: (parameters: Record<string, number>) => { cpu: number[]; gpu: number[] };
     runFlow?: (
       parameters: Record<string, number>,
       steps: number,
@@ -68,5 +66,7 @@ declare global {
       surfactantResidual: number;
       steps: number;
     };
+    /** A film's padded start as made on the CPU (drawn before the simulation's programs are compiled) and by the GPU's start and halo passes, texel for texel. */
+    startPaddedFilms?: (parameters: Record<string, number>) => { cpu: number[]; gpu: number[] };
   }
 }
