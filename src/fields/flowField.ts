@@ -43,12 +43,17 @@ function startFilm(gridN: number, seed: number) {
  * cells of it, and it is cheap to make.
  */
 export const COARSE_START_GRID_N = 16;
-/** The thickest the film's start is (in η0) for the last seed asked for, on COARSE_START_GRID_N. */
-let startMax: { seed: number; maxEta: number } | null = null;
-function startMaxEta(seed: number): number {
-  if (startMax?.seed !== seed) startMax = { seed, maxEta: Math.max(...initialFilm(cubeSphereGrid(COARSE_START_GRID_N), seed).eta) };
-  return startMax.maxEta;
+/** The film's start on COARSE_START_GRID_N, and its thickest (in η0), for the last seed asked for. */
+let coarseStart: { seed: number; film: ReturnType<typeof initialFilm>; maxEta: number } | null = null;
+function coarseStartOf(seed: number) {
+  if (coarseStart?.seed !== seed) {
+    const film = initialFilm(cubeSphereGrid(COARSE_START_GRID_N), seed);
+    coarseStart = { seed, film, maxEta: Math.max(...film.eta) };
+  }
+  return coarseStart;
 }
+/** The film's start (initialFilm) on COARSE_START_GRID_N: made once per seed for the table's range and the frame before the simulation. */
+export const coarseStartFilm = (seed: number): ReturnType<typeof initialFilm> => coarseStartOf(seed).film;
 
 /**
  * The thickest the film is at its start or settled (h̄ · 2a/(1 − e^(−2a)) at the bottom of the
@@ -60,7 +65,7 @@ function flowMaxNm(s: FieldSettings): number {
   const numbers = flowNumbers(p);
   const a = numbers.gravity / numbers.marangoni;
   const settledBottom = (2 * a) / -Math.expm1(-2 * a);
-  const factor = Math.max(settledBottom, startMaxEta(p.seed));
+  const factor = Math.max(settledBottom, coarseStartOf(p.seed).maxEta);
   return Math.min(FILM_STACK_DOMAIN.thicknessNm.max, Math.max(1, TABLE_MARGIN * factor * p.thicknessNm));
 }
 

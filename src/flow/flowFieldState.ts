@@ -1,5 +1,5 @@
 import type { DataTexture, WebGLRenderer } from 'three';
-import { COARSE_START_GRID_N, flowDirection, flowParametersOf } from '../fields/flowField.ts';
+import { COARSE_START_GRID_N, coarseStartFilm, flowDirection, flowParametersOf } from '../fields/flowField.ts';
 import type { FieldSettings, FieldState, FieldUniforms, Vec3 } from '../fields/thicknessField.ts';
 import { cubeSphereGrid } from '../physics/flow/cubeSphereGrid.ts';
 import type { FlowParameters } from '../physics/flow/flowParameters.ts';
@@ -53,7 +53,7 @@ export class FlowFieldState implements FieldState {
       this.simulation = null;
       this.key = key;
       this.preview?.dispose();
-      this.preview = paddedStartTexture(cubeSphereGrid(COARSE_START_GRID_N), parameters.seed);
+      this.preview = paddedStartTexture(cubeSphereGrid(COARSE_START_GRID_N), coarseStartFilm(parameters.seed));
       u.uFlowFilm!.value = this.preview;
       u.uFlowGridN!.value = COARSE_START_GRID_N;
       this.settling = true;

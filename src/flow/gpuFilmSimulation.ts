@@ -106,7 +106,7 @@ export class GpuFilmSimulation {
    * own film.
    */
   get startPaddedFilm(): Texture {
-    this.startPadded ??= paddedStartTexture(this.grid, this.parameters.seed);
+    this.startPadded ??= paddedStartTexture(this.grid, initialFilm(this.grid, this.parameters.seed));
     return this.startPadded;
   }
 
