@@ -9,7 +9,8 @@ import { JOHNSON_CHRISTY_1972 } from '../src/physics/data/johnsonChristy1972.ts'
 import { JOHNSON_CHRISTY_1974 } from '../src/physics/data/johnsonChristy1974.ts';
 import { QUERRY_1985 } from '../src/physics/data/querry1985.ts';
 import { SARKAR_2019 } from '../src/physics/data/sarkar2019.ts';
-import { NAMED_MEDIUM_INDEX, type NamedMedium } from '../src/physics/namedMedia.ts';
+import { asComplex } from '../src/physics/complex.ts';
+import { type NamedMedium, namedIndex } from '../src/physics/namedMedia.ts';
 import { type NkTable, tabulatedIndex } from '../src/physics/tabulatedIndex.ts';
 
 const TABLES: [NamedMedium, NkTable][] = [
@@ -33,10 +34,10 @@ const bareR = (n: number, k: number) => ((n - 1) ** 2 + k * k) / ((n + 1) ** 2 +
 console.log('| table | rows | at rows: max abs Δn, Δk | leave-one-out: max abs Δn (at nm), Δk (at nm), ΔR of the bare medium |');
 console.log('|---|---|---|---|');
 for (const [name, rows] of TABLES) {
-  const full = NAMED_MEDIUM_INDEX[name];
+  const full = namedIndex(name);
   let atRows = 0;
   for (const [l, n, k] of rows) {
-    const v = full.indexAt(nm(l));
+    const v = asComplex(full(nm(l)));
     atRows = Math.max(atRows, Math.abs(v.re - n), Math.abs(v.im - k));
   }
   let dn = 0,

@@ -9,8 +9,7 @@ import { describe, expect, it } from 'vitest';
 import { ENVIRONMENTS } from '../../src/environments/environments.ts';
 import { FIELDS } from '../../src/fields/fields.ts';
 import { FILM_METHODS } from '../../src/methods/methods.ts';
-import { FILM_MATERIALS } from '../../src/physics/filmIndex.ts';
-import { NAMED_MEDIA } from '../../src/physics/namedMedia.ts';
+import { MEDIUM_NAMES } from '../../src/physics/namedMedia.ts';
 
 const root = join(dirname(new URL(import.meta.url).pathname), '../..');
 
@@ -26,9 +25,9 @@ const KINDS: Readonly<Record<string, Kind>> = {
   field: { names: FIELDS, keys: ['field'], home: ['src/fields/'] },
   environment: { names: ENVIRONMENTS, keys: ['env', 'environment'], home: ['src/environments/'] },
   medium: {
-    names: [...NAMED_MEDIA, ...FILM_MATERIALS],
+    names: MEDIUM_NAMES,
     keys: ['nFilm', 'nInside', 'nOutside', 'film', 'base', 'medium'],
-    home: ['src/physics/namedMedia.ts', 'src/physics/filmIndex.ts'],
+    home: ['src/physics/namedMedia.ts'],
   },
 };
 

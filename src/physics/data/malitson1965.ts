@@ -10,5 +10,4 @@
 export const MALITSON_1965_SILICA = {
   b: [0.6961663, 0.4079426, 0.8974794],
   cUm: [0.0684043, 0.1162414, 9.896161],
-  rangeNm: { min: 210, max: 3710 },
 } as const;

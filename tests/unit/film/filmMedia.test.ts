@@ -2,7 +2,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { MEDIA_KNOT, filmIndexMax, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from '../../../src/film/filmMedia.ts';
-import { waterIndex } from '../../../src/physics/filmIndex.ts';
+import { filmIndexAt } from '../../../src/physics/filmIndex.ts';
 import type { Medium } from '../../../src/physics/medium.ts';
 import { FEW_OPERATIONS_TOL } from '../../tolerances.ts';
 
@@ -51,7 +51,7 @@ describe('film media uniforms', () => {
   it("filmIndexMax: a constant film's n; a normally dispersive film's n at the band's short end", () => {
     expect(filmIndexMax(1.38)).toBe(1.38);
     expect(filmIndexMax({ complex: [2.6, 3.4] })).toBe(2.6);
-    expect(filmIndexMax('water')).toBe(waterIndex(380));
+    expect(filmIndexMax('water')).toBe(filmIndexAt('water', 380));
     expect(Math.abs(filmIndexMax({ cauchy: [1.45, 6000, 0] }) - (1.45 + 6000 / 380 ** 2))).toBeLessThan(FEW_OPERATIONS_TOL);
   });
 });

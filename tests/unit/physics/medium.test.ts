@@ -5,7 +5,7 @@
  * band, and the one parser every entry point shares.
  */
 import { describe, expect, it } from 'vitest';
-import { COMPLEX_INDEX_DOMAIN } from '../../../src/physics/filmReflectance.ts';
+import { COMPLEX_INDEX_DOMAIN, FILM_STACK_DOMAIN } from '../../../src/physics/filmReflectance.ts';
 import { JOHNSON_CHRISTY_1972 } from '../../../src/physics/data/johnsonChristy1972.ts';
 import { JOHNSON_CHRISTY_1974 } from '../../../src/physics/data/johnsonChristy1974.ts';
 import { QUERRY_1985 } from '../../../src/physics/data/querry1985.ts';
@@ -20,10 +20,18 @@ import {
   parseMediumText,
   readMedium,
 } from '../../../src/physics/medium.ts';
-import { NAMED_MEDIA, NAMED_MEDIUM_INDEX } from '../../../src/physics/namedMedia.ts';
-import { type NkTable } from '../../../src/physics/tabulatedIndex.ts';
+import { FILM_MATERIALS, MEDIUM_NAMES, type MediumName, namedRangeNm } from '../../../src/physics/namedMedia.ts';
+import { type NkTable, tabulatedIndex } from '../../../src/physics/tabulatedIndex.ts';
 import { ParameterError } from '../../../src/input/validate.ts';
 import { FOUR_DIGIT_REL_TOL, TABLE_SUBSAMPLE_TOL } from '../../tolerances.ts';
+
+/** Each tabulated medium and its table. */
+const TABLES: [MediumName, NkTable][] = [
+  ...(['Au', 'Ag', 'Cu'] as const).map((m): [MediumName, NkTable] => [m, JOHNSON_CHRISTY_1972[m]]),
+  ...(['Ti', 'Fe', 'Cr', 'Ni'] as const).map((m): [MediumName, NkTable] => [m, JOHNSON_CHRISTY_1974[m]]),
+  ['Fe3O4', QUERRY_1985.Fe3O4],
+  ['TiO2', SARKAR_2019.TiO2],
+];
 
 const at = (m: Medium, lambdaNm: number) => {
   const v = mediumIndexAt(m, lambdaNm);
@@ -36,13 +44,7 @@ describe('named media: the published values', () => {
   });
 
   it('the interpolant passes through every row of every table exactly', () => {
-    const tables: [Medium, NkTable][] = [
-      ...(['Au', 'Ag', 'Cu'] as const).map((m): [Medium, NkTable] => [m, JOHNSON_CHRISTY_1972[m]]),
-      ...(['Ti', 'Fe', 'Cr', 'Ni'] as const).map((m): [Medium, NkTable] => [m, JOHNSON_CHRISTY_1974[m]]),
-      ['Fe3O4', QUERRY_1985.Fe3O4],
-      ['TiO2', SARKAR_2019.TiO2],
-    ];
-    for (const [m, rows] of tables)
+    for (const [m, rows] of TABLES)
       for (const [lambdaUm, n, k] of rows)
         expect(at(m, Number((lambdaUm * 1000).toPrecision(12))), `${mediumText(m)} ${lambdaUm}`).toEqual({ re: n, im: k });
   });
@@ -70,7 +72,7 @@ describe('named media: the published values', () => {
 
   it('every named medium is finite, absorbing or transparent (k ≥ 0) and inside the complex domain at every nm of 380–830', () => {
     const { n, k } = COMPLEX_INDEX_DOMAIN;
-    for (const m of NAMED_MEDIA)
+    for (const m of MEDIUM_NAMES)
       for (let l = 380; l <= 830; l++) {
         const v = at(m, l);
         expect(v.re >= n.min && v.re <= n.max && v.im >= k.min && v.im <= k.max, `${m} at ${l}: ${JSON.stringify(v)}`).toBe(true);
@@ -94,9 +96,22 @@ describe('named media: the published values', () => {
       }
   });
 
-  it('each table covers the colour band with a row beyond each end', () => {
-    for (const m of NAMED_MEDIA) {
-      const { min, max } = NAMED_MEDIUM_INDEX[m].rangeNm;
+  it('every film material is a real index within the film index domain at every nm of 380–830', () => {
+    const { min, max } = FILM_STACK_DOMAIN.nFilm;
+    for (const m of FILM_MATERIALS)
+      for (let l = 380; l <= 830; l++) {
+        const v = mediumIndexAt(m, l);
+        expect(typeof v === 'number' && v >= min && v <= max, `${m} at ${l}: ${JSON.stringify(v)}`).toBe(true);
+      }
+  });
+
+  it("the registry's range of a tabulated medium is its table's first to last row", () => {
+    for (const [m, rows] of TABLES) expect(namedRangeNm(m), m).toEqual(tabulatedIndex(rows).rangeNm);
+  });
+
+  it('each medium covers the colour band with a row beyond each end', () => {
+    for (const m of MEDIUM_NAMES) {
+      const { min, max } = namedRangeNm(m);
       expect(min, m).toBeLessThan(380);
       expect(max, m).toBeGreaterThan(830);
     }
