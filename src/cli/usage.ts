@@ -1,4 +1,5 @@
 import { GAMUT_MAPPINGS } from '../physics/colorConversions.ts';
+import { MEDIUM_NAMES, namedRangeNm, namedSource } from '../physics/namedMedia.ts';
 import { CASE_FIELDS, CASE_FLAGS, MAX_WAVELENGTHS } from './colorCase.ts';
 import { CELL_HEIGHT_2D_PX, MAX_CHART_COLUMNS, MAX_CHART_PIXELS, STRIP_HEIGHT_PX } from './chartLayout.ts';
 import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
@@ -16,6 +17,13 @@ export const optionLines = (options: readonly { flag: string; label: string; exp
     )
     .join('\n');
 
+/** One line per named medium: its name, what it is and whose values, and where the source gives them. */
+const mediaLines = (): string =>
+  MEDIUM_NAMES.map((name) => {
+    const { min, max } = namedRangeNm(name);
+    return `  ${name}`.padEnd(DESCRIPTION_COLUMN) + `${namedSource(name)}, ${min}–${max} nm`;
+  }).join('\n');
+
 /** `--help`: how to call the command. */
 export const USAGE = `Colour of a thin film (a soap bubble) from the spectral interference integral.
 
@@ -26,6 +34,9 @@ ${optionLines(CASE_FLAGS)}
                         --layers replaces --n-film; its d layers take --thickness (or each row's
                         thickness in a table)
   --gamut G             ${GAMUT_MAPPINGS.join(' | ')}: how out-of-gamut colours become 8-bit codes (clip)
+
+Named media (for --n-film, --n-inside and a layer's index; --wavelengths within each one's range):
+${mediaLines()}
 
 Many cases:
   --cases FILE.json     a JSON array (at most ${MAX_CASES}) of objects with any of the fields

@@ -30,6 +30,15 @@ const { run, ok } = colorTool<Output>(files);
 const bareR = (n: number, k: number) => ((n - 1) ** 2 + k * k) / ((n + 1) ** 2 + k * k);
 
 describe('color CLI, absorbing media', () => {
+  it('--help lists every named medium with its source and range', () => {
+    const { stdout } = run('--help');
+    expect(stdout).toMatch(/^ {2}water +water at 20 °C, Daimon & Masumura 2007 \(Sellmeier\), 182–1129 nm$/m);
+    expect(stdout).toMatch(/^ {2}Au +gold, Johnson & Christy 1972, 367\.9–892 nm$/m);
+    expect(stdout).toMatch(/^ {2}SiO2 +fused silica, Malitson 1965 \(Sellmeier\), 210–3710 nm$/m);
+    for (const name of ['Ag', 'Cu', 'Al', 'Ti', 'Fe', 'Cr', 'Ni', 'TiO2', 'Fe3O4'])
+      expect(stdout).toMatch(new RegExp(`^ {2}${name} +\\S`, 'm'));
+  });
+
   it('--n-inside Au: bare gold at 548.6 nm reflects 0.786916 and reports ñ = 0.43 + 2.455i', () => {
     const [c] = ok('--n-inside', 'Au', '--thickness', '0', '--wavelengths', '548.6');
     expect(Math.abs(c!.reflectance[0]! - 0.786916)).toBeLessThan(GOLD_GOLDEN_TOL);
