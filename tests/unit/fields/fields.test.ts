@@ -27,11 +27,13 @@ function declared(file: string): string[] {
   return [...included, ...[...text.matchAll(/^uniform \w+ (\w+)/gm)].map((m) => m[1]!)];
 }
 
-/** Another valid value of a field's own setting than its default: the other state of a flag, the middle of a number's domain (whole for a whole number). */
+/** Another valid value of a field's own setting than its default: the other state of a flag; halfway from a number's default to the farther end of its domain (whole for a whole number). */
 const otherValue = (setting: FieldSetting): number | boolean => {
   if (setting.kind === 'flag') return !setting.defaultValue;
-  const middle = (setting.domain.min + setting.domain.max) / 2;
-  return setting.step === 'integer' ? Math.round(middle) : middle;
+  const { min, max } = setting.domain;
+  const far = max - setting.defaultValue >= setting.defaultValue - min ? max : min;
+  const halfway = (setting.defaultValue + far) / 2;
+  return setting.step === 'integer' ? Math.round(halfway) : halfway;
 };
 
 /** Another valid value of each setting a field may read than the default's (DEFAULT_SETTINGS). */
