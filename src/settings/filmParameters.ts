@@ -23,7 +23,8 @@ const fieldRows = (): Row[] =>
 /**
  * The schema of what a rendered bubble depends on: one row per parameter, with its names (URL,
  * attribute, colour-tool flag), domain or choices, default (the default view: a swirling soap
- * bubble in daylight), label and panel control. The film's own domains are FILM_STACK_DOMAIN's.
+ * bubble in daylight), label and panel control. The film's own domains are FILM_STACK_DOMAIN's;
+ * the rows of the fields' own settings follow the thickness, as the fields declare them.
  */
 export const FILM_PARAMETERS: readonly Row[] = [
   choiceRow({ key: 'field', url: 'field' }, FIELDS, 'swirl', 'film'),

@@ -27,7 +27,7 @@ export const toneMappingOf = (s: Pick<FilmSettings, 'tonemap' | 'env'>): ToneMap
 
 /**
  * Everything a rendered bubble depends on, the fields' settings (each field's own, declared by the
- * field) included. Ranges and defaults: `filmParameters.ts`.
+ * field) included. Ranges and defaults: the schema, `filmParameters.ts`.
  */
 export interface FilmSettings extends FieldSettings {
   readonly nOutside: number;
