@@ -13,7 +13,8 @@ import type { Color, Mesh, ShaderMaterial, WebGLRenderTarget, WebGLRenderer } fr
 import { FLOW_PARAMETERS } from '../../src/physics/flow/flowParameters.ts';
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
 import { DEFAULT_FILM_QUALITY } from '../../src/settings/filmQuality.ts';
-import type { FieldSettings, FieldUniforms } from '../../src/fields/thicknessField.ts';
+import type { FieldSettings } from '../../src/fields/fields.ts';
+import type { FieldUniforms } from '../../src/fields/thicknessField.ts';
 import { FlowFieldState } from '../../src/flow/flowFieldState.ts';
 import { PASSES, type PassName } from '../../src/flow/flowPasses.ts';
 import { loopNames, textureFetchesPerFragment } from './textureFetches.ts';

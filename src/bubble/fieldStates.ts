@@ -1,14 +1,11 @@
 import type { WebGLRenderer } from 'three';
-import { type FieldName, THICKNESS_FIELDS } from '../fields/fields.ts';
+import type { EvolvingField, FieldName } from '../fields/fields.ts';
 import type { FieldState } from '../fields/thicknessField.ts';
 import { FlowFieldState } from '../flow/flowFieldState.ts';
 
-/** The fields whose film evolves (their `evolves`, in THICKNESS_FIELDS). */
-type EvolvingField = { [K in FieldName]: (typeof THICKNESS_FIELDS)[K] extends { readonly evolves: true } ? K : never }[FieldName];
-
 /**
  * The simulation each evolving field's film lives in, for a renderer: the type requires one for
- * every field marked `evolves` and none for another.
+ * every field marked `evolves` in THICKNESS_FIELDS and none for another.
  */
 const FIELD_STATES: Record<EvolvingField, (renderer: WebGLRenderer) => FieldState> = {
   flow: (renderer) => new FlowFieldState(renderer),

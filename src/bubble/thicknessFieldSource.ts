@@ -1,5 +1,5 @@
-import { FIELDS, type FieldName, THICKNESS_FIELDS } from '../fields/fields.ts';
-import type { FieldSettings, FieldUniforms } from '../fields/thicknessField.ts';
+import { FIELDS, type FieldName, type FieldSettings, THICKNESS_FIELDS } from '../fields/fields.ts';
+import type { FieldUniforms } from '../fields/thicknessField.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 

@@ -1,13 +1,21 @@
-import { drainedFilmMaxNm, drainedFilmUniforms, drainedThicknessNm, updateDrainedFilmUniforms } from './drainedFilm.ts';
-import type { ThicknessField } from './thicknessField.ts';
+import {
+  DRAINED_FILM_SETTINGS,
+  drainedFilmMaxNm,
+  drainedFilmUniforms,
+  drainedThicknessNm,
+  updateDrainedFilmUniforms,
+} from './drainedFilm.ts';
+import { thicknessField } from './thicknessField.ts';
 
 /** A film at rest after draining (shaders/fields/drainageField.glsl): the height alone sets it. */
-export const drainageField: ThicknessField = {
+export const drainageField = thicknessField({
   glsl: 'drainageField.glsl',
+  settings: DRAINED_FILM_SETTINGS,
+  reads: ['thicknessNm'],
   uniforms: drainedFilmUniforms,
   update: updateDrainedFilmUniforms,
   thicknessAt: ([, y], s) => drainedThicknessNm(y, y, s),
   maxThicknessNm: drainedFilmMaxNm,
-  reads: ['thicknessNm', 'thicknessRangeNm'],
   animates: false,
-};
+  evolves: false,
+});

@@ -1,5 +1,5 @@
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
-import type { FieldSettings, FieldUniforms } from './thicknessField.ts';
+import { type FieldInput, type FieldUniforms, numberSetting } from './thicknessField.ts';
 
 /** GLSL's smoothstep. */
 const smoothstep = (e0: number, e1: number, x: number) => {
@@ -8,10 +8,16 @@ const smoothstep = (e0: number, e1: number, x: number) => {
 };
 const clamp = (x: number, lo: number, hi: number) => Math.min(hi, Math.max(lo, x));
 
+/** The drained film's own setting, its top-to-bottom difference in nm: one declaration for every field of a drained film. */
+export const DRAINED_FILM_SETTINGS = {
+  thicknessRangeNm: numberSetting('thicknessRange', FILM_STACK_DOMAIN.thicknessNm, 800, 1, 'film'),
+};
+type DrainedFilmSettings = FieldInput<typeof DRAINED_FILM_SETTINGS>;
+
 /** The drained film's uniforms (shaders/fields/drainedFilm.glsl declares them). */
 export const drainedFilmUniforms = (): FieldUniforms => ({ uThicknessNm: { value: 500 }, uThicknessRangeNm: { value: 0 } });
 
-export function updateDrainedFilmUniforms(u: FieldUniforms, s: FieldSettings): void {
+export function updateDrainedFilmUniforms(u: FieldUniforms, s: DrainedFilmSettings): void {
   u.uThicknessNm!.value = s.thicknessNm;
   u.uThicknessRangeNm!.value = s.thicknessRangeNm;
 }
@@ -21,12 +27,12 @@ export function updateDrainedFilmUniforms(u: FieldUniforms, s: FieldSettings): v
  * bottom, linear in the height `h` (clamped to ±1) about the mean, down to a ~10 nm black film in
  * a cap around the top (`y`: the point's own height).
  */
-export function drainedThicknessNm(h: number, y: number, s: FieldSettings): number {
+export function drainedThicknessNm(h: number, y: number, s: DrainedFilmSettings): number {
   const d = s.thicknessNm - 0.5 * s.thicknessRangeNm * clamp(h, -1, 1);
   const capped = Math.max(d, 10) + (10 - Math.max(d, 10)) * smoothstep(0.82, 0.95, y);
   return clamp(capped, FILM_STACK_DOMAIN.thicknessNm.min, FILM_STACK_DOMAIN.thicknessNm.max);
 }
 
 /** The thickest the drained film gets: the mean plus half the range, at the bottom. */
-export const drainedFilmMaxNm = (s: FieldSettings): number =>
+export const drainedFilmMaxNm = (s: DrainedFilmSettings): number =>
   Math.min(FILM_STACK_DOMAIN.thicknessNm.max, Math.max(s.thicknessNm + 0.5 * s.thicknessRangeNm, 1));

@@ -5,7 +5,7 @@ import { cubeSphereHalo, padField, paddedSampler } from '../physics/flow/cubeSph
 import { flowNumbers } from '../physics/flow/flowNumbers.ts';
 import { FLOW_PARAMETERS, type FlowParameterKey, type FlowParameters } from '../physics/flow/flowParameters.ts';
 import { initialFilm } from '../physics/flow/initialFilm.ts';
-import { FLOW_SETTING_KEYS, type FieldSettings, type ThicknessField, type Vec3 } from './thicknessField.ts';
+import { type FieldInput, type NumberSetting, type Vec3, flagSetting, numberSetting, thicknessField } from './thicknessField.ts';
 
 /** The flow's mean thickness: the view's, at least the model's lowest (its numbers divide by η0). */
 const THICKNESS_MIN_NM = FLOW_PARAMETERS.find((r) => r.key === 'thicknessNm')!.domain.min;
@@ -15,8 +15,38 @@ const THICKNESS_MIN_NM = FLOW_PARAMETERS.find((r) => r.key === 'thicknessNm')!.d
  */
 const TABLE_MARGIN = 1.5;
 
+/** Settings of the flowing film's own whose values are flow parameters: each one's URL name and slider step, its domain, default and whether it is whole its FLOW_PARAMETERS row's. */
+function flowParameterSettings<K extends FlowParameterKey>(given: Record<K, readonly [url: string, step: number]>) {
+  const setting = ([key, [url, step]]: [string, readonly [string, number]]) => {
+    const r = FLOW_PARAMETERS.find((row) => row.key === key)!;
+    return [key, numberSetting(url, r.domain, r.defaultValue, r.integer ? 'integer' : step, 'flow')];
+  };
+  return Object.fromEntries(Object.entries<readonly [string, number]>(given).map(setting)) as Record<K, NumberSetting<'flow'>>;
+}
+
+/**
+ * The flowing film's own settings, in the panel's flow folder. `simSpeed` and `gridN` are what a
+ * view draws when the page leaves them to it (a frozen view; the page's own rows,
+ * src/settings/viewParameters.ts, take `auto`); `renew`: a new bubble after a burst (the GPU's own,
+ * src/flow/renewFilm.ts).
+ */
+const FLOW_SETTINGS = {
+  ...flowParameterSettings({
+    radiusMm: ['radius', 1],
+    surfactantMolM2: ['surfactant', 1e-9],
+    evaporationNmS: ['evaporation', 1],
+    windMps: ['wind', 0.01],
+    windTurnDegS: ['windTurn', 1],
+    seed: ['seed', 1],
+    simSpeed: ['simSpeed', 0.01],
+    gridN: ['grid', 1],
+  }),
+  renew: flagSetting('renew', true, 'flow'),
+};
+type FlowSettings = FieldInput<typeof FLOW_SETTINGS>;
+
 /** The flow parameters the settings give: every row of FLOW_PARAMETERS is a settings field of the same name. */
-export function flowParametersOf(s: FieldSettings): FlowParameters {
+export function flowParametersOf(s: FlowSettings): FlowParameters {
   const given: Partial<Record<FlowParameterKey, number>> = s;
   const values = Object.fromEntries(FLOW_PARAMETERS.map((r) => [r.key, given[r.key] ?? r.defaultValue]));
   return { ...(values as FlowParameters), thicknessNm: Math.max(THICKNESS_MIN_NM, s.thicknessNm) };
@@ -60,7 +90,7 @@ export const coarseStartFilm = (seed: number): ReturnType<typeof initialFilm> =>
  * resting profile h̄ (a/sinh a) e^(−a cos θ), a = g/M: docs/flow.md#the-stationary-film), times
  * TABLE_MARGIN, within the film stack's domain.
  */
-function flowMaxNm(s: FieldSettings): number {
+function flowMaxNm(s: FlowSettings): number {
   const p = flowParametersOf(s);
   const numbers = flowNumbers(p);
   const a = numbers.gravity / numbers.marangoni;
@@ -74,8 +104,11 @@ function flowMaxNm(s: FieldSettings): number {
  * simulation of src/physics/flow/, run on the GPU by src/flow/ (the view's FieldState), bilinear
  * within a cube face and seamless across them. Its TypeScript twin is the film at its start.
  */
-export const flowField = {
+export const flowField = thicknessField({
   glsl: 'flowField.glsl',
+  settings: FLOW_SETTINGS,
+  // Its film is simulated to the time timeSeconds × simSpeed (src/flow/flowFieldState.ts).
+  reads: ['thicknessNm', 'timeSeconds'],
   uniforms: () => ({
     uThicknessNm: { value: 500 },
     uFlowMaxThicknessNm: { value: 1 },
@@ -94,8 +127,6 @@ export const flowField = {
     return Math.min(flowMaxNm(s), Math.max(0, thicknessNm * out[0]!));
   },
   maxThicknessNm: flowMaxNm,
-  // Its film is simulated to the time timeSeconds × simSpeed (src/flow/flowFieldState.ts).
-  reads: ['thicknessNm', 'timeSeconds', ...FLOW_SETTING_KEYS],
   animates: true,
   evolves: true,
-} as const satisfies ThicknessField;
+});

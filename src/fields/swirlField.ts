@@ -1,13 +1,24 @@
-import { drainedFilmMaxNm, drainedFilmUniforms, drainedThicknessNm, updateDrainedFilmUniforms } from './drainedFilm.ts';
-import type { ThicknessField } from './thicknessField.ts';
+import {
+  DRAINED_FILM_SETTINGS,
+  drainedFilmMaxNm,
+  drainedFilmUniforms,
+  drainedThicknessNm,
+  updateDrainedFilmUniforms,
+} from './drainedFilm.ts';
+import { numberSetting, thicknessField } from './thicknessField.ts';
 
 /**
  * The drained film stirred by a slow, smooth flow around the vertical axis
  * (shaders/fields/swirlField.glsl): the height is displaced by three travelling waves, by at
  * most 0.24, deterministic in time.
  */
-export const swirlField: ThicknessField = {
+export const swirlField = thicknessField({
   glsl: 'swirlField.glsl',
+  settings: {
+    ...DRAINED_FILM_SETTINGS,
+    swirlSpeed: numberSetting('speed', { min: 0, max: 10, unit: '' }, 0.4, 0.05, 'film'),
+  },
+  reads: ['thicknessNm', 'timeSeconds'],
   uniforms: () => ({ ...drainedFilmUniforms(), uSwirlSpeed: { value: 0 }, uTimeSeconds: { value: 0 } }),
   update: (u, s) => {
     updateDrainedFilmUniforms(u, s);
@@ -23,6 +34,6 @@ export const swirlField: ThicknessField = {
   },
   // The swirl moves h by at most 0.24 beyond ±1, where the drained film is clamped.
   maxThicknessNm: drainedFilmMaxNm,
-  reads: ['thicknessNm', 'thicknessRangeNm', 'swirlSpeed', 'timeSeconds'],
   animates: true,
-};
+  evolves: false,
+});

@@ -1,69 +1,108 @@
-import type { FlowParameters } from '../physics/flow/flowParameters.ts';
+import type { NumberDomain } from '../input/validate.ts';
+import type { FieldSettings } from './fields.ts';
 
 /** A point on the unit sphere, y up. */
 export type Vec3 = readonly [number, number, number];
 
 /**
- * The flowing film's own settings (field `flow`): bubble radius, Γ0, evaporation, wind and its turn, seed,
- * simulated seconds per second, grid (src/physics/flow/flowParameters.ts names them and holds their
- * ranges), and whether a new bubble follows a burst (the GPU's own, src/flow/renewFilm.ts).
+ * A setting of a field's own, declared by the field: its name in the URL, its default and the
+ * folder of the panel that shows it. src/settings/filmParameters.ts makes its row of the schema
+ * (the label is the catalogues' `param.<key>`).
  */
-export const FLOW_SETTING_KEYS = [
-  'radiusMm',
-  'surfactantMolM2',
-  'evaporationNmS',
-  'windMps',
-  'windTurnDegS',
-  'seed',
-  'simSpeed',
-  'gridN',
-  'renew',
-] as const;
+interface OwnSetting<F extends string> {
+  readonly url: string;
+  readonly folder: F;
+}
+/** A number in a closed domain; the panel's slider moves in steps of `step` ('integer': a whole number). */
+export interface NumberSetting<F extends string = string> extends OwnSetting<F> {
+  readonly kind: 'number';
+  readonly domain: NumberDomain;
+  readonly defaultValue: number;
+  readonly step: number | 'integer';
+}
+/** On or off. */
+export interface FlagSetting<F extends string = string> extends OwnSetting<F> {
+  readonly kind: 'flag';
+  readonly defaultValue: boolean;
+}
+export type FieldSetting = NumberSetting | FlagSetting;
+/** A field's own settings, by their settings key. */
+export type FieldSettingRows = Readonly<Record<string, FieldSetting>>;
 
-export type FlowSettings = Pick<FlowParameters, Exclude<(typeof FLOW_SETTING_KEYS)[number], 'renew'>> & { readonly renew: boolean };
+export const numberSetting = <F extends string>(
+  url: string,
+  domain: NumberDomain,
+  defaultValue: number,
+  step: number | 'integer',
+  folder: F,
+): NumberSetting<F> => ({ kind: 'number', url, domain, defaultValue, step, folder });
 
-/** What a field reads of the settings (the schema's rows in src/settings/filmParameters.ts). */
-export interface FieldSettings extends FlowSettings {
+export const flagSetting = <F extends string>(url: string, defaultValue: boolean, folder: F): FlagSetting<F> => ({
+  kind: 'flag',
+  url,
+  defaultValue,
+  folder,
+});
+
+/** The values of settings declared by `R`. */
+export type SettingValues<R> = { readonly [K in keyof R]: R[K] extends FlagSetting ? boolean : number };
+
+/** The settings no one field owns, which a field may read (their rows: src/settings/filmParameters.ts). */
+export interface SharedFieldSettings {
   /** the mean thickness, nm */
   readonly thicknessNm: number;
-  /** the drained film's top-to-bottom difference, nm */
-  readonly thicknessRangeNm: number;
-  readonly swirlSpeed: number;
+  /** the settings' time, s */
   readonly timeSeconds: number;
 }
+
+/** What a field with its own settings `R` reads: the shared settings and its own. */
+export type FieldInput<R extends FieldSettingRows> = SharedFieldSettings & SettingValues<R>;
 
 /** A uniform of a field's shader, as three.js holds it. */
 export type FieldUniforms = Record<string, { value: unknown }>;
 
 /**
  * A film thickness field over the bubble: one TypeScript module and its GLSL twin (the same
- * name in shaders/fields/), registered once in src/fields/fields.ts. The module owns its
- * uniforms, their update per frame, its thickness lookup, the largest thickness it reaches (which
- * the film table must cover) and whether it changes with time.
+ * name in shaders/fields/), registered once in src/fields/fields.ts. The module declares its own
+ * settings (the schema's rows and the settings' members follow) and owns its uniforms, their update
+ * per frame, its thickness lookup, the largest thickness it reaches (which the film table must
+ * cover), whether it changes with time and whether its film evolves.
  */
-export interface ThicknessField {
+export interface ThicknessField<R extends FieldSettingRows, E extends boolean> {
   /** Its GLSL file, which defines `float tfcThicknessAt(vec3 p)` and declares the uniforms below. */
   readonly glsl: string;
+  /**
+   * Its own settings (a setting two fields share is one declaration both name): each applies only
+   * under the fields that declare it (the panel shows it only under those).
+   */
+  readonly settings: R;
+  /** The shared settings it reads (for its thickness, its uniforms, its simulation). */
+  readonly reads: readonly (keyof SharedFieldSettings)[];
   /** Its uniforms, with placeholder values. */
   readonly uniforms: () => FieldUniforms;
   /** Sets its uniforms to the settings (each frame). */
-  readonly update: (u: FieldUniforms, s: FieldSettings) => void;
+  readonly update: (u: FieldUniforms, s: FieldInput<R>) => void;
   /** The thickness in nm at `p` (the twin of its GLSL `tfcThicknessAt`; an evolving field's film at its start). */
-  readonly thicknessAt: (p: Vec3, s: FieldSettings) => number;
+  readonly thicknessAt: (p: Vec3, s: FieldInput<R>) => number;
   /** The largest thickness it reaches, in nm, at least 1 (the field is clamped to the domain's 20 µm). */
-  readonly maxThicknessNm: (s: FieldSettings) => number;
-  /**
-   * The settings it reads (for its thickness, its uniforms, its simulation): a setting that some
-   * field reads applies only under the fields that read it (the panel shows it only under those).
-   */
-  readonly reads: readonly (keyof FieldSettings)[];
+  readonly maxThicknessNm: (s: FieldInput<R>) => number;
   /** Whether it changes with time (the view animates only such a field). */
   readonly animates: boolean;
   /**
-   * Whether its film evolves in a simulation the view holds (a FieldState, made for it in
-   * src/bubble/fieldStates.ts) and advances to the settings' time before each frame.
+   * Whether its film evolves in a simulation the view holds (a FieldState, made for it by the table
+   * of src/bubble/fieldStates.ts, whose type asks one of each evolving field) and advances to the
+   * settings' time before each frame.
    */
-  readonly evolves?: true;
+  readonly evolves: E;
+}
+
+/** A field as its module declares it: its settings' types follow from `settings`. */
+export const thicknessField = <R extends FieldSettingRows, E extends boolean>(field: ThicknessField<R, E>): ThicknessField<R, E> => field;
+
+/** The grid an evolving film is simulated on: cells per side (of a cube face) and the fixed step in film seconds. */
+export interface SimulationGrid {
+  readonly gridN: number;
+  readonly stepSeconds: number;
 }
 
 /** The simulation an evolving field's film lives in, kept by the view while it shows the field. */
@@ -92,4 +131,10 @@ export interface FieldState {
   /** Makes its GPU objects anew after a lost context; the film starts again from its start. */
   invalidate(): void;
   dispose(): void;
+  /** The grid its film is simulated on now, or null before its simulation is made. */
+  readonly grid: SimulationGrid | null;
+  /** Its film's steps since its start (0 before its simulation is made). */
+  readonly steps: number;
+  /** Waits for its GPU work queued so far (a read of one texel of its film), so that a frame's cost includes it. */
+  finish(): void;
 }

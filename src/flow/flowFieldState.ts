@@ -1,6 +1,7 @@
 import type { DataTexture, WebGLRenderer } from 'three';
 import { COARSE_START_GRID_N, coarseStartFilm, flowDirection, flowParametersOf } from '../fields/flowField.ts';
-import type { FieldSettings, FieldState, FieldUniforms, Vec3 } from '../fields/thicknessField.ts';
+import type { FieldSettings } from '../fields/fields.ts';
+import type { FieldState, FieldUniforms, SimulationGrid, Vec3 } from '../fields/thicknessField.ts';
 import { cubeSphereGrid } from '../physics/flow/cubeSphereGrid.ts';
 import type { FlowParameters } from '../physics/flow/flowParameters.ts';
 import { GpuFilmSimulation } from './gpuFilmSimulation.ts';
@@ -10,6 +11,9 @@ import { paddedStartTexture } from './paddedStart.ts';
 const BLOW_FILM_SECONDS = 0.05;
 /** Still air. */
 const CALM: Vec3 = [0, 0, 0];
+
+/** Where `finish` reads its texel (the film's targets are RGBA float). */
+const TEXEL = new Float32Array(4);
 
 /** A relative slack so that k·Δt film seconds take k steps despite rounding (the twin's advanceFilm's). */
 const STEP_SLACK = 1e-9;
@@ -41,6 +45,19 @@ export class FlowFieldState implements FieldState {
   /** The simulation the film lives in now (null before the first advance). */
   get current(): GpuFilmSimulation | null {
     return this.simulation;
+  }
+
+  get grid(): SimulationGrid | null {
+    const sim = this.simulation;
+    return sim && { gridN: sim.grid.n, stepSeconds: sim.stepSeconds };
+  }
+
+  get steps(): number {
+    return this.simulation?.steps ?? 0;
+  }
+
+  finish(): void {
+    if (this.simulation) this.renderer.readRenderTargetPixels(this.simulation.stateTargets.film, 0, 0, 1, 1, TEXEL);
   }
 
   advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean {

@@ -1,12 +1,7 @@
 import type { WebGLRenderer } from 'three';
 import { createFieldState } from '../bubble/fieldStates.ts';
-import type { FieldName } from '../fields/fields.ts';
-import type { FieldSettings, FieldUniforms, FieldState, Vec3 } from '../fields/thicknessField.ts';
-import { FlowFieldState } from '../flow/flowFieldState.ts';
-import type { GpuFilmSimulation } from '../flow/gpuFilmSimulation.ts';
-
-/** Where `finish` reads its texel (the film's targets are RGBA float). */
-const TEXEL = new Float32Array(4);
+import type { FieldName, FieldSettings } from '../fields/fields.ts';
+import type { FieldUniforms, FieldState, SimulationGrid, Vec3 } from '../fields/thicknessField.ts';
 
 /**
  * The simulation of a view's evolving film: made when a field whose film evolves is shown,
@@ -43,16 +38,14 @@ export class EvolvingFilm {
     return this.current?.state.settling ?? false;
   }
 
-  /** The flowing film's grid (cells per cube face side) and step (film seconds) as simulated now, or null (no flowing film, or none simulated yet). */
-  get flowGrid(): { readonly gridN: number; readonly stepSeconds: number } | null {
-    const sim = this.flowSimulation;
-    return sim && { gridN: sim.grid.n, stepSeconds: sim.stepSeconds };
+  /** The evolving film's grid and step as simulated now (FieldState.grid), or null (no evolving film, or none simulated yet). */
+  get flowGrid(): SimulationGrid | null {
+    return this.current?.state.grid ?? null;
   }
 
-  /** Waits for the flowing film's GPU work done so far (a one-texel read of its film; nothing for another field). */
+  /** Waits for the evolving film's GPU work done so far (FieldState.finish; nothing for another field). */
   finish(): void {
-    const sim = this.flowSimulation;
-    if (sim) this.renderer.readRenderTargetPixels(sim.stateTargets.film, 0, 0, 1, 1, TEXEL);
+    this.current?.state.finish();
   }
 
   /** Brings the film towards the settings' time by at most `maxSteps` steps (FieldState.advance); returns the steps taken. */
@@ -65,15 +58,9 @@ export class EvolvingFilm {
     return after >= before ? after - before : after;
   }
 
-  /** The flowing film's steps since its start (0 for another field). */
+  /** The evolving film's steps since its start (0 for another field). */
   private get stepsTaken(): number {
-    return this.flowSimulation?.steps ?? 0;
-  }
-
-  /** The flowing film's simulation, if the field shown is the flow and it has been made. */
-  private get flowSimulation(): GpuFilmSimulation | null {
-    const state = this.current?.state;
-    return state instanceof FlowFieldState ? state.current : null;
+    return this.current?.state.steps ?? 0;
   }
 
   /** Blows air on the film where it evolves and takes a blow (FieldState.blow); nothing for `null` (off the bubble). */

@@ -1,6 +1,6 @@
 import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
-import type { FlowSettings } from '../fields/thicknessField.ts';
-import { FLOW_PARAMETERS } from '../physics/flow/flowParameters.ts';
+import { FIELD_SETTINGS, type FieldSettings } from '../fields/fields.ts';
+import { FLOW_PARAMETERS, type FlowParameterKey } from '../physics/flow/flowParameters.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
 import { layersRow } from './layersRow.ts';
@@ -8,25 +8,28 @@ import { type ParameterRow, choiceRow, defaultsOf, flagRow, illuminantRow, mediu
 
 type Row = ParameterRow<FilmSettings>;
 
-/** The FLOW_PARAMETERS row of a flowing film's setting (a settings field of the same name). */
-export const flowParameterRow = (key: Exclude<keyof FlowSettings, 'renew'>) => FLOW_PARAMETERS.find((r) => r.key === key)!;
+/** The FLOW_PARAMETERS row of a flow parameter. */
+export const flowParameterRow = (key: FlowParameterKey) => FLOW_PARAMETERS.find((r) => r.key === key)!;
 
-/** A row of the flowing film's, its domain and default from its FLOW_PARAMETERS row, in the panel's flow folder. */
-function flowRow(key: Exclude<keyof FlowSettings, 'renew'>, url: string, step: number): Row {
-  const flow = flowParameterRow(key);
-  return numberRow({ key, url }, flow.domain, flow.defaultValue, 'flow', flow.integer ? 'integer' : step);
-}
+/** The rows of the fields' own settings, as the fields declare them (FIELD_SETTINGS). */
+const fieldRows = (): Row[] =>
+  Object.entries(FIELD_SETTINGS).map(([name, setting]) => {
+    const names = { key: name as keyof FieldSettings, url: setting.url };
+    return setting.kind === 'flag'
+      ? flagRow(names, setting.defaultValue, setting.folder)
+      : numberRow(names, setting.domain, setting.defaultValue, setting.folder, setting.step);
+  });
 
 /**
  * The schema of what a rendered bubble depends on: one row per parameter, with its names (URL,
  * attribute, colour-tool flag), domain or choices, default (the default view: a swirling soap
- * bubble in daylight), label and panel control. The film's own domains are FILM_STACK_DOMAIN's.
+ * bubble in daylight), label and panel control. The film's own domains are FILM_STACK_DOMAIN's;
+ * the rows of the fields' own settings follow the thickness, as the fields declare them.
  */
 export const FILM_PARAMETERS: readonly Row[] = [
   choiceRow({ key: 'field', url: 'field' }, FIELDS, 'swirl', 'film'),
   numberRow({ key: 'thicknessNm', url: 'thickness', cli: 'thickness' }, FILM_STACK_DOMAIN.thicknessNm, 550, 'film', 1),
-  numberRow({ key: 'thicknessRangeNm', url: 'thicknessRange' }, FILM_STACK_DOMAIN.thicknessNm, 800, 'film', 1),
-  numberRow({ key: 'swirlSpeed', url: 'speed' }, { min: 0, max: 10, unit: '' }, 0.4, 'film', 0.05),
+  ...fieldRows(),
   mediumRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film' }, SOAP_FILM_IN_AIR.nFilm, 'film', 'film'),
   layersRow({ key: 'layers', url: 'layers', cli: 'layers' }, 'film'),
   numberRow({ key: 'nOutside', url: 'nOutside', cli: 'n-outside' }, FILM_STACK_DOMAIN.nOutside, SOAP_FILM_IN_AIR.nOutside, 'film', 0.01),
@@ -42,17 +45,6 @@ export const FILM_PARAMETERS: readonly Row[] = [
   numberRow({ key: 'envRotationDeg', url: 'envRotation' }, { min: 0, max: 360, unit: 'degrees' }, 0, 'view', 1),
   choiceRow({ key: 'sides', url: 'sides' }, SIDES, 'both', 'view'),
   numberRow({ key: 'timeSeconds', url: 'time' }, { min: 0, max: 1e6, unit: 's' }, 0, null),
-  flowRow('radiusMm', 'radius', 1),
-  flowRow('surfactantMolM2', 'surfactant', 1e-9),
-  flowRow('evaporationNmS', 'evaporation', 1),
-  flowRow('windMps', 'wind', 0.01),
-  flowRow('windTurnDegS', 'windTurn', 1),
-  flowRow('seed', 'seed', 1),
-  // What a view draws when the page leaves them to it (a frozen view; the page's own rows, viewParameters.ts, take `auto`).
-  flowRow('simSpeed', 'simSpeed', 0.01),
-  flowRow('gridN', 'grid', 1),
-  // A new bubble after a burst (src/flow/renewFilm.ts).
-  flagRow({ key: 'renew', url: 'renew' }, true, 'flow'),
 ];
 
 /** The default view. */

@@ -1,9 +1,8 @@
 import { type Medium } from '../physics/medium.ts';
 import type { FilmLayer } from '../physics/filmLayers.ts';
-import { FIELDS, type FieldName } from '../fields/fields.ts';
+import { FIELDS, type FieldName, type FieldSettings } from '../fields/fields.ts';
 import { ENVIRONMENTS, type Environment, HDR_ENVIRONMENTS, type HdrEnvironment, isHdrEnvironment } from '../environments/environments.ts';
 import { FILM_METHODS, type FilmMethodName, MODES } from '../methods/methods.ts';
-import type { FlowSettings } from '../fields/thicknessField.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
@@ -26,8 +25,11 @@ export type ToneMapping = Exclude<(typeof TONE_MAPPINGS)[number], 'auto'>;
 export const toneMappingOf = (s: Pick<FilmSettings, 'tonemap' | 'env'>): ToneMapping =>
   s.tonemap !== 'auto' ? s.tonemap : isHdrEnvironment(s.env) ? 'agx' : 'none';
 
-/** Everything a rendered bubble depends on (the flowing film's FlowSettings included). Ranges and defaults: `filmParameters.ts`. */
-export interface FilmSettings extends FlowSettings {
+/**
+ * Everything a rendered bubble depends on, the fields' settings (each field's own, declared by the
+ * field) included. Ranges and defaults: the schema, `filmParameters.ts`.
+ */
+export interface FilmSettings extends FieldSettings {
   readonly nOutside: number;
   /** ñ_b: a number, a material, a Cauchy film, a named medium or a complex constant (medium.ts) */
   readonly nFilm: Medium;
@@ -44,14 +46,10 @@ export interface FilmSettings extends FlowSettings {
   readonly space: (typeof SPACES)[number];
   readonly mode: FilmMethodName;
   readonly field: FieldName;
-  readonly thicknessNm: number;
-  readonly thicknessRangeNm: number;
-  readonly swirlSpeed: number;
   readonly sides: (typeof SIDES)[number];
   readonly env: Environment;
   /** The environment's turn about the vertical axis, in degrees. */
   readonly envRotationDeg: number;
   readonly tonemap: (typeof TONE_MAPPINGS)[number];
   readonly exposure: number;
-  readonly timeSeconds: number;
 }

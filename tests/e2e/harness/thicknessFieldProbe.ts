@@ -5,8 +5,7 @@
  */
 import { FULLSCREEN_VERTEX } from '../../../src/gpu/fullscreenPass.ts';
 import { ShaderMaterial, type WebGLRenderer } from 'three';
-import type { FieldName } from '../../../src/fields/fields.ts';
-import type { FieldSettings as ThicknessFieldSettings } from '../../../src/fields/thicknessField.ts';
+import type { FieldName, FieldSettings as ThicknessFieldSettings } from '../../../src/fields/fields.ts';
 import { createFieldState } from '../../../src/bubble/fieldStates.ts';
 import {
   thicknessFieldDefines,

@@ -1,13 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { shownControls } from '../../../src/app/shownControls.ts';
-import { FIELDS } from '../../../src/fields/fields.ts';
+import { FIELDS, FIELD_SETTINGS } from '../../../src/fields/fields.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../../../src/settings/viewParameters.ts';
 import { DEMO_VIEW_SETTINGS } from '../../../src/settings/demoView.ts';
 
 const view = (changes: Partial<ViewSettings>): ViewSettings => ({ ...DEFAULT_VIEW_SETTINGS, ...changes });
 const FLOW_FOLDER_KEYS = VIEW_PARAMETERS.filter((r) => r.control?.folder === 'flow').map((r) => r.key);
-/** The rows a thickness field may hide: the swirl's own, and the flow folder's. */
-const FIELD_OWN_KEYS = ['thicknessRangeNm', 'swirlSpeed', ...FLOW_FOLDER_KEYS];
+/** The rows a thickness field may hide: the fields' own settings (the swirl's speed and range, the flow folder's among them). */
+const FIELD_OWN_KEYS = Object.keys(FIELD_SETTINGS);
 const STACK = [{ n: 2.35, thicknessNm: 56.6 }] as const;
 
 describe("the panel's shown controls", () => {
@@ -17,6 +17,7 @@ describe("the panel's shown controls", () => {
     expect(shown.rows).toMatchObject({ swirlSpeed: true, thicknessRangeNm: true, thicknessNm: true, field: true });
     for (const key of FLOW_FOLDER_KEYS) expect(shown.rows[key], key).toBe(false);
     expect(shown.folders).toEqual({ film: true, flow: false, 'light and colour': true, view: true });
+    expect(FIELD_OWN_KEYS).toEqual(expect.arrayContaining(['thicknessRangeNm', 'swirlSpeed', ...FLOW_FOLDER_KEYS]));
     const others = VIEW_PARAMETERS.filter((r) => r.control && !FIELD_OWN_KEYS.includes(r.key));
     expect(others.length).toBeGreaterThan(10);
     for (const row of others) expect(shown.rows[row.key], row.key).toBe(true);

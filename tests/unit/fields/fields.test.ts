@@ -1,8 +1,16 @@
 /** The thickness fields: each module's uniforms are what its GLSL declares, and its range bounds its thickness. */
 import { readFileSync, readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { FIELDS, THICKNESS_FIELDS, settingApplies } from '../../../src/fields/fields.ts';
-import type { FieldSettings, ThicknessField } from '../../../src/fields/thicknessField.ts';
+import {
+  FIELDS,
+  FIELD_SETTINGS,
+  type FieldName,
+  type FieldSettings,
+  THICKNESS_FIELDS,
+  fieldReads,
+  settingApplies,
+} from '../../../src/fields/fields.ts';
+import type { FieldSetting, SharedFieldSettings } from '../../../src/fields/thicknessField.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
 
 const shaders = new URL('../../../shaders/', import.meta.url);
@@ -19,22 +27,20 @@ function declared(file: string): string[] {
   return [...included, ...[...text.matchAll(/^uniform \w+ (\w+)/gm)].map((m) => m[1]!)];
 }
 
-/** Another valid value of each setting a field may read than the default's (DEFAULT_SETTINGS). */
-const OTHER_VALUE: { readonly [K in keyof FieldSettings]: FieldSettings[K] } = {
-  thicknessNm: 300,
-  thicknessRangeNm: 300,
-  swirlSpeed: 2,
-  timeSeconds: 37,
-  radiusMm: 20,
-  surfactantMolM2: 2e-7,
-  evaporationNmS: 5,
-  windMps: 1,
-  windTurnDegS: 20,
-  seed: 7,
-  simSpeed: 2,
-  gridN: 64,
-  renew: false,
+/** Another valid value of a field's own setting than its default: the other state of a flag; halfway from a number's default to the farther end of its domain (whole for a whole number). */
+const otherValue = (setting: FieldSetting): number | boolean => {
+  if (setting.kind === 'flag') return !setting.defaultValue;
+  const { min, max } = setting.domain;
+  const far = max - setting.defaultValue >= setting.defaultValue - min ? max : min;
+  const halfway = (setting.defaultValue + far) / 2;
+  return setting.step === 'integer' ? Math.round(halfway) : halfway;
 };
+
+/** Another valid value of each setting a field may read than the default's (DEFAULT_SETTINGS). */
+const OTHER_VALUE = {
+  ...({ thicknessNm: 300, timeSeconds: 37 } satisfies SharedFieldSettings),
+  ...Object.fromEntries(Object.entries<FieldSetting>(FIELD_SETTINGS).map(([key, setting]) => [key, otherValue(setting)])),
+} as FieldSettings;
 
 /** Points spread over the sphere (the golden angle in azimuth), from the bottom to the top. */
 const SPHERE_POINTS = Array.from({ length: 400 }, (_, i) => {
@@ -45,7 +51,8 @@ const SPHERE_POINTS = Array.from({ length: 400 }, (_, i) => {
 });
 
 /** Everything a field computes from the settings: its thickness over the sphere, its maximum, its uniforms. */
-function computed(field: ThicknessField, s: FieldSettings) {
+function computed(name: FieldName, s: FieldSettings) {
+  const field = THICKNESS_FIELDS[name];
   const uniforms = field.uniforms();
   field.update(uniforms, s);
   return { thickness: SPHERE_POINTS.map((p) => field.thicknessAt(p, s)), max: field.maxThicknessNm(s), uniforms };
@@ -73,27 +80,25 @@ describe('thickness fields', () => {
   it.each(FIELDS)(
     '%s: a setting it does not read (another field reads it) changes nothing it computes, so the panel may hide it',
     (name) => {
-      const field = THICKNESS_FIELDS[name];
-      const start = computed(field, DEFAULT_SETTINGS);
+      const start = computed(name, DEFAULT_SETTINGS);
       const others = (Object.keys(OTHER_VALUE) as (keyof FieldSettings)[]).filter((key) => !settingApplies(key, name));
-      for (const key of others) expect(computed(field, { ...DEFAULT_SETTINGS, [key]: OTHER_VALUE[key] }), key).toEqual(start);
+      for (const key of others) expect(computed(name, { ...DEFAULT_SETTINGS, [key]: OTHER_VALUE[key] }), key).toEqual(start);
     },
   );
 
   it('each setting a uniform, drained or swirling film reads changes its thickness somewhere', () => {
     const moving = { ...DEFAULT_SETTINGS, timeSeconds: 5 };
     for (const name of FIELDS.filter((f) => !THICKNESS_FIELDS[f].evolves)) {
-      const field = THICKNESS_FIELDS[name];
-      expect(field.reads.length).toBeGreaterThan(0);
-      for (const key of field.reads)
-        expect(computed(field, { ...moving, [key]: OTHER_VALUE[key] }).thickness, `${name} ${key}`).not.toEqual(
-          computed(field, moving).thickness,
+      expect(fieldReads(name).length).toBeGreaterThan(0);
+      for (const key of fieldReads(name))
+        expect(computed(name, { ...moving, [key]: OTHER_VALUE[key] }).thickness, `${name} ${key}`).not.toEqual(
+          computed(name, moving).thickness,
         );
     }
   });
 
   it('the flowing film reads its thickness, the time it is simulated to and every setting of its own, and none of the swirl', () => {
-    expect([...THICKNESS_FIELDS.flow.reads].sort()).toEqual(
+    expect([...fieldReads('flow')].sort()).toEqual(
       [
         'thicknessNm',
         'timeSeconds',
