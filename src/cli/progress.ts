@@ -57,7 +57,7 @@ export interface ProgressOptions {
 
 export interface ProgressReporter {
   /** `done` of the total is done: reported if the last report is at least `everyMs` old, or all is done (once). */
-  report(done: number): void;
+  readonly report: (done: number) => void;
 }
 
 /** A reporter on `stream`: one line redrawn on a terminal, a line per report elsewhere when asked, else silent. */
@@ -69,7 +69,7 @@ export function progressReporter(stream: ProgressStream, options: ProgressOption
   let last = -Infinity;
   let finished = false;
   return {
-    report(done) {
+    report: (done) => {
       if (finished) return;
       const t = now();
       finished = done >= options.total;

@@ -109,7 +109,10 @@ describe('film command', () => {
     const written: string[] = [];
     runFilmCommand(['--grid', '4', '--seconds', '0.1'], { isTTY: true, write: (text: string) => written.push(text) });
     expect(written.every((text) => text.startsWith('\r'))).toBe(true);
-    expect(written.at(-1)).toMatch(/^\rfilm: film seconds 0\.10\/0\.10 \(100%\), done in \d+:\d\d\x1b\[K\n$/);
+    // Each redraw ends by clearing the rest of the line (ESC [K); the last ends the line.
+    const last = written.at(-1)!;
+    expect(last).toMatch(/^\rfilm: film seconds 0\.10\/0\.10 \(100%\), done in \d+:\d\d/);
+    expect(last.endsWith('\u001b[K\n')).toBe(true);
   });
 });
 
