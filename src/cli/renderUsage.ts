@@ -3,7 +3,7 @@ import { DEMO_VIEW_SETTINGS } from '../settings/demoView.ts';
 import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
 import { PICTURE_OPTIONS, VIEW_FIELDS, expectedOf } from './renderOptions.ts';
 import { FRAME_MS, FRAME_MS_EXPECTED, TIME_LAPSE_EXPECTED } from './timeLapseOptions.ts';
-import { optionLines } from './usage.ts';
+import { optionLines } from './optionLines.ts';
 
 /** The view's options, one per schema row: its flag (the URL name in kebab case), label, range and the demo's default (demoView.ts). */
 const viewLines = optionLines(VIEW_PARAMETERS.map((row) => ({ ...row, defaultText: row.write(DEMO_VIEW_SETTINGS) })));

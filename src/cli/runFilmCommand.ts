@@ -9,6 +9,7 @@ import {
 } from '../physics/flow/flowParameters.ts';
 import { ParameterError, expectedNumber, isInDomain, type NumberDomain, rejectValue } from '../input/validate.ts';
 import { FILM_PARAMETERS } from '../settings/filmParameters.ts';
+import { optionLines } from './optionLines.ts';
 import { parseStrictNumber } from './parseStrictNumber.ts';
 import { type ProgressStream, progressReporter } from './progress.ts';
 import { readFlags, urlSpellings } from './readFlags.ts';
@@ -52,19 +53,22 @@ const FLAG_SPEC = {
   ]),
 };
 
-export const FILM_USAGE = [
-  'npm run --silent film -- [options] --seconds T [--json]',
-  'Simulates the soap film flowing on a bubble for T seconds of film time and prints one JSON object:',
-  '  seconds, steps, thetaDeg (0, 5, …, 180 from the top), thicknessNm (azimuthal mean at each θ),',
-  '  minNm, maxNm, volumeRelativeChange, surfactantRelativeChange, ruptured.',
-  'Options:',
-  `  --seconds T  film time to simulate, ${expectedNumber(FILM_SECONDS_DOMAIN)} (required)`,
-  ...PARAMETER_FLAGS.map(({ flag, label, row }) => `  --${flag}  ${label}: ${expectedFlowValue(row)}, default ${row.defaultValue}`),
-  '  --json  JSON output (the only format)',
-  '  --progress  film seconds done and the time left on stderr even when it is not a terminal (on a terminal, always)',
-  '  --help  this text',
-  '',
-].join('\n');
+/** `--help`: how to call the film command. */
+export const FILM_USAGE = `The flowing soap film of a bubble, simulated for T seconds of film time, as one JSON object:
+  seconds, steps, thetaDeg (0, 5, …, 180 from the top), thicknessNm (azimuthal mean at each θ),
+  minNm, maxNm, volumeRelativeChange, surfactantRelativeChange, ruptured.
+
+Usage: npm run --silent film -- [options] --seconds T [--json]
+
+  --seconds T           film time to simulate: ${expectedNumber(FILM_SECONDS_DOMAIN)} (required)
+${optionLines(PARAMETER_FLAGS.map(({ flag, label, row }) => ({ flag, label, expected: expectedFlowValue(row), defaultText: String(row.defaultValue) })))}
+  --json                JSON output (the only format)
+  --progress            film seconds done and the time left on stderr where it is not a terminal
+                        (on a terminal always, one line redrawn)
+  --help                this text
+
+Bad input: exit status 2, one line on stderr naming the option, nothing on stdout.
+`;
 
 export interface FilmCommandResult {
   readonly stdout: string;

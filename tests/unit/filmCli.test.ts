@@ -92,7 +92,7 @@ describe('film command', () => {
     expect(PARAMETER_FLAGS.map((p) => p.flag)).toEqual(flags);
     for (const flag of [...flags, 'seconds', 'json', 'progress']) expect(r.stdout).toContain(`--${flag} `);
     // The label is the schema's, written once (the catalogue's English).
-    expect(r.stdout).toContain('--radius  bubble radius (mm): a number in [10, 100] mm, default 40');
+    expect(r.stdout).toContain('  --radius              bubble radius (mm): a number in [10, 100] mm (40)\n');
   });
   it('reports film seconds done of the total and the time left on stderr when asked (--progress), and only then off a terminal', () => {
     const lines: string[] = [];
