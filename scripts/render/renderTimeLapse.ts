@@ -21,14 +21,24 @@ export interface RenderedTimeLapse {
   readonly ms: number;
 }
 
-export async function renderTimeLapse(lapse: TimeLapse, launch: ChromiumLaunchOptions): Promise<RenderedTimeLapse> {
+/** Renders the time-lapse, `onFrame` told the frames captured so far (0 before the first) as each is. */
+export async function renderTimeLapse(
+  lapse: TimeLapse,
+  launch: ChromiumLaunchOptions,
+  onFrame: (captured: number) => void = () => undefined,
+): Promise<RenderedTimeLapse> {
   const started = performance.now();
   const [first] = lapse.frames;
   if (!first) throw new Error('a time-lapse has at least one frame');
   const pngs = await withDemo(launch, (browser, base) =>
     withViewPage(browser, first, async (page) => {
+      onFrame(0);
       const captured = [await capture(page, base, first)];
-      for (const timeSeconds of lapse.timesS.slice(1)) captured.push(await captureAtTime(page, timeSeconds));
+      onFrame(captured.length);
+      for (const timeSeconds of lapse.timesS.slice(1)) {
+        captured.push(await captureAtTime(page, timeSeconds));
+        onFrame(captured.length);
+      }
       return captured;
     }),
   );

@@ -74,19 +74,15 @@ export interface CaseFlag {
 }
 
 /** The case fields the view's parameter schema also has: their flag, label and domain come from its rows. */
-const SHARED_FLAGS: readonly CaseFlag[] = FILM_PARAMETERS.flatMap((row) =>
-  row.cli === null
-    ? []
-    : [
-        {
-          flag: row.cli,
-          field: row.key as CaseFlag['field'],
-          label: row.label,
-          // The colour tool takes absorbing media too (the view's schema does not yet).
-          expected: row.key in MEDIUM_FIELDS ? mediumExpected(MEDIUM_FIELDS[row.key as MediumField].role) : row.expected,
-          defaultText: row.key in NUMBER_FIELDS ? String(NUMBER_FIELDS[row.key as NumberField].fallback) : row.defaultText,
-        },
-      ],
+const SHARED_FLAGS: readonly CaseFlag[] = FILM_PARAMETERS.filter((row) => (CASE_FIELDS as readonly string[]).includes(row.key)).map(
+  (row) => ({
+    flag: row.flag,
+    field: row.key as CaseFlag['field'],
+    label: row.label,
+    // The colour tool takes absorbing media too (the view's schema does not yet).
+    expected: row.key in MEDIUM_FIELDS ? mediumExpected(MEDIUM_FIELDS[row.key as MediumField].role) : row.expected,
+    defaultText: row.key in NUMBER_FIELDS ? String(NUMBER_FIELDS[row.key as NumberField].fallback) : row.defaultText,
+  }),
 );
 
 /** The colour tool's case flags: the shared ones, then its own. */

@@ -17,7 +17,7 @@ import {
 } from './colorCase.ts';
 import { CELL_HEIGHT_2D_PX, STRIP_HEIGHT_PX, checkChartSize } from './chartLayout.ts';
 import { parseStrictNumber } from './parseStrictNumber.ts';
-import { readFlags } from './readFlags.ts';
+import { readFlags, urlSpellings } from './readFlags.ts';
 import { parseColonRange, parseRange } from './tableValues.ts';
 
 const MODE_FLAGS = ['cases', 'from', 'to', 'step', 'angles', 'format', 'gamut', 'out', 'height'] as const;
@@ -138,7 +138,7 @@ function chartCommand(flags: Map<Flag, string>, format: ChartFormat, gamut: Gamu
 
 /** Flag name → raw text, or 'help'. Rejects unknown and repeated flags and positionals. */
 function readColorFlags(argv: readonly string[]): Map<Flag, string> | 'help' {
-  const { values, switches } = readFlags(argv, VALUE_FLAGS, ['help']);
+  const { values, switches } = readFlags(argv, { values: VALUE_FLAGS, switches: ['help'], spellings: urlSpellings(VALUE_FLAGS) });
   return switches.has('help') ? 'help' : values;
 }
 

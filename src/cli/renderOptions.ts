@@ -1,8 +1,8 @@
-import { parseArgs } from 'node:util';
 import { parameterNamed, readParameter, settingsToQuery } from '../settings/settingsQuery.ts';
 import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 import { DEMO_VIEW_SETTINGS } from '../settings/demoView.ts';
 import { parseDecimal, describeValue, isInDomain, ParameterError, rejectValue } from '../input/validate.ts';
+import { readFlags, urlSpellings } from './readFlags.ts';
 import { mediumFromJson, mediumText } from '../physics/medium.ts';
 import { parseJsonArray } from './parseJsonArray.ts';
 import { type TimeLapseFormat, checkTimeLapseSize, frameMs, timeLapseFormat, timeLapseTimes } from './timeLapseOptions.ts';
@@ -31,10 +31,20 @@ export const PICTURE_OPTIONS = {
 type PictureNumber = keyof typeof PICTURE_OPTIONS;
 const PICTURE_NUMBERS = Object.keys(PICTURE_OPTIONS) as PictureNumber[];
 
-/** What a view (a command line or one entry of a cases file) may set: the picture's options and the schema's parameters. */
+/**
+ * What a view may set: the picture's options and the schema's parameters, these by their URL names
+ * (as a cases file writes them; the command line's flags are the same names in kebab case).
+ */
 export const VIEW_FIELDS: readonly string[] = ['out', ...PICTURE_NUMBERS, 'plots', ...VIEW_PARAMETERS.map((row) => row.url)];
-const COMMAND_ONLY = ['cases', 'time-lapse', 'frame-ms', 'help'];
-const clash = [...VIEW_FIELDS, ...COMMAND_ONLY].find((name, i, all) => all.indexOf(name) !== i);
+
+/** A view's field as the command line spells it: `--thickness-range` for `thicknessRange`. */
+export const flagOfField = (name: string): string => `--${parameterNamed(name)?.flag ?? name}`;
+
+/** The command line's value flags and switches: the view's fields, and the command's own. */
+const VALUE_FLAGS = ['out', ...PICTURE_NUMBERS, ...VIEW_PARAMETERS.map((row) => row.flag), 'cases', 'time-lapse', 'frame-ms'];
+const FLAG_SPEC = { values: VALUE_FLAGS, switches: ['plots', 'progress', 'help'], spellings: urlSpellings(VALUE_FLAGS) };
+const FIELD_OF_FLAG = new Map(VIEW_PARAMETERS.map((row) => [row.flag, row.url]));
+const clash = [...VALUE_FLAGS, ...FLAG_SPEC.switches].find((name, i, all) => all.indexOf(name) !== i);
 if (clash) throw new Error(`render: the option --${clash} is both a view parameter and one of the picture's options`);
 
 const expectedPictureNumber = (name: PictureNumber): string => {
@@ -50,17 +60,19 @@ export function expectedOf(name: string): string {
   return parameterNamed(name)!.expected;
 }
 
+/** What the command renders, and whether it reports progress where stderr is not a terminal (`--progress`). */
 export type RenderCommand =
   | { readonly kind: 'help' }
-  | { readonly kind: 'views'; readonly views: readonly RenderView[] }
+  | { readonly kind: 'views'; readonly views: readonly RenderView[]; readonly progress: boolean }
   /** `--cases FILE`: the file's views, each over `defaults` (the command line's other options). */
-  | { readonly kind: 'casesFile'; readonly path: string; readonly defaults: RawView }
+  | { readonly kind: 'casesFile'; readonly path: string; readonly defaults: RawView; readonly progress: boolean }
   /**
    * `--time-lapse START:END:STEP`: one animation written to `out`, frame i the view frozen at
    * `timesS[i]` (its `frames[i]`, animate 0), each shown for `frameMs`.
    */
   | {
       readonly kind: 'timeLapse';
+      readonly progress: boolean;
       readonly out: string;
       readonly format: TimeLapseFormat;
       readonly timesS: readonly number[];
@@ -68,7 +80,9 @@ export type RenderCommand =
       readonly frameMs: number;
     };
 
-/** A view's fields as given: text from the command line, JSON values from a cases file. */
+type TimeLapseCommand = Extract<RenderCommand, { kind: 'timeLapse' }>;
+
+/** A view's fields as given (by their URL names): text from the command line, JSON values from a cases file. */
 type RawView = ReadonlyMap<string, unknown>;
 
 /**
@@ -76,28 +90,12 @@ type RawView = ReadonlyMap<string, unknown>;
  * first bad option and what it accepts. The view's options are the schema's rows, read as the URL reads them.
  */
 export function parseRenderCommandLine(argv: readonly string[]): RenderCommand {
-  const options = Object.fromEntries<{ type: 'string' | 'boolean' }>(
-    [...VIEW_FIELDS, ...COMMAND_ONLY].map((name) => [name, { type: name === 'plots' || name === 'help' ? 'boolean' : 'string' }]),
-  );
-  const { tokens } = parseArgs({ args: [...argv], options, strict: false, allowPositionals: true, tokens: true });
-  const given = new Map<string, unknown>();
-  for (const token of tokens) {
-    if (token.kind !== 'option') {
-      rejectValue('argument', token.kind === 'positional' ? token.value : '--', 'only options, each --name value (see --help)');
-    }
-    const flag = `--${token.name}`;
-    if (!(token.name in options)) {
-      const all = Object.keys(options).map((name) => `--${name}`);
-      throw new ParameterError(token.rawName, `${describeValue(token.rawName)}: unknown option; expected one of ${all.join(', ')}`);
-    }
-    if (given.has(token.name)) throw new ParameterError(flag, `${flag}: given more than once; expected it at most once`);
-    const isSwitch = options[token.name]!.type === 'boolean';
-    if (isSwitch && token.value !== undefined) rejectValue(flag, token.value, 'no value');
-    // A value option with nothing after it reads as an empty value, which every check refuses.
-    given.set(token.name, isSwitch ? true : (token.value ?? ''));
-  }
-  if (given.has('help')) return { kind: 'help' };
-  const flagName = (name: string) => `--${name}`;
+  const { values, switches } = readFlags(argv, FLAG_SPEC);
+  if (switches.has('help')) return { kind: 'help' };
+  const progress = switches.has('progress');
+  // The view's fields by their URL names, as a cases file gives them.
+  const given = new Map<string, unknown>([...values].map(([flag, text]) => [FIELD_OF_FLAG.get(flag) ?? flag, text]));
+  if (switches.has('plots')) given.set('plots', true);
   if (given.has('cases')) {
     const lapseFlag = ['time-lapse', 'frame-ms'].find((name) => given.has(name));
     if (lapseFlag)
@@ -106,15 +104,15 @@ export function parseRenderCommandLine(argv: readonly string[]): RenderCommand {
     if (given.has('out')) throw new ParameterError('--out', '--out: not allowed with --cases (each view in the file names its own out)');
     if (path === '') return rejectValue('--cases', path, 'the path of a JSON file');
     const defaults = new Map(Object.entries(rest));
-    readView(defaults, flagName, false); // the options every view shares are checked before the file is read
-    return { kind: 'casesFile', path, defaults };
+    readView(defaults, flagOfField, false); // the options every view shares are checked before the file is read
+    return { kind: 'casesFile', path, defaults, progress };
   }
-  if (given.has('time-lapse') || given.has('frame-ms')) return timeLapseCommand(given, flagName);
-  return { kind: 'views', views: [readView(given, flagName, true)] };
+  if (given.has('time-lapse') || given.has('frame-ms')) return { ...timeLapseCommand(given), progress };
+  return { kind: 'views', views: [readView(given, flagOfField, true)], progress };
 }
 
 /** A time-lapse: the view of the other options, checked, then frozen (animate 0) at each time of `--time-lapse`. */
-function timeLapseCommand(given: RawView, flagName: (name: string) => string): RenderCommand {
+function timeLapseCommand(given: RawView): Omit<TimeLapseCommand, 'progress'> {
   const { 'time-lapse': lapse, 'frame-ms': ms, ...rest } = Object.fromEntries(given) as { 'time-lapse'?: string; 'frame-ms'?: string };
   if (lapse === undefined) {
     throw new ParameterError('--frame-ms', '--frame-ms: not allowed without --time-lapse (it is the time each frame is shown)');
@@ -126,12 +124,12 @@ function timeLapseCommand(given: RawView, flagName: (name: string) => string): R
     throw new ParameterError('--time-lapse', '--time-lapse: not allowed with --animate 1 (each frame is a frozen view, animate 0)');
   }
   const fields = new Map(Object.entries(rest));
-  const { out, widthPx, heightPx, scale } = readView(fields, flagName, true);
+  const { out, widthPx, heightPx, scale } = readView(fields, flagOfField, true);
   const format = timeLapseFormat(out);
   const timesS = timeLapseTimes(lapse);
   checkTimeLapseSize(timesS.length, Math.round(widthPx * scale) * Math.round(heightPx * scale));
   const shownMs = frameMs(ms);
-  const frames = timesS.map((t) => readView(new Map([...fields, ['animate', '0'], ['time', String(t)]]), flagName, true));
+  const frames = timesS.map((t) => readView(new Map([...fields, ['animate', '0'], ['time', String(t)]]), flagOfField, true));
   return { kind: 'timeLapse', out, format, timesS, frames, frameMs: shownMs };
 }
 
@@ -153,7 +151,7 @@ export function parseRenderCases(text: string, fileName: string, defaults: RawVi
         throw new ParameterError(unknown, `${describeValue(unknown)}: unknown field; expected one of ${VIEW_FIELDS.join(', ')}`);
       }
       // A field is named as the case writes it, or as the command line does where the value came from there.
-      const field = (name: string) => (!fields.has(name) && defaults.has(name) ? `--${name}` : name);
+      const field = (name: string) => (!fields.has(name) && defaults.has(name) ? flagOfField(name) : name);
       const view = readView(new Map([...defaults, ...fields]), field, true);
       const earlier = outs.get(view.out);
       if (earlier !== undefined) rejectValue('out', view.out, `a file no other view writes (case at index ${earlier} does)`);

@@ -3,19 +3,8 @@ import { MEDIUM_NAMES, namedRangeNm, namedSource } from '../physics/namedMedia.t
 import { CASE_FIELDS, CASE_FLAGS, MAX_WAVELENGTHS } from './colorCase.ts';
 import { CELL_HEIGHT_2D_PX, MAX_CHART_COLUMNS, MAX_CHART_PIXELS, STRIP_HEIGHT_PX } from './chartLayout.ts';
 import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
+import { DESCRIPTION_COLUMN, optionLines } from './optionLines.ts';
 import { MAX_TABLE_ROWS } from './tableValues.ts';
-
-/** Where a flag's description starts. */
-const DESCRIPTION_COLUMN = 24;
-
-/** One line per flag: `--flag`, its label, what it accepts and its default (case flags here, view options in renderUsage.ts). */
-export const optionLines = (options: readonly { flag: string; label: string; expected: string; defaultText: string }[]): string =>
-  options
-    .map(
-      ({ flag, label, expected, defaultText }) =>
-        `  --${flag}`.padEnd(DESCRIPTION_COLUMN) + `${label}: ${expected}${defaultText ? ` (${defaultText})` : ''}`,
-    )
-    .join('\n');
 
 /** One line per named medium: its name, what it is and whose values, and where the source gives them. */
 const mediaLines = (): string =>

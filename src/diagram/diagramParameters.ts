@@ -6,7 +6,9 @@ import type { Catalogue, MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 import { FILM_PARAMETERS } from '../settings/filmParameters.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import { type ParameterRow, defaultsOf, filmIndexRow, numberRow } from '../settings/parameterRow.ts';
+import { type ParameterRow, defaultsOf } from '../settings/parameterRow.ts';
+import { filmIndexRow } from '../settings/textRows.ts';
+import { numberRow } from '../settings/valueRows.ts';
 
 /** What <thin-film-diagram> shows: one film at one wavelength. */
 export interface DiagramSettings {

@@ -4,11 +4,13 @@ import { FLOW_PARAMETERS, type FlowParameterKey } from '../physics/flow/flowPara
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
 import { layersRow } from './layersRow.ts';
-import { type ParameterRow, choiceRow, defaultsOf, flagRow, illuminantRow, mediumRow, numberRow } from './parameterRow.ts';
+import { type ParameterRow, defaultsOf } from './parameterRow.ts';
+import { illuminantRow, mediumRow } from './textRows.ts';
+import { choiceRow, flagRow, numberRow } from './valueRows.ts';
 
 type Row = ParameterRow<FilmSettings>;
 
-/** The FLOW_PARAMETERS row of a flow parameter. */
+/** The FLOW_PARAMETERS row of a flow parameter (a settings field of the same name, where the settings have it). */
 export const flowParameterRow = (key: FlowParameterKey) => FLOW_PARAMETERS.find((r) => r.key === key)!;
 
 /** The rows of the fields' own settings, as the fields declare them (FIELD_SETTINGS). */
@@ -22,21 +24,28 @@ const fieldRows = (): Row[] =>
 
 /**
  * The schema of what a rendered bubble depends on: one row per parameter, with its names (URL,
- * attribute, colour-tool flag), domain or choices, default (the default view: a swirling soap
+ * attribute, command-line flag), domain or choices, default (the default view: a swirling soap
  * bubble in daylight), label and panel control. The film's own domains are FILM_STACK_DOMAIN's;
  * the rows of the fields' own settings follow the thickness, as the fields declare them.
  */
 export const FILM_PARAMETERS: readonly Row[] = [
   choiceRow({ key: 'field', url: 'field' }, FIELDS, 'swirl', 'film'),
-  numberRow({ key: 'thicknessNm', url: 'thickness', cli: 'thickness' }, FILM_STACK_DOMAIN.thicknessNm, 550, 'film', 1),
+  // The flowing film's mean thickness is this one: its default is the simulation's.
+  numberRow(
+    { key: 'thicknessNm', url: 'thickness' },
+    FILM_STACK_DOMAIN.thicknessNm,
+    flowParameterRow('thicknessNm').defaultValue,
+    'film',
+    1,
+  ),
   ...fieldRows(),
-  mediumRow({ key: 'nFilm', url: 'nFilm', cli: 'n-film' }, SOAP_FILM_IN_AIR.nFilm, 'film', 'film'),
-  layersRow({ key: 'layers', url: 'layers', cli: 'layers' }, 'film'),
-  numberRow({ key: 'nOutside', url: 'nOutside', cli: 'n-outside' }, FILM_STACK_DOMAIN.nOutside, SOAP_FILM_IN_AIR.nOutside, 'film', 0.01),
-  mediumRow({ key: 'nInside', url: 'nInside', cli: 'n-inside' }, SOAP_FILM_IN_AIR.nInside, 'film', 'inside'),
-  illuminantRow({ key: 'illuminant', url: 'illuminant', cli: 'illuminant' }, 'D65', 'light and colour'),
-  choiceRow({ key: 'polarization', url: 'polarization', cli: 'polarization' }, POLARIZATIONS, 'unpolarized', 'light and colour'),
-  choiceRow({ key: 'normalization', url: 'normalization', cli: 'normalization' }, NORMALIZATIONS, 'white', 'light and colour'),
+  mediumRow({ key: 'nFilm', url: 'nFilm' }, SOAP_FILM_IN_AIR.nFilm, 'film', 'film'),
+  layersRow({ key: 'layers', url: 'layers' }, 'film'),
+  numberRow({ key: 'nOutside', url: 'nOutside' }, FILM_STACK_DOMAIN.nOutside, SOAP_FILM_IN_AIR.nOutside, 'film', 0.01),
+  mediumRow({ key: 'nInside', url: 'nInside' }, SOAP_FILM_IN_AIR.nInside, 'film', 'inside'),
+  illuminantRow({ key: 'illuminant', url: 'illuminant' }, 'D65', 'light and colour'),
+  choiceRow({ key: 'polarization', url: 'polarization' }, POLARIZATIONS, 'unpolarized', 'light and colour'),
+  choiceRow({ key: 'normalization', url: 'normalization' }, NORMALIZATIONS, 'white', 'light and colour'),
   choiceRow({ key: 'space', url: 'space' }, SPACES, 'srgb', 'light and colour'),
   numberRow({ key: 'exposure', url: 'exposure' }, { min: 0, max: 100, unit: '' }, 1, 'light and colour', 0.01),
   choiceRow({ key: 'tonemap', url: 'tonemap' }, TONE_MAPPINGS, 'auto', 'light and colour'),

@@ -1,6 +1,7 @@
 import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN } from '../physics/filmLayers.ts';
 import { LAYERS_EXPECTED, layersText, readLayers } from '../physics/layersText.ts';
-import { type Expectation, type PanelFolder, type ParameterRow, textRow } from './parameterRow.ts';
+import type { Expectation, PanelFolder, ParameterRow, RowNames } from './parameterRow.ts';
+import { textRow } from './textRows.ts';
 
 /**
  * The longest layers text the URL reads: every one of LAYERS_DOMAIN.count.max layers written out
@@ -24,10 +25,7 @@ const EXPECTS: Expectation = {
  * A stack of films (layersText.ts): `INDEX:THICKNESS` entries separated by `/`, groups `(…)*N`.
  * The empty text is the empty list, the default: no stack, the single film of the row `nFilm`.
  */
-export const layersRow = <S, K extends keyof S & string>(
-  n: { readonly key: K; readonly url: string; readonly cli?: string },
-  folder: PanelFolder | null,
-): ParameterRow<S> => ({
+export const layersRow = <S, K extends keyof S & string>(n: RowNames<S, K>, folder: PanelFolder | null): ParameterRow<S> => ({
   ...textRow<S, K, readonly FilmLayer[]>(n, [] as S[K] & readonly FilmLayer[], folder, {
     expected: LAYERS_EXPECTED,
     expects: EXPECTS,

@@ -1,7 +1,8 @@
 import { isInDomain, type NumberDomain, parseDecimal } from '../input/validate.ts';
 import { FILM_PARAMETERS, flowParameterRow } from './filmParameters.ts';
 import type { FilmSettings } from './filmSettings.ts';
-import { AUTO, type Auto, type ParameterRow, autoNumberRow, customRow, defaultsOf, flagRow } from './parameterRow.ts';
+import { AUTO, type Auto, type ParameterRow, customRow, defaultsOf } from './parameterRow.ts';
+import { autoNumberRow, flagRow } from './valueRows.ts';
 
 /**
  * The knobs a page may leave to its frame governor (docs/governor.md): `auto`, or a value a user

@@ -41,6 +41,7 @@ describe('render command: exit statuses', () => {
         [['--time-lapse', '3:1:1', '--out', out], 'render: --time-lapse: "3:1:1" is not allowed; expected START:END:STEP'],
         [['--time-lapse', '0:3:1', '--time', '1', '--out', out], 'render: --time-lapse: not allowed with --time'],
         [['--time-lapse', '0:3:1', '--out', join(dir, 'no-such-folder', 'life.png')], 'render: --out: '],
+        [['--thicknessRange', '600', '--out', out], 'render: --thicknessRange: unknown flag; it is spelt --thickness-range\n'],
       ];
       for (const [args, line] of runs) {
         const r = render(args);
@@ -51,7 +52,7 @@ describe('render command: exit statuses', () => {
       }
       expect(readdirSync(dir)).toEqual(['views.json']);
     },
-    SPAWN_TIMEOUT_MS * 7,
+    SPAWN_TIMEOUT_MS * 8,
   );
 
   it(
@@ -78,6 +79,9 @@ describe('render command: exit statuses', () => {
       const r = render(['--help']);
       expect(r.status).toBe(0);
       expect(r.stdout).toContain('--thickness           thickness (nm): a number in [0, 20000] nm (550)');
+      expect(r.stdout).toContain('--thickness-range     range (nm): a number in [0, 20000] nm (800)');
+      expect(r.stdout).toContain('--n-film              n film: ');
+      expect(r.stdout).toContain('--progress');
       expect(r.stdout).toContain('--probe');
       expect(r.stdout).toContain('--time-lapse START:END:STEP');
       expect(r.stdout).toContain('--frame-ms MS         how long each frame is shown: a whole number in [20, 10000] ms (100)');

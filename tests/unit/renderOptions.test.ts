@@ -35,17 +35,17 @@ function verdict(...args: string[]): { query: string } | { error: string } {
 
 describe('render options: the URL parameters', () => {
   for (const row of VIEW_PARAMETERS) {
-    it(`--${row.url} takes and refuses what ?${row.url}= does`, () => {
+    it(`--${row.flag} takes and refuses what ?${row.url}= does`, () => {
       for (const text of [row.defaultText, row.write(DEMO_VIEW_SETTINGS), ...CANDIDATES]) {
         const url = parseSettings(new URLSearchParams([[row.url, text]]).toString(), DEMO_VIEW_SETTINGS);
-        const got = verdict(`--${row.url}`, text);
+        const got = verdict(`--${row.flag}`, text);
         if (url.errors.length === 0)
-          expect(got, `--${row.url} ${text.slice(0, 40)}`).toEqual({ query: settingsToQuery(url.settings, DEMO_VIEW_SETTINGS) });
+          expect(got, `--${row.flag} ${text.slice(0, 40)}`).toEqual({ query: settingsToQuery(url.settings, DEMO_VIEW_SETTINGS) });
         else {
-          expect(got, `--${row.url} ${text.slice(0, 40)}`).toHaveProperty('error');
+          expect(got, `--${row.flag} ${text.slice(0, 40)}`).toHaveProperty('error');
           const { error } = got as { error: string };
           // One line naming the option and what it accepts (the URL's own words for the range).
-          expect(error.startsWith(`--${row.url}: `)).toBe(true);
+          expect(error.startsWith(`--${row.flag}: `)).toBe(true);
           expect(error).toContain(row.expected);
           expect(error).not.toMatch(/[\r\n]/);
         }
@@ -55,9 +55,25 @@ describe('render options: the URL parameters', () => {
 
   it("leaves every one of the demo's defaults out of the query, so no options is the demo's default view", () => {
     expect(verdict()).toEqual({ query: '' });
-    expect(verdict(...VIEW_PARAMETERS.flatMap((row) => [`--${row.url}`, row.write(DEMO_VIEW_SETTINGS)]))).toEqual({ query: '' });
+    expect(verdict(...VIEW_PARAMETERS.flatMap((row) => [`--${row.flag}`, row.write(DEMO_VIEW_SETTINGS)]))).toEqual({ query: '' });
     // The schema's own default (the element's swirl in the sky) is not the demo's: the query names it.
     expect(verdict('--field', 'swirl', '--env', 'sky')).toEqual({ query: 'field=swirl&env=sky' });
+  });
+
+  it("spells each option as the URL name in kebab case, and refuses the URL's camel case naming the option", () => {
+    expect(verdict('--thickness-range', '600', '--n-film', '1.4', '--wind-turn', '30')).toEqual({
+      query: 'thicknessRange=600&nFilm=1.4&windTurn=30',
+    });
+    for (const [old, flag] of [
+      ['--thicknessRange', '--thickness-range'],
+      ['--nFilm', '--n-film'],
+      ['--nOutside', '--n-outside'],
+      ['--envRotation', '--env-rotation'],
+      ['--simSpeed', '--sim-speed'],
+      ['--pixelRatio', '--pixel-ratio'],
+    ]) {
+      expect(verdict(old!, '1')).toEqual({ error: `${old}: unknown flag; it is spelt ${flag}` });
+    }
   });
 });
 
@@ -67,7 +83,9 @@ describe('render options: the picture', () => {
     expect(command).toEqual({
       kind: 'views',
       views: [{ out: 'a.png', widthPx: 640, heightPx: 480, scale: 1, plots: false, query: '' } satisfies RenderView],
+      progress: false,
     });
+    expect(parseRenderCommandLine(['--out', 'a.png', '--progress'])).toMatchObject({ kind: 'views', progress: true });
   });
 
   it('reads --width, --height, --scale and --plots', () => {
@@ -82,9 +100,10 @@ describe('render options: the picture', () => {
     [['--scale', '2.01'], '--scale: "2.01" is not allowed; expected a number in [1, 2]'],
     [['--scale', 'NaN'], '--scale: "NaN" is not allowed; expected a number in [1, 2]'],
     [['--plots=1'], '--plots: "1" is not allowed; expected no value'],
-    [['--bogus', '1'], '"--bogus": unknown option; expected one of --out, --width'],
+    [['--bogus', '1'], '"--bogus": unknown flag; expected one of --out, --width'],
+    [['--progress=1'], '--progress: "1" is not allowed; expected no value'],
     [['--thickness', '1', '--thickness', '2'], '--thickness: given more than once; expected it at most once'],
-    [['stray'], 'argument: "stray" is not allowed; expected only options'],
+    [['stray'], 'argument: "stray" is not allowed; expected only flags'],
   ];
   for (const [args, message] of refusals) {
     it(`refuses ${args.join(' ')}`, () => {
@@ -167,6 +186,9 @@ describe('render options: --cases', () => {
   it('refuses --out beside --cases, and checks the shared options before the file is read', () => {
     expect(() => parseRenderCommandLine(['--cases', 'v.json', '--out', 'a.png'])).toThrow('--out: not allowed with --cases');
     expect(() => parseRenderCommandLine(['--cases', 'v.json', '--mode', 'fast'])).toThrow('--mode: "fast" is not allowed');
+    // A shared option is named as the command line spells it; the same field in a case, as the case does.
+    expect(() => cases([{ out: 'a.png' }], '--thickness-range', '-1')).toThrow('--thickness-range: "-1" is not allowed');
+    expect(() => cases([{ out: 'a.png', thicknessRange: -1 }])).toThrow('case at index 0: thicknessRange: -1 is not allowed');
   });
 });
 

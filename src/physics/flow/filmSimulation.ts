@@ -173,8 +173,11 @@ function evaporate(state: FilmState, loss: number): void {
   for (let c = 0; c < state.eta.length; c++) if (state.intact[c] === 1) state.eta[c] = Math.max(0, state.eta[c]! - loss);
 }
 
-/** Runs as many whole steps as `seconds` (plus what was left over last time) holds; returns how many. */
-export function advanceFilm(sim: FilmSimulation, seconds: number): number {
+/**
+ * Runs as many whole steps as `seconds` (plus what was left over last time) holds, `onStep` called
+ * after each (a long run's progress); returns how many.
+ */
+export function advanceFilm(sim: FilmSimulation, seconds: number, onStep?: () => void): number {
   const { state, stepSeconds } = sim;
   state.pendingSeconds += seconds;
   let taken = 0;
@@ -183,6 +186,7 @@ export function advanceFilm(sim: FilmSimulation, seconds: number): number {
     stepFilm(sim);
     state.pendingSeconds -= stepSeconds;
     taken++;
+    onStep?.();
   }
   state.pendingSeconds = Math.max(0, state.pendingSeconds);
   return taken;

@@ -2,15 +2,13 @@ import { FILM_STACK_DOMAIN } from '../filmReflectance.ts';
 import { ParameterError, describeValue, expectedNumber, isInDomain, type NumberDomain } from '../../input/validate.ts';
 
 /**
- * Every parameter of the film-flow simulation in one table: its key, its command-line flag, its
- * domain, its default and whether it must be an integer. Validation, the command line's usage and
- * (later) the settings schema derive from this table; nothing else writes a range or a default.
+ * Every parameter of the film-flow simulation in one table: its key, its domain, its default and
+ * whether it must be an integer. Validation and the settings schema (src/settings/filmParameters.ts,
+ * whence the names, labels and flags of the page and the command line) derive from this table;
+ * nothing else writes a range or a default.
  */
 export interface FlowParameterRow {
   readonly key: FlowParameterKey;
-  /** The command-line flag, without the leading "--"; null for what only the app uses. */
-  readonly flag: string | null;
-  readonly label: string;
   readonly domain: NumberDomain;
   readonly defaultValue: number;
   readonly integer: boolean;
@@ -38,29 +36,27 @@ export type FlowParameters = Readonly<Record<FlowParameterKey, number>>;
  */
 const THICKNESS_DOMAIN: NumberDomain = { min: 1, max: FILM_STACK_DOMAIN.thicknessNm.max, unit: FILM_STACK_DOMAIN.thicknessNm.unit };
 
-const row = (
-  key: FlowParameterKey,
-  flag: string | null,
-  label: string,
-  domain: NumberDomain,
-  defaultValue: number,
-  integer = false,
-): FlowParameterRow => ({ key, flag, label, domain, defaultValue, integer });
+const row = (key: FlowParameterKey, domain: NumberDomain, defaultValue: number, integer = false): FlowParameterRow => ({
+  key,
+  domain,
+  defaultValue,
+  integer,
+});
 
 export const FLOW_PARAMETERS: readonly FlowParameterRow[] = [
-  row('radiusMm', 'radius-mm', 'bubble radius (mm)', { min: 10, max: 100, unit: 'mm' }, 40),
-  row('thicknessNm', 'thickness-nm', 'mean thickness (nm)', THICKNESS_DOMAIN, 550),
+  row('radiusMm', { min: 10, max: 100, unit: 'mm' }, 40),
+  row('thicknessNm', THICKNESS_DOMAIN, 550),
   // 6.67e-8 mol/m²: the surface excess of a soap solution near its critical micelle concentration.
-  row('surfactantMolM2', 'surfactant', 'surfactant Γ0 (mol/m²)', { min: 1e-8, max: 1e-6, unit: 'mol/m²' }, 6.67e-8),
-  row('evaporationNmS', 'evaporation', 'evaporation (nm/s)', { min: 0, max: 100, unit: 'nm/s' }, 0),
-  row('windMps', 'wind', 'wind (m/s)', { min: 0, max: 2, unit: 'm/s' }, 0),
+  row('surfactantMolM2', { min: 1e-8, max: 1e-6, unit: 'mol/m²' }, 6.67e-8),
+  row('evaporationNmS', { min: 0, max: 100, unit: 'nm/s' }, 0),
+  row('windMps', { min: 0, max: 2, unit: 'm/s' }, 0),
   // Up to a turn a second: a draught that veers faster than the film settles (~1 s) only stirs it.
-  row('windTurnDegS', 'wind-turn', 'wind turn (°/s)', { min: 0, max: 360, unit: 'degrees/s' }, 0),
-  row('seed', 'seed', 'perturbation seed', { min: 0, max: 2_147_483_647, unit: '' }, 0, true),
-  row('ruptureThicknessNm', 'rupture-nm', 'rupture thickness (nm)', { min: 0, max: 100, unit: 'nm' }, 10),
-  row('rimSpeedFactor', 'rim-speed-factor', 'rim speed / Taylor–Culick', { min: 0.01, max: 1, unit: '' }, 1),
-  row('gridN', 'grid', 'cells per cube face side', { min: 4, max: 256, unit: '' }, 128, true),
-  row('simSpeed', null, 'simulation speed (× real time)', { min: 0, max: 10, unit: '' }, 1),
+  row('windTurnDegS', { min: 0, max: 360, unit: 'degrees/s' }, 0),
+  row('seed', { min: 0, max: 2_147_483_647, unit: '' }, 0, true),
+  row('ruptureThicknessNm', { min: 0, max: 100, unit: 'nm' }, 10),
+  row('rimSpeedFactor', { min: 0.01, max: 1, unit: '' }, 1),
+  row('gridN', { min: 4, max: 256, unit: '' }, 128, true),
+  row('simSpeed', { min: 0, max: 10, unit: '' }, 1),
 ];
 
 export const DEFAULT_FLOW_PARAMETERS: FlowParameters = Object.fromEntries(

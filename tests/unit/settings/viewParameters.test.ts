@@ -2,16 +2,24 @@ import { describe, expect, it } from 'vitest';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS } from '../../../src/settings/viewParameters.ts';
 
 describe('the parameter schema', () => {
-  it('names each parameter once in the URL, as an attribute and in the colour tool', () => {
-    for (const names of [
-      VIEW_PARAMETERS.map((r) => r.url),
-      VIEW_PARAMETERS.map((r) => r.attribute),
-      VIEW_PARAMETERS.flatMap((r) => r.cli ?? []),
-    ]) {
+  it('names each parameter once in the URL, as an attribute and as a flag of the command-line tools', () => {
+    for (const names of [VIEW_PARAMETERS.map((r) => r.url), VIEW_PARAMETERS.map((r) => r.attribute), VIEW_PARAMETERS.map((r) => r.flag)]) {
       expect(new Set(names).size).toBe(names.length);
     }
     // HTML lower-cases attribute names, so an observed attribute must be written in lower case.
     for (const row of VIEW_PARAMETERS) expect(row.attribute).toBe(row.attribute.toLowerCase());
+  });
+
+  it('spells each flag as its URL name in kebab case: lower-case words joined by hyphens, camel case back', () => {
+    const byUrl = Object.fromEntries(VIEW_PARAMETERS.map((r) => [r.url, r.flag]));
+    expect(byUrl).toMatchObject({ thickness: 'thickness', thicknessRange: 'thickness-range', nFilm: 'n-film', windTurn: 'wind-turn' });
+    for (const row of VIEW_PARAMETERS) {
+      expect(row.flag, row.url).toMatch(/^[a-z0-9]+(-[a-z0-9]+)*$/);
+      expect(
+        row.flag.replace(/-([a-z])/g, (_, c: string) => c.toUpperCase()),
+        row.url,
+      ).toBe(row.url);
+    }
   });
 
   it('reads each default back from the text the URL writes for it', () => {
