@@ -72,9 +72,10 @@ function drawAndWait(view: BubbleView): void {
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, readBack);
 }
 
-/** The view's next frame, timed (ms), the animated field moving 1/60 s a frame as in the demo's loop. */
+/** Draws the view's next frame and returns its time (ms). */
 type TimedFrame = () => number;
 
+/** The view's frames from `startSeconds` on, the animated field moving 1/60 s a frame as in the demo's loop. */
 function animatedFrames(view: BubbleView, startSeconds: number): TimedFrame {
   let time = startSeconds;
   return () => {
