@@ -2,7 +2,7 @@
 import type { BenchResults } from './benchResults.ts';
 import { ELEMENT_BUNDLE } from './bundleSize.ts';
 import { defaultViewMarkdown } from './defaultView.ts';
-import { LONG_TASK_MS, PANEL_CHANGES } from './demoPage.ts';
+import { LONG_TASK_MS, PANEL_CHANGES } from './panelChanges.ts';
 import { flowSpeedMarkdown } from './flowSpeed.ts';
 import { referenceSpeedMarkdown } from './referenceSpeed.ts';
 import { MATERIALS_ROW } from './rows.ts';

@@ -1,14 +1,13 @@
 /**
  * The built demo page (vite preview of dist): its first frame, and how many frames it draws and
- * tables it builds when nothing moves, while the swirl animates, and while hidden.
+ * tables it builds when nothing moves, while the swirl animates, and while hidden; what its panel
+ * changes cost (panelChanges.ts).
  */
 import type { Browser, Page } from '@playwright/test';
 import { FRAME_MARKS } from '../../src/pages/frameMarks.ts';
 import type { BenchPlan } from './benchPlan.ts';
-import { EN } from '../../src/i18n/en.ts';
-import { labelKey } from '../../src/settings/parameterRow.ts';
-import { TABLE_PASS_NAME } from '../../src/film/keptPasses.ts';
 import { openPage } from './openPage.ts';
+import { type PanelChangeFigures, panelChanges } from './panelChanges.ts';
 
 type DemoPlan = BenchPlan['demo'];
 
@@ -27,37 +26,6 @@ export interface DemoPageFigures {
   /** whether the GPU compiles in parallel (KHR_parallel_shader_compile): where it does, a change must leave no long task */
   readonly parallelCompile: boolean;
 }
-
-/** One panel change made there, back, there again and back again in a still page. */
-export interface PanelChangeFigures {
-  /** programs linked by the first change there, by the first way back (to settings already shown), and by the second change there and back */
-  readonly programs: { readonly first: number; readonly back: number; readonly second: number };
-  /** the main thread's long tasks (over 50 ms) from the input to a frame after the first one in full, over all four: how many, and the longest (ms, 0 for none) */
-  readonly longTasks: { readonly count: number; readonly maxMs: number };
-  /** the table's texels drawn by the first change there (coarse table and bands) */
-  readonly texels: number;
-  /** input → the first frame shown in full, plots included, median of the four, ms */
-  readonly fullMs: number;
-}
-
-/** The English panel's name of a setting's controller. */
-const named = (key: string): string => EN[labelKey(key)];
-
-/** Panel changes as a user makes them: [what, the controller's name in the English panel, value, value back]. */
-export const PANEL_CHANGES: readonly (readonly [string, string, string, string])[] = [
-  ['film medium', EN['panel.filmMaterial'], 'water', 'constant'],
-  // air (n 1) → gold (a tabulated metal: the table's dispersive bins, an opaque inside) and back
-  ['inside medium', EN['panel.insideMedium'], 'Au', 'constant'],
-  ['n film', named('nFilm'), '1.4', '1.33'],
-  ['light', named('illuminant'), 'D93', 'D65'],
-  ['polarisation', named('polarization'), 's', 'unpolarized'],
-  ['range', named('thicknessRangeNm'), '1200', '800'],
-  ['field', named('field'), 'drainage', 'swirl'],
-  ['evaluation', named('mode'), 'fourier', 'table'],
-];
-
-/** A long task, as the Long Tasks API counts one: a task of the main thread over 50 ms. */
-export const LONG_TASK_MS = 50;
 
 /**
  * From before any script runs: a count of the programs the page links (every WebGL2 context's
@@ -110,83 +78,6 @@ performance.mark = function (name, options) {
 };
 `;
 
-/**
- * Each change through the lil-gui panel (a number box's input event, or a list's change event) in
- * a still page: there, back, there again and back again, each waited for until a frame is shown in
- * full with the plots drawn and `windowMs` more have passed; what each cost in programs linked,
- * long tasks and texels. The table's texels are counted at the view's renderer: each draw of the
- * table pass (its material named TABLE_PASS_NAME) fills its target's scissor box.
- */
-async function panelChanges(page: Page, how: DemoPlan): Promise<DemoPageFigures['panel']> {
-  return page.evaluate(
-    async ([changes, windowMs, longTaskMs, tablePassName]) => {
-      type Counters = { programsLinked: number; longTasks: [number, number][] };
-      type Drawn = { material?: { name?: string } };
-      type Renderer = { render(drawn: Drawn, camera: unknown): void; getRenderTarget(): { scissor: { z: number; w: number } } | null };
-      const w = window as unknown as Counters & { bubbleView: { coarse: boolean; renderer: Renderer } };
-      const view = w.bubbleView;
-      let texelsDrawn = 0;
-      const render = view.renderer.render.bind(view.renderer);
-      view.renderer.render = (drawn, camera) => {
-        const target = view.renderer.getRenderTarget();
-        if (target && drawn.material?.name === tablePassName) texelsDrawn += target.scissor.z * target.scissor.w;
-        render(drawn, camera);
-      };
-      const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)]!;
-      const wait = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
-      const controller = (name: string) => {
-        const found = [...document.querySelectorAll<HTMLElement>('.lil-controller')].find(
-          (c) => c.querySelector('.lil-name')!.textContent === name,
-        );
-        if (!found) throw new Error(`the panel has no controller named ${name}`);
-        return found;
-      };
-      const set = (name: string, value: string) => {
-        const c = controller(name);
-        const select = c.querySelector('select');
-        if (select) {
-          select.value = value;
-          select.dispatchEvent(new Event('change', { bubbles: true }));
-        } else {
-          const input = c.querySelector('input')!;
-          input.value = value;
-          input.dispatchEvent(new Event('input', { bubbles: true }));
-        }
-      };
-      /** [programs linked, long tasks' durations, texels drawn, ms to the first frame shown in full]. */
-      const measure = async (name: string, value: string): Promise<[number, number[], number, number]> => {
-        const programs = w.programsLinked;
-        const texels = texelsDrawn;
-        const inputAt = performance.now();
-        let fullAt = Infinity;
-        const tick = (t: number) => {
-          if (t > inputAt && !view.coarse) fullAt = t;
-          else requestAnimationFrame(tick);
-        };
-        set(name, value);
-        requestAnimationFrame(tick);
-        while (fullAt === Infinity || !document.querySelector('.tfb-plots[data-probe]')) await wait(20);
-        await wait(windowMs);
-        const tasks = w.longTasks.filter(([start, ms]) => start + ms > inputAt && ms > longTaskMs).map(([, ms]) => ms);
-        return [w.programsLinked - programs, tasks, texelsDrawn - texels, fullAt - inputAt];
-      };
-      const figures = [];
-      for (const [, name, value, back] of changes) {
-        const runs = [await measure(name, value), await measure(name, back), await measure(name, value), await measure(name, back)];
-        const tasks = runs.flatMap((r) => r[1]);
-        figures.push({
-          programs: { first: runs[0]![0], back: runs[1]![0], second: runs[2]![0] + runs[3]![0] },
-          longTasks: { count: tasks.length, maxMs: Math.max(0, ...tasks) },
-          texels: runs[0]![2],
-          fullMs: median(runs.map((r) => r[3])),
-        });
-      }
-      Reflect.deleteProperty(view.renderer, 'render');
-      return figures;
-    },
-    [PANEL_CHANGES, how.windowMs, LONG_TASK_MS, TABLE_PASS_NAME] as const,
-  );
-}
 export interface FrameCounts {
   readonly frames: number;
   readonly tableBuilds: number;
@@ -263,7 +154,7 @@ export async function demoPageFigures(browser: Browser, baseUrl: string, how: De
     ),
   );
   await still.page.locator('.lil-gui.lil-root > .lil-title').click(); // the panel starts closed on a small view
-  const panel = await panelChanges(still.page, how);
+  const panel = await panelChanges(still.page, how.windowMs);
   await still.page.close();
   const { page, firstFrameMs, firstCompleteFrameMs } = await openDemo(browser, `${baseUrl}/?${SWIRL_VIEW}`, how);
   const animating = await countOneSecond(page);

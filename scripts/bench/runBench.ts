@@ -5,7 +5,7 @@
  * A stage that throws is recorded and the run goes on; the caller reports it.
  */
 import { cpus, loadavg } from 'node:os';
-import { chromium } from '@playwright/test';
+import { type Browser, chromium } from '@playwright/test';
 import { createServer, preview } from 'vite';
 import type { Medium } from '../../src/physics/medium.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
@@ -25,7 +25,7 @@ import { Progress, type Stage, rowCost } from './progress.ts';
 import { referenceSpeed } from './referenceSpeed.ts';
 import { type BenchRow, FLOW_SPEED_ROW, MATERIALS_ROW } from './rows.ts';
 import type { MeasuredRow } from './rowsMarkdown.ts';
-import { runAtOnce } from './runAtOnce.ts';
+import { type LaneTask, runAtOnce } from './runAtOnce.ts';
 import { twinSpeed } from './twinSpeed.ts';
 
 const REFERENCE_STAGE = 'reference speed';
@@ -82,10 +82,9 @@ export interface BenchExtras {
   readonly flowSpeed: boolean;
 }
 
-export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], extras: BenchExtras): Promise<BenchResults> {
-  const started = performance.now();
-  const load = [loadavg()[0]!];
-  const stages: Stage[] = [
+/** The run's stages in the order they start one by one, each with its expected cost. */
+function benchStages(rows: readonly BenchRow[], extras: BenchExtras): Stage[] {
+  return [
     { name: REFERENCE_STAGE, cost: STAGE_COSTS.reference },
     ...(extras.flowSpeed ? [{ name: FLOW_TWIN_STAGE, cost: STAGE_COSTS.flowTwin }] : []),
     ...rows.map((r) => ({ name: r.name, cost: rowCost(r) })),
@@ -96,129 +95,171 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], extra
     { name: DEMO_STAGE, cost: STAGE_COSTS.demo },
     { name: DEFAULT_VIEW_STAGE, cost: STAGE_COSTS.defaultView },
   ];
-  const progress = new Progress(stages);
-  const failures: { stage: string; message: string }[] = [];
-  const stageSeconds: Record<string, number> = {};
-  /** Runs a stage; what it throws is recorded (null returned) and the run goes on. */
-  const stage = async <T>(name: string, work: () => Promise<T> | T): Promise<T | null> => {
-    const index = stages.findIndex((s) => s.name === name);
+}
+
+/** Runs the run's stages, each timed and its progress printed; what a stage throws is recorded (null returned) and the run goes on. */
+class StageRunner {
+  readonly failures: { stage: string; message: string }[] = [];
+  readonly stageSeconds: Record<string, number> = {};
+  private readonly progress: Progress;
+
+  constructor(private readonly stages: readonly Stage[]) {
+    this.progress = new Progress(stages);
+  }
+
+  async run<T>(name: string, work: () => Promise<T> | T): Promise<T | null> {
+    const index = this.stages.findIndex((s) => s.name === name);
     const t0 = performance.now();
     try {
-      return await progress.run(index, work);
+      return await this.progress.run(index, work);
     } catch (error) {
       const message = error instanceof Error ? (error.stack ?? error.message) : String(error);
       console.error(`${name} threw: ${message}`);
-      failures.push({ stage: name, message });
+      this.failures.push({ stage: name, message });
       return null;
     } finally {
-      stageSeconds[name] = (performance.now() - t0) / 1000;
+      this.stageSeconds[name] = (performance.now() - t0) / 1000;
     }
-  };
+  }
+}
 
-  const reference = await stage(REFERENCE_STAGE, referenceSpeed);
-  // In Node, before the browser: the twin's steps hold the process, which drives the pages.
-  const flowTwin = extras.flowSpeed ? await stage(FLOW_TWIN_STAGE, () => twinSpeed(plan.flowSpeed)) : null;
-  const grids = new ErrorGrids(plan.gridStride);
+/** What the stages in the browser measure, each null until measured (or where its stage threw); the rows by index. */
+interface BrowserFigures {
+  rows: (MeasuredRow | null)[];
+  materials: MaterialFigures | null;
+  flowGpu: GpuSimulationSpeed[] | null;
+  bundle: BundleSizes | null;
+  package: PackageSize | null;
+  demo: DemoPageFigures | null;
+  defaultView: DefaultViewFigures | null;
+}
+
+/** What the browser's stages share: where they run, and where they put what they measure. */
+interface BrowserRun {
+  readonly stages: StageRunner;
+  readonly browser: Browser;
+  readonly plan: BenchPlan;
+  readonly devUrl: string;
+  readonly grids: ErrorGrids;
+  readonly figures: BrowserFigures;
+}
+
+/**
+ * The builds, then the built demo page in a preview server of its own. The package is a task of
+ * its own: its build (dist-lib) is not the demo's (dist).
+ */
+async function builtPage({ stages, browser, plan, figures }: BrowserRun): Promise<void> {
+  figures.bundle = await stages.run(BUNDLE_STAGE, buildAndMeasure);
+  const previewServer = await preview({ logLevel: 'silent', preview: { port: plan.previewPort, strictPort: true, host: '127.0.0.1' } });
+  const previewUrl = `http://127.0.0.1:${plan.previewPort}`;
+  try {
+    figures.demo = await stages.run(DEMO_STAGE, () => demoPageFigures(browser, previewUrl, plan.demo));
+    figures.defaultView = await stages.run(DEFAULT_VIEW_STAGE, () =>
+      defaultViewFigures(() => chromium.launch(chromiumLaunchOptions()), previewUrl, plan.defaultView),
+    );
+  } finally {
+    await new Promise((resolve) => previewServer.httpServer.close(resolve));
+  }
+}
+
+/** The browser's stages as tasks, each with its expected cost; the rows run in the lane they are given. */
+function browserTasks(run: BrowserRun, rows: readonly BenchRow[], extras: BenchExtras): LaneTask<RowLane>[] {
+  const { stages, browser, plan, devUrl, grids, figures } = run;
+  const flowGpu = async () => {
+    figures.flowGpu = await stages.run(FLOW_GPU_STAGE, () => gpuFlowSpeedInPage(browser, devUrl, plan.flowSpeed));
+  };
+  const materials = async () => {
+    // The material's film is three's iridescenceIOR, one number: the soap film's grids.
+    figures.materials = await stages.run(MATERIALS_ROW, () =>
+      materialFigures(browser, devUrl, plan.materials, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
+    );
+  };
+  const pack = async () => {
+    figures.package = await stages.run(PACKAGE_STAGE, packageSize);
+  };
+  return [
+    ...rows.map((row, i) => ({
+      cost: rowCost(row),
+      run: async (lane: RowLane) => {
+        figures.rows[i] = await stages.run(row.name, () => measureRow(lane, row, grids));
+      },
+    })),
+    ...(extras.flowSpeed ? [{ cost: STAGE_COSTS.flowGpu, run: flowGpu }] : []),
+    ...(extras.materials ? [{ cost: STAGE_COSTS.materials, run: materials }] : []),
+    { cost: STAGE_COSTS.package, run: pack },
+    { cost: STAGE_COSTS.bundle + STAGE_COSTS.demo + STAGE_COSTS.defaultView, run: () => builtPage(run) },
+  ];
+}
+
+/**
+ * The rows and the material in a dev server, and the built page: in this order one by one, or (the
+ * smoke) the costliest first, `concurrency` at once, each lane's rows in its own page where the
+ * plan keeps one per lane.
+ */
+async function browserFigures(
+  stages: StageRunner,
+  browser: Browser,
+  plan: BenchPlan,
+  rows: readonly BenchRow[],
+  extras: BenchExtras,
+): Promise<BrowserFigures> {
   const devUrl = `http://127.0.0.1:${plan.devPort}`;
+  const run: BrowserRun = {
+    stages,
+    browser,
+    plan,
+    devUrl,
+    grids: new ErrorGrids(plan.gridStride),
+    figures: { rows: [], materials: null, flowGpu: null, bundle: null, package: null, demo: null, defaultView: null },
+  };
+  const server = await createServer({
+    logLevel: 'silent',
+    server: { port: plan.devPort, strictPort: true, host: '127.0.0.1', hmr: false, watch: null },
+  });
+  await server.listen();
+  try {
+    // Only where the first frames are figures: the smoke's times mean nothing.
+    if (!plan.smoke) await warmUp(browser, devUrl);
+    const lanes = Array.from({ length: plan.concurrency }, () => new RowLane(browser, devUrl, plan));
+    try {
+      await runAtOnce(browserTasks(run, rows, extras), lanes);
+    } finally {
+      await Promise.all(lanes.map((lane) => lane.close()));
+    }
+  } finally {
+    await server.close();
+  }
+  return run.figures;
+}
+
+export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], extras: BenchExtras): Promise<BenchResults> {
+  const started = performance.now();
+  const load = [loadavg()[0]!];
+  const stages = new StageRunner(benchStages(rows, extras));
+  const reference = await stages.run(REFERENCE_STAGE, referenceSpeed);
+  // In Node, before the browser: the twin's steps hold the process, which drives the pages.
+  const flowTwin = extras.flowSpeed ? await stages.run(FLOW_TWIN_STAGE, () => twinSpeed(plan.flowSpeed)) : null;
   const browser = await chromium.launch(chromiumLaunchOptions());
   try {
     const webgl = await checkedRenderer(browser);
     console.error(webgl);
-    const measured: (MeasuredRow | null)[] = [];
-    let materials: MaterialFigures | null = null;
-    let flowGpu: GpuSimulationSpeed[] | null = null;
-    let bundle: BundleSizes | null = null;
-    let pack: PackageSize | null = null;
-    let demo: DemoPageFigures | null = null;
-    let defaultView: DefaultViewFigures | null = null;
-    // The builds, then the built demo page in a preview server of its own. The package is a task
-    // of its own: its build (dist-lib) is not the demo's (dist).
-    const builtPage = async () => {
-      bundle = await stage(BUNDLE_STAGE, buildAndMeasure);
-      const previewServer = await preview({ logLevel: 'silent', preview: { port: plan.previewPort, strictPort: true, host: '127.0.0.1' } });
-      try {
-        demo = await stage(DEMO_STAGE, () => demoPageFigures(browser, `http://127.0.0.1:${plan.previewPort}`, plan.demo));
-        defaultView = await stage(DEFAULT_VIEW_STAGE, () =>
-          defaultViewFigures(() => chromium.launch(chromiumLaunchOptions()), `http://127.0.0.1:${plan.previewPort}`, plan.defaultView),
-        );
-      } finally {
-        await new Promise((resolve) => previewServer.httpServer.close(resolve));
-      }
-    };
-    // The rows and the material in the dev server, and the built page: in this order one by one,
-    // or (the smoke) the costliest first, `concurrency` at once, each lane's rows in its own page
-    // where the plan keeps one per lane.
-    const server = await createServer({
-      logLevel: 'silent',
-      server: { port: plan.devPort, strictPort: true, host: '127.0.0.1', hmr: false, watch: null },
-    });
-    await server.listen();
-    try {
-      // Only where the first frames are figures: the smoke's times mean nothing.
-      if (!plan.smoke) await warmUp(browser, devUrl);
-      const tasks = [
-        ...rows.map((row, i) => ({
-          cost: rowCost(row),
-          run: async (lane: RowLane) => {
-            measured[i] = await stage(row.name, () => measureRow(lane, row, grids));
-          },
-        })),
-        ...(extras.flowSpeed
-          ? [
-              {
-                cost: STAGE_COSTS.flowGpu,
-                run: async () => {
-                  flowGpu = await stage(FLOW_GPU_STAGE, () => gpuFlowSpeedInPage(browser, devUrl, plan.flowSpeed));
-                },
-              },
-            ]
-          : []),
-        ...(extras.materials
-          ? [
-              {
-                cost: STAGE_COSTS.materials,
-                run: async () => {
-                  // The material's film is three's iridescenceIOR, one number: the soap film's grids.
-                  materials = await stage(MATERIALS_ROW, () =>
-                    materialFigures(browser, devUrl, plan.materials, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
-                  );
-                },
-              },
-            ]
-          : []),
-        {
-          cost: STAGE_COSTS.package,
-          run: async () => {
-            pack = await stage(PACKAGE_STAGE, packageSize);
-          },
-        },
-        { cost: STAGE_COSTS.bundle + STAGE_COSTS.demo + STAGE_COSTS.defaultView, run: builtPage },
-      ];
-      const lanes = Array.from({ length: plan.concurrency }, () => new RowLane(browser, devUrl, plan));
-      try {
-        await runAtOnce(tasks, lanes);
-      } finally {
-        await Promise.all(lanes.map((lane) => lane.close()));
-      }
-    } finally {
-      await server.close();
-    }
+    const figures = await browserFigures(stages, browser, plan, rows, extras);
     load.push(loadavg()[0]!);
     return {
       plan,
       machine: { node: process.version, cpus: cpus().length, cpuModel: cpus()[0]?.model ?? 'unknown', load, webgl },
       reference,
-      rows: measured.filter((m) => m !== null),
-      flowGpu,
+      rows: figures.rows.filter((m) => m !== null),
+      flowGpu: figures.flowGpu,
       flowTwin,
-      materials,
-      bundle,
-      package: pack,
-      demo,
-      defaultView,
-      stageSeconds,
+      materials: figures.materials,
+      bundle: figures.bundle,
+      package: figures.package,
+      demo: figures.demo,
+      defaultView: figures.defaultView,
+      stageSeconds: stages.stageSeconds,
       seconds: (performance.now() - started) / 1000,
-      failures,
+      failures: stages.failures,
     };
   } finally {
     await browser.close();

@@ -5,7 +5,7 @@ import type { Catalogue } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 import { WAVELENGTH_DOMAIN } from './diagramParameters.ts';
 import { fourFigures, settingText } from './numberText.ts';
-import { svg } from './svgNodes.ts';
+import { appendSvg, clearFigure, describeFigure } from './svgNodes.ts';
 
 const WIDTH = 400;
 const HEIGHT = 130;
@@ -22,27 +22,30 @@ function axisTop(max: number): number {
   return [1, 2, 5, 10].map((m) => m * magnitude).find((t) => t >= max * (1 + 1e-9)) ?? 10 * magnitude;
 }
 
+/** The diagram's film as the spectrum sees it. */
+interface SpectrumFilm {
+  readonly stack: DispersiveFilmStack;
+  readonly polarization: Polarization;
+  readonly flipTop: boolean;
+  readonly wavelengthNm: number;
+}
+
+/** R(λ) sampled over the band, R at the current wavelength, and the plot's map from (λ, R) to the figure. */
+interface SpectrumCurve {
+  readonly samples: readonly number[];
+  readonly values: readonly number[];
+  readonly current: number;
+  /** the R axis' top */
+  readonly top: number;
+  readonly x: (lambdaNm: number) => number;
+  readonly y: (reflectance: number) => number;
+}
+
 /**
- * R(λ) over the visible band for the diagram's film (each λ with its own n_b(λ) and the same
- * beams as the figure, flipTop included), sampled finely enough to show every fringe, with the
- * current wavelength marked.
+ * R(λ) for the film (each λ with its own n_b(λ) and the same beams as the figure, flipTop
+ * included), SAMPLES_PER_FRINGE samples a fringe within MIN_SAMPLES … MAX_SAMPLES.
  */
-export function drawSpectrumFigure(
-  figure: SVGSVGElement,
-  film: {
-    readonly stack: DispersiveFilmStack;
-    readonly polarization: Polarization;
-    readonly flipTop: boolean;
-    readonly wavelengthNm: number;
-  },
-  catalogue: Catalogue,
-  ids: { title: string; desc: string },
-): void {
-  const doc = figure.ownerDocument;
-  const el = <K extends keyof SVGElementTagNameMap>(tag: K, attrs: Record<string, string | number> = {}, text?: string) =>
-    figure.appendChild(svg(doc, tag, attrs, text));
-  figure.replaceChildren();
-  figure.setAttribute('viewBox', `0 0 ${WIDTH} ${HEIGHT}`);
+function spectrumCurve(film: SpectrumFilm): SpectrumCurve {
   const { min, max } = WAVELENGTH_DOMAIN;
   const reflectance = (l: number) => filmBeams(stackAt(film.stack, l), film.polarization, l, { flipTop: film.flipTop }).reflectance;
   const fringes = opticalPathNm(stackAt(film.stack, min)).re * (1 / min - 1 / max);
@@ -53,14 +56,17 @@ export function drawSpectrumFigure(
   const top = axisTop(Math.max(...values, current));
   const x = (l: number) => PLOT.left + ((l - min) / (max - min)) * (PLOT.right - PLOT.left);
   const y = (r: number) => PLOT.bottom - (r / top) * (PLOT.bottom - PLOT.top);
+  return { samples, values, current, top, x, y };
+}
 
-  el('title', { id: ids.title }, catalogue['diagram.spectrumTitle']);
-  el(
-    'desc',
-    { id: ids.desc },
-    message(catalogue, 'diagram.spectrumDescription', { wavelength: settingText(film.wavelengthNm), reflectance: fourFigures(current) }),
-  );
-  el('rect', {
+/** A label in the plot's type. */
+function label(figure: SVGSVGElement, x: number, y: number, text: string, anchor = 'middle') {
+  return appendSvg(figure, 'text', { x, y, 'font-size': 8, 'text-anchor': anchor, fill: '#1b1b1b' }, text);
+}
+
+/** The plot's frame, the λ ticks and the R axis' labels. */
+function drawAxes(figure: SVGSVGElement, { x, y, top }: SpectrumCurve): void {
+  appendSvg(figure, 'rect', {
     x: PLOT.left,
     y: PLOT.top,
     width: PLOT.right - PLOT.left,
@@ -69,29 +75,56 @@ export function drawSpectrumFigure(
     stroke: '#777',
     'stroke-width': 0.6,
   });
-  const label = (lx: number, ly: number, text: string, anchor = 'middle') =>
-    el('text', { x: lx, y: ly, 'font-size': 8, 'text-anchor': anchor, fill: '#1b1b1b' }, text);
   for (const t of TICKS_NM) {
-    el('line', { x1: x(t), y1: PLOT.bottom, x2: x(t), y2: PLOT.bottom + 3, stroke: '#777', 'stroke-width': 0.6 });
-    label(x(t), PLOT.bottom + 11, String(t));
+    appendSvg(figure, 'line', { x1: x(t), y1: PLOT.bottom, x2: x(t), y2: PLOT.bottom + 3, stroke: '#777', 'stroke-width': 0.6 });
+    label(figure, x(t), PLOT.bottom + 11, String(t));
   }
-  label(PLOT.right, HEIGHT - 2, 'λ (nm)', 'end');
-  for (const r of [0, top / 2, top]) label(PLOT.left - 3, y(r) + 3, String(+r.toPrecision(3)), 'end');
-  label(PLOT.left + 3, PLOT.top + 9, 'R', 'start');
-  el('polyline', {
+  label(figure, PLOT.right, HEIGHT - 2, 'λ (nm)', 'end');
+  for (const r of [0, top / 2, top]) label(figure, PLOT.left - 3, y(r) + 3, String(+r.toPrecision(3)), 'end');
+  label(figure, PLOT.left + 3, PLOT.top + 9, 'R', 'start');
+}
+
+/** The curve, and the current wavelength marked on it with its λ and R. */
+function drawCurve(figure: SVGSVGElement, { samples, values, current, x, y }: SpectrumCurve, wavelengthNm: number): void {
+  appendSvg(figure, 'polyline', {
     points: samples.map((l, i) => `${x(l).toFixed(2)},${y(values[i]!).toFixed(2)}`).join(' '),
     fill: 'none',
     stroke: '#b03a00',
     'stroke-width': 1,
     'stroke-linejoin': 'round',
   });
-  el('line', { x1: x(film.wavelengthNm), y1: PLOT.top, x2: x(film.wavelengthNm), y2: PLOT.bottom, stroke: '#1f4fbf', 'stroke-width': 0.8 });
-  el('circle', { cx: x(film.wavelengthNm), cy: y(current), r: 2.5, fill: '#1f4fbf', 'data-marker': '' });
-  const right = film.wavelengthNm > (min + max) / 2;
-  label(
-    x(film.wavelengthNm) + (right ? -4 : 4),
-    PLOT.top + 18,
-    `λ = ${settingText(film.wavelengthNm)} nm, R = ${fourFigures(current)}`,
-    right ? 'end' : 'start',
-  );
+  appendSvg(figure, 'line', {
+    x1: x(wavelengthNm),
+    y1: PLOT.top,
+    x2: x(wavelengthNm),
+    y2: PLOT.bottom,
+    stroke: '#1f4fbf',
+    'stroke-width': 0.8,
+  });
+  appendSvg(figure, 'circle', { cx: x(wavelengthNm), cy: y(current), r: 2.5, fill: '#1f4fbf', 'data-marker': '' });
+  const right = wavelengthNm > (WAVELENGTH_DOMAIN.min + WAVELENGTH_DOMAIN.max) / 2;
+  const text = `λ = ${settingText(wavelengthNm)} nm, R = ${fourFigures(current)}`;
+  label(figure, x(wavelengthNm) + (right ? -4 : 4), PLOT.top + 18, text, right ? 'end' : 'start');
+}
+
+/**
+ * R(λ) over the visible band for the diagram's film (each λ with its own n_b(λ) and the same
+ * beams as the figure, flipTop included), sampled finely enough to show every fringe, with the
+ * current wavelength marked.
+ */
+export function drawSpectrumFigure(
+  figure: SVGSVGElement,
+  film: SpectrumFilm,
+  catalogue: Catalogue,
+  ids: { title: string; desc: string },
+): void {
+  clearFigure(figure, WIDTH, HEIGHT);
+  const curve = spectrumCurve(film);
+  const description = message(catalogue, 'diagram.spectrumDescription', {
+    wavelength: settingText(film.wavelengthNm),
+    reflectance: fourFigures(curve.current),
+  });
+  describeFigure(figure, ids, catalogue['diagram.spectrumTitle'], description);
+  drawAxes(figure, curve);
+  drawCurve(figure, curve, film.wavelengthNm);
 }

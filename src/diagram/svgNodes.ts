@@ -16,6 +16,33 @@ export function svg<K extends keyof SVGElementTagNameMap>(
   return el;
 }
 
+/** Appends an SVG element (as `svg` makes it) to `parent`: how the figures draw, element by element. */
+export function appendSvg<K extends keyof SVGElementTagNameMap>(
+  parent: Element,
+  tag: K,
+  attributes: Readonly<Record<string, string | number>> = {},
+  text?: string,
+): SVGElementTagNameMap[K] {
+  return parent.appendChild(svg(parent.ownerDocument, tag, attributes, text));
+}
+
+/** Empties a figure for drawing anew in a box of `width` × `height` SVG units, which scales to any width (viewBox). */
+export function clearFigure(figure: SVGSVGElement, width: number, height: number): void {
+  figure.replaceChildren();
+  figure.setAttribute('viewBox', `0 0 ${width} ${height}`);
+}
+
+/** A figure's title and description (its accessible name and text, referred to by `ids`). */
+export function describeFigure(
+  figure: SVGSVGElement,
+  ids: { readonly title: string; readonly desc: string },
+  title: string,
+  desc: string,
+): void {
+  appendSvg(figure, 'title', { id: ids.title }, title);
+  appendSvg(figure, 'desc', { id: ids.desc }, desc);
+}
+
 /**
  * A formula written with `_{…}` for subscripts and `^{…}` for superscripts (`t_{ab} e^{2iφ}`), as
  * nodes: HTML <sub>/<sup>, or SVG <tspan>s shifted by `baseline-shift`.

@@ -24,6 +24,38 @@ const FIELDS = ['thickness', 'angle', 'hex', 'xyz', 'linearRgb', 'deltaE00'] as 
 /** The spectrum's table (on demand) lists every this many nanometres of the plot's 1 nm samples. */
 const TABLE_STEP_NM = 10;
 
+/** An element of the panel, of class `className`. */
+const panelElement = (doc: Document, tag: string, className: string): HTMLElement => Object.assign(doc.createElement(tag), { className });
+
+/** The probed point's numbers: a term and its value per field of FIELDS, each value kept in `values` by its field. */
+function readoutList(doc: Document, cat: Catalogue, values: Map<string, HTMLElement>): HTMLElement {
+  const readout = panelElement(doc, 'dl', 'tfb-readout');
+  for (const f of FIELDS) {
+    const value = panelElement(doc, 'dd', '');
+    value.dataset.field = f;
+    readout.append(Object.assign(panelElement(doc, 'dt', ''), { textContent: cat[`plots.${f}`] }), value);
+    values.set(f, value);
+  }
+  return readout;
+}
+
+/** A plot's canvas: an image whose text alternative says what it shows (no reading yet). */
+function plotImage(doc: Document, cat: Catalogue, className: string): HTMLCanvasElement {
+  const canvas = panelElement(doc, 'canvas', className) as HTMLCanvasElement;
+  canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label', cat['plots.noReading']);
+  return canvas;
+}
+
+/** The spectrum's curves named in their colours; hidden from assistive technology, as the spectrum's text alternative names its curves. */
+function spectrumLegend(doc: Document, cat: Catalogue): HTMLElement {
+  const legend = panelElement(doc, 'div', 'tfb-legend');
+  legend.setAttribute('aria-hidden', 'true');
+  for (const [key, color] of SPECTRUM_LEGEND)
+    legend.append(Object.assign(panelElement(doc, 'span', ''), { textContent: cat[key], style: `color: ${color}` }));
+  return legend;
+}
+
 /**
  * The live plots under a bubble, all computed by the float64 reference (src/physics): the
  * probed point's numbers, its spectra, the xy diagram with the thickness path, and the
@@ -57,44 +89,35 @@ export class PlotPanel {
     private readonly cat: Catalogue = EN,
   ) {
     addPlotStyles(doc);
-    const el = (tag: string, className: string) => Object.assign(doc.createElement(tag), { className });
-    this.element = el('section', 'tfb-plots');
+    this.element = panelElement(doc, 'section', 'tfb-plots');
     this.element.setAttribute('aria-label', cat['plots.label']);
-    const readout = el('dl', 'tfb-readout');
-    for (const f of FIELDS) {
-      const value = el('dd', '');
-      value.dataset.field = f;
-      readout.append(Object.assign(el('dt', ''), { textContent: cat[`plots.${f}`] }), value);
-      this.values.set(f, value);
-    }
-    this.swatch = el('span', 'tfb-swatch');
-    this.stackNote = el('p', 'tfb-stack-note');
+    const readout = readoutList(doc, cat, this.values);
+    this.swatch = panelElement(doc, 'span', 'tfb-swatch');
+    this.stackNote = panelElement(doc, 'p', 'tfb-stack-note');
     this.stackNote.hidden = true;
-    const image = (className: string) => {
-      const canvas = el('canvas', className) as HTMLCanvasElement;
-      canvas.setAttribute('role', 'img');
-      canvas.setAttribute('aria-label', cat['plots.noReading']);
-      return canvas;
-    };
-    this.spectrum = image('tfb-spectrum');
-    this.chromaticity = image('tfb-chromaticity');
-    this.strip = image('tfb-strip');
-    const legend = el('div', 'tfb-legend');
-    legend.setAttribute('aria-hidden', 'true'); // the spectrum's text alternative names its curves
-    for (const [key, color] of SPECTRUM_LEGEND)
-      legend.append(Object.assign(el('span', ''), { textContent: cat[key], style: `color: ${color}` }));
-    this.table = el('table', 'tfb-spectrum-table') as HTMLTableElement;
+    this.spectrum = plotImage(doc, cat, 'tfb-spectrum');
+    this.chromaticity = plotImage(doc, cat, 'tfb-chromaticity');
+    this.strip = plotImage(doc, cat, 'tfb-strip');
+    this.table = panelElement(doc, 'table', 'tfb-spectrum-table') as HTMLTableElement;
     this.table.id = `tfb-spectrum-table-${++tableCount}`;
     this.table.hidden = true;
-    this.tableButton = Object.assign(el('button', 'tfb-table-toggle'), {
+    this.tableButton = Object.assign(panelElement(doc, 'button', 'tfb-table-toggle'), {
       type: 'button',
       textContent: cat['plots.showTable'],
     }) as HTMLButtonElement;
     this.tableButton.setAttribute('aria-expanded', 'false');
     this.tableButton.setAttribute('aria-controls', this.table.id);
     this.tableButton.addEventListener('click', () => this.showTable(this.table.hidden));
-    const saves = el('div', 'tfb-downloads');
-    saves.append(Object.assign(el('span', ''), { textContent: cat['plots.save'] }));
+    const saves = panelElement(doc, 'div', 'tfb-downloads');
+    saves.append(Object.assign(panelElement(doc, 'span', ''), { textContent: cat['plots.save'] }));
+    this.saveButtons = this.downloadButtons(doc);
+    saves.append(...this.saveButtons);
+    const legend = spectrumLegend(doc, cat);
+    this.element.append(readout, this.stackNote, this.spectrum, legend, this.tableButton, this.table, this.chromaticity, this.strip, saves);
+  }
+
+  /** A button per download (disabled until the plots show a reading), each saving what the plots show then. */
+  private downloadButtons(doc: Document): HTMLButtonElement[] {
     const png = (canvas: HTMLCanvasElement) => () => opaquePngUrl(canvas, PLOT_BACKGROUND);
     const downloads: [string, string, MessageKey, (spectrum: FilmSpectrum) => string][] = [
       ['spectrum', 'png', 'plots.save.spectrumPng', png(this.spectrum)],
@@ -102,16 +125,18 @@ export class PlotPanel {
       ['xy', 'png', 'plots.save.xyPng', png(this.chromaticity)],
       ['scale', 'png', 'plots.save.scalePng', png(this.strip)],
     ];
-    this.saveButtons = downloads.map(([what, extension, text, url]) => {
-      const button = Object.assign(el('button', ''), { type: 'button', textContent: cat[text], disabled: true }) as HTMLButtonElement;
+    return downloads.map(([what, extension, text, url]) => {
+      const button = Object.assign(panelElement(doc, 'button', ''), {
+        type: 'button',
+        textContent: this.cat[text],
+        disabled: true,
+      }) as HTMLButtonElement;
       button.dataset.download = `${what}.${extension}`;
       button.addEventListener('click', () => {
         if (this.shown) saveUrl(doc, url(this.shown.spectrum), downloadName(this.shown.view, what, extension));
       });
       return button;
     });
-    saves.append(...this.saveButtons);
-    this.element.append(readout, this.stackNote, this.spectrum, legend, this.tableButton, this.table, this.chromaticity, this.strip, saves);
   }
 
   /** Shows or hides the spectrum's table (built anew from the spectrum shown). */

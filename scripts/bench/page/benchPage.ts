@@ -62,92 +62,111 @@ function leftOnRenderer(): string | null {
   return left.programs > 0 || left.geometries > 0 || left.textures > sharedTextures ? JSON.stringify(left) : null;
 }
 
-/**
- * The row's figures but its error grids: the first frame (from `originMs`), the frames per size,
- * the changes.
- */
-function timeView(view: BubbleView, spec: BenchRowSpec, originMs: number): Omit<BenchRowResult, 'xyz'> {
+/** The pixel each frame reads back. */
+const readBack = new Uint8Array(4);
+
+/** Draws the view's frame and waits for the GPU to finish it: one pixel read back. */
+function drawAndWait(view: BubbleView): void {
   const gl = view.renderer.getContext();
-  const pixel = new Uint8Array(4);
-  let time = spec.settings.timeSeconds;
-  const frame = () => {
+  view.render();
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, readBack);
+}
+
+/** Draws the view's next frame and returns its time (ms). */
+type TimedFrame = () => number;
+
+/** The view's frames from `startSeconds` on, the animated field moving 1/60 s a frame as in the demo's loop. */
+function animatedFrames(view: BubbleView, startSeconds: number): TimedFrame {
+  let time = startSeconds;
+  return () => {
     const started = performance.now();
-    time += 1 / 60; // the animated field moves, as in the demo's loop
+    time += 1 / 60;
     view.apply({ ...view.current, timeSeconds: time });
-    view.render();
-    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    drawAndWait(view);
     return performance.now() - started;
   };
-  // The first frame, small: the program's compile and the table's build, without a slow row's
-  // full-size fragment cost, which the timed frames then measure once each.
-  view.resize(...FIRST_FRAME_SIZE);
-  const table = new TableWatch(view.table);
-  view.render();
-  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-  const firstFrameMs = performance.now() - originMs;
-  const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? table.firstBuildMs : null;
-  const buildsBefore = table.builds;
+}
 
-  // Per size: up to 3 warm-up frames, then up to `frames` timed ones within the budget. Where a
-  // frame at a 16th of the pixels, times 16, would outlast FIT_OVER_BUDGET budgets, the frame
-  // time is fitted from that frame and one at a quarter of the pixels (fittedFrameMs): a slow row's
-  // full frame (tens of seconds of per-fragment bins on a CPU rasteriser) is not drawn. A frame over
-  // the budget, timed or fitted, is its own measurement, and the larger sizes are not timed (null):
-  // each would cost more than it.
+const pixels = ([w, h]: readonly [number, number]) => w * h;
+
+/**
+ * A slow row's frame at `size`, fitted rather than drawn, or null where it is to be drawn. Where a
+ * frame at a 16th of the pixels, times 16, would outlast FIT_OVER_BUDGET budgets, the frame time is
+ * fitted from that frame and one at a quarter of the pixels (fittedFrameMs): a slow row's full frame
+ * (tens of seconds of per-fragment bins on a CPU rasteriser) is not drawn.
+ */
+function fittedFrame(view: BubbleView, spec: BenchRowSpec, size: readonly [number, number], frame: TimedFrame): FrameTime | null {
+  const [small, larger] = fitSizes(size);
+  view.resize(...small);
+  // Over the threshold, a second frame confirms it (the faster of the two): on a busy machine one
+  // frame of a fast row can come late.
+  const overThreshold = (ms: number) => (ms * pixels(size)) / pixels(small) > FIT_OVER_BUDGET * spec.frameBudgetMs;
+  let smallMs = frame();
+  if (overThreshold(smallMs)) smallMs = Math.min(smallMs, frame());
+  if (!overThreshold(smallMs)) return null;
+  view.resize(...larger);
+  const largerMs = frame();
+  const fittedMs = fittedFrameMs(
+    [
+      [pixels(small), smallMs],
+      [pixels(larger), largerMs],
+    ],
+    pixels(size),
+  );
+  // Fitted only where the frame is mostly a cost per pixel (4× the pixels took ≥ PIXEL_BOUND× the
+  // time): a fixed cost's noise, taken 4× along the line, would say nothing.
+  return largerMs >= PIXEL_BOUND * smallMs && fittedMs > FIT_OVER_BUDGET * spec.frameBudgetMs
+    ? { medianMs: fittedMs, fittedFrom: [small, larger] }
+    : null;
+}
+
+/** After a first frame at the size within the budget (`firstMs`): up to 3 warm-up frames, then up to `frames` timed ones within the budget. */
+function drawnFrame(spec: BenchRowSpec, firstMs: number, frame: TimedFrame): FrameTime {
+  const warm = [firstMs];
+  while (warm.length < Math.min(3, spec.frames)) warm.push(frame());
+  const count = Math.max(Math.min(3, spec.frames), Math.min(spec.frames, Math.floor(spec.frameBudgetMs / Math.min(...warm))));
+  const times = Array.from({ length: count }, frame);
+  return { medianMs: median(times), count };
+}
+
+/**
+ * The frame time per size, fitted (fittedFrame) or drawn (drawnFrame). A frame over the budget,
+ * timed or fitted, is its own measurement, and the larger sizes are not timed (null): each would
+ * cost more than it.
+ */
+function frameTimes(view: BubbleView, spec: BenchRowSpec, frame: TimedFrame): (FrameTime | null)[] {
   const frames: (FrameTime | null)[] = [];
-  const pixels = ([w, h]: readonly [number, number]) => w * h;
   let slow = false;
   for (const size of spec.sizes) {
     if (slow) {
       frames.push(null);
       continue;
     }
-    const [small, larger] = fitSizes(size);
-    view.resize(...small);
-    // Over the threshold, a second frame confirms it (the faster of the two): on a busy machine one
-    // frame of a fast row can come late.
-    const overThreshold = (ms: number) => (ms * pixels(size)) / pixels(small) > FIT_OVER_BUDGET * spec.frameBudgetMs;
-    let smallMs = frame();
-    if (overThreshold(smallMs)) smallMs = Math.min(smallMs, frame());
-    if (overThreshold(smallMs)) {
-      view.resize(...larger);
-      const largerMs = frame();
-      const fittedMs = fittedFrameMs(
-        [
-          [pixels(small), smallMs],
-          [pixels(larger), largerMs],
-        ],
-        pixels(size),
-      );
-      // Fitted only where the frame is mostly a cost per pixel (4× the pixels took ≥ PIXEL_BOUND× the
-      // time): a fixed cost's noise, taken 4× along the line, would say nothing.
-      if (largerMs >= PIXEL_BOUND * smallMs && fittedMs > FIT_OVER_BUDGET * spec.frameBudgetMs) {
-        slow = true;
-        frames.push({ medianMs: fittedMs, fittedFrom: [small, larger] });
-        continue;
-      }
-    }
-    view.resize(...size);
-    const warm = [frame()];
-    slow = warm[0]! > spec.frameBudgetMs;
-    if (slow) {
-      frames.push({ medianMs: warm[0]!, count: 1 });
+    const fitted = fittedFrame(view, spec, size, frame);
+    if (fitted) {
+      slow = true;
+      frames.push(fitted);
       continue;
     }
-    while (warm.length < Math.min(3, spec.frames)) warm.push(frame());
-    const count = Math.max(Math.min(3, spec.frames), Math.min(spec.frames, Math.floor(spec.frameBudgetMs / Math.min(...warm))));
-    const times = Array.from({ length: count }, frame);
-    frames.push({ medianMs: median(times), count });
+    view.resize(...size);
+    const firstMs = frame();
+    slow = firstMs > spec.frameBudgetMs;
+    frames.push(slow ? { medianMs: firstMs, count: 1 } : drawnFrame(spec, firstMs, frame));
   }
-  const rebuildsWhileAnimating = table.builds - buildsBefore;
-  table.stop();
-  // Each change and its way back (timed too where `changesBack`, while that change has taken less
-  // than the budget; else drawn with the next change), up to `changeRepeats` times while that
-  // change has taken less than the budget; none (null) for the textured sphere, which shows no
-  // film, for a row that does not time them, and for a row whose frame alone outlasts the budget.
+  return frames;
+}
+
+/**
+ * Each change and its way back (timed too where `changesBack`, while that change has taken less
+ * than the budget; else drawn with the next change), up to `changeRepeats` times while that
+ * change has taken less than the budget: the change applied → its frame drawn and read back, ms
+ * (the median). None (null) for the textured sphere, which shows no film, for a row that does not
+ * time them, and for a row whose frame alone outlasts the budget.
+ */
+function changeTimes(view: BubbleView, spec: BenchRowSpec, firstSizeMs: number): (number | null)[] {
   view.resize(...spec.sizes[0]!);
-  const changesTimed = spec.kind === 'bubble' && spec.timesChanges && frames[0]!.medianMs <= spec.frameBudgetMs;
-  const changeToFrameMs = CHANGES.map(({ values }) => {
+  const changesTimed = spec.kind === 'bubble' && spec.timesChanges && firstSizeMs <= spec.frameBudgetMs;
+  return CHANGES.map(({ values }) => {
     if (!changesTimed) return null;
     const times: number[] = [];
     let spentMs = 0;
@@ -156,13 +175,31 @@ function timeView(view: BubbleView, spec: BenchRowSpec, originMs: number): Omit<
         const started = performance.now();
         view.apply({ ...view.current, ...v });
         if (i > 0 && !(spec.changesBack && spentMs < spec.frameBudgetMs)) continue; // drawn with the next change
-        view.render();
-        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+        drawAndWait(view);
         times.push(performance.now() - started);
         spentMs += times.at(-1)!;
       }
     return median(times);
   });
+}
+
+/**
+ * The row's figures but its error grids: the first frame (from `originMs`), the frames per size,
+ * the changes.
+ */
+function timeView(view: BubbleView, spec: BenchRowSpec, originMs: number): Omit<BenchRowResult, 'xyz'> {
+  // The first frame, small: the program's compile and the table's build, without a slow row's
+  // full-size fragment cost, which the timed frames then measure once each.
+  view.resize(...FIRST_FRAME_SIZE);
+  const table = new TableWatch(view.table);
+  drawAndWait(view);
+  const firstFrameMs = performance.now() - originMs;
+  const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? table.firstBuildMs : null;
+  const buildsBefore = table.builds;
+  const frames = frameTimes(view, spec, animatedFrames(view, spec.settings.timeSeconds));
+  const rebuildsWhileAnimating = table.builds - buildsBefore;
+  table.stop();
+  const changeToFrameMs = changeTimes(view, spec, frames[0]!.medianMs);
   return { firstFrameMs, tableBuildMs, rebuildsWhileAnimating, frames, changeToFrameMs };
 }
 
