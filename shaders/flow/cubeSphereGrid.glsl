@@ -14,13 +14,15 @@ uniform sampler2D uEdgeCells;
 uniform sampler2D uEdgeNormal;
 uniform sampler2D uEdgeMid;
 
-vec3 tfcCellCenter(int c) {
+struct TfcCell {
+  /** The cell's centre (unit). */
+  vec3 center;
+  float area;
+};
+
+TfcCell tfcCell(int c) {
   vec4 texel = texelFetch(uCellGeometry, tfcCellTexel(c), 0);
-  return TFC_TEXEL_VEC3(texel, TFC_CELL_GEOMETRY_CENTER);
-}
-float tfcCellArea(int c) {
-  vec4 texel = texelFetch(uCellGeometry, tfcCellTexel(c), 0);
-  return TFC_TEXEL_FLOAT(texel, TFC_CELL_GEOMETRY_AREA);
+  return TfcCell(TFC_TEXEL_VEC3(texel, TFC_CELL_GEOMETRY_CENTER), TFC_TEXEL_FLOAT(texel, TFC_CELL_GEOMETRY_AREA));
 }
 /** The edges of cell c's 4 sides, side s in [s], each ±(e + 1). */
 vec4 tfcCellEdges(int c) {
@@ -51,15 +53,16 @@ TfcEdgeCells tfcEdgeCells(int e) {
     TFC_TEXEL_FLOAT(texel, TFC_EDGE_CELLS_DISTANCE)
   );
 }
-/** The unit normal of edge e, from A to B. */
-vec3 tfcEdgeNormal(int e) {
+struct TfcEdgeNormal {
+  /** The unit normal of the edge, from A to B. */
+  vec3 normal;
+  /** (z_B − z_A)/d. */
+  float zSlope;
+};
+
+TfcEdgeNormal tfcEdgeNormal(int e) {
   vec4 texel = texelFetch(uEdgeNormal, tfcEdgeTexel(e), 0);
-  return TFC_TEXEL_VEC3(texel, TFC_EDGE_NORMAL_NORMAL);
-}
-/** (z_B − z_A)/d of edge e. */
-float tfcEdgeZSlope(int e) {
-  vec4 texel = texelFetch(uEdgeNormal, tfcEdgeTexel(e), 0);
-  return TFC_TEXEL_FLOAT(texel, TFC_EDGE_NORMAL_Z_SLOPE);
+  return TfcEdgeNormal(TFC_TEXEL_VEC3(texel, TFC_EDGE_NORMAL_NORMAL), TFC_TEXEL_FLOAT(texel, TFC_EDGE_NORMAL_Z_SLOPE));
 }
 vec3 tfcEdgeMid(int e) {
   vec4 texel = texelFetch(uEdgeMid, tfcEdgeTexel(e), 0);

@@ -46,7 +46,8 @@ vec4 tfcPredictEdgeVelocity() {
   TfcFilm filmB = tfcFilmAt(uFilm, tfcCellTexel(cb));
   if (!filmA.intact || !filmB.intact) return tfcPredictionTexel(0.0, 0.0);
   vec3 m = tfcEdgeMid(e);
-  vec3 n = tfcEdgeNormal(e);
+  TfcEdgeNormal normal = tfcEdgeNormal(e);
+  vec3 n = normal.normal;
   // The velocity at the midpoint: the mean of the two cells', in the tangent plane there.
   vec3 w = 0.5 * (tfcCellVelocity(texelFetch(uCellVelocity, tfcCellTexel(ca), 0)) + tfcCellVelocity(texelFetch(uCellVelocity, tfcCellTexel(cb), 0)));
   w -= dot(w, m) * m;
@@ -66,7 +67,7 @@ vec4 tfcPredictEdgeVelocity() {
     advected = dot(w, n);
   }
   float etaEdge = tfcLogarithmicMean(filmA.eta, filmB.eta);
-  float gravityAlongNormal = -uGravity * tfcEdgeZSlope(e);
+  float gravityAlongNormal = -uGravity * normal.zSlope;
   float denominator = etaEdge / uDt + uAirFriction;
   float blow = exp(-(1.0 - dot(m, uBlowCenter)) / (TFC_BLOW_WIDTH_RAD * TFC_BLOW_WIDTH_RAD)) * dot(uBlowVelocity, n);
   float air = dot(uSurfaceWind, n.xy) + blow;

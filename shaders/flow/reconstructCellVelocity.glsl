@@ -7,7 +7,8 @@
 
 vec4 tfcReconstructCellVelocity() {
   int c = tfcCellAt(ivec2(gl_FragCoord.xy));
-  vec3 center = tfcCellCenter(c);
+  TfcCell cell = tfcCell(c);
+  vec3 center = cell.center;
   vec4 edges = tfcCellEdges(c);
   vec3 u = vec3(0.0);
   for (int s = 0; s < 4; s++) {
@@ -17,6 +18,6 @@ vec4 tfcReconstructCellVelocity() {
   }
   u -= dot(u, center) * center;
   vec4 texel = vec4(0.0);
-  TFC_SET_TEXEL_VEC3(texel, TFC_CELL_VELOCITY_U, u / tfcCellArea(c));
+  TFC_SET_TEXEL_VEC3(texel, TFC_CELL_VELOCITY_U, u / cell.area);
   return texel;
 }

@@ -9,13 +9,13 @@ uniform sampler2D uBurst;
 uniform float uRenewSteps;
 
 /** The steps counted since no film was left. */
-float tfcBurstSteps(sampler2D burst) {
+float tfcStepsSinceBurst(sampler2D burst) {
   vec4 steps = texelFetch(burst, ivec2(0), 0);
   return TFC_TEXEL_FLOAT(steps, TFC_BURST_STEPS);
 }
 
 /** Whether this step renews the film. */
-bool tfcRenewing() { return uRenewSteps > 0.0 && tfcBurstSteps(uBurst) >= uRenewSteps; }
+bool tfcRenewing() { return uRenewSteps > 0.0 && tfcStepsSinceBurst(uBurst) >= uRenewSteps; }
 
 /** The burst's texel after `steps` steps. */
 vec4 tfcBurstTexel(float steps) {
@@ -27,7 +27,7 @@ vec4 tfcBurstTexel(float steps) {
 uniform sampler2D uHoles;
 
 /** The burst's count after this step's rims: one more while every ray of every open hole is at π, else 0. */
-vec4 tfcCountBurst() {
+vec4 tfcBurstSteps() {
   if (tfcRenewing()) return tfcBurstTexel(0.0);
   bool opened = false;
   for (int s = 0; s < TFC_MAX_HOLES; s++) {
@@ -36,6 +36,6 @@ vec4 tfcCountBurst() {
     for (int k = 0; k < TFC_HOLE_RAYS; k++)
       if (tfcRayRadius(uHoles, k, s) < TFC_HOLE_PI) return tfcBurstTexel(0.0);
   }
-  return tfcBurstTexel(opened ? tfcBurstSteps(uBurst) + 1.0 : 0.0);
+  return tfcBurstTexel(opened ? tfcStepsSinceBurst(uBurst) + 1.0 : 0.0);
 }
 #endif

@@ -19,7 +19,7 @@ vec4 tfcRuptureFilm() {
   TfcFilm film = tfcFilmAt(uFilm, texel);
   film.marked = false;
   if (!film.intact || (film.eta > uRuptureEta && film.gamma < uRuptureGamma)) return tfcFilmTexel(film);
-  bool held = tfcInsideAnyHole(uHoles, tfcCellCenter(tfcCellAt(texel)));
+  bool held = tfcInsideAnyHole(uHoles, tfcCell(tfcCellAt(texel)).center);
   return tfcFilmTexel(TfcFilm(0.0, 0.0, false, !held));
 }
 
@@ -57,7 +57,7 @@ bool tfcMarkedCell(int m, out vec3 center) {
       int c = r * n + i;
       if (!tfcFilmAt(uFilm, tfcCellTexel(c)).marked) continue;
       if (m == 0) {
-        center = tfcCellCenter(c);
+        center = tfcCell(c).center;
         return true;
       }
       m--;
@@ -115,6 +115,6 @@ vec4 tfcEmptyHoles() {
   if (tfcRenewing()) return texelFetch(uStartFilm, texel, 0);
   TfcFilm film = tfcFilmAt(uFilm, texel);
   film.marked = false;
-  if (film.intact && tfcInsideAnyHole(uHoles, tfcCellCenter(tfcCellAt(texel)))) return tfcFilmTexel(TfcFilm(0.0, 0.0, false, false));
+  if (film.intact && tfcInsideAnyHole(uHoles, tfcCell(tfcCellAt(texel)).center)) return tfcFilmTexel(TfcFilm(0.0, 0.0, false, false));
   return tfcFilmTexel(film);
 }

@@ -53,7 +53,7 @@ vec4 tfcWeightsAt(ivec2 texel) {
 /** The right side b − AΓ = −Σ_e [Δt L_e (u*·n_out)_e Γ̄_e + w_e (Γ_c − Γ_nb)] and the diagonal. */
 vec4 tfcSurfactantSystem() {
   int c = tfcCellAt(ivec2(gl_FragCoord.xy));
-  float area = tfcCellArea(c);
+  float area = tfcCell(c).area;
   float gammaC = tfcGammaOf(c);
   vec4 edges = tfcCellEdges(c);
   vec4 neighbors = tfcCellNeighbors(c);

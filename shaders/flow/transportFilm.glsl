@@ -18,7 +18,7 @@ vec4 tfcTransportLimiter() {
     outflow += tfcEdgeCells(e).length * max(0.0, sign(edges[s]) * tfcEdgeVelocityAt(tfcEdgeTexel(e)));
   }
   outflow *= uTransportDt;
-  float area = tfcCellArea(c);
+  float area = tfcCell(c).area;
   vec4 limiter = vec4(0.0);
   TFC_SET_TEXEL_FLOAT(limiter, TFC_LIMITER_FRACTION, outflow > area ? area / outflow : 1.0);
   return limiter;
@@ -56,7 +56,7 @@ vec4 tfcTransportUpdate() {
     gammaOut += sign(edges[s]) * TFC_TEXEL_FLOAT(flux, TFC_FLUX_GAMMA);
   }
   TfcFilm film = tfcFilmAt(uFilm, texel);
-  float area = tfcCellArea(c);
+  float area = tfcCell(c).area;
   // max(0, ·) only absorbs rounding: the limiter already bounds the outflow by the content.
   film.eta = max(0.0, film.eta - etaOut / area);
   film.gamma = max(0.0, film.gamma - gammaOut / area);

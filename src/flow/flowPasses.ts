@@ -51,7 +51,7 @@ export const PASSES = {
   openHoles: ['ruptureFilm.glsl', 'tfcOpenHoles()'],
   growRims: ['ruptureFilm.glsl', 'tfcGrowRims()'],
   emptyHoles: ['ruptureFilm.glsl', 'tfcEmptyHoles()'],
-  burstSteps: ['renewFilm.glsl', 'tfcCountBurst()'],
+  burstSteps: ['renewFilm.glsl', 'tfcBurstSteps()'],
 } as const satisfies Record<string, readonly [keyof typeof FILE_SETS, string]>;
 export type PassName = keyof typeof PASSES;
 
