@@ -191,12 +191,13 @@ export function advanceFilm(sim: FilmSimulation, seconds: number): number {
 
 /**
  * A puncture's direction from the bubble's centre (the simulation's frame, any length): three
- * finite numbers, not all 0; otherwise a ParameterError naming `puncture`.
+ * finite numbers, not all 0, whose length √(x² + y² + z²) is finite too; otherwise a
+ * ParameterError naming `puncture`.
  */
 export function checkPunctureDirection(x: number, y: number, z: number): void {
   const length = Math.hypot(x, y, z);
   if (![x, y, z].every(Number.isFinite) || !(length > 0 && length < Infinity))
-    rejectValue('puncture', [x, y, z], 'a direction from the centre [x, y, z]: three finite numbers, not all 0');
+    rejectValue('puncture', [x, y, z], 'a direction from the centre [x, y, z]: three finite numbers, not all 0, of a finite length');
 }
 
 /** Pricks the film at a direction (checkPunctureDirection): a hole opens there and bursts outward. */

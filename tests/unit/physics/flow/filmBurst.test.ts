@@ -52,4 +52,18 @@ describe('a pricked film bursts', () => {
     for (let s = 0; s < 50 && sim.state.holes.length === 0; s++) stepFilm(sim);
     expect(sim.state.holes.length).toBeGreaterThan(0);
   });
+
+  it('is pricked at a direction of any length, and refuses one that is 0 or not finite (or whose length is not), naming `puncture`', () => {
+    const sim = createFilmSimulation({ gridN: 6 });
+    punctureFilm(sim, 0, 0, 3);
+    expect(sim.state.holes[0]!.center).toEqual([0, 0, 1]);
+    for (const bad of [
+      [0, 0, 0],
+      [Number.NaN, 0, 1],
+      [0, Number.POSITIVE_INFINITY, 0],
+      [1.5e308, 1.5e308, 1.5e308],
+    ] as const)
+      expect(() => punctureFilm(sim, ...bad), String(bad)).toThrow(/^puncture: \[.*\] is not allowed; expected a direction/);
+    expect(sim.state.holes).toHaveLength(1);
+  });
 });
