@@ -57,13 +57,14 @@ describe('a pricked film bursts', () => {
     const sim = createFilmSimulation({ gridN: 6 });
     punctureFilm(sim, 0, 0, 3);
     expect(sim.state.holes[0]!.center).toEqual([0, 0, 1]);
-    for (const bad of [
+    const bad: [number, number, number][] = [
       [0, 0, 0],
       [Number.NaN, 0, 1],
       [0, Number.POSITIVE_INFINITY, 0],
       [1.5e308, 1.5e308, 1.5e308],
-    ] as const)
-      expect(() => punctureFilm(sim, ...bad), String(bad)).toThrow(/^puncture: \[.*\] is not allowed; expected a direction/);
+    ];
+    for (const [x, y, z] of bad)
+      expect(() => punctureFilm(sim, x, y, z), String([x, y, z])).toThrow(/^puncture: \[.*\] is not allowed; expected a direction/);
     expect(sim.state.holes).toHaveLength(1);
   });
 });
