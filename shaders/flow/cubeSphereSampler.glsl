@@ -1,7 +1,8 @@
 // Bilinear sampling of a cell field at any direction, seamless across faces (mirrors
 // src/physics/flow/cubeSphereSampler.ts): the halo pass fills a padded atlas whose ghosts are
-// weighted sums of cells (uHaloTaps: TFC_HALO_TAP_TEXELS texels per padded texel, two (cell,
-// weight) taps in each; a corner ghost is g₁ + g₂ − c, nine taps), and a sample is 4 taps of it.
+// weighted sums of cells (uHaloTaps: TFC_HALO_TAP_TEXELS texels per padded texel, each a HALO_TAPS
+// record of two (cell, weight) taps; a corner ghost is g₁ + g₂ − c, nine taps), and a sample is 4
+// taps of it. Both weigh whole texels: they read no field of a record.
 #ifndef THIN_FILM_CUBE_SPHERE_SAMPLER
 #define THIN_FILM_CUBE_SPHERE_SAMPLER
 #include "flowAtlas.glsl"
@@ -28,13 +29,18 @@ vec4 tfcSamplePadded(sampler2D padded, vec3 p) {
 }
 
 #ifdef TFC_HALO_TAP_TEXELS
+#include "texelRecord.glsl"
+/** A tap's weight × the texel of its cell in `field`. */
+vec4 tfcTap(sampler2D field, float cell, float weight) { return weight * texelFetch(field, tfcCellTexel(tfcIndex(cell)), 0); }
+
 /** The halo pass (padField): the padded texel's value, a cell's own or a ghost's weighted cells of `field`. */
 vec4 tfcPadField(sampler2D haloTaps, sampler2D field) {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   vec4 sum = vec4(0.0);
   for (int k = 0; k < TFC_HALO_TAP_TEXELS; k++) {
     vec4 taps = texelFetch(haloTaps, ivec2(TFC_HALO_TAP_TEXELS * texel.x + k, texel.y), 0);
-    sum += taps.y * texelFetch(field, tfcCellTexel(tfcIndex(taps.x)), 0) + taps.w * texelFetch(field, tfcCellTexel(tfcIndex(taps.z)), 0);
+    sum += tfcTap(field, TFC_TEXEL_FLOAT(taps, TFC_HALO_TAPS_CELL_0), TFC_TEXEL_FLOAT(taps, TFC_HALO_TAPS_WEIGHT_0)) +
+      tfcTap(field, TFC_TEXEL_FLOAT(taps, TFC_HALO_TAPS_CELL_1), TFC_TEXEL_FLOAT(taps, TFC_HALO_TAPS_WEIGHT_1));
   }
   return sum;
 }

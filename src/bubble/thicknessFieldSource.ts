@@ -2,6 +2,7 @@ import { FIELDS, type FieldName, type FieldSettings, THICKNESS_FIELDS } from '..
 import type { FieldUniforms } from '../fields/thicknessField.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
+import { flowFilmDefines } from '../flow/flowTexels.ts';
 
 /**
  * The thickness fields as a shader sees them: every registered field's GLSL under its named
@@ -11,8 +12,11 @@ import { shaderSource } from '../gpu/shaderSource.ts';
  */
 export const thicknessFieldSource = (): string => shaderSource('thicknessField.glsl');
 
-export const thicknessFieldDefines = (s: { readonly field: FieldName }): Record<string, number> =>
-  enumDefines('TFC_THICKNESS_FIELD', FIELDS, s.field);
+/** The selected field's define, and the flow field's film record (how it reads the padded film it samples). */
+export const thicknessFieldDefines = (s: { readonly field: FieldName }): Record<string, number> => ({
+  ...enumDefines('TFC_THICKNESS_FIELD', FIELDS, s.field),
+  ...flowFilmDefines(),
+});
 
 export const thicknessFieldUniforms = (): FieldUniforms =>
   Object.assign({}, ...FIELDS.map((name) => THICKNESS_FIELDS[name].uniforms())) as FieldUniforms;

@@ -3,6 +3,7 @@ import { LOG_MEAN_SERIES_BELOW } from '../physics/flow/logarithmicMean.ts';
 import { FULLSCREEN_VERTEX } from '../gpu/fullscreenPass.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { flowLayoutDefines } from './flowLayouts.ts';
+import { flowTexelDefines } from './flowTexels.ts';
 import type { FlowUniformSet, FlowUniformSets } from './flowUniforms.ts';
 
 /** The angular width of a blow's patch of air (radians): about a sixth of the bubble across. */
@@ -54,9 +55,10 @@ export const PASSES = {
 } as const satisfies Record<string, readonly [keyof typeof FILE_SETS, string]>;
 export type PassName = keyof typeof PASSES;
 
-/** The defines of every pass: the flow's layouts (flowLayouts.ts) and the twin's constants the GLSL reads. */
+/** The defines of every pass: the flow's layouts and texel records (flowLayouts.ts, flowTexels.ts) and the twin's constants the GLSL reads. */
 export const flowPassDefines = (): Record<string, number> => ({
   ...flowLayoutDefines(),
+  ...flowTexelDefines(),
   TFC_LOG_MEAN_SERIES_BELOW: LOG_MEAN_SERIES_BELOW,
   TFC_BLOW_WIDTH_RAD: BLOW_WIDTH_RAD,
 });

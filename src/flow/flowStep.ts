@@ -1,13 +1,10 @@
 import { Color, type ShaderMaterial, type Texture, type WebGLRenderTarget, type WebGLRenderer } from 'three';
 import type { ChebyshevSchedule } from '../physics/flow/chebyshevSchedule.ts';
 import { FullscreenPass } from '../gpu/fullscreenPass.ts';
-import { SWEEP_GUESS, SWEEP_PREVIOUS_GUESS, ZERO_GUESS } from './flowLayouts.ts';
 import { type PassName, passMaterials } from './flowPasses.ts';
 import { type FlowTargets, allTargets, flowTargets } from './flowTargets.ts';
-import { type FlowUniformName, type FlowUniformSets, NO_PUNCTURE, allFlowUniforms } from './flowUniforms.ts';
-
-/** What a draw points its uniforms at: the targets the passes before it wrote, and values. */
-type DrawInputs = Partial<Record<FlowUniformName, Texture | readonly number[] | number>>;
+import { type FlowUniformName, type FlowUniformSets, allFlowUniforms } from './flowUniforms.ts';
+import { type DrawInputs, drawPredictionAndSolve } from './solvePasses.ts';
 
 /**
  * The twin's step as draws (docs/flow.md#the-gpu-port): each pass of flowPasses.ts one fullscreen
@@ -18,7 +15,6 @@ type DrawInputs = Partial<Record<FlowUniformName, Texture | readonly number[] | 
  */
 export class FlowStep {
   private current: FlowTargets;
-  private sweepsMeasured: readonly [WebGLRenderTarget, WebGLRenderTarget] | null = null;
   private fullscreen = new FullscreenPass();
   /** The film's start, which a renewal puts back. */
   private startFilm: Texture | null = null;
@@ -42,11 +38,6 @@ export class FlowStep {
     return this.current;
   }
 
-  /** The sweeps whose residuals the last step's solve left: the first (from Γ) and the one at its solution; null before a step. */
-  get residualSweeps(): readonly [WebGLRenderTarget, WebGLRenderTarget] | null {
-    return this.sweepsMeasured;
-  }
-
   /** Sets a uniform that every pass reading it keeps until it is set again. */
   set(name: FlowUniformName, value: unknown): void {
     this.uniforms[name].value = value;
@@ -65,11 +56,10 @@ export class FlowStep {
     this.fullscreen.render(this.renderer, this.materials[pass]);
   }
 
-  /** The film at `start` (η, Γ per cell), at rest (zero edge velocities), with no hole and no burst. */
+  /** The film at `start` (a FLOW_FILM record per cell), at rest (zero edge velocities), with no hole and no burst. */
   start(start: Texture): void {
     const t = this.targets;
     for (const pair of [t.film, t.holes, t.burst]) pair.reset();
-    this.sweepsMeasured = null;
     this.startFilm = start;
     this.draw('start', t.film.read, { uFilm: start });
     const r = this.renderer;
@@ -90,40 +80,8 @@ export class FlowStep {
   /** One step, the twin's stepFilm pass for pass (evaporation only where it takes film, as there). */
   step(evaporates: boolean): void {
     const t = this.targets;
-    this.draw('reconstruct', t.cellVelocity, { uEdgeVelocity: t.edgeVelocity.texture });
-    this.pad(t.cellVelocity, t.paddedCellVelocity);
-    this.draw('predict', t.prediction, {
-      uFilm: t.film.read.texture,
-      uCellVelocity: t.cellVelocity.texture,
-      uPaddedCellVelocity: t.paddedCellVelocity.texture,
-    });
-    this.draw('weights', t.weights, { uPrediction: t.prediction.texture });
-    this.draw('system', t.system, { uSurfactantWeights: t.weights.texture });
-    const [first, one, other] = t.sweeps;
-    const { momentum, step } = this.schedule;
-    const iterations = step.length;
-    const coefficients = (k: number) => ({ uChebyshevMomentum: momentum[k]!, uChebyshevStep: step[k]! });
-    this.draw('sweep', first, {
-      uSurfactantRhs: t.system.texture,
-      uGuess: t.system.texture,
-      uGuessChannel: ZERO_GUESS,
-      uPreviousGuessChannel: ZERO_GUESS,
-      ...coefficients(0),
-    });
-    let x = first;
-    for (let k = 1; k <= iterations; k++) {
-      // The sweep after the last measures the residual at the solution (the twin's extra sweep; its x is not used).
-      const next = x === one ? other : one;
-      const measuring = k === iterations;
-      this.draw('sweep', next, {
-        uGuess: x.texture,
-        uGuessChannel: SWEEP_GUESS,
-        uPreviousGuessChannel: SWEEP_PREVIOUS_GUESS,
-        ...(measuring ? { uChebyshevMomentum: 0, uChebyshevStep: 1 } : coefficients(k)),
-      });
-      if (!measuring) x = next;
-      else this.sweepsMeasured = [first, next];
-    }
+    const state = { film: t.film.read.texture, edgeVelocity: t.edgeVelocity.texture };
+    const x = drawPredictionAndSolve((pass, target, inputs) => this.draw(pass, target, inputs), t, state, this.schedule);
     this.draw('correct', t.edgeVelocity, { uFilm: t.film.read.texture, uSolvedGamma: x.texture });
     for (let k = 0; k < this.transportSubsteps; k++) {
       this.draw('limiter', t.limiter, { uEdgeVelocity: t.edgeVelocity.texture });
@@ -153,7 +111,7 @@ export class FlowStep {
    * one of the MAX_HOLES is free, and bursts outward from the next step (the twin's punctureFilm).
    */
   puncture(x: number, y: number, z: number): void {
-    this.drawHoles('openHoles', { uBurst: this.targets.burst.read.texture, uPuncture: [x, y, z, 1] });
+    this.drawHoles('openHoles', { uBurst: this.targets.burst.read.texture, uPuncture: [x, y, z], uPunctured: 1 });
   }
 
   /** Pass 8, rupture and the rims (ruptureFilm.glsl), and the burst's count (renewFilm.glsl). */
@@ -164,7 +122,7 @@ export class FlowStep {
     const burst = t.burst.read.texture;
     this.draw('rupture', marked, { uFilm: emptied.texture, uHoles: t.holes.read.texture });
     this.draw('ruptureRows', t.ruptureRows, { uFilm: marked.texture });
-    this.drawHoles('openHoles', { uRuptureRows: t.ruptureRows.texture, uPuncture: NO_PUNCTURE, uBurst: burst });
+    this.drawHoles('openHoles', { uRuptureRows: t.ruptureRows.texture, uPunctured: 0, uBurst: burst });
     this.pad(marked, t.paddedFilm);
     this.drawHoles('growRims', { uPaddedFilm: t.paddedFilm.texture });
     this.draw('emptyHoles', emptied, { uFilm: marked.texture, uHoles: t.holes.read.texture, uStartFilm: this.startFilm! });
@@ -180,7 +138,6 @@ export class FlowStep {
   invalidate(): void {
     this.current = flowTargets(this.n);
     this.fullscreen = new FullscreenPass();
-    this.sweepsMeasured = null;
   }
 
   dispose(): void {

@@ -46,7 +46,7 @@ export function flowTargets(n: number) {
   const padded = faceAtlasSize(n + 2);
   const edges = edgeAtlasSize(n);
   return {
-    /** (η, Γ, intact, 0). */
+    /** The film, a FLOW_FILM record per cell (flowTexels.ts). */
     film: new PingPong(cells),
     edgeVelocity: floatTarget(edges),
     cellVelocity: floatTarget(cells),
@@ -54,8 +54,8 @@ export function flowTargets(n: number) {
     prediction: floatTarget(edges),
     weights: floatTarget(cells),
     system: floatTarget(cells),
-    /** The first sweep's result (its residual: the starting one), then two that take turns. */
-    sweeps: [floatTarget(cells), floatTarget(cells), floatTarget(cells)] as const,
+    /** The surfactant solve's sweeps, taking turns: each reads the other's. */
+    sweeps: [floatTarget(cells), floatTarget(cells)] as const,
     limiter: floatTarget(cells),
     flux: floatTarget(edges),
     /** The padded film, for sampling h anywhere (the bubble's field and the rims). */

@@ -7,7 +7,7 @@ import type { FlowParameters } from '../physics/flow/flowParameters.ts';
 import { rimLeadRad, rimThicknessFloorNm } from '../physics/flow/ruptureFilm.ts';
 import { surfaceWind } from '../physics/flow/windDirection.ts';
 import type { FlowGridTextures } from './flowGridTextures.ts';
-import { SWEEP_GUESS, SWEEP_PREVIOUS_GUESS } from './flowLayouts.ts';
+import { SWEEP_GUESS, SWEEP_PREVIOUS_GUESS } from './flowTexels.ts';
 
 /** What the uniforms' values are made of: the simulation's parameters, numbers, grid, step and grid textures. */
 export interface FlowUniformInputs {
@@ -22,9 +22,6 @@ export interface FlowUniformInputs {
   readonly renewSteps: number;
   readonly textures: FlowGridTextures;
 }
-
-/** No puncture (uPuncture's w = 0). */
-export const NO_PUNCTURE: readonly number[] = [0, 0, 0, 0];
 
 const value = (v: unknown): IUniform => ({ value: v });
 /** A texture a pass reads, pointed at its target before the draw. */
@@ -85,7 +82,9 @@ export const FLOW_UNIFORM_SETS = {
     uRuptureEta: value(numbers.ruptureEta),
     uRuptureGamma: value(numbers.ruptureGamma),
     uRuptureRows: input(),
-    uPuncture: value(NO_PUNCTURE),
+    // No puncture until one is asked for (FlowStep.puncture).
+    uPuncture: value([0, 0, 1]),
+    uPunctured: value(0),
     uPaddedFilm: input(),
     uRimSpeed: value(rimSpeed(parameters, numbers)),
     uRimEtaFloor: value(rimThicknessFloorNm(parameters) / parameters.thicknessNm),

@@ -5,6 +5,7 @@ import { VELOCITY_SCALE_M_S } from '../physics/flow/flowConstants.ts';
 import { type FlowNumbers, flowNumbers } from '../physics/flow/flowNumbers.ts';
 import { type FlowParameters, validateFlowParameters } from '../physics/flow/flowParameters.ts';
 import { initialFilm } from '../physics/flow/initialFilm.ts';
+import { checkPunctureDirection } from '../physics/flow/filmSimulation.ts';
 import type { ChebyshevSchedule } from '../physics/flow/chebyshevSchedule.ts';
 import { surfactantSolveSchedule } from '../physics/flow/solveSurfactant.ts';
 import { type TimeStepRule, timeStep, transportSubsteps } from '../physics/flow/timeStep.ts';
@@ -13,15 +14,15 @@ import { floatTexture } from '../gpu/floatRow.ts';
 import { cellTexelIndex, faceAtlasSize } from './flowAtlas.ts';
 import { type FlowGridTextures, flowGridTextures } from './flowGridTextures.ts';
 import { FlowStep } from './flowStep.ts';
-import { paddedStartTexture } from './paddedStart.ts';
+import { paddedStartTexture, startFilmRecords } from './paddedStart.ts';
+import { FLOW_FILM } from './flowTexels.ts';
 import { flowUniformSets } from './flowUniforms.ts';
 import { renewSteps } from './renewFilm.ts';
 
 /**
- * The targets that hold the film's state, for reading it back: the film (η, Γ, intact, 0) per cell
- * of the cell atlas, and padded, u·n per edge of the edge atlas (r), the hole table (flowLayouts.ts), and the
- * two sweeps of the last step's surfactant solve whose residuals measure it (the first and the one
- * at its solution; null before a step).
+ * The targets that hold the film's state, for reading it back, each texel a record of
+ * flowTexels.ts: the film (FLOW_FILM) per cell of the cell atlas, and padded, u·n per edge of the
+ * edge atlas (EDGE_VELOCITY), and the hole table (flowLayouts.ts).
  */
 export interface FilmStateTargets {
   readonly film: WebGLRenderTarget;
@@ -29,7 +30,6 @@ export interface FilmStateTargets {
   readonly paddedFilm: WebGLRenderTarget;
   readonly edgeVelocity: WebGLRenderTarget;
   readonly holes: WebGLRenderTarget;
-  readonly residualSweeps: readonly [WebGLRenderTarget, WebGLRenderTarget] | null;
 }
 
 /**
@@ -37,7 +37,8 @@ export interface FilmStateTargets {
  * same grid, parameters, start and fixed step Δt, each of the twin's passes one fragment-shader
  * draw into RGBA float render targets of the renderer it is given (FlowStep, in the cell, padded
  * and edge atlases of flowAtlas.ts). `step` runs whole steps; `paddedFilm` is the film to sample.
- * With `renew` a new bubble follows a burst (renewFilm.ts); the twin has no such option.
+ * With `renew` a new bubble follows a burst (renewFilm.ts); the twin has no such option. `puncture`
+ * bursts it where it is tapped.
  */
 export class GpuFilmSimulation {
   readonly parameters: FlowParameters;
@@ -53,7 +54,7 @@ export class GpuFilmSimulation {
   /** Steps taken since the start. */
   steps = 0;
   private textures: FlowGridTextures;
-  /** The start's (η, Γ) per cell, in float64 from initialFilm, rounded once; its padded film made on the CPU (startPaddedFilm). */
+  /** The film at its start (startFilmRecords, float64 from initialFilm rounded once); its padded film made on the CPU (startPaddedFilm). */
   private start: DataTexture;
   private startPadded: DataTexture | null = null;
   private readonly passes: FlowStep;
@@ -93,10 +94,12 @@ export class GpuFilmSimulation {
   }
 
   private startTexture(): DataTexture {
-    const { eta, gamma } = initialFilm(this.grid, this.parameters.seed);
+    const film = startFilmRecords(this.grid, initialFilm(this.grid, this.parameters.seed));
+    const texel = FLOW_FILM.floats;
     const size = faceAtlasSize(this.grid.n);
-    const data = new Float32Array(4 * size.width * size.height);
-    for (let c = 0; c < this.grid.cellCount; c++) data.set([eta[c]!, gamma[c]!], 4 * cellTexelIndex(this.grid.n, c));
+    const data = new Float32Array(texel * size.width * size.height);
+    for (let c = 0; c < this.grid.cellCount; c++)
+      data.set(film.subarray(texel * c, texel * c + texel), texel * cellTexelIndex(this.grid.n, c));
     return floatTexture(data, size.width, size.height);
   }
 
@@ -146,17 +149,23 @@ export class GpuFilmSimulation {
   }
 
   /**
-   * Pricks the film at a direction (unit or not, the simulation's frame): a hole opens there, if
-   * one of the MAX_HOLES is free, and bursts outward from the next step (the twin's punctureFilm).
+   * Bursts the bubble where it is tapped: pricks the film at the direction (x, y, z) from the
+   * bubble's centre, in the simulation's frame (z up; a view's y-up point p is (p.x, −p.z, p.y)),
+   * of any length but 0. A hole opens there, if one of the MAX_HOLES slots is free, and from the
+   * next step its rim runs outward at the Taylor–Culick speed until the film is gone (or, with
+   * `renew`, a new bubble follows). Its reference is the twin's punctureFilm, which
+   * tests/e2e/flowBurst.spec.ts compares it with. A direction that is not three finite numbers, or
+   * is 0, throws a ParameterError naming `puncture` (checkPunctureDirection).
    */
   puncture(x: number, y: number, z: number): void {
+    checkPunctureDirection(x, y, z);
     this.passes.withTargets(() => {
       this.ensureStarted();
       this.passes.puncture(x, y, z);
     });
   }
 
-  /** The padded film (η, Γ, intact, 0), its ghosts filled, at the steps taken: what tfcSamplePadded reads. */
+  /** The padded film (a FLOW_FILM record per padded texel), its ghosts filled, at the steps taken: what tfcSamplePadded reads. */
   get paddedFilm(): Texture {
     const t = this.passes.targets;
     if (this.paddedAt !== this.steps || !this.started) {
@@ -181,7 +190,6 @@ export class GpuFilmSimulation {
       paddedFilm: t.paddedFilm,
       edgeVelocity: t.edgeVelocity,
       holes: t.holes.read,
-      residualSweeps: this.passes.residualSweeps,
     };
   }
 

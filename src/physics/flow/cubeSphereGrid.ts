@@ -66,17 +66,37 @@ export function cubeSphereGrid(n: number): CubeSphereGrid {
   return grid;
 }
 
-function buildGrid(n: number): CubeSphereGrid {
+/** The cells' centres and exact areas, and the corners of every face. */
+interface GridCells {
+  readonly center: Float64Array;
+  readonly area: Float64Array;
+  /** Corner (k, l) of each face, k, l ∈ [0, n], at cornerIndex. */
+  readonly corner: Float64Array;
+}
+
+/** The place in GridCells.corner of corner (k, l) of face f. */
+const cornerIndex = (n: number, f: number, k: number, l: number): number => 3 * ((f * (n + 1) + l) * (n + 1) + k);
+
+/** The side s (−i, +i, −j, +j) of cell (f, i, j) as a pair of corners. */
+function sideCorners(n: number, f: number, i: number, j: number, s: number): [number, number] {
+  if (s === 0) return [cornerIndex(n, f, i, j), cornerIndex(n, f, i, j + 1)];
+  if (s === 1) return [cornerIndex(n, f, i + 1, j), cornerIndex(n, f, i + 1, j + 1)];
+  if (s === 2) return [cornerIndex(n, f, i, j), cornerIndex(n, f, i + 1, j)];
+  return [cornerIndex(n, f, i, j + 1), cornerIndex(n, f, i + 1, j + 1)];
+}
+
+/** Cell c's face and (i, j) on it. */
+const cellPlace = (n: number, c: number): [number, number, number] => [Math.floor(c / (n * n)), c % n, Math.floor(c / n) % n];
+
+function gridCells(n: number): GridCells {
   const cellCount = 6 * n * n;
   const step = (2 * QUARTER_PI) / n;
   const tanAt = (k: number) => Math.tan(-QUARTER_PI + k * step);
   const center = new Float64Array(3 * cellCount);
   const area = new Float64Array(cellCount);
-  /** Corner (k, l) of each face, k, l ∈ [0, n]. */
   const corner = new Float64Array(6 * (n + 1) * (n + 1) * 3);
-  const cornerIndex = (f: number, k: number, l: number) => 3 * ((f * (n + 1) + l) * (n + 1) + k);
   for (let f = 0; f < 6; f++) {
-    for (let l = 0; l <= n; l++) for (let k = 0; k <= n; k++) faceDirection(f, tanAt(k), tanAt(l), corner, cornerIndex(f, k, l));
+    for (let l = 0; l <= n; l++) for (let k = 0; k <= n; k++) faceDirection(f, tanAt(k), tanAt(l), corner, cornerIndex(n, f, k, l));
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
         const c = (f * n + j) * n + i;
@@ -86,32 +106,21 @@ function buildGrid(n: number): CubeSphereGrid {
       }
     }
   }
-  const edgeCount = 12 * n * n;
-  const edgeA = new Int32Array(edgeCount);
-  const edgeB = new Int32Array(edgeCount);
-  const edgeLength = new Float64Array(edgeCount);
-  const edgeDistance = new Float64Array(edgeCount);
-  const edgeNormal = new Float64Array(3 * edgeCount);
-  const edgeMid = new Float64Array(3 * edgeCount);
-  const cellEdge = new Int32Array(4 * cellCount);
-  const cellEdgeSign = new Float64Array(4 * cellCount);
+  return { center, area, corner };
+}
+
+/**
+ * The cell across each side of each cell. Halfway from the side's midpoint towards the
+ * neighbour's centre lies inside the neighbour, on this face or the next.
+ */
+function cellNeighbors(n: number, { center, corner }: GridCells): Int32Array {
+  const cellCount = 6 * n * n;
   const cellNeighbor = new Int32Array(4 * cellCount);
   const scratch: FacePoint = { face: 0, tanA: 0, tanB: 0 };
-  /** The sides −i, +i, −j, +j of a cell as pairs of corners. */
-  const sideCorners = (f: number, i: number, j: number, s: number): [number, number] =>
-    s === 0
-      ? [cornerIndex(f, i, j), cornerIndex(f, i, j + 1)]
-      : s === 1
-        ? [cornerIndex(f, i + 1, j), cornerIndex(f, i + 1, j + 1)]
-        : s === 2
-          ? [cornerIndex(f, i, j), cornerIndex(f, i + 1, j)]
-          : [cornerIndex(f, i, j + 1), cornerIndex(f, i + 1, j + 1)];
-  // Pass 1: the neighbour across each side. Halfway from the side's midpoint towards the
-  // neighbour's centre lies inside the neighbour, on this face or the next.
   for (let c = 0; c < cellCount; c++) {
-    const [f, i, j] = [Math.floor(c / (n * n)), c % n, Math.floor(c / n) % n];
+    const [f, i, j] = cellPlace(n, c);
     for (let s = 0; s < 4; s++) {
-      const [p, q] = sideCorners(f, i, j, s);
+      const [p, q] = sideCorners(n, f, i, j, s);
       const mx = corner[p]! + corner[q]!;
       const my = corner[p + 1]! + corner[q + 1]!;
       const mz = corner[p + 2]! + corner[q + 2]!;
@@ -122,66 +131,89 @@ function buildGrid(n: number): CubeSphereGrid {
       cellNeighbor[4 * c + s] = cellOf(n, (1.5 * mx) / mr - 0.5 * cx, (1.5 * my) / mr - 0.5 * cy, (1.5 * mz) / mr - 0.5 * cz, scratch);
     }
   }
-  // Pass 2: each edge once, from its lower-numbered cell (A), entered in both cells' lists.
-  let edges = 0;
+  return cellNeighbor;
+}
+
+type GridEdges = Pick<
+  CubeSphereGrid,
+  'edgeA' | 'edgeB' | 'edgeLength' | 'edgeDistance' | 'edgeNormal' | 'edgeMid' | 'cellEdge' | 'cellEdgeSign'
+>;
+
+/** Edge e's geometry between cells a and b, its side the corners p and q: length, centre distance, midpoint and normal from a to b. */
+function edgeGeometry(
+  edges: GridEdges,
+  e: number,
+  { center, corner }: GridCells,
+  [a, b]: [number, number],
+  [p, q]: [number, number],
+): void {
+  edges.edgeLength[e] = angleBetween(corner, p, corner, q);
+  edges.edgeDistance[e] = angleBetween(center, 3 * a, center, 3 * b);
+  const mx = corner[p]! + corner[q]!;
+  const my = corner[p + 1]! + corner[q + 1]!;
+  const mz = corner[p + 2]! + corner[q + 2]!;
+  const mr = Math.hypot(mx, my, mz);
+  edges.edgeMid[3 * e] = mx / mr;
+  edges.edgeMid[3 * e + 1] = my / mr;
+  edges.edgeMid[3 * e + 2] = mz / mr;
+  const nx = corner[p + 1]! * corner[q + 2]! - corner[p + 2]! * corner[q + 1]!;
+  const ny = corner[p + 2]! * corner[q]! - corner[p]! * corner[q + 2]!;
+  const nz = corner[p]! * corner[q + 1]! - corner[p + 1]! * corner[q]!;
+  const towardsB =
+    nx * (center[3 * b]! - center[3 * a]!) +
+    ny * (center[3 * b + 1]! - center[3 * a + 1]!) +
+    nz * (center[3 * b + 2]! - center[3 * a + 2]!);
+  const scale = (towardsB >= 0 ? 1 : -1) / Math.hypot(nx, ny, nz);
+  edges.edgeNormal[3 * e] = nx * scale;
+  edges.edgeNormal[3 * e + 1] = ny * scale;
+  edges.edgeNormal[3 * e + 2] = nz * scale;
+}
+
+/** Each edge once, from its lower-numbered cell (A), entered in both cells' lists. */
+function gridEdges(n: number, cells: GridCells, cellNeighbor: Int32Array): GridEdges {
+  const [cellCount, edgeCount] = [6 * n * n, 12 * n * n];
+  const [edgeA, edgeB] = [new Int32Array(edgeCount), new Int32Array(edgeCount)];
+  const [edgeLength, edgeDistance] = [new Float64Array(edgeCount), new Float64Array(edgeCount)];
+  const [edgeNormal, edgeMid] = [new Float64Array(3 * edgeCount), new Float64Array(3 * edgeCount)];
+  const [cellEdge, cellEdgeSign] = [new Int32Array(4 * cellCount), new Float64Array(4 * cellCount)];
+  const edges: GridEdges = { edgeA, edgeB, edgeLength, edgeDistance, edgeNormal, edgeMid, cellEdge, cellEdgeSign };
+  let e = 0;
   for (let c = 0; c < cellCount; c++) {
-    const [f, i, j] = [Math.floor(c / (n * n)), c % n, Math.floor(c / n) % n];
+    const [f, i, j] = cellPlace(n, c);
     for (let s = 0; s < 4; s++) {
       const nb = cellNeighbor[4 * c + s]!;
       if (nb < c) continue;
-      const e = edges++;
-      const [p, q] = sideCorners(f, i, j, s);
-      edgeA[e] = c;
-      edgeB[e] = nb;
-      edgeLength[e] = angleBetween(corner, p, corner, q);
-      edgeDistance[e] = angleBetween(center, 3 * c, center, 3 * nb);
-      const mx = corner[p]! + corner[q]!;
-      const my = corner[p + 1]! + corner[q + 1]!;
-      const mz = corner[p + 2]! + corner[q + 2]!;
-      const mr = Math.hypot(mx, my, mz);
-      edgeMid[3 * e] = mx / mr;
-      edgeMid[3 * e + 1] = my / mr;
-      edgeMid[3 * e + 2] = mz / mr;
-      const nx = corner[p + 1]! * corner[q + 2]! - corner[p + 2]! * corner[q + 1]!;
-      const ny = corner[p + 2]! * corner[q]! - corner[p]! * corner[q + 2]!;
-      const nz = corner[p]! * corner[q + 1]! - corner[p + 1]! * corner[q]!;
-      const towardsB =
-        nx * (center[3 * nb]! - center[3 * c]!) +
-        ny * (center[3 * nb + 1]! - center[3 * c + 1]!) +
-        nz * (center[3 * nb + 2]! - center[3 * c + 2]!);
-      const scale = (towardsB >= 0 ? 1 : -1) / Math.hypot(nx, ny, nz);
-      edgeNormal[3 * e] = nx * scale;
-      edgeNormal[3 * e + 1] = ny * scale;
-      edgeNormal[3 * e + 2] = nz * scale;
-      cellEdge[4 * c + s] = e;
-      cellEdgeSign[4 * c + s] = 1;
+      [edgeA[e], edgeB[e]] = [c, nb];
+      edgeGeometry(edges, e, cells, [c, nb], sideCorners(n, f, i, j, s));
+      [cellEdge[4 * c + s], cellEdgeSign[4 * c + s]] = [e, 1];
       const back = [0, 1, 2, 3].find((t) => cellNeighbor[4 * nb + t] === c);
       if (back === undefined) throw new Error(`cube-sphere grid ${n}: cell ${nb} does not border cell ${c}`);
-      cellEdge[4 * nb + back] = e;
-      cellEdgeSign[4 * nb + back] = -1;
+      [cellEdge[4 * nb + back], cellEdgeSign[4 * nb + back]] = [e, -1];
+      e++;
     }
   }
-  if (edges !== edgeCount) throw new Error(`cube-sphere grid ${n}: ${edges} edges, expected ${edgeCount}`);
+  if (e !== edgeCount) throw new Error(`cube-sphere grid ${n}: ${e} edges, expected ${edgeCount}`);
+  return edges;
+}
+
+function buildGrid(n: number): CubeSphereGrid {
+  const cells = gridCells(n);
+  const cellNeighbor = cellNeighbors(n, cells);
+  const edges = gridEdges(n, cells, cellNeighbor);
+  const edgeCount = 12 * n * n;
   let minSpacing = Infinity;
   let spacingSum = 0;
   for (let e = 0; e < edgeCount; e++) {
-    minSpacing = Math.min(minSpacing, edgeDistance[e]!);
-    spacingSum += edgeDistance[e]!;
+    minSpacing = Math.min(minSpacing, edges.edgeDistance[e]!);
+    spacingSum += edges.edgeDistance[e]!;
   }
   return {
     n,
-    cellCount,
-    center,
-    area,
+    cellCount: 6 * n * n,
+    center: cells.center,
+    area: cells.area,
     edgeCount,
-    edgeA,
-    edgeB,
-    edgeLength,
-    edgeDistance,
-    edgeNormal,
-    edgeMid,
-    cellEdge,
-    cellEdgeSign,
+    ...edges,
     cellNeighbor,
     minSpacing,
     meanSpacing: spacingSum / edgeCount,

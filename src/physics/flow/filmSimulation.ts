@@ -1,3 +1,4 @@
+import { rejectValue } from '../../input/validate.ts';
 import { type CubeSphereGrid, cubeSphereGrid } from './cubeSphereGrid.ts';
 import { type CubeSphereHalo, cubeSphereHalo, padField, paddedSampler } from './cubeSphereSampler.ts';
 import type { FilmHole } from './filmHoles.ts';
@@ -192,8 +193,20 @@ export function advanceFilm(sim: FilmSimulation, seconds: number, onStep?: () =>
   return taken;
 }
 
-/** Pricks the film at a direction: a hole opens there and bursts outward. */
+/**
+ * A puncture's direction from the bubble's centre (the simulation's frame, any length): three
+ * finite numbers, not all 0, whose length √(x² + y² + z²) is finite too; otherwise a
+ * ParameterError naming `puncture`.
+ */
+export function checkPunctureDirection(x: number, y: number, z: number): void {
+  const length = Math.hypot(x, y, z);
+  if (![x, y, z].every(Number.isFinite) || !(length > 0 && length < Infinity))
+    rejectValue('puncture', [x, y, z], 'a direction from the centre [x, y, z]: three finite numbers, not all 0, of a finite length');
+}
+
+/** Pricks the film at a direction (checkPunctureDirection): a hole opens there and bursts outward. */
 export function punctureFilm(sim: FilmSimulation, x: number, y: number, z: number): void {
+  checkPunctureDirection(x, y, z);
   openHole(sim.state.holes, x, y, z);
 }
 

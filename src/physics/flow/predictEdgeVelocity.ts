@@ -12,10 +12,67 @@ export interface EdgePrediction {
   readonly marangoniCoefficient: Float64Array;
 }
 
+/** What the prediction reads of the film: its cell velocities (padded too, sampled by `sample`), η, intact, and the air's normal velocity per edge. */
+export interface PredictionInputs {
+  readonly cellVelocity: Float64Array;
+  readonly paddedCellVelocity: Float64Array;
+  readonly sample: VectorSampler;
+  readonly eta: Float64Array;
+  readonly intact: Uint8Array;
+  readonly windAlongNormal: Float64Array;
+}
+
+/**
+ * The semi-Lagrangian advection at edge e between cells ca and cb: the velocity at the midpoint,
+ * traced back along the great circle for Δt, sampled there and parallel-transported to the edge,
+ * along the edge's normal. `b` is scratch for the sample.
+ */
+function advectedAlongNormal(
+  grid: CubeSphereGrid,
+  dt: number,
+  inputs: PredictionInputs,
+  [e, ca, cb]: [number, number, number],
+  b: Float64Array,
+): number {
+  const { edgeMid, edgeNormal } = grid;
+  const { cellVelocity, paddedCellVelocity, sample } = inputs;
+  const mx = edgeMid[3 * e]!;
+  const my = edgeMid[3 * e + 1]!;
+  const mz = edgeMid[3 * e + 2]!;
+  const nx = edgeNormal[3 * e]!;
+  const ny = edgeNormal[3 * e + 1]!;
+  const nz = edgeNormal[3 * e + 2]!;
+  // The velocity at the midpoint: the mean of the two cells', in the tangent plane there.
+  let wx = 0.5 * (cellVelocity[3 * ca]! + cellVelocity[3 * cb]!);
+  let wy = 0.5 * (cellVelocity[3 * ca + 1]! + cellVelocity[3 * cb + 1]!);
+  let wz = 0.5 * (cellVelocity[3 * ca + 2]! + cellVelocity[3 * cb + 2]!);
+  const radial = wx * mx + wy * my + wz * mz;
+  wx -= radial * mx;
+  wy -= radial * my;
+  wz -= radial * mz;
+  const speed = Math.hypot(wx, wy, wz);
+  if (!(speed * dt > 0)) return wx * nx + wy * ny + wz * nz;
+  const s = speed * dt;
+  const tx = wx / speed;
+  const ty = wy / speed;
+  const tz = wz / speed;
+  const cs = Math.cos(s);
+  const sn = Math.sin(s);
+  sample(paddedCellVelocity, cs * mx - sn * tx, cs * my - sn * ty, cs * mz - sn * tz, b);
+  // Parallel transport along the great circle: the component along the path (τ at the
+  // departure point) becomes the component along t̂ here; the one along k = m × t̂ is kept.
+  const kx = my * tz - mz * ty;
+  const ky = mz * tx - mx * tz;
+  const kz = mx * ty - my * tx;
+  const along = b[0]! * (sn * mx + cs * tx) + b[1]! * (sn * my + cs * ty) + b[2]! * (sn * mz + cs * tz);
+  const across = b[0]! * kx + b[1]! * ky + b[2]! * kz;
+  return along * (tx * nx + ty * ny + tz * nz) + across * (kx * nx + ky * ny + kz * nz);
+}
+
 /**
  * Advection and the semi-implicit force step of eq. (17) at each edge (GPU pass 3). The velocity
  * is traced back along the great circle for Δt (semi-Lagrangian), sampled there and
- * parallel-transported to the edge; then
+ * parallel-transported to the edge (advectedAlongNormal); then
  *   u_e = (η_e u_adv/Δt + η_e g_e + Cr u_air − M ∂Γ/∂n) / (η_e/Δt + Cr),
  * the paper's u = (u_adv/Δt + f)/(1/Δt + Cr/η) multiplied through by η, so a vanishing film follows
  * the air instead of dividing by zero. η_e is the logarithmic mean of the two cells' η and
@@ -28,18 +85,11 @@ export function predictEdgeVelocity(
   grid: CubeSphereGrid,
   numbers: FlowNumbers,
   dt: number,
-  inputs: {
-    readonly cellVelocity: Float64Array;
-    readonly paddedCellVelocity: Float64Array;
-    readonly sample: VectorSampler;
-    readonly eta: Float64Array;
-    readonly intact: Uint8Array;
-    readonly windAlongNormal: Float64Array;
-  },
+  inputs: PredictionInputs,
   out: EdgePrediction,
 ): void {
-  const { edgeA, edgeB, edgeMid, edgeNormal, edgeDistance, center } = grid;
-  const { cellVelocity, paddedCellVelocity, sample, eta, intact, windAlongNormal } = inputs;
+  const { edgeA, edgeB, edgeDistance, center } = grid;
+  const { eta, intact, windAlongNormal } = inputs;
   const { airFriction, gravity, marangoni } = numbers;
   const b = new Float64Array(3);
   for (let e = 0; e < grid.edgeCount; e++) {
@@ -50,41 +100,7 @@ export function predictEdgeVelocity(
       out.marangoniCoefficient[e] = 0;
       continue;
     }
-    const mx = edgeMid[3 * e]!;
-    const my = edgeMid[3 * e + 1]!;
-    const mz = edgeMid[3 * e + 2]!;
-    const nx = edgeNormal[3 * e]!;
-    const ny = edgeNormal[3 * e + 1]!;
-    const nz = edgeNormal[3 * e + 2]!;
-    // The velocity at the midpoint: the mean of the two cells', in the tangent plane there.
-    let wx = 0.5 * (cellVelocity[3 * ca]! + cellVelocity[3 * cb]!);
-    let wy = 0.5 * (cellVelocity[3 * ca + 1]! + cellVelocity[3 * cb + 1]!);
-    let wz = 0.5 * (cellVelocity[3 * ca + 2]! + cellVelocity[3 * cb + 2]!);
-    const radial = wx * mx + wy * my + wz * mz;
-    wx -= radial * mx;
-    wy -= radial * my;
-    wz -= radial * mz;
-    const speed = Math.hypot(wx, wy, wz);
-    let advected: number;
-    if (speed * dt > 0) {
-      const s = speed * dt;
-      const tx = wx / speed;
-      const ty = wy / speed;
-      const tz = wz / speed;
-      const cs = Math.cos(s);
-      const sn = Math.sin(s);
-      sample(paddedCellVelocity, cs * mx - sn * tx, cs * my - sn * ty, cs * mz - sn * tz, b);
-      // Parallel transport along the great circle: the component along the path (τ at the
-      // departure point) becomes the component along t̂ here; the one along k = m × t̂ is kept.
-      const kx = my * tz - mz * ty;
-      const ky = mz * tx - mx * tz;
-      const kz = mx * ty - my * tx;
-      const along = b[0]! * (sn * mx + cs * tx) + b[1]! * (sn * my + cs * ty) + b[2]! * (sn * mz + cs * tz);
-      const across = b[0]! * kx + b[1]! * ky + b[2]! * kz;
-      advected = along * (tx * nx + ty * ny + tz * nz) + across * (kx * nx + ky * ny + kz * nz);
-    } else {
-      advected = wx * nx + wy * ny + wz * nz;
-    }
+    const advected = advectedAlongNormal(grid, dt, inputs, [e, ca, cb], b);
     const etaEdge = logarithmicMean(eta[ca]!, eta[cb]!);
     const gravityAlongNormal = (-gravity * (center[3 * cb + 2]! - center[3 * ca + 2]!)) / edgeDistance[e]!;
     const denominator = etaEdge / dt + airFriction;

@@ -6,6 +6,7 @@ import { FilmXyzProbe } from '../../../scripts/harness/filmXyzProbe.ts';
 import { renderThickness } from './thicknessFieldProbe.ts';
 import { GpuFilmSimulation } from '../../../src/flow/gpuFilmSimulation.ts';
 import { readFilmState, readTexels } from './filmReadback.ts';
+import { surfactantResidual } from './surfactantResidual.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');
 if (!canvas) throw new Error('parity.html must hold #gl');
@@ -19,14 +20,14 @@ window.runFlow = (parameters, steps, blow, puncture, renew = false) => {
   if (blow) sim.blow(blow.center, blow.velocityMps);
   if (puncture) sim.puncture(...puncture);
   sim.step(steps);
-  const { eta, gamma, intact, edgeVelocity, holes, surfactantResidual } = readFilmState(renderer, sim);
+  const { eta, gamma, intact, edgeVelocity, holes } = readFilmState(renderer, sim);
   const result = {
     eta: [...eta],
     gamma: [...gamma],
     intact: [...intact],
     edgeVelocity: [...edgeVelocity],
     holes,
-    surfactantResidual,
+    surfactantResidual: surfactantResidual(renderer, sim),
     steps: sim.steps,
   };
   sim.dispose();
@@ -48,8 +49,8 @@ declare global {
     renderFilmXyz?: (groups: readonly ParityGroup[], mode: ParityMode, quality?: FilmQuality) => number[][][];
     /**
      * The GPU film after `steps` steps from its start (air blown as given, pricked at a direction
-     * first, renewed after a burst): per cell η, Γ, intact; per edge u·n_e; the open holes; the last
-     * solve's residual.
+     * first, renewed after a burst): per cell η, Γ, intact; per edge u·n_e; the open holes; the
+     * residual its surfactant solve reaches from there (surfactantResidual.ts).
      */
     runFlow?: (
       parameters: Record<string, number>,

@@ -4,6 +4,7 @@ import { cubeSphereGrid } from '../../../src/physics/flow/cubeSphereGrid.ts';
 import { cubeSphereHalo, padField } from '../../../src/physics/flow/cubeSphereSampler.ts';
 import { cellTexelIndex, edgeAtlasSize, faceAtlasSize, paddedTexelIndex } from '../../../src/flow/flowAtlas.ts';
 import { HALO_TAP_TEXELS, flowGridTextures } from '../../../src/flow/flowGridTextures.ts';
+import { HALO_TAPS } from '../../../src/flow/flowTexels.ts';
 import { mulberry32 } from '../../seededRandom.ts';
 import { HALO_WEIGHT_SUM_TOL } from '../../tolerances.ts';
 
@@ -33,13 +34,20 @@ describe('flow atlases', () => {
     const padded = padField(halo, field, 1);
     const taps = flowGridTextures(grid, halo).uHaloTaps.image.data as Float32Array;
     let worst = 0;
+    /** Field `name` of the HALO_TAPS record in texel `texel` of the table. */
+    const tap = (texel: number, name: keyof typeof HALO_TAPS.fields) => taps[texel * HALO_TAPS.floats + HALO_TAPS.offsets[name]]!;
     for (let p = 0; p < padded.length; p++) {
-      const base = 4 * HALO_TAP_TEXELS * paddedTexelIndex(N, p);
       let sum = 0;
       let weights = 0;
-      for (let k = 0; k < 2 * HALO_TAP_TEXELS; k++) {
-        sum += taps[base + 2 * k + 1]! * field[taps[base + 2 * k]!]!;
-        weights += taps[base + 2 * k + 1]!;
+      for (let k = 0; k < HALO_TAP_TEXELS; k++) {
+        const texel = HALO_TAP_TEXELS * paddedTexelIndex(N, p) + k;
+        for (const [cell, weight] of [
+          ['CELL_0', 'WEIGHT_0'],
+          ['CELL_1', 'WEIGHT_1'],
+        ] as const) {
+          sum += tap(texel, weight) * field[tap(texel, cell)]!;
+          weights += tap(texel, weight);
+        }
       }
       worst = Math.max(worst, Math.abs(sum - padded[p]!));
       // A ghost is an interpolation (or g₁ + g₂ − c): its weights sum to 1.

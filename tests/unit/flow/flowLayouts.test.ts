@@ -1,22 +1,12 @@
 /**
- * The flow's texel layouts by name: the GLSL of shaders/flow/ reads every layout define that
+ * The flow's texture layouts by name: the GLSL of shaders/flow/ reads every layout define that
  * src/flow/flowLayouts.ts emits from its tables, reads no TFC_ name the passes are not given, and
  * adds no bare number to a name (an offset into a layout); the tables place each part once.
  */
 import { readFileSync, readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { HOLE_RAYS } from '../../../src/physics/flow/filmHoles.ts';
-import {
-  HOLE_FRAME,
-  HOLE_TABLE,
-  SURFACTANT_SWEEP_TEXEL,
-  SURFACTANT_SYSTEM_TEXEL,
-  SWEEP_GUESS,
-  SWEEP_PREVIOUS_GUESS,
-  ZERO_GUESS,
-  flowLayoutDefines,
-  holeFrameTexel,
-} from '../../../src/flow/flowLayouts.ts';
+import { HOLE_FRAME, HOLE_TABLE, flowLayoutDefines, holeFrameTexel } from '../../../src/flow/flowLayouts.ts';
 import { flowPassDefines } from '../../../src/flow/flowPasses.ts';
 
 const flowDir = new URL('../../../shaders/flow/', import.meta.url);
@@ -40,29 +30,14 @@ describe('flow layouts', () => {
     expect(HOLE_FRAME.map((part) => defines[`TFC_HOLE_${part.toUpperCase()}_TEXEL`])).toEqual(texels);
   });
 
-  it("the solve's channels are distinct channels of a texel, and each sweep's guess picks the named one", () => {
-    for (const [prefix, names] of [
-      ['TFC_SURFACTANT_SYSTEM', SURFACTANT_SYSTEM_TEXEL],
-      ['TFC_SURFACTANT_SWEEP', SURFACTANT_SWEEP_TEXEL],
-    ] as const) {
-      const channels = Object.entries(defines)
-        .filter(([k]) => k.startsWith(prefix) && k.endsWith('_CHANNEL'))
-        .map(([, v]) => v);
-      expect(channels).toHaveLength(names.length);
-      expect(new Set(channels).size).toBe(names.length);
-      expect(channels.every((c) => c >= 0 && c < 4)).toBe(true);
-    }
-    expect(ZERO_GUESS).toEqual([0, 0, 0, 0]);
-    expect(SWEEP_GUESS).toEqual([0, 1, 2, 3].map((c) => Number(c === defines.TFC_SURFACTANT_SWEEP_X_CHANNEL)));
-    expect(SWEEP_PREVIOUS_GUESS).toEqual([0, 1, 2, 3].map((c) => Number(c === defines.TFC_SURFACTANT_SWEEP_PREVIOUS_X_CHANNEL)));
-  });
-
   it('the GLSL reads every layout define, and no TFC_ name the passes are not given or it does not declare', () => {
     const read = new Set(flowGlsl.flatMap(({ text }) => namesIn(text)));
     expect(Object.keys(defines).filter((name) => !read.has(name))).toEqual([]);
-    const declared = new Set(
-      flowGlsl.flatMap(({ text }) => [...code(text).matchAll(/\bconst\s+\w+\s+(TFC_[A-Z0-9_]+)/g)].map((m) => m[1]!)),
-    );
+    // Constants of shaders/flow/, and the texel records' macros (shaders/gpu/texelRecord.glsl).
+    const declared = new Set([
+      ...flowGlsl.flatMap(({ text }) => [...code(text).matchAll(/\bconst\s+\w+\s+(TFC_[A-Z0-9_]+)/g)].map((m) => m[1]!)),
+      ...[...readFileSync(new URL('../gpu/texelRecord.glsl', flowDir), 'utf8').matchAll(/#define\s+(TFC_[A-Z0-9_]+)/g)].map((m) => m[1]!),
+    ]);
     const given = Object.keys(flowPassDefines());
     expect([...read].filter((name) => !given.includes(name) && !declared.has(name))).toEqual([]);
   });

@@ -16,6 +16,7 @@ import { AIRY_ROW } from '../../../src/film/airySeriesRows.ts';
 import { DISPERSIVE_BIN } from '../../../src/film/dispersiveRows.ts';
 import { MEDIA_KNOT } from '../../../src/film/filmMedia.ts';
 import { FILM_LAYER } from '../../../src/film/filmStack.ts';
+import { FLOW_TEXELS } from '../../../src/flow/flowTexels.ts';
 import { type FieldWidth, texelRecordDefines } from '../../../src/gpu/texelRecord.ts';
 
 const PREFIX = /^TFC_[A-Z0-9_]+$/;
@@ -25,12 +26,17 @@ const NOT_OURS = [/^THIN_FILM_[A-Z0-9_]+$/, /^USE_IRIDESCENCE$/, /^XYZ_TO_REC709
 const shaderDir = new URL('../../../shaders/', import.meta.url);
 const shaders = readdirSync(shaderDir, { recursive: true, encoding: 'utf8' }).filter((f) => f.endsWith('.glsl'));
 
-/** Every texel record TypeScript packs, with the texture (or uniform array) the shaders read it from. */
+/**
+ * Every texel record TypeScript packs, with the texture (or uniform array) the shaders read it from;
+ * the flow's, one texel each, are fetched whole and read through their GLSL's accessors
+ * (tests/unit/flow/flowTexels.test.ts holds those to no read by position).
+ */
 const RECORDS = [
   { record: AIRY_ROW, texture: 'uAirySeriesRows' },
   { record: DISPERSIVE_BIN, texture: 'uDispersiveRows' },
   { record: MEDIA_KNOT, texture: 'uMediaKnots' },
   { record: FILM_LAYER, texture: 'uFilmLayers' },
+  ...FLOW_TEXELS.map((record) => ({ record, texture: null })),
 ] as const;
 
 /** Each record field's define and its width. */
@@ -39,7 +45,10 @@ const RECORD_FIELDS = new Map<string, FieldWidth>(
     Object.entries(record.fields as Record<string, FieldWidth>).map(([name, width]) => [`${record.prefix}_${name}`, width] as const),
   ),
 );
-const RECORD_TEXTURES = RECORDS.map(({ texture }) => texture);
+const RECORD_TEXTURES = RECORDS.flatMap(({ texture }) => (texture === null ? [] : [texture]));
+/** The macros of shaders/gpu/texelRecord.glsl that read or set a field at its offset, and the width each takes. */
+const FIELD_MACRO = /\bTFC_(?:RECORD|TEXEL|SET_TEXEL)_(FLOAT|VEC2|VEC3|VEC4)\s*\(/g;
+const MACRO_WIDTHS: Readonly<Record<string, FieldWidth>> = { FLOAT: 1, VEC2: 2, VEC3: 3, VEC4: 4 };
 
 /** The text from `open` (an opening parenthesis) to its matching one, and what follows it. */
 function parenthesised(text: string, open: number): { inside: string; after: string } {
@@ -78,11 +87,11 @@ const BY_POSITION = /^\s*[.[]/;
 function readsByPosition(line: string): string[] {
   if (/^\s*#\s*define\b/.test(line)) return [];
   const problems: string[] = [];
-  for (const m of line.matchAll(/\bTFC_RECORD_(FLOAT|VEC2)\s*\(/g)) {
+  for (const m of line.matchAll(FIELD_MACRO)) {
     const offset = topLevelArguments(parenthesised(line, m.index + m[0].length - 1).inside)[1] ?? '';
     const width = RECORD_FIELDS.get(offset);
     if (width === undefined) problems.push(`${m[0]}… at ${offset || 'no offset'}, not a field's name`);
-    else if (width !== (m[1] === 'FLOAT' ? 1 : 2)) problems.push(`${m[0]}… at ${offset}, a field of ${width} floats`);
+    else if (width !== MACRO_WIDTHS[m[1]!]) problems.push(`${m[0]}… at ${offset}, a field of ${width} floats`);
   }
   for (const m of line.matchAll(/\btexelFetch\s*\(/g)) {
     const { inside, after } = parenthesised(line, m.index + m[0].length - 1);
@@ -173,10 +182,10 @@ describe('texel records', () => {
     expect(problems).toEqual([]);
   });
 
-  it('have every field read by name in shaders/ (so none is read some other way)', () => {
+  it('have every field read or set by name in shaders/ (so none is read some other way)', () => {
     const text = shaders.map((file) => readFileSync(new URL(file, shaderDir), 'utf8')).join('\n');
     const unread = [...RECORD_FIELDS.keys()].filter(
-      (name) => !new RegExp(`TFC_RECORD_(FLOAT|VEC2)\\(\\s*\\w+\\s*,\\s*${name}\\s*\\)`).test(text),
+      (name) => !new RegExp(`TFC_(RECORD|TEXEL|SET_TEXEL)_(FLOAT|VEC\\d)\\(\\s*\\w+\\s*,\\s*${name}\\s*[,)]`).test(text),
     );
     expect(RECORD_FIELDS.size).toBeGreaterThan(10);
     expect(unread).toEqual([]);
@@ -190,6 +199,8 @@ describe('texel records', () => {
       'float n = uMediaKnots[i].x;',
       'float c0 = TFC_RECORD_FLOAT(r, 5);',
       'vec2 b = TFC_RECORD_VEC2(r, TFC_AIRY_ROW_C0_0);',
+      'vec3 c = TFC_TEXEL_VEC3(t, TFC_FLOW_FILM_ETA);',
+      'TFC_SET_TEXEL_FLOAT(t, 2, eta);',
     ])
       expect(readsByPosition(bad), bad).not.toEqual([]);
     expect(readsByPosition('r[i] = texelFetch(uAirySeriesRows, ivec2(i, y), 0);')).toEqual([]);

@@ -6,7 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { TEXEL_FLOATS, type TexelRecord, packTexelRecord, texelRecord, texelRecordDefines } from '../../../src/gpu/texelRecord.ts';
 
-type Fields = Readonly<Record<string, 1 | 2>>;
+type Fields = Readonly<Record<string, 1 | 2 | 3 | 4>>;
 
 /** A field of record `index` as the GLSL macros read it: from the record's texels, by its offset. */
 function readField(r: TexelRecord<Fields>, data: Float32Array, index: number, name: string): number | [number, number] {
@@ -29,6 +29,18 @@ describe('texel records', () => {
       TFC_TEST_C: 3,
       TFC_TEST_D: 5,
     });
+  });
+
+  it('take vec3 and vec4 fields, and refuse a value of another width by its define', () => {
+    const r = texelRecord('TFC_TEST', { A: 3, B: 1, C: 4 });
+    expect([r.offsets, r.texels]).toEqual([{ A: 0, B: 3, C: 4 }, 2]);
+    const data = new Float32Array(r.floats);
+    packTexelRecord(r, data, 0, { A: [1, 2, 3], B: 4, C: [5, 6, 7, 8] });
+    expect([...data]).toEqual([1, 2, 3, 4, 5, 6, 7, 8]);
+    const loose: TexelRecord<Fields> = r;
+    expect(() => packTexelRecord(loose, data, 0, { A: [1, 2], B: 4, C: [5, 6, 7, 8] })).toThrow(
+      'TFC_TEST_A: 2 floats given for a field of 3',
+    );
   });
 
   it('a record of 4 floats is one texel; of 5, two', () => {

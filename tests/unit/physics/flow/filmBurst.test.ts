@@ -52,4 +52,19 @@ describe('a pricked film bursts', () => {
     for (let s = 0; s < 50 && sim.state.holes.length === 0; s++) stepFilm(sim);
     expect(sim.state.holes.length).toBeGreaterThan(0);
   });
+
+  it('is pricked at a direction of any length, and refuses one that is 0 or not finite (or whose length is not), naming `puncture`', () => {
+    const sim = createFilmSimulation({ gridN: 6 });
+    punctureFilm(sim, 0, 0, 3);
+    expect(sim.state.holes[0]!.center).toEqual([0, 0, 1]);
+    const bad: [number, number, number][] = [
+      [0, 0, 0],
+      [Number.NaN, 0, 1],
+      [0, Number.POSITIVE_INFINITY, 0],
+      [1.5e308, 1.5e308, 1.5e308],
+    ];
+    for (const [x, y, z] of bad)
+      expect(() => punctureFilm(sim, x, y, z), String([x, y, z])).toThrow(/^puncture: \[.*\] is not allowed; expected a direction/);
+    expect(sim.state.holes).toHaveLength(1);
+  });
 });
