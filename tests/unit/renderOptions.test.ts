@@ -60,9 +60,9 @@ describe('render options: the URL parameters', () => {
     expect(verdict('--field', 'swirl', '--env', 'sky')).toEqual({ query: 'field=swirl&env=sky' });
   });
 
-  it("spells each option as the URL name in kebab case, and refuses the URL's camel case naming the option", () => {
+  it("spells each option as the URL name in kebab case (the query in the schema's order), and refuses the URL's camel case naming the option", () => {
     expect(verdict('--thickness-range', '600', '--n-film', '1.4', '--wind-turn', '30')).toEqual({
-      query: 'thicknessRange=600&nFilm=1.4&windTurn=30',
+      query: 'thicknessRange=600&windTurn=30&nFilm=1.4',
     });
     for (const [old, flag] of [
       ['--thicknessRange', '--thickness-range'],
