@@ -9,4 +9,5 @@ export const exactMethod = {
   glsl: 'exactMethod.glsl',
   reads: ['polarization', 'media', 'spectralBins', 'layers'],
   offered: true,
+  frameCost: { constant: 1.5, dispersive: 2.5 },
 } as const satisfies FilmMethod;

@@ -28,6 +28,12 @@ export interface DrawnInstead {
   readonly values: Readonly<Record<string, string>>;
 }
 
+/** A cost against a table lookup's frame (1): with constant media, and with a film or inside whose index depends on λ. */
+export interface FrameCost {
+  readonly constant: number;
+  readonly dispersive: number;
+}
+
 /**
  * A way to compute the film's colour on the GPU: one TypeScript module and its GLSL twin of the
  * same name (shaders/methods/), registered once in src/methods/methods.ts. Its label is the
@@ -42,4 +48,9 @@ export interface FilmMethod {
   readonly offered: boolean;
   /** The method drawn instead where this one cannot draw `s` (null or absent: it draws every film). */
   readonly drawnInstead?: (s: FilmMethodSettings) => DrawnInstead | null;
+  /**
+   * What its frame costs per fragment against a table lookup's, as the full benchmark measured it on
+   * SwiftShader: what the benchmark's progress expects a row to take.
+   */
+  readonly frameCost: FrameCost;
 }

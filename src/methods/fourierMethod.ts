@@ -14,6 +14,7 @@ export const fourierMethod = {
   glsl: 'fourierMethod.glsl',
   reads: ['polarization', 'media', 'spectralBins', 'spectralTransform'],
   offered: true,
+  frameCost: { constant: 2, dispersive: 2.5 },
   drawnInstead: (s) => {
     const stack = stackAsTable(s, 'fourier');
     if (stack) return stack;

@@ -10,4 +10,5 @@ export const tableMethod = {
   glsl: 'tableMethod.glsl',
   reads: ['table'],
   offered: true,
+  frameCost: { constant: 1, dispersive: 1 },
 } as const satisfies FilmMethod;

@@ -10,5 +10,6 @@ export const threeIridescenceMethod = {
   glsl: 'threeIridescenceMethod.glsl',
   reads: ['polarization'],
   offered: false,
+  frameCost: { constant: 1, dispersive: 1 },
   drawnInstead: (s) => stackAsTable(s, 'three-iridescence'),
 } as const satisfies FilmMethod;

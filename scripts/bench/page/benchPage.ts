@@ -28,6 +28,7 @@ import { gpuFlowSpeed } from './gpuFlowSpeed.ts';
 import { rowScene } from './rowScene.ts';
 import { TableWatch } from './tableWatch.ts';
 import { median } from '../median.ts';
+import { methodReads } from '../../../src/methods/methods.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 if (!canvas) throw new Error('bench.html must hold #bubble');
@@ -85,7 +86,7 @@ function timeView(view: BubbleView, spec: BenchRowSpec, originMs: number): Omit<
   view.render();
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
   const firstFrameMs = performance.now() - originMs;
-  const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? table.firstBuildMs : null;
+  const tableBuildMs = methodReads(spec.settings.mode, 'table') && spec.kind === 'bubble' ? table.firstBuildMs : null;
   const buildsBefore = table.builds;
 
   // Per size: up to 3 warm-up frames, then up to `frames` timed ones within the budget. Where a

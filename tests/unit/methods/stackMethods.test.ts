@@ -28,7 +28,7 @@ describe('methods and stacks of films', () => {
     }
     // The Fourier method is one of those that give way: it has no closed form for a stack.
     expect(drawn.find(([m]) => m === 'fourier')?.[1].mode).toBe('table');
-    expect(drawn.filter(([, d]) => d.mode === 'table').length).toBeGreaterThan(1);
+    expect(drawn.filter(([, d]) => methodReads(d.mode, 'table')).length).toBeGreaterThan(1);
   });
 
   it('a single film (no layers, or none given) is drawn by the method asked for', () => {
