@@ -129,7 +129,7 @@ export function validateColorCase(
   const orDefault = (field: CaseField, fallback: string) => (raw[field] === undefined ? fallback : raw[field]);
   const layers = raw.layers === undefined ? [] : validateLayers(raw, nameOf, layerThickness);
   const stack: FilmStack<Medium> = {
-    nOutside: validateMedium(raw.nOutside, 'nOutside', nameOf('nOutside')) as number,
+    nOutside: validateMedium(raw.nOutside, 'nOutside', nameOf('nOutside')),
     nFilm: validateMedium(raw.nFilm, 'nFilm', nameOf('nFilm')),
     nInside: validateMedium(raw.nInside, 'nInside', nameOf('nInside')),
     thicknessNm: number('thicknessNm'),
