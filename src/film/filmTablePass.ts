@@ -11,14 +11,8 @@ import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
 import { dispersiveRowsOf, dispersiveRowsReady } from './dispersiveRowsStore.ts';
 import { filmIndexMax, isDispersiveFilm, updateFilmMediaUniforms } from './filmMedia.ts';
 import { type FilmTableGrid, setFilmTableGridUniforms } from './filmTableGrid.ts';
-import {
-  type StackedSettings,
-  isStacked,
-  releaseFilmStackTexture,
-  stackFieldIndex,
-  stackLayers,
-  updateFilmStackUniforms,
-} from './filmStack.ts';
+import { type StackedSettings, releaseFilmStackTexture, stackFieldIndex, updateFilmStackUniforms } from './filmStack.ts';
+import { fillReads } from '../methods/filmFills.ts';
 import { releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
 import { releaseSpectralTransformTexture, spectralTransformReady, spectralTransformTexture } from './spectralTransformTexture.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
@@ -71,7 +65,7 @@ export class FilmTablePass {
   fullGrid(s: FilmSettings & StackedSettings): FilmTableGrid {
     const layout = this.quality.table;
     const maxThicknessNm = maxFieldThicknessNm(s);
-    const index = isStacked(s) ? stackFieldIndex(stackLayers(s), this.programs.bins(s)) : filmIndexMax(s.nFilm);
+    const index = fillReads(s, 'layers') ? stackFieldIndex(s.layers ?? [], this.programs.bins(s)) : filmIndexMax(s.nFilm);
     const width = index === null ? 2 : filmTableWidth(layout, maxThicknessNm, index);
     return { width, rows: layout.rows, maxThicknessNm };
   }

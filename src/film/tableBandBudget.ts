@@ -1,3 +1,5 @@
+import type { FilmFill } from '../methods/filmFills.ts';
+
 /**
  * How much of the table a frame may build: a full table built behind a coarse one
  * (ProgressiveTableBuild) is drawn in bands of columns, one per frame, each sized by the measured
@@ -22,7 +24,7 @@ const FRAME_GROWTH = 2;
 const MIN_BAND_COLUMNS = 1;
 
 /** What is measured of a table pass: a dispersive film's texel sums its bins, a constant film's the series, a stack's its recursion per bin. */
-export type PassKind = 'dispersive' | 'constant' | 'stack';
+export type PassKind = FilmFill;
 
 /**
  * A kind of pass not yet measured is taken to cost another kind's measured cost per texel times

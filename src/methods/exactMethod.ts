@@ -9,5 +9,6 @@ export const exactMethod = {
   glsl: 'exactMethod.glsl',
   reads: ['polarization', 'media', 'spectralBins', 'layers'],
   offered: true,
+  fills: ['constant', 'dispersive', 'stack'],
   frameCost: { constant: 1.5, dispersive: 2.5 },
 } as const satisfies FilmMethod;

@@ -1,6 +1,7 @@
 import type { FilmLayer } from '../physics/filmLayers.ts';
 import type { Medium } from '../physics/medium.ts';
 import type { MessageKey } from '../i18n/en.ts';
+import type { FilmFill } from './filmFills.ts';
 
 /**
  * What a method's shader reads beside TFC_FILM_MODE, each made for it by src/film/filmColor.ts:
@@ -46,8 +47,8 @@ export interface FilmMethod {
   readonly reads: readonly FilmMethodInput[];
   /** Whether a user may choose it (`mode=`); the others are the benchmark's peers. */
   readonly offered: boolean;
-  /** The method drawn instead where this one cannot draw `s` (null or absent: it draws every film). */
-  readonly drawnInstead?: (s: FilmMethodSettings) => DrawnInstead | null;
+  /** The fills of the films it draws (filmFills.ts); the table is drawn in its place for the others. */
+  readonly fills: readonly FilmFill[];
   /**
    * What its frame costs per fragment against a table lookup's, as the full benchmark measured it on
    * SwiftShader: what the benchmark's progress expects a row to take.

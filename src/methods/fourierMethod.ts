@@ -1,6 +1,4 @@
-import { isDispersiveMedium, mediumText } from '../physics/medium.ts';
 import type { FilmMethod } from './filmMethod.ts';
-import { stackAsTable } from './stackAsTable.ts';
 
 /**
  * `fourier`: the Airy sum as a Fourier series in the optical path per fragment, a few lookups of
@@ -15,11 +13,5 @@ export const fourierMethod = {
   reads: ['polarization', 'media', 'spectralBins', 'spectralTransform'],
   offered: true,
   frameCost: { constant: 2, dispersive: 2.5 },
-  drawnInstead: (s) => {
-    const stack = stackAsTable(s, 'fourier');
-    if (stack) return stack;
-    const dispersive = isDispersiveMedium(s.nFilm) ? 'nFilm' : isDispersiveMedium(s.nInside) ? 'nInside' : null;
-    if (dispersive === null) return null;
-    return { method: 'table', notice: 'app.fourierAsTable', values: { name: dispersive, medium: mediumText(s[dispersive]) } };
-  },
+  fills: ['constant'],
 } as const satisfies FilmMethod;

@@ -1,5 +1,4 @@
 import type { FilmMethod } from './filmMethod.ts';
-import { stackAsTable } from './stackAsTable.ts';
 
 /**
  * `three-iridescence`: three.js's own iridescence (Belcour–Barla, `evalIridescence`), the
@@ -11,5 +10,5 @@ export const threeIridescenceMethod = {
   reads: ['polarization'],
   offered: false,
   frameCost: { constant: 1, dispersive: 1 },
-  drawnInstead: (s) => stackAsTable(s, 'three-iridescence'),
+  fills: ['constant', 'dispersive'],
 } as const satisfies FilmMethod;
