@@ -11,6 +11,7 @@ import {
 import type { IlluminantSpec } from '../physics/illuminants.ts';
 import { type IndexJson, type Medium, indexJson, mediumIndexAt } from '../physics/medium.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
+import { fillReads } from '../methods/filmFills.ts';
 import { filmStackOf, stackReflectance, stackXyz } from '../methods/filmStacks.ts';
 import type { ColorCase } from './colorCase.ts';
 
@@ -66,7 +67,7 @@ export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
     displayP3_8: to8Bit(applyMatrix3(XYZ_TO_LINEAR_DISPLAY_P3, xyz), xyz[1], gamut),
     reflectance: c.wavelengthsNm.map((lambdaNm) => stackReflectance(lambdaNm, stack, c.polarization)),
     // The report names the media as the case gives them: each layer's when its `layers` option is set.
-    ...(c.layers.length > 0
+    ...(fillReads({ ...c.stack, layers: c.layers }, 'layers')
       ? { nLayers: c.wavelengthsNm.map((lambdaNm) => stack.layers.map((l) => indexJson(mediumIndexAt(l.n, lambdaNm)))) }
       : { nFilm: indicesAt(c.stack.nFilm) }),
     nInside: indicesAt(c.stack.nInside),
