@@ -45,7 +45,7 @@ const MEDIUM_ROWS = PANEL_ROWS.filter((row) => row.control!.kind === 'medium' ||
  * What is hidden keeps its value: the settings, and so the URL, are the same whatever is shown.
  */
 export function shownControls(s: ViewSettings, kinds: Readonly<Partial<Record<PanelKey, string>>> = {}): ShownControls {
-  const unused = new Set<PanelKey>(fillReads(s, 'layers') ? ['nFilm'] : []);
+  const unused = new Set<PanelKey>(fillReads(s, 'stack') ? ['nFilm'] : []);
   const rows = Object.fromEntries(PANEL_ROWS.map((row) => [row.key, settingApplies(row.key, s.field) && !unused.has(row.key)]));
   const folders = Object.fromEntries(
     PANEL_FOLDERS.map((folder) => [folder, PANEL_ROWS.some((row) => row.control!.folder === folder && rows[row.key])]),

@@ -67,7 +67,7 @@ export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
     displayP3_8: to8Bit(applyMatrix3(XYZ_TO_LINEAR_DISPLAY_P3, xyz), xyz[1], gamut),
     reflectance: c.wavelengthsNm.map((lambdaNm) => stackReflectance(lambdaNm, stack, c.polarization)),
     // The report names the media as the case gives them: each layer's when its `layers` option is set.
-    ...(fillReads({ ...c.stack, layers: c.layers }, 'layers')
+    ...(fillReads({ ...c.stack, layers: c.layers }, 'stack')
       ? { nLayers: c.wavelengthsNm.map((lambdaNm) => stack.layers.map((l) => indexJson(mediumIndexAt(l.n, lambdaNm)))) }
       : { nFilm: indicesAt(c.stack.nFilm) }),
     nInside: indicesAt(c.stack.nInside),

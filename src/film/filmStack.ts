@@ -28,11 +28,11 @@ export const FILM_LAYER = texelRecord('TFC_FILM_LAYER', { N: 2, THICKNESS_NM: 1,
  * (docs/gpu.md#stacks-of-films gives the figures that chose it); a single film: spectralBinsFor.
  */
 export const filmSpectralBins = (s: StackedSettings, q: FilmQuality, constant: number): number =>
-  fillReads(s, 'layers') ? q.dispersiveSpectralBins : spectralBinsFor(s, q, constant);
+  fillReads(s, 'stack') ? q.dispersiveSpectralBins : spectralBinsFor(s, q, constant);
 
 /** The defines of transferMatrix.glsl for a stack (none for a single film). */
 export const filmStackDefines = (s: StackedSettings): Record<string, number> =>
-  fillReads(s, 'layers') ? { TFC_FILM_LAYERS: 1, TFC_FILM_LAYERS_MAX: LAYERS_DOMAIN.count.max, ...texelRecordDefines(FILM_LAYER) } : {};
+  fillReads(s, 'stack') ? { TFC_FILM_LAYERS: 1, TFC_FILM_LAYERS_MAX: LAYERS_DOMAIN.count.max, ...texelRecordDefines(FILM_LAYER) } : {};
 
 /** The uniforms transferMatrix.glsl declares: the stack's texture and its layer count. */
 export const filmStackUniforms = () => ({
@@ -77,7 +77,7 @@ const shared = new SharedTextures((key) => {
 
 /** Points transferMatrix.glsl's uniforms at the stack of `s` over `bins` bins, held for `holder` (shared by the holders of one stack). */
 export function updateFilmStackUniforms(u: Record<string, { value: unknown }>, s: StackedSettings, bins: number, holder: object): void {
-  if (!fillReads(s, 'layers')) {
+  if (!fillReads(s, 'stack')) {
     releaseFilmStackTexture(holder);
     u.uFilmLayers!.value = null;
     u.uFilmLayerCount!.value = 0;

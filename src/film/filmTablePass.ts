@@ -65,7 +65,7 @@ export class FilmTablePass {
   fullGrid(s: FilmSettings & StackedSettings): FilmTableGrid {
     const layout = this.quality.table;
     const maxThicknessNm = maxFieldThicknessNm(s);
-    const index = fillReads(s, 'layers') ? stackFieldIndex(s.layers ?? [], this.programs.bins(s)) : filmIndexMax(s.nFilm);
+    const index = fillReads(s, 'stack') ? stackFieldIndex(s.layers ?? [], this.programs.bins(s)) : filmIndexMax(s.nFilm);
     const width = index === null ? 2 : filmTableWidth(layout, maxThicknessNm, index);
     return { width, rows: layout.rows, maxThicknessNm };
   }

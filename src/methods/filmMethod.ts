@@ -10,9 +10,9 @@ import type { FilmFill } from './filmFills.ts';
  * - `spectralBins`: the light's bin weights (a texture) and the bins' defines;
  * - `spectralTransform`: the light's spectral transform (a texture a worker computes) and the series' defines;
  * - `table`: the film table (built on the GPU when a parameter it depends on changes) and its layout;
- * - `layers`: a stack of films (its layers' ñ per spectral bin and thicknesses, a texture) and its defines.
+ * - `stack`: a stack of films (each film's ñ per spectral bin and its thickness, a texture) and its defines.
  */
-export type FilmMethodInput = 'polarization' | 'media' | 'spectralBins' | 'spectralTransform' | 'table' | 'layers';
+export type FilmMethodInput = 'polarization' | 'media' | 'spectralBins' | 'spectralTransform' | 'table' | 'stack';
 
 /** What a method is asked to draw: the film's media or a stack of films (its fallback may depend on them). */
 export interface FilmMethodSettings {

@@ -38,5 +38,5 @@ export function probeDescription(s: FilmSettings, probe: readonly [number, numbe
     colour: colorNameText(colorName(c.rgb8), cat),
     hex: c.hex,
   });
-  return fillReads(s, 'layers') ? `${sentence} ${message(cat, 'plots.stackNote', { count: s.layers.length })}` : sentence;
+  return fillReads(s, 'stack') ? `${sentence} ${message(cat, 'plots.stackNote', { count: s.layers.length })}` : sentence;
 }

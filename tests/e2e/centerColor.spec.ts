@@ -117,7 +117,7 @@ test("a stack of films: the centre pixel is the transfer matrix's sRGB colour in
       console.log(`centre ${name} ${mode}: page ${rgb} reference ${expected}`);
       expect.soft(() => expectClose(rgb, expected, `${name}, ${mode}`, MAX_CODE_DIFFERENCE_STACK)).not.toThrow();
       // A method that reads neither the stack nor a table (fourier) gives way to the table.
-      if (!methodReads(mode, 'layers') && !methodReads(mode, 'table'))
+      if (!methodReads(mode, 'stack') && !methodReads(mode, 'table'))
         await expect(notice).toHaveText(message(EN, 'app.stackAsTable', { method: 'fourier', layers: String(layers.length) }));
       else await expect(notice).toHaveCount(0);
     }
