@@ -14,9 +14,9 @@ import { ProgressiveTableBuild } from './progressiveTableBuild.ts';
  * a stack of films in place of nFilm, and the field's range only where the film follows the field.
  */
 export function tableKey(s: FilmSettings & StackedSettings): string {
-  const layers = filmLayersOf(s);
-  const range = followsField(layers) ? maxFieldThicknessNm(s) : null;
-  return JSON.stringify([s.nOutside, layers, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
+  const films = filmLayersOf(s);
+  const range = followsField(films) ? maxFieldThicknessNm(s) : null;
+  return JSON.stringify([s.nOutside, films, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
 }
 
 /** Nothing shown yet: a grid of one texel. */

@@ -59,7 +59,7 @@ export class FilmTablePass {
 
   /**
    * The full grid for the settings: its width follows the thickness range and the film's index (a
-   * stack's: the sum of its field-following layers'). A stack that does not follow the field is the
+   * stack's: the sum of its field-following films'). A stack that does not follow the field is the
    * same at every thickness: two equal columns, which any lookup reads alike.
    */
   fullGrid(s: FilmSettings & StackedSettings): FilmTableGrid {

@@ -31,7 +31,7 @@ export type PassKind = FilmFill;
  * the ratio of these weights, and twice that to err on the side of smaller bands: a dispersive
  * texel sums 150 bins with their terms read per bin (measured per texel on SwiftShader in the built
  * demo's bands: 4–10× a constant film's), so the estimate, 10×, covers the measured range. A
- * stack's texel runs the recursion over its layers in each of 150 bins, two Fresnel interfaces per
+ * stack's texel runs the recursion over its films in each of 150 bins, two Fresnel interfaces per
  * layer: a 16-layer stack's is taken as 8 dispersive texels (its measured cost replaces it at once).
  */
 const KIND_COST: Readonly<Record<PassKind, number>> = { constant: 1, dispersive: 5, stack: 40 };

@@ -24,7 +24,7 @@ export interface ScaleOptions {
 /**
  * The interference colour scale: the reference colour (eqs 15–18) of the film at one angle for
  * `count` thicknesses from 0 to `maxThicknessNm` — the strip under the plots and the path in
- * the chromaticity diagram. For a stack the thickness is the field's: its FIELD_THICKNESS layers
+ * the chromaticity diagram. For a stack the thickness is the field's: its FIELD_THICKNESS films
  * take it (a stack with none is the same colour all along).
  */
 export function interferenceScale(
