@@ -3,6 +3,7 @@
  * demo page) with their expected relative cost, and the time left estimated from the stages done.
  */
 import type { BenchRow } from './rows.ts';
+import { FILM_METHOD_REGISTRY, methodReads } from '../../src/methods/methods.ts';
 
 export interface Stage {
   readonly name: string;
@@ -19,16 +20,11 @@ export function rowCost(row: BenchRow): number {
   // The flow rows, grid 32 to 128, took 1.3–3 times the floor's time in a full run.
   if (row.settings.field === 'flow') return 2;
   const dispersive = typeof row.settings.nFilm !== 'number';
-  switch (row.settings.mode) {
-    case 'exact':
-      return dispersive ? 2.5 : 1.5;
-    case 'fourier':
-      return dispersive ? 2.5 : 2;
-    case 'table':
-      return row.kind === 'bubble' && (row.quality.table.fill === 'binned' || dispersive) ? 2 : 1;
-    default:
-      return 1;
-  }
+  const mode = row.settings.mode;
+  // A bubble row builds its table at the start: by bins, that build weighs like a slower frame.
+  if (row.kind === 'bubble' && methodReads(mode, 'table') && (row.quality.table.fill === 'binned' || dispersive)) return 2;
+  const cost = FILM_METHOD_REGISTRY[mode].frameCost;
+  return dispersive ? cost.dispersive : cost.constant;
 }
 
 /** Seconds left: the seconds per unit of cost of the stages done, times the cost of those left. */

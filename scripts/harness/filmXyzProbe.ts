@@ -18,6 +18,7 @@ import { FilmTablePass, tableTarget } from '../../src/film/filmTablePass.ts';
 import { floatRowTexture, renderFloatRow } from '../../src/gpu/floatRow.ts';
 import { shaderSource } from '../../src/gpu/shaderSource.ts';
 import type { ParityGroup, ParityMode } from './parityCase.ts';
+import { methodReads } from '../../src/methods/methods.ts';
 
 const FRAGMENT = `${shaderSource('filmColor.glsl')}
 uniform sampler2D uInputs; // r: thickness in nm, g: cos θ_i
@@ -75,7 +76,7 @@ export class FilmXyzProbe {
     const u = m.uniforms;
     u.uInputs!.value = inputTexture;
     let table: FilmTableBinding | null = null;
-    if (mode === 'table') {
+    if (methodReads(mode, 'table')) {
       const thicknessesNm = g.inputs.map(([t]) => t);
       const settings = { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: Math.max(...thicknessesNm), mode } as const;
       table = this.tableAround(quality, settings, thicknessesNm);

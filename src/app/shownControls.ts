@@ -2,6 +2,7 @@ import { settingApplies } from '../fields/fields.ts';
 import type { Medium } from '../physics/medium.ts';
 import { PANEL_FOLDERS, type PanelFolder } from '../settings/parameterRow.ts';
 import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
+import { fillReads } from '../methods/filmFills.ts';
 
 /** A medium's kinds in the panel's list besides the names: a constant (the slider), a Cauchy film (a text A,B[,C]), a complex constant (a text n,k). */
 export const CONSTANT_INDEX = 'constant';
@@ -44,7 +45,7 @@ const MEDIUM_ROWS = PANEL_ROWS.filter((row) => row.control!.kind === 'medium' ||
  * What is hidden keeps its value: the settings, and so the URL, are the same whatever is shown.
  */
 export function shownControls(s: ViewSettings, kinds: Readonly<Partial<Record<PanelKey, string>>> = {}): ShownControls {
-  const unused = new Set<PanelKey>(s.layers.length > 0 ? ['nFilm'] : []);
+  const unused = new Set<PanelKey>(fillReads(s, 'stack') ? ['nFilm'] : []);
   const rows = Object.fromEntries(PANEL_ROWS.map((row) => [row.key, settingApplies(row.key, s.field) && !unused.has(row.key)]));
   const folders = Object.fromEntries(
     PANEL_FOLDERS.map((folder) => [folder, PANEL_ROWS.some((row) => row.control!.folder === folder && rows[row.key])]),

@@ -1,9 +1,8 @@
-import { FILM_STACK_DOMAIN, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
+import { FILM_STACK_DOMAIN, type FilmStack, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
 import {
   type Medium,
   type MediumRole,
-  type MediumStack,
   mediumExpected,
   mediumFromJson,
   mediumProblem,
@@ -19,7 +18,7 @@ import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../settings/filmParameters.ts
 export interface ColorCase {
   readonly id: string | number;
   /** The single film; with `layers`, its nOutside, nInside and angle, and its thickness that of every FIELD_THICKNESS layer. */
-  readonly stack: MediumStack;
+  readonly stack: FilmStack<Medium>;
   /** A stack of films in place of the stack's single film (filmLayers.ts); empty: the single film. */
   readonly layers: readonly FilmLayer[];
   readonly illuminant: IlluminantSpec;
@@ -125,8 +124,8 @@ export function validateColorCase(
   };
   const orDefault = (field: CaseField, fallback: string) => (raw[field] === undefined ? fallback : raw[field]);
   const layers = raw.layers === undefined ? [] : validateLayers(raw, nameOf, layerThickness);
-  const stack: MediumStack = {
-    nOutside: validateMedium(raw.nOutside, 'nOutside', nameOf('nOutside')) as number,
+  const stack: FilmStack<Medium> = {
+    nOutside: validateMedium(raw.nOutside, 'nOutside', nameOf('nOutside')),
     nFilm: validateMedium(raw.nFilm, 'nFilm', nameOf('nFilm')),
     nInside: validateMedium(raw.nInside, 'nInside', nameOf('nInside')),
     thicknessNm: number('thicknessNm'),
@@ -220,7 +219,7 @@ function validateLayers(raw: RawCase, nameOf: (field: CaseField) => string, laye
  * Wavelengths within WAVELENGTH_DOMAIN_NM and within the range of every medium's source (a metal's
  * table ends near 368 nm, so R(300 nm) on gold has no data behind it).
  */
-function validateWavelengths(value: unknown, name: string, stack: MediumStack, layers: readonly FilmLayer[]): readonly number[] {
+function validateWavelengths(value: unknown, name: string, stack: FilmStack<Medium>, layers: readonly FilmLayer[]): readonly number[] {
   if (value === undefined) return [];
   let domain = WAVELENGTH_DOMAIN_NM;
   let why = '';

@@ -9,11 +9,10 @@ import {
   mapToGamut,
 } from '../physics/colorConversions.ts';
 import type { IlluminantSpec } from '../physics/illuminants.ts';
-import { layerStackOf, layeredFilmXyz } from '../physics/layeredFilm.ts';
 import { type IndexJson, type Medium, indexJson, mediumIndexAt } from '../physics/medium.ts';
-import { layersReflectance } from '../physics/transferMatrix.ts';
-import { dispersiveReflectance } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
+import { fillReads } from '../methods/filmFills.ts';
+import { filmStackOf, stackReflectance, stackXyz } from '../methods/filmStacks.ts';
 import type { ColorCase } from './colorCase.ts';
 
 /** What the CLI reports for one case. */
@@ -53,9 +52,8 @@ const to8Bit = (linear: Rgb, luminance: number, gamut: GamutMapping): Rgb => {
  */
 export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
   const options = { illuminant: c.illuminant, polarization: c.polarization, normalization: c.normalization };
-  const film = { ...c.stack, layers: c.layers };
-  const stack = layerStackOf(film);
-  const xyz = layeredFilmXyz(film, options);
+  const stack = filmStackOf({ ...c.stack, layers: c.layers });
+  const xyz = stackXyz(stack, options);
   const indicesAt = (m: Medium) => c.wavelengthsNm.map((lambdaNm) => indexJson(mediumIndexAt(m, lambdaNm)));
   const linearSrgb = applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz);
   return {
@@ -67,10 +65,9 @@ export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
     srgb8: to8Bit(linearSrgb, xyz[1], gamut),
     linearWideGamut: applyMatrix3(XYZ_TO_LINEAR_WIDE_GAMUT, xyz),
     displayP3_8: to8Bit(applyMatrix3(XYZ_TO_LINEAR_DISPLAY_P3, xyz), xyz[1], gamut),
-    reflectance: c.wavelengthsNm.map((lambdaNm) =>
-      stack ? layersReflectance(lambdaNm, stack, c.polarization) : dispersiveReflectance(lambdaNm, c.stack, c.polarization),
-    ),
-    ...(stack
+    reflectance: c.wavelengthsNm.map((lambdaNm) => stackReflectance(lambdaNm, stack, c.polarization)),
+    // The report names the media as the case gives them: each layer's when its `layers` option is set.
+    ...(fillReads({ ...c.stack, layers: c.layers }, 'stack')
       ? { nLayers: c.wavelengthsNm.map((lambdaNm) => stack.layers.map((l) => indexJson(mediumIndexAt(l.n, lambdaNm)))) }
       : { nFilm: indicesAt(c.stack.nFilm) }),
     nInside: indicesAt(c.stack.nInside),

@@ -1,4 +1,5 @@
-import { type DispersiveFilmStack, stackAt } from '../physics/filmIndex.ts';
+import { type FilmIndex, filmIndexAt } from '../physics/filmIndex.ts';
+import type { FilmStack } from '../physics/filmReflectance.ts';
 import type { Polarization } from '../physics/filmReflectance.ts';
 import { filmBeams, opticalPathNm } from '../physics/reflectedBeams.ts';
 import type { Catalogue } from '../i18n/en.ts';
@@ -22,9 +23,15 @@ function axisTop(max: number): number {
   return [1, 2, 5, 10].map((m) => m * magnitude).find((t) => t >= max * (1 + 1e-9)) ?? 10 * magnitude;
 }
 
+/** The diagram's film: real indices, the film's n_b possibly a function of λ. */
+export type DiagramFilm = Omit<FilmStack, 'nFilm'> & { readonly nFilm: FilmIndex };
+
+/** The diagram's film at one wavelength: its n_b(λ). */
+export const diagramFilmAt = (film: DiagramFilm, lambdaNm: number): FilmStack => ({ ...film, nFilm: filmIndexAt(film.nFilm, lambdaNm) });
+
 /** The diagram's film as the spectrum sees it. */
 interface SpectrumFilm {
-  readonly stack: DispersiveFilmStack;
+  readonly stack: DiagramFilm;
   readonly polarization: Polarization;
   readonly flipTop: boolean;
   readonly wavelengthNm: number;
@@ -47,8 +54,8 @@ interface SpectrumCurve {
  */
 function spectrumCurve(film: SpectrumFilm): SpectrumCurve {
   const { min, max } = WAVELENGTH_DOMAIN;
-  const reflectance = (l: number) => filmBeams(stackAt(film.stack, l), film.polarization, l, { flipTop: film.flipTop }).reflectance;
-  const fringes = opticalPathNm(stackAt(film.stack, min)).re * (1 / min - 1 / max);
+  const reflectance = (l: number) => filmBeams(diagramFilmAt(film.stack, l), film.polarization, l, { flipTop: film.flipTop }).reflectance;
+  const fringes = opticalPathNm(diagramFilmAt(film.stack, min)).re * (1 / min - 1 / max);
   const count = Math.min(MAX_SAMPLES, Math.max(MIN_SAMPLES, Math.ceil(SAMPLES_PER_FRINGE * fringes)));
   const samples = Array.from({ length: count }, (_, i) => min + ((max - min) * i) / (count - 1));
   const values = samples.map(reflectance);

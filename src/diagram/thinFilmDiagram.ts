@@ -1,6 +1,5 @@
 import type { Catalogue } from '../i18n/en.ts';
 import { catalogueFor, catalogueLang, message } from '../i18n/messages.ts';
-import { stackAt } from '../physics/filmIndex.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { BEAM_TAIL_FRACTION, type FilmBeams, filmBeams } from '../physics/reflectedBeams.ts';
 import { isInDomain, quoted } from '../input/validate.ts';
@@ -18,7 +17,7 @@ import {
 import { addDiagramStyles } from './diagramStyles.ts';
 import { fourFigures, settingText } from './numberText.ts';
 import { drawPhasorFigure } from './phasorFigure.ts';
-import { drawSpectrumFigure } from './spectrumFigure.ts';
+import { diagramFilmAt, drawSpectrumFigure } from './spectrumFigure.ts';
 import { SVG_NS } from './svgNodes.ts';
 
 let instances = 0;
@@ -204,7 +203,7 @@ export class ThinFilmDiagram extends HTMLElement {
     if (!parts) return;
     const cat = this.catalogue;
     const s = this.state;
-    const stack = stackAt(s, s.wavelengthNm);
+    const stack = diagramFilmAt(s, s.wavelengthNm);
     const beams = filmBeams(stack, s.polarization, s.wavelengthNm, { flipTop: this.flipTop });
     this.r = beams.reflectance;
     this.beamCount = Math.max(...beams.channels.map((c) => c.beams.beams.length));

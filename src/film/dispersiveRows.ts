@@ -1,6 +1,7 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { packTexelRecord, texelRecord } from '../gpu/texelRecord.ts';
-import { type BinnedStack, pathPerNmAt } from '../physics/binnedIntegration.ts';
+import { pathPerNmAt } from '../physics/binnedIntegration.ts';
+import type { FilmStack } from '../physics/filmReflectance.ts';
 import type { Complex } from '../physics/complex.ts';
 import { type Polarization, filmOptics } from '../physics/filmReflectance.ts';
 import { type Medium, absorbsInBand, mediumStackAt, transparentIndexAt } from '../physics/medium.ts';
@@ -52,7 +53,7 @@ export function dispersiveRows(s: DispersiveFilm, layout: FilmTableLayout, data:
     for (let row = 0; row < layout.rows; row++) {
       const cos = filmTableCosIncidence(layout, row);
       const angleDeg = (Math.acos(Math.min(1, cos)) * 180) / Math.PI;
-      const stack: Omit<BinnedStack, 'thicknessNm'> = { nOutside, nFilm: s.nFilm, nInside, angleDeg };
+      const stack: Omit<FilmStack<Medium>, 'thicknessNm'> = { nOutside, nFilm: s.nFilm, nInside, angleDeg };
       for (let b = 0; b < bins; b++) {
         const l1 = LAMBDA_MIN_NM + b * width;
         const center = l1 + width / 2;

@@ -41,7 +41,7 @@ const INPUT_DEFINES: Readonly<Record<FilmMethodInput, (s: FilmColorSettings, q: 
   spectralBins: (s, q) => spectralBinDefines(filmSpectralBins(s, q, q.exactSpectralBins), q.spectralTailTolerance),
   spectralTransform: (_, q) => airySeriesDefines(q.airySeriesMaxOrders),
   table: (_, q) => filmTableLayoutDefines(q.table),
-  layers: (s) => filmStackDefines(s),
+  stack: (s) => filmStackDefines(s),
 };
 
 /**
@@ -76,7 +76,7 @@ function updateFilmColorTextures(
     u.uSpectralTransform!.value = null;
   }
   // The stack's uniforms are a material's that may draw one (filmStackUniforms: the bubble, the parity probe).
-  if ('uFilmLayers' in u) updateFilmStackUniforms(u, methodReads(s.mode, 'layers') ? s : { ...s, layers: [] }, bins, m);
+  if ('uFilmLayers' in u) updateFilmStackUniforms(u, methodReads(s.mode, 'stack') ? s : { ...s, layers: [] }, bins, m);
 }
 
 /** Frees what a film-colour material holds (call before disposing it). */

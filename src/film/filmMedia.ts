@@ -3,7 +3,8 @@ import { asComplex } from '../physics/complex.ts';
 import { type Medium, absorbsInBand, isDispersiveMedium, mediumIndexAt } from '../physics/medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import { type StackedSettings, isStacked } from './filmStack.ts';
+import type { StackedSettings } from './filmStack.ts';
+import { fillReads } from '../methods/filmFills.ts';
 
 /** The three media of the film: outside (a), the film (b), inside (c). */
 export type FilmMedia = Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside'>;
@@ -25,14 +26,13 @@ export const SODIUM_D_NM = 589.29;
  * Whether the film's or the inside's index depends on λ: the shaders then take both per spectral bin.
  * A stack of films takes every medium per bin from its own texture (filmStack.ts): none of this.
  */
-export const isDispersiveFilm = (s: Pick<FilmMedia, 'nFilm' | 'nInside'> & StackedSettings): boolean =>
-  !isStacked(s) && (isDispersiveMedium(s.nFilm) || isDispersiveMedium(s.nInside));
+export const isDispersiveFilm = (s: StackedSettings): boolean => fillReads(s, 'media');
 
 /**
  * The defines of a film-colour shader for these media: TFC_DISPERSIVE and its knots where the film
  * or the inside depends on λ, TFC_OPAQUE_INSIDE where the inside absorbs (no light from inside).
  */
-export const filmMediaDefines = (s: Pick<FilmMedia, 'nFilm' | 'nInside'> & StackedSettings): Record<string, number> => ({
+export const filmMediaDefines = (s: StackedSettings): Record<string, number> => ({
   ...(isDispersiveFilm(s)
     ? {
         TFC_DISPERSIVE: 1,

@@ -6,7 +6,8 @@ import { asComplex } from '../physics/complex.ts';
 import { type FilmLayer, FIELD_THICKNESS, LAYERS_DOMAIN, followsField } from '../physics/filmLayers.ts';
 import { type Medium, mediumIndexAt } from '../physics/medium.ts';
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
-import type { FilmSettings } from '../settings/filmSettings.ts';
+import { fillReads } from '../methods/filmFills.ts';
+import type { FilmMethodSettings } from '../methods/filmMethod.ts';
 
 /**
  * A stack of films on the GPU (docs/gpu.md#stacks-of-films): shaders/physics/transferMatrix.glsl
@@ -15,31 +16,23 @@ import type { FilmSettings } from '../settings/filmSettings.ts';
  * in and a last row for the inside, a column per bin (ñ in float64 from src/physics/medium.ts).
  */
 
-/** What carries a stack: `layers` (none or empty: the single film of nFilm). */
-export interface StackedSettings {
-  readonly layers?: readonly FilmLayer[];
-}
+/** What carries a stack: `layers` (none or empty: the single film of nFilm), with the media its fill depends on (filmFills.ts). */
+export type StackedSettings = FilmMethodSettings;
 
 /** The texel of a layer (or the inside) at a bin, read by these names in transferMatrix.glsl. */
 export const FILM_LAYER = texelRecord('TFC_FILM_LAYER', { N: 2, THICKNESS_NM: 1, FOLLOWS_FIELD: 1 });
-
-/** Whether the settings draw a stack rather than the single film. */
-export const isStacked = (s: StackedSettings): boolean => (s.layers?.length ?? 0) > 0;
-
-/** The stack's layers (none for a single film). */
-export const stackLayers = (s: StackedSettings): readonly FilmLayer[] => s.layers ?? [];
 
 /**
  * The spectral bins a film's integral takes. A stack has no closed-form mean over a bin's phase
  * window, so each bin is sampled at its centre, and the bins are the dispersive film's finer count
  * (docs/gpu.md#stacks-of-films gives the figures that chose it); a single film: spectralBinsFor.
  */
-export const filmSpectralBins = (s: StackedSettings & Pick<FilmSettings, 'nFilm' | 'nInside'>, q: FilmQuality, constant: number): number =>
-  isStacked(s) ? q.dispersiveSpectralBins : spectralBinsFor(s, q, constant);
+export const filmSpectralBins = (s: StackedSettings, q: FilmQuality, constant: number): number =>
+  fillReads(s, 'stack') ? q.dispersiveSpectralBins : spectralBinsFor(s, q, constant);
 
 /** The defines of transferMatrix.glsl for a stack (none for a single film). */
 export const filmStackDefines = (s: StackedSettings): Record<string, number> =>
-  isStacked(s) ? { TFC_FILM_LAYERS: 1, TFC_FILM_LAYERS_MAX: LAYERS_DOMAIN.count.max, ...texelRecordDefines(FILM_LAYER) } : {};
+  fillReads(s, 'stack') ? { TFC_FILM_LAYERS: 1, TFC_FILM_LAYERS_MAX: LAYERS_DOMAIN.count.max, ...texelRecordDefines(FILM_LAYER) } : {};
 
 /** The uniforms transferMatrix.glsl declares: the stack's texture and its layer count. */
 export const filmStackUniforms = () => ({
@@ -83,19 +76,14 @@ const shared = new SharedTextures((key) => {
 });
 
 /** Points transferMatrix.glsl's uniforms at the stack of `s` over `bins` bins, held for `holder` (shared by the holders of one stack). */
-export function updateFilmStackUniforms(
-  u: Record<string, { value: unknown }>,
-  s: StackedSettings & Pick<FilmSettings, 'nInside'>,
-  bins: number,
-  holder: object,
-): void {
-  if (!isStacked(s)) {
+export function updateFilmStackUniforms(u: Record<string, { value: unknown }>, s: StackedSettings, bins: number, holder: object): void {
+  if (!fillReads(s, 'stack')) {
     releaseFilmStackTexture(holder);
     u.uFilmLayers!.value = null;
     u.uFilmLayerCount!.value = 0;
     return;
   }
-  const layers = stackLayers(s);
+  const layers = s.layers ?? [];
   u.uFilmLayers!.value = shared.hold(JSON.stringify({ layers, nInside: s.nInside, bins } satisfies StackKey), holder);
   u.uFilmLayerCount!.value = layers.length;
 }

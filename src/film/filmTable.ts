@@ -3,7 +3,8 @@ import { maxFieldThicknessNm } from '../fields/fields.ts';
 import type { FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import { followsField } from '../physics/filmLayers.ts';
-import { type StackedSettings, isStacked, stackLayers } from './filmStack.ts';
+import { filmLayersOf } from '../methods/filmStacks.ts';
+import type { StackedSettings } from './filmStack.ts';
 import { type FilmTableGrid, bindFilmTable } from './filmTableGrid.ts';
 import { FilmTablePass, tableTarget } from './filmTablePass.ts';
 import { ProgressiveTableBuild } from './progressiveTableBuild.ts';
@@ -13,9 +14,9 @@ import { ProgressiveTableBuild } from './progressiveTableBuild.ts';
  * a stack of films in place of nFilm, and the field's range only where the film follows the field.
  */
 export function tableKey(s: FilmSettings & StackedSettings): string {
-  const film = isStacked(s) ? stackLayers(s) : s.nFilm;
-  const range = !isStacked(s) || followsField(stackLayers(s)) ? maxFieldThicknessNm(s) : null;
-  return JSON.stringify([s.nOutside, film, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
+  const films = filmLayersOf(s);
+  const range = followsField(films) ? maxFieldThicknessNm(s) : null;
+  return JSON.stringify([s.nOutside, films, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
 }
 
 /** Nothing shown yet: a grid of one texel. */

@@ -11,14 +11,8 @@ import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
 import { dispersiveRowsOf, dispersiveRowsReady } from './dispersiveRowsStore.ts';
 import { filmIndexMax, isDispersiveFilm, updateFilmMediaUniforms } from './filmMedia.ts';
 import { type FilmTableGrid, setFilmTableGridUniforms } from './filmTableGrid.ts';
-import {
-  type StackedSettings,
-  isStacked,
-  releaseFilmStackTexture,
-  stackFieldIndex,
-  stackLayers,
-  updateFilmStackUniforms,
-} from './filmStack.ts';
+import { type StackedSettings, releaseFilmStackTexture, stackFieldIndex, updateFilmStackUniforms } from './filmStack.ts';
+import { fillReads } from '../methods/filmFills.ts';
 import { releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
 import { releaseSpectralTransformTexture, spectralTransformReady, spectralTransformTexture } from './spectralTransformTexture.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
@@ -65,13 +59,13 @@ export class FilmTablePass {
 
   /**
    * The full grid for the settings: its width follows the thickness range and the film's index (a
-   * stack's: the sum of its field-following layers'). A stack that does not follow the field is the
+   * stack's: the sum of its field-following films'). A stack that does not follow the field is the
    * same at every thickness: two equal columns, which any lookup reads alike.
    */
   fullGrid(s: FilmSettings & StackedSettings): FilmTableGrid {
     const layout = this.quality.table;
     const maxThicknessNm = maxFieldThicknessNm(s);
-    const index = isStacked(s) ? stackFieldIndex(stackLayers(s), this.programs.bins(s)) : filmIndexMax(s.nFilm);
+    const index = fillReads(s, 'stack') ? stackFieldIndex(s.layers ?? [], this.programs.bins(s)) : filmIndexMax(s.nFilm);
     const width = index === null ? 2 : filmTableWidth(layout, maxThicknessNm, index);
     return { width, rows: layout.rows, maxThicknessNm };
   }

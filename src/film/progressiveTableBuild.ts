@@ -1,13 +1,13 @@
 import type { WebGLRenderTarget, WebGLRenderer } from 'three';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import { isDispersiveFilm } from './filmMedia.ts';
-import { isStacked } from './filmStack.ts';
+import { filmFill } from '../methods/filmFills.ts';
 import type { FilmTableGrid } from './filmTableGrid.ts';
 import type { FilmTablePass, TableColumns } from './filmTablePass.ts';
 import { TableDrawTiming } from './tableDrawTiming.ts';
 import { type PassKind, TableBandBudget } from './tableBandBudget.ts';
 
-const passKind = (s: FilmSettings): PassKind => (isStacked(s) ? 'stack' : isDispersiveFilm(s) ? 'dispersive' : 'constant');
+/** Each fill's pass is timed apart: its cost per texel differs by orders of magnitude. */
+const passKind = (s: FilmSettings): PassKind => filmFill(s);
 
 /**
  * The table built across the app's frames: for new settings a coarse grid (at most 1/16 of the

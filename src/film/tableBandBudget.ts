@@ -1,3 +1,5 @@
+import type { FilmFill } from '../methods/filmFills.ts';
+
 /**
  * How much of the table a frame may build: a full table built behind a coarse one
  * (ProgressiveTableBuild) is drawn in bands of columns, one per frame, each sized by the measured
@@ -22,14 +24,14 @@ const FRAME_GROWTH = 2;
 const MIN_BAND_COLUMNS = 1;
 
 /** What is measured of a table pass: a dispersive film's texel sums its bins, a constant film's the series, a stack's its recursion per bin. */
-export type PassKind = 'dispersive' | 'constant' | 'stack';
+export type PassKind = FilmFill;
 
 /**
  * A kind of pass not yet measured is taken to cost another kind's measured cost per texel times
  * the ratio of these weights, and twice that to err on the side of smaller bands: a dispersive
  * texel sums 150 bins with their terms read per bin (measured per texel on SwiftShader in the built
  * demo's bands: 4–10× a constant film's), so the estimate, 10×, covers the measured range. A
- * stack's texel runs the recursion over its layers in each of 150 bins, two Fresnel interfaces per
+ * stack's texel runs the recursion over its films in each of 150 bins, two Fresnel interfaces per
  * layer: a 16-layer stack's is taken as 8 dispersive texels (its measured cost replaces it at once).
  */
 const KIND_COST: Readonly<Record<PassKind, number>> = { constant: 1, dispersive: 5, stack: 40 };

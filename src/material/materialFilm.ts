@@ -58,12 +58,12 @@ export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit
 
 /**
  * The method drawn: the option's, or for a stack of films where that method has none (`fourier`)
- * the one drawn in its place (drawnMethod, the table). A single film is drawn by the option's method.
+ * the one drawn in its place (drawnMethod, the table). A single film is drawn by the option's method
+ * whatever its media: the registry is asked about the stack alone (the default media, which every
+ * method draws).
  */
 export const drawnModeOf = (o: CheckedOptions): CheckedOptions['mode'] =>
-  o.layers.length > 0
-    ? (drawnMethod({ ...o, nFilm: DEFAULT_SETTINGS.nFilm, nInside: DEFAULT_SETTINGS.nInside }).mode as CheckedOptions['mode'])
-    : o.mode;
+  drawnMethod({ ...o, nFilm: DEFAULT_SETTINGS.nFilm, nInside: DEFAULT_SETTINGS.nInside }).mode as CheckedOptions['mode'];
 
 /** Each material's metal from its colours, and the colours it was made from. */
 const metals = new WeakMap<MeshPhysicalMaterial, { readonly key: string; readonly medium: SampledIndex }>();

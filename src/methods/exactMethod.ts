@@ -7,6 +7,8 @@ import type { FilmMethod } from './filmMethod.ts';
  */
 export const exactMethod = {
   glsl: 'exactMethod.glsl',
-  reads: ['polarization', 'media', 'spectralBins', 'layers'],
+  reads: ['polarization', 'media', 'spectralBins', 'stack'],
   offered: true,
+  fills: ['constant', 'dispersive', 'stack'],
+  frameCost: { constant: 1.5, dispersive: 2.5 },
 } as const satisfies FilmMethod;

@@ -1,6 +1,4 @@
-import { isDispersiveMedium, mediumText } from '../physics/medium.ts';
 import type { FilmMethod } from './filmMethod.ts';
-import { stackAsTable } from './stackAsTable.ts';
 
 /**
  * `fourier`: the Airy sum as a Fourier series in the optical path per fragment, a few lookups of
@@ -14,11 +12,6 @@ export const fourierMethod = {
   glsl: 'fourierMethod.glsl',
   reads: ['polarization', 'media', 'spectralBins', 'spectralTransform'],
   offered: true,
-  drawnInstead: (s) => {
-    const stack = stackAsTable(s, 'fourier');
-    if (stack) return stack;
-    const dispersive = isDispersiveMedium(s.nFilm) ? 'nFilm' : isDispersiveMedium(s.nInside) ? 'nInside' : null;
-    if (dispersive === null) return null;
-    return { method: 'table', notice: 'app.fourierAsTable', values: { name: dispersive, medium: mediumText(s[dispersive]) } };
-  },
+  frameCost: { constant: 2, dispersive: 2.5 },
+  fills: ['constant'],
 } as const satisfies FilmMethod;

@@ -1,5 +1,6 @@
 import { exactMethod } from './exactMethod.ts';
-import type { FilmMethod, FilmMethodInput, FilmMethodSettings } from './filmMethod.ts';
+import type { DrawnInstead, FilmMethod, FilmMethodInput, FilmMethodSettings } from './filmMethod.ts';
+import { FILM_FILLS, type FilmFill, filmFill } from './filmFills.ts';
 import { fourierMethod } from './fourierMethod.ts';
 import { tableMethod } from './tableMethod.ts';
 import { threeIridescenceMethod } from './threeIridescenceMethod.ts';
@@ -28,12 +29,16 @@ export const MODES = FILM_METHODS.filter((name): name is Offered => FILM_METHOD_
 export const methodReads = (method: FilmMethodName, input: FilmMethodInput): boolean =>
   (FILM_METHOD_REGISTRY[method].reads as readonly FilmMethodInput[]).includes(input);
 
-/** The method drawn for `s`: its own, or the one its `drawnInstead` names, with the notice saying why (null when none). */
+/** Whether `method` draws the film `s` itself (its fill is one of the method's), rather than the table in its place. */
+export const supports = (method: FilmMethodName, s: FilmMethodSettings): boolean =>
+  (FILM_METHOD_REGISTRY[method].fills as readonly FilmFill[]).includes(filmFill(s));
+
+/** The method drawn for `s`: its own, or the table where it does not support the film's fill, with the notice saying why (null when none). */
 export function drawnMethod(s: FilmMethodSettings & { readonly mode: FilmMethodName }): {
   readonly mode: FilmMethodName;
-  readonly instead: ReturnType<NonNullable<FilmMethod['drawnInstead']>>;
+  readonly instead: DrawnInstead | null;
 } {
-  const method: FilmMethod = FILM_METHOD_REGISTRY[s.mode];
-  const instead = method.drawnInstead?.(s) ?? null;
+  const insteadOf = FILM_FILLS[filmFill(s)].insteadOf;
+  const instead = supports(s.mode, s) || insteadOf === null ? null : insteadOf(s, s.mode);
   return { mode: instead ? (instead.method as FilmMethodName) : s.mode, instead };
 }

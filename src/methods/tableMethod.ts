@@ -10,4 +10,6 @@ export const tableMethod = {
   glsl: 'tableMethod.glsl',
   reads: ['table'],
   offered: true,
+  fills: ['constant', 'dispersive', 'stack'],
+  frameCost: { constant: 1, dispersive: 1 },
 } as const satisfies FilmMethod;

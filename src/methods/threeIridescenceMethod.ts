@@ -1,5 +1,4 @@
 import type { FilmMethod } from './filmMethod.ts';
-import { stackAsTable } from './stackAsTable.ts';
 
 /**
  * `three-iridescence`: three.js's own iridescence (Belcour–Barla, `evalIridescence`), the
@@ -10,5 +9,6 @@ export const threeIridescenceMethod = {
   glsl: 'threeIridescenceMethod.glsl',
   reads: ['polarization'],
   offered: false,
-  drawnInstead: (s) => stackAsTable(s, 'three-iridescence'),
+  frameCost: { constant: 1, dispersive: 1 },
+  fills: ['constant', 'dispersive'],
 } as const satisfies FilmMethod;

@@ -2,12 +2,13 @@ import { cScale, cTimesIndex } from './complex.ts';
 import {
   type AiryTerms,
   type FilmOptics,
+  type FilmStack,
   type Polarization,
   filmOptics,
   meanChannelReflectance,
   reflectanceAt,
 } from './filmReflectance.ts';
-import { type Medium, type MediumStack, isDispersiveMedium, mediumIndexAt, mediumStackAt, transparentIndexAt } from './medium.ts';
+import { type Medium, isDispersiveMedium, mediumIndexAt, mediumStackAt, transparentIndexAt } from './medium.ts';
 import { cosDeg, refractedCos } from './snell.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type SpectralWeights, type Xyz } from './spectralWeights.ts';
 
@@ -141,20 +142,8 @@ export function binnedXyz(optics: FilmOptics, bins: SpectralBins, extraHalfWidth
   }));
 }
 
-/**
- * A stack as the bins take it: like MediumStack, but the light may arrive from a transparent medium
- * whose index depends on λ (the far wall seen from inside a glass sphere): its n at each λ.
- */
-export interface BinnedStack extends Omit<MediumStack, 'nOutside'> {
-  readonly nOutside: Medium;
-}
-
-/** The stack at λ. */
-const binnedStackAt = (stack: BinnedStack, lambdaNm: number) =>
-  mediumStackAt({ ...stack, nOutside: transparentIndexAt(stack.nOutside, lambdaNm) }, lambdaNm);
-
 /** Re Δ per nm of thickness at λ: Re(2 ñ_b cos θ_r), eq (12) reduced (filmOptics' Δ of a 1 nm film). */
-export function pathPerNmAt(stack: Omit<BinnedStack, 'thicknessNm'>, lambdaNm: number): number {
+export function pathPerNmAt(stack: Omit<FilmStack<Medium>, 'thicknessNm'>, lambdaNm: number): number {
   const nb = mediumIndexAt(stack.nFilm, lambdaNm);
   const na = transparentIndexAt(stack.nOutside, lambdaNm);
   return 2 * cTimesIndex(refractedCos(nb, na, cosDeg(stack.angleDeg)), nb).re;
@@ -165,9 +154,9 @@ export function pathPerNmAt(stack: Omit<BinnedStack, 'thicknessNm'>, lambdaNm: n
  * each bin's Fresnel terms at ñ of its centre, its phase window from the optical path at its two
  * ends, 2π Re Δ(λ)/λ with Δ(λ) = 2 ñ_b(λ) d cos θ_r(λ), the film's absorption as binReflectance folds it.
  */
-export function dispersiveBinnedXyz(stack: BinnedStack, polarization: Polarization, bins: SpectralBins): Xyz {
+export function dispersiveBinnedXyz(stack: FilmStack<Medium>, polarization: Polarization, bins: SpectralBins): Xyz {
   return binsXyz(bins, (l1, l2) => ({
-    optics: filmOptics(binnedStackAt(stack, (l1 + l2) / 2), polarization),
+    optics: filmOptics(mediumStackAt(stack, (l1 + l2) / 2), polarization),
     pathLowNm: pathPerNmAt(stack, l1) * stack.thicknessNm,
     pathHighNm: pathPerNmAt(stack, l2) * stack.thicknessNm,
     extraHalfWidth: 0,
@@ -175,11 +164,11 @@ export function dispersiveBinnedXyz(stack: BinnedStack, polarization: Polarizati
 }
 
 /** Whether a stack's bins need ñ per bin (a medium that depends on λ), not one set of optics. */
-export const isDispersiveStack = (stack: Pick<BinnedStack, 'nOutside' | 'nFilm' | 'nInside'>): boolean =>
+export const isDispersiveStack = (stack: Pick<FilmStack<Medium>, 'nOutside' | 'nFilm' | 'nInside'>): boolean =>
   [stack.nOutside, stack.nFilm, stack.nInside].some(isDispersiveMedium);
 
 /** XYZ by bins of any film: binnedXyz of its optics for constant media (real or complex), dispersiveBinnedXyz otherwise. */
-export const stackBinnedXyz = (stack: BinnedStack, polarization: Polarization, bins: SpectralBins): Xyz =>
+export const stackBinnedXyz = (stack: FilmStack<Medium>, polarization: Polarization, bins: SpectralBins): Xyz =>
   isDispersiveStack(stack)
     ? dispersiveBinnedXyz(stack, polarization, bins)
-    : binnedXyz(filmOptics(binnedStackAt(stack, LAMBDA_MIN_NM), polarization), bins);
+    : binnedXyz(filmOptics(mediumStackAt(stack, LAMBDA_MIN_NM), polarization), bins);

@@ -1,4 +1,4 @@
-import { FILM_STACK_DOMAIN, type FilmStack } from './filmReflectance.ts';
+import { FILM_STACK_DOMAIN } from './filmReflectance.ts';
 import { FILM_MATERIALS, type FilmMaterial, namedIndex } from './namedMedia.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from './spectralWeights.ts';
 import { parseDecimal, quoted } from '../input/validate.ts';
@@ -16,11 +16,6 @@ export interface CauchyFilm {
   readonly cauchy: readonly [number, number, number];
 }
 export type FilmIndex = number | FilmMaterial | CauchyFilm;
-
-/** A FilmStack whose film index may depend on λ; `stackAt` gives the stack at one wavelength. */
-export interface DispersiveFilmStack extends Omit<FilmStack, 'nFilm'> {
-  readonly nFilm: FilmIndex;
-}
 
 /** Where n(λ) must stay within the index domain: the colour integral's band. */
 export const DISPERSION_CHECK_NM = { min: LAMBDA_MIN_NM, max: LAMBDA_MAX_NM } as const;
@@ -46,12 +41,6 @@ export function filmIndexAt(index: FilmIndex, lambdaNm: number): number {
 
 /** Whether n_b depends on λ (a number does not; anything else is treated as dispersive). */
 export const isDispersive = (index: FilmIndex): boolean => typeof index !== 'number';
-
-/** The stack at one wavelength: its film index n_b(λ). */
-export const stackAt = (stack: DispersiveFilmStack, lambdaNm: number): FilmStack => ({
-  ...stack,
-  nFilm: filmIndexAt(stack.nFilm, lambdaNm),
-});
 
 /** The index as URL, attribute and command line write it: `1.33`, `water`, `cauchy:1.45,6000` (C left out when 0). */
 export function filmIndexText(index: FilmIndex): string {

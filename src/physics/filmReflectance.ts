@@ -13,6 +13,7 @@ import {
   sameIndex,
 } from './complex.ts';
 import { type InterfaceCoefficients, fresnelCoefficients, transmittedFluxRatio } from './fresnel.ts';
+import type { Medium } from './medium.ts';
 import { cosDeg, refractedCos } from './snell.ts';
 import { type NumberDomain, ParameterError, assertInRange, isInDomain } from '../input/validate.ts';
 
@@ -26,24 +27,29 @@ import { type NumberDomain, ParameterError, assertInRange, isInDomain } from '..
 export const POLARIZATIONS = ['unpolarized', 'paper', 's', 'p'] as const;
 export type Polarization = (typeof POLARIZATIONS)[number];
 
-/** A film b of thickness d between an outside medium a and an inside medium c, lit at θ_i. */
-export interface FilmStack {
-  /** n_a, 1 ≤ n ≤ 4 */ readonly nOutside: number;
-  /** n_b, 1 ≤ n ≤ 4 */ readonly nFilm: number;
-  /** n_c, 1 ≤ n ≤ 4 */ readonly nInside: number;
+/**
+ * The outside of a film whose film and inside are of kind N: a real constant where they are indices
+ * (numbers or ñ), any transparent Medium where they are media (the far wall seen from inside a glass
+ * sphere: its n at each λ).
+ */
+type OutsideOf<N> = [N] extends [RefractiveIndex] ? number : Medium;
+
+/**
+ * A film b of thickness d between an outside medium a and an inside medium c, lit at θ_i: one layer
+ * of a stack (docs/physics.md#stacks-of-films), the film of the paper's eqs (1)–(14). Its film and
+ * inside are of one kind N:
+ * - `number` (the default): real indices, each within FILM_STACK_DOMAIN;
+ * - `RefractiveIndex`: a film and an inside that may absorb (ñ = n + ik, docs/physics.md#absorbing-media),
+ *   ñ within COMPLEX_INDEX_DOMAIN; the outside, where the light comes from and returns to, stays transparent;
+ * - `Medium`: media whose ñ may depend on λ (medium.ts); `mediumStackAt` gives the film at one λ.
+ */
+export interface FilmStack<N extends RefractiveIndex | Medium = number> {
+  /** n_a, 1 ≤ n ≤ 4 */ readonly nOutside: OutsideOf<N>;
+  /** n_b, 1 ≤ n ≤ 4 */ readonly nFilm: N;
+  /** n_c, 1 ≤ n ≤ 4 */ readonly nInside: N;
   /** d in nm, 0 ≤ d ≤ 20 000 (the documented domain; larger is finite but slow to integrate) */
   readonly thicknessNm: number;
   /** θ_i in degrees, 0 ≤ θ ≤ 90 */ readonly angleDeg: number;
-}
-
-/**
- * The same stack with a film and an inside that may absorb (ñ = n + ik, docs/physics.md#absorbing-media),
- * each a real index within FILM_STACK_DOMAIN or ñ within COMPLEX_INDEX_DOMAIN. The outside, where the
- * light comes from and returns to, stays transparent.
- */
-export interface AbsorbingFilmStack extends Omit<FilmStack, 'nFilm' | 'nInside'> {
-  readonly nFilm: RefractiveIndex;
-  readonly nInside: RefractiveIndex;
 }
 
 /** The domain of each field of a FilmStack: what every entry point checks and filmOptics enforces. */
@@ -85,7 +91,7 @@ export function complexIndexProblem(n: Complex): string | null {
 }
 
 /** Throws a ParameterError naming the first field outside FILM_STACK_DOMAIN (NaN and ±Infinity included). */
-export function assertFilmStack(stack: AbsorbingFilmStack): void {
+export function assertFilmStack(stack: FilmStack<RefractiveIndex>): void {
   for (const field of Object.keys(FILM_STACK_DOMAIN) as (keyof FilmStack)[]) {
     const { min, max, unit } = FILM_STACK_DOMAIN[field];
     const value = stack[field];
@@ -166,7 +172,7 @@ const bareInterface = ([r, t]: Complex[]): AiryTerms => ({
  * the optical path difference Δ (eq 12, reduced to 2 n_b d cos θ_r). A stack outside
  * FILM_STACK_DOMAIN throws a ParameterError before anything is computed.
  */
-export function filmOptics(stack: AbsorbingFilmStack, polarization: Polarization = 'unpolarized'): FilmOptics {
+export function filmOptics(stack: FilmStack<RefractiveIndex>, polarization: Polarization = 'unpolarized'): FilmOptics {
   assertFilmStack(stack);
   const { nOutside: na, nFilm: nb, nInside: nc, thicknessNm: d } = stack;
   const cos = cosDeg(stack.angleDeg);
@@ -236,11 +242,11 @@ export function transmittanceAt(optics: FilmOptics, lambdaNm: number): number {
 }
 
 /** R(λ; n_a, n_b, n_c, d, θ_i): eqs (1)–(14) in one call. */
-export const filmReflectance = (lambdaNm: number, stack: AbsorbingFilmStack, polarization: Polarization = 'unpolarized') =>
+export const filmReflectance = (lambdaNm: number, stack: FilmStack<RefractiveIndex>, polarization: Polarization = 'unpolarized') =>
   reflectanceAt(filmOptics(stack, polarization), lambdaNm);
 
 /** T(λ; n_a, n_b, n_c, d, θ_i), the transmitted fraction. */
-export const filmTransmittance = (lambdaNm: number, stack: AbsorbingFilmStack, polarization: Polarization = 'unpolarized') =>
+export const filmTransmittance = (lambdaNm: number, stack: FilmStack<RefractiveIndex>, polarization: Polarization = 'unpolarized') =>
   transmittanceAt(filmOptics(stack, polarization), lambdaNm);
 
 /**

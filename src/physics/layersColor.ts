@@ -69,7 +69,7 @@ function layerFringes(optics: LayersOptics, lambdaNm: number): Fringes {
 }
 
 const isDispersiveStack = (stack: LayerStack): boolean =>
-  isDispersiveMedium(stack.nInside) || stack.layers.some((l) => isDispersiveMedium(l.n));
+  [stack.nOutside, stack.nInside, ...stack.layers.map((l) => l.n)].some(isDispersiveMedium);
 
 /** The stack's optics at any λ: computed once when no medium depends on λ, at every λ otherwise. */
 function opticsOf(stack: LayerStack, polarization: Polarization): (lambdaNm: number) => LayersOptics {

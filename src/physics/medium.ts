@@ -1,7 +1,6 @@
 import { type RefractiveIndex, asComplex, realIndex } from './complex.ts';
 import {
   DISPERSION_CHECK_NM,
-  type DispersiveFilmStack,
   FILM_INDEX_EXPECTED,
   type FilmIndex,
   filmIndexAt,
@@ -11,7 +10,7 @@ import {
   isDispersive,
   parseFilmIndexText,
 } from './filmIndex.ts';
-import { type AbsorbingFilmStack, COMPLEX_INDEX_DOMAIN, FILM_STACK_DOMAIN, complexIndexProblem } from './filmReflectance.ts';
+import { COMPLEX_INDEX_DOMAIN, type FilmStack, FILM_STACK_DOMAIN, complexIndexProblem } from './filmReflectance.ts';
 import { type MediumName, NAMED_MEDIA, type NamedMedium, isMediumName, namedIndex, namedRangeNm } from './namedMedia.ts';
 import { type SampledIndex, isSampledIndex, sampledIndexAt } from './sampledIndex.ts';
 import { ParameterError, expectedNumber, parseDecimal } from '../input/validate.ts';
@@ -33,12 +32,6 @@ export type Medium = FilmIndex | NamedMedium | ComplexConstant | SampledIndex;
 
 /** Which layer a medium is for: the outside takes a real constant only. */
 export type MediumRole = 'outside' | 'film' | 'inside';
-
-/** A stack whose film and inside may be any Medium; `mediumStackAt` gives it at one wavelength. */
-export interface MediumStack extends Omit<DispersiveFilmStack, 'nInside' | 'nFilm'> {
-  readonly nFilm: Medium;
-  readonly nInside: Medium;
-}
 
 /** Where a medium's source gives values (null: at every λ). */
 type RangeNm = { readonly min: number; readonly max: number } | null;
@@ -168,9 +161,10 @@ export const absorbsInBand = (m: Medium): boolean => kindOf(m).absorbsInBand(m);
 /** Where the medium's source gives values (null: at every λ). */
 export const mediumRangeNm = (m: Medium): RangeNm => kindOf(m).rangeNm(m);
 
-/** The stack at one wavelength. */
-export const mediumStackAt = (stack: MediumStack, lambdaNm: number): AbsorbingFilmStack => ({
+/** The film at one wavelength. */
+export const mediumStackAt = (stack: FilmStack<Medium>, lambdaNm: number): FilmStack<RefractiveIndex> => ({
   ...stack,
+  nOutside: transparentIndexAt(stack.nOutside, lambdaNm),
   nFilm: mediumIndexAt(stack.nFilm, lambdaNm),
   nInside: mediumIndexAt(stack.nInside, lambdaNm),
 });

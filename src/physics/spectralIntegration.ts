@@ -1,6 +1,6 @@
-import { type FilmOptics, type Polarization, filmOptics, reflectanceAt } from './filmReflectance.ts';
+import { type FilmOptics, type FilmStack, type Polarization, filmOptics, reflectanceAt } from './filmReflectance.ts';
 import { type IlluminantSpec } from './illuminants.ts';
-import { type MediumStack, assertMedium, isDispersiveMedium, mediumStackAt } from './medium.ts';
+import { type Medium, assertMedium, isDispersiveMedium, mediumStackAt } from './medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type Normalization, type SpectralWeights, type Xyz, spectralWeights } from './spectralWeights.ts';
 
 /**
@@ -115,10 +115,10 @@ export interface ColorOptions {
  * (docs/physics.md#a-dispersive-film); an absorbing one takes the complex phase of
  * docs/physics.md#absorbing-media. Constant real indices take the path they always did.
  */
-export function filmXyz(stack: MediumStack, options: ColorOptions = {}): Xyz {
+export function filmXyz(stack: FilmStack<Medium>, options: ColorOptions = {}): Xyz {
   const polarization = options.polarization ?? 'unpolarized';
   const w = spectralWeights(options.illuminant ?? 'D65', options.normalization ?? 'white');
-  if (!isDispersiveMedium(stack.nFilm) && !isDispersiveMedium(stack.nInside)) {
+  if (![stack.nOutside, stack.nFilm, stack.nInside].some(isDispersiveMedium)) {
     const optics = filmOptics(mediumStackAt(stack, LAMBDA_MIN_NM), polarization);
     return integrateXyz((l) => reflectanceAt(optics, l), w, options.stepsPerNm ?? adaptiveStepsPerNm(optics));
   }
@@ -129,7 +129,7 @@ export function filmXyz(stack: MediumStack, options: ColorOptions = {}): Xyz {
 }
 
 /** R at one wavelength of a film whose media may depend on λ (eqs 1–14 with ñ_b(λ), ñ_c(λ)). */
-export const dispersiveReflectance = (lambdaNm: number, stack: MediumStack, polarization: Polarization = 'unpolarized'): number =>
+export const dispersiveReflectance = (lambdaNm: number, stack: FilmStack<Medium>, polarization: Polarization = 'unpolarized'): number =>
   reflectanceAt(filmOptics(mediumStackAt(stack, lambdaNm), polarization), lambdaNm);
 
 /** XYZ of the illuminant itself (a perfect white reflector), the white point for CIELAB. */

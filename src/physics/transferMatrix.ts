@@ -2,19 +2,22 @@ import { type Complex, type RefractiveIndex, cAbs2, cAdd, cDiv, cExpI, cMul, cSc
 import { LAYERS_DOMAIN, type ResolvedLayer } from './filmLayers.ts';
 import { FILM_STACK_DOMAIN, type Polarization, channelCoefficients, channelsOf } from './filmReflectance.ts';
 import { fresnelCoefficients, transmittedFluxRatio } from './fresnel.ts';
-import { type Medium, assertMedium, mediumIndexAt } from './medium.ts';
+import { type Medium, assertMedium, mediumIndexAt, transparentIndexAt } from './medium.ts';
 import { cosDeg, refractedCos } from './snell.ts';
 import { assertInRange } from '../input/validate.ts';
 
 /**
- * A stack of films between a transparent outside and an inside (docs/physics.md#stacks-of-films).
- * The media are numbered 0 (the outside), 1…N (the layers, outside in) and N + 1 (the inside).
- * Domain (LAYERS_DOMAIN, FILM_STACK_DOMAIN): 1–64 layers, each 0–20 000 nm thick and of any medium a
- * film takes (a real n in [1, 4], water, a Cauchy film, a named medium, complex:n,k); the inside any
- * medium the single film's inside takes; the outside a real n in [1, 4]; θ_i in [0°, 90°].
+ * Every film: a stack of one or more films between a transparent outside and an inside
+ * (docs/physics.md#stacks-of-films). The media are numbered 0 (the outside), 1…N (the layers, outside
+ * in) and N + 1 (the inside). Domain (LAYERS_DOMAIN, FILM_STACK_DOMAIN): 1–64 layers, each
+ * 0–20 000 nm thick and of any medium a film takes (a real n in [1, 4], water, a Cauchy film, a named
+ * medium, complex:n,k); the inside any medium the single film's inside takes; the outside a real n in
+ * [1, 4] where a user gives it (assertLayerStack), any transparent medium where the film is seen from
+ * inside a glass sphere; θ_i in [0°, 90°]. One layer is the film of the paper's eqs (1)–(14)
+ * (FilmStack, filmReflectance.ts), whose fast paths src/methods/filmStacks.ts takes for it.
  */
 export interface LayerStack {
-  readonly nOutside: number;
+  readonly nOutside: Medium;
   readonly layers: readonly ResolvedLayer[];
   readonly nInside: Medium;
   readonly angleDeg: number;
@@ -64,7 +67,7 @@ const isZero = (z: Complex): boolean => z.re === 0 && z.im === 0;
  * keeps it, as the film keeps eq (13) there.
  */
 export function layersOpticsUnchecked(stack: LayerStack, lambdaNm: number, polarization: Polarization): LayersOptics {
-  const n0 = stack.nOutside;
+  const n0 = transparentIndexAt(stack.nOutside, lambdaNm);
   const cosIncidence = cosDeg(stack.angleDeg);
   const layers = polarization === 'paper' ? stack.layers : stack.layers.filter((l) => l.thicknessNm > 0);
   const indices: RefractiveIndex[] = [n0, ...layers.map((l) => mediumIndexAt(l.n, lambdaNm)), mediumIndexAt(stack.nInside, lambdaNm)];

@@ -1,10 +1,9 @@
 import { asComplex } from '../physics/complex.ts';
-import { type Polarization, filmOptics, reflectanceAt } from '../physics/filmReflectance.ts';
+import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantSpd } from '../physics/illuminants.ts';
-import { type MediumStack, isDispersiveMedium, mediumIndexAt, mediumStackAt } from '../physics/medium.ts';
+import { isDispersiveMedium, mediumIndexAt } from '../physics/medium.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
-import { layersReflectanceSpectrum } from '../physics/transferMatrix.ts';
-import { type LayeredFilm, layerStackOf } from '../physics/layeredFilm.ts';
+import { type FilmOption, filmStackOf, singleFilmOf, stackReflectanceSpectrum } from '../methods/filmStacks.ts';
 
 /** The spectra behind a film's colour, sampled over the integration range (eqs 15–18's integrand). */
 export interface FilmSpectrum {
@@ -15,24 +14,23 @@ export interface FilmSpectrum {
   readonly incident: Float64Array;
   /** I_out(λ) = R(λ)·I_in(λ), on the same scale as `incident`. */
   readonly reflected: Float64Array;
-  /** n_b(λ) (Re ñ_b) of a dispersive single film; null when the film's index is the same at every wavelength, and for a stack. */
+  /** n_b(λ) (Re ñ_b) of a dispersive film of one layer; null when its index is the same at every wavelength, and for two or more layers. */
   readonly filmIndex: Float64Array | null;
-  /** The stack's layers (FIELD_THICKNESS resolved); 0 for the single film. */
+  /** The layers the film's option gives; 0 for the film of nFilm. */
   readonly layerCount: number;
 }
 
 /**
- * Samples R, I_in and I_out every `stepNm` from 380 to 830 nm: R of the single film (eqs 11–14),
- * or of the stack of `stack.layers` (the transfer matrix) when there is one.
+ * Samples R, I_in and I_out every `stepNm` from 380 to 830 nm: R of the film's stack (filmStackOf:
+ * eqs 11–14 for one layer, the transfer matrix for more).
  */
-export function filmSpectrum(stack: LayeredFilm, illuminant: IlluminantSpec, polarization: Polarization, stepNm = 1): FilmSpectrum {
+export function filmSpectrum(film: FilmOption, illuminant: IlluminantSpec, polarization: Polarization, stepNm = 1): FilmSpectrum {
   const count = Math.floor((LAMBDA_MAX_NM - LAMBDA_MIN_NM) / stepNm) + 1;
   const lambdasNm = Float64Array.from({ length: count }, (_, i) => LAMBDA_MIN_NM + i * stepNm);
-  const layers = layerStackOf(stack);
-  const reflectance = layers
-    ? Float64Array.from(layersReflectanceSpectrum(layers, Array.from(lambdasNm), polarization))
-    : singleFilmReflectance(stack, lambdasNm, polarization);
-  const filmIndex = !layers && isDispersiveMedium(stack.nFilm) ? lambdasNm.map((l) => asComplex(mediumIndexAt(stack.nFilm, l)).re) : null;
+  const stack = filmStackOf(film);
+  const reflectance = Float64Array.from(stackReflectanceSpectrum(stack, Array.from(lambdasNm), polarization));
+  const single = singleFilmOf(stack);
+  const filmIndex = single && isDispersiveMedium(single.nFilm) ? lambdasNm.map((l) => asComplex(mediumIndexAt(single.nFilm, l)).re) : null;
   const spd = illuminantSpd(illuminant);
   const incident = lambdasNm.map(spd);
   const peak = Math.max(...incident);
@@ -41,12 +39,5 @@ export function filmSpectrum(stack: LayeredFilm, illuminant: IlluminantSpec, pol
     incident[i]! /= peak;
     reflected[i] = reflectance[i]! * incident[i]!;
   }
-  return { lambdasNm, reflectance, incident, reflected, filmIndex, layerCount: layers?.layers.length ?? 0 };
-}
-
-/** R of the single film at each wavelength, its optics computed once when nothing depends on λ. */
-function singleFilmReflectance(stack: MediumStack, lambdasNm: Float64Array, polarization: Polarization): Float64Array {
-  const dispersive = isDispersiveMedium(stack.nFilm) || isDispersiveMedium(stack.nInside);
-  const constantOptics = dispersive ? null : filmOptics(mediumStackAt(stack, LAMBDA_MIN_NM), polarization);
-  return lambdasNm.map((l) => reflectanceAt(constantOptics ?? filmOptics(mediumStackAt(stack, l), polarization), l));
+  return { lambdasNm, reflectance, incident, reflected, filmIndex, layerCount: film.layers?.length ?? 0 };
 }

@@ -4,7 +4,7 @@ import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { whiteXyz } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
-import { type LayeredFilm, layeredFilmXyz } from '../physics/layeredFilm.ts';
+import { type FilmOption, filmStackOf, stackXyz } from '../methods/filmStacks.ts';
 
 /** The reference's account of a probed film, and how far the rendered colour is from it. */
 export interface ProbeColor {
@@ -24,8 +24,8 @@ export interface ProbeLight {
 }
 
 /** The reference colour (eqs 15–19) of the probed film or stack, compared with what the shader rendered there. */
-export function probeColor(film: LayeredFilm, light: ProbeLight, xyzToLinearRgb: Matrix3, renderedXyz: Xyz): ProbeColor {
-  const xyz = layeredFilmXyz(film, light);
+export function probeColor(film: FilmOption, light: ProbeLight, xyzToLinearRgb: Matrix3, renderedXyz: Xyz): ProbeColor {
+  const xyz = stackXyz(filmStackOf(film), light);
   const linearRgb = applyMatrix3(xyzToLinearRgb, xyz);
   const [r, g, b] = mapToGamut(linearRgb, xyz[1]).map(encode8) as [number, number, number];
   const hex = `#${[r, g, b].map((v) => v.toString(16).padStart(2, '0')).join('')}`;

@@ -5,6 +5,7 @@ import type { FilmSettings } from '../settings/filmSettings.ts';
 import type { ProbeReading } from '../scene/probe.ts';
 import { type ColorName, colorName } from './colorName.ts';
 import { probeColor } from './probeColor.ts';
+import { fillReads } from '../methods/filmFills.ts';
 
 /** A colour's name in a catalogue's language ("dark blue", "暗い青"). */
 export function colorNameText(name: ColorName, cat: Catalogue): string {
@@ -37,5 +38,5 @@ export function probeDescription(s: FilmSettings, probe: readonly [number, numbe
     colour: colorNameText(colorName(c.rgb8), cat),
     hex: c.hex,
   });
-  return s.layers.length ? `${sentence} ${message(cat, 'plots.stackNote', { count: s.layers.length })}` : sentence;
+  return fillReads(s, 'stack') ? `${sentence} ${message(cat, 'plots.stackNote', { count: s.layers.length })}` : sentence;
 }

@@ -1,4 +1,5 @@
 import { BOTH_BACKENDS, expect, test } from './fixtures.ts';
+import { methodReads } from '../../src/methods/methods.ts';
 import { centrePixel } from './drawingBuffer.ts';
 import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
@@ -14,7 +15,7 @@ import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './we
 
 for (const mode of ['table', 'exact'] as const) {
   // A fresh page: the context this test loses and restores would be every later test's.
-  const tag = mode === 'table' ? [BOTH_BACKENDS] : [];
+  const tag = methodReads(mode, 'table') ? [BOTH_BACKENDS] : [];
   test(
     `${mode} mode: after a lost and restored context the bubble redraws itself, table rebuilt, nothing leaked`,
     { tag },

@@ -11,6 +11,7 @@ import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { type Xyz } from '../../src/physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/settings/filmQuality.ts';
 import { MODES } from '../../src/settings/filmSettings.ts';
+import { methodReads } from '../../src/methods/methods.ts';
 import { type DeltaStats, deltaStats } from '../../scripts/harness/deltaStats.ts';
 import type { ParityGroup, ParityMode } from '../../scripts/harness/parityCase.ts';
 import { mulberry32 } from '../seededRandom.ts';
@@ -148,13 +149,13 @@ function keepFigures(name: string, figures: unknown): void {
 }
 
 for (const mode of MODES) {
-  const tag = mode === 'table' ? [BOTH_BACKENDS] : [];
+  const tag = methodReads(mode, 'table') ? [BOTH_BACKENDS] : [];
   test(
     `${mode} mode matches the reference within ΔE00 ${MAX_DELTA_E00_FIXED} on 0–2000 nm, 0–85°`,
     { tag },
     async ({ parityPage: page }) => {
-      test.slow(mode !== 'fourier', 'dispersive films by bins');
-      const groups = mode === 'table' ? perTable(fixedDomain()) : fixedDomain();
+      test.slow(!methodReads(mode, 'spectralTransform'), 'dispersive films by bins');
+      const groups = methodReads(mode, 'table') ? perTable(fixedDomain()) : fixedDomain();
       const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
       keepFigures(`${mode}-fixed`, figures);
       console.log(`parity ${mode} fixed: ${JSON.stringify(figures)}`);
@@ -166,8 +167,8 @@ for (const mode of MODES) {
 
   test(`${mode} mode stays finite and close on thick, grazing and TIR films`, async ({ parityPage: page }) => {
     // The dispersive 20 µm films' tables sum 150 bins per texel over 1024 × 256 texels: over two minutes on a busy CPU rasteriser.
-    test.slow(mode !== 'fourier', 'dispersive films by bins');
-    const groups = mode === 'table' ? perTable(stressDomain()) : stressDomain();
+    test.slow(!methodReads(mode, 'spectralTransform'), 'dispersive films by bins');
+    const groups = methodReads(mode, 'table') ? perTable(stressDomain()) : stressDomain();
     const { figures, nonFinite } = compare(groups, await render(page, groups, mode));
     keepFigures(`${mode}-stress`, figures);
     console.log(`parity ${mode} stress: ${JSON.stringify(figures)}`);
@@ -230,12 +231,12 @@ for (const mode of MODES) {
   test(`${mode} mode on absorbing insides matches the reference within ΔE00 ${MAX_DELTA_E00_METAL_FIXED} (0–1000 nm, 0–85°) and ${MAX_DELTA_E00_METAL_STRESS} (to 90°, 10 µm)`, async ({
     parityPage: page,
   }) => {
-    test.slow(mode !== 'fourier', 'tabulated media by bins');
+    test.slow(!methodReads(mode, 'spectralTransform'), 'tabulated media by bins');
     const { fixed, stress, tirEdge } = metalDomain();
     const fixedResult = compare(fixed, await render(page, fixed, mode));
-    const stressGroups = mode === 'table' ? stress : [...stress, ...tirEdge];
+    const stressGroups = methodReads(mode, 'table') ? stress : [...stress, ...tirEdge];
     const stressResult = compare(stressGroups, await render(page, stressGroups, mode));
-    const tirResult = mode === 'table' ? compare(tirEdge, await render(page, tirEdge, mode)) : null;
+    const tirResult = methodReads(mode, 'table') ? compare(tirEdge, await render(page, tirEdge, mode)) : null;
     const figures = { fixed: fixedResult.figures, stress: stressResult.figures, tirEdge: tirResult?.figures };
     keepFigures(`${mode}-metal`, figures);
     console.log(`parity ${mode} metal: ${JSON.stringify(figures)}`);

@@ -2,7 +2,8 @@ import { type Matrix3, XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } f
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
 import { layersXyz } from '../../src/physics/layersColor.ts';
-import { type MediumStack } from '../../src/physics/medium.ts';
+import type { FilmStack } from '../../src/physics/filmReflectance.ts';
+import type { Medium } from '../../src/physics/medium.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import type { LayerStack } from '../../src/physics/transferMatrix.ts';
@@ -12,7 +13,7 @@ const xyzTo8 = (xyz: Xyz, toLinear: Matrix3): number[] => mapToGamut(applyMatrix
 
 /** The reference's 8-bit colour of a film (a soap film in air seen head-on unless `stack` says otherwise). */
 export function reference8(
-  stack: Partial<MediumStack> & Pick<MediumStack, 'thicknessNm'>,
+  stack: Partial<FilmStack<Medium>> & Pick<FilmStack<Medium>, 'thicknessNm'>,
   illuminant: IlluminantSpec = 'D65',
   toLinear: Matrix3 = XYZ_TO_LINEAR_SRGB,
 ): number[] {

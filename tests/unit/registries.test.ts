@@ -13,15 +13,20 @@ import { MEDIUM_NAMES } from '../../src/physics/namedMedia.ts';
 
 const root = join(dirname(new URL(import.meta.url).pathname), '../..');
 
-/** A kind: its members' names, the settings keys that hold one, and the files that may compare names (its registry and members). */
+/**
+ * A kind: its members' names, the settings keys that hold one, the files that may compare names (its
+ * registry and members), and the folders scanned (absent: the source only).
+ */
 interface Kind {
   readonly names: readonly string[];
   readonly keys: readonly string[];
   readonly home: readonly string[];
+  readonly scanned?: readonly string[];
 }
 
 const KINDS: Readonly<Record<string, Kind>> = {
-  method: { names: FILM_METHODS, keys: ['mode', 'method'], home: ['src/methods/'] },
+  // The registry reaches each method's facts and its float64 twin, so the bench and the tests look methods up too.
+  method: { names: FILM_METHODS, keys: ['mode', 'method'], home: ['src/methods/'], scanned: ['src', 'scripts', 'tests'] },
   field: { names: FIELDS, keys: ['field'], home: ['src/fields/'] },
   environment: { names: ENVIRONMENTS, keys: ['env', 'environment'], home: ['src/environments/'] },
   medium: {
@@ -46,21 +51,37 @@ function namePicks(text: string, kind: Kind): string[] {
   return found;
 }
 
-const sourceFiles = readdirSync(join(root, 'src'), { recursive: true, encoding: 'utf8' })
-  .filter((f) => f.endsWith('.ts'))
-  .map((f) => `src/${f}`);
+/** The code that may be scanned: the source, the scripts and the tests, this file (which holds the patterns as examples) aside. */
+const SCANNED = ['src', 'scripts', 'tests'];
+const THIS_FILE = 'tests/unit/registries.test.ts';
+const codeFiles = SCANNED.flatMap((folder) =>
+  readdirSync(join(root, folder), { recursive: true, encoding: 'utf8' })
+    .filter((f) => f.endsWith('.ts'))
+    .map((f) => `${folder}/${f}`),
+).filter((f) => f !== THIS_FILE);
 
 describe('registries', () => {
   for (const [name, kind] of Object.entries(KINDS))
     it(`no code outside the ${name} registry picks a ${name} by its name`, () => {
       const picks: string[] = [];
-      for (const file of sourceFiles) {
+      for (const file of codeFiles) {
+        if (!(kind.scanned ?? ['src']).some((folder) => file.startsWith(`${folder}/`))) continue;
         if (kind.home.some((home) => file.startsWith(home))) continue;
         for (const pick of namePicks(readFileSync(join(root, file), 'utf8'), kind)) picks.push(`${file}: ${pick}`);
       }
       expect(kind.names.length).toBeGreaterThan(1);
       expect(picks).toEqual([]);
     });
+
+  it('the methods are looked for in the scripts and the tests as well as the source', () => {
+    for (const folder of SCANNED)
+      expect(
+        codeFiles.some((f) => f.startsWith(`${folder}/`)),
+        folder,
+      ).toBe(true);
+    expect(codeFiles).toContain('scripts/bench/progress.ts');
+    expect(codeFiles).toContain('tests/e2e/parity.spec.ts');
+  });
 
   it('the check finds a comparison of either order, a switch, and not a comparison of another key', () => {
     const method = KINDS.method!;

@@ -28,6 +28,7 @@ import { gpuFlowSpeed } from './gpuFlowSpeed.ts';
 import { rowScene } from './rowScene.ts';
 import { TableWatch } from './tableWatch.ts';
 import { median } from '../median.ts';
+import { methodReads } from '../../../src/methods/methods.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 if (!canvas) throw new Error('bench.html must hold #bubble');
@@ -194,7 +195,7 @@ function timeView(view: BubbleView, spec: BenchRowSpec, originMs: number): Omit<
   const table = new TableWatch(view.table);
   drawAndWait(view);
   const firstFrameMs = performance.now() - originMs;
-  const tableBuildMs = spec.settings.mode === 'table' && spec.kind === 'bubble' ? table.firstBuildMs : null;
+  const tableBuildMs = methodReads(spec.settings.mode, 'table') && spec.kind === 'bubble' ? table.firstBuildMs : null;
   const buildsBefore = table.builds;
   const frames = frameTimes(view, spec, animatedFrames(view, spec.settings.timeSeconds));
   const rebuildsWhileAnimating = table.builds - buildsBefore;

@@ -105,9 +105,9 @@ describe('color CLI, a stack of films', () => {
     expect(rows.map((r) => r.thicknessNm)).toEqual([0, 100, 200]);
     const [single] = ok('--layers', '1.46:d/TiO2:50', '--thickness', '100', '--wavelengths', '500');
     expect(rows[1]!.xyz).toEqual(single!.xyz);
-    // d = 0 leaves TiO2 alone on the inside.
+    // d = 0 leaves TiO2 alone on the inside: one layer, the paper's film, to the rounding of the recursion.
     const [bare] = ok('--layers', 'TiO2:50', '--wavelengths', '500');
-    expect(rows[0]!.xyz).toEqual(bare!.xyz);
+    rows[0]!.xyz.forEach((v, i) => expect(Math.abs(v - bare!.xyz[i]!)).toBeLessThan(ALGEBRAIC_TOL));
   });
 
   it("a CSV table names each layer's n and k columns, outside in", () => {

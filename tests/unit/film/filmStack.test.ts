@@ -57,7 +57,7 @@ describe('a stack of films on the GPU', () => {
     expect(filmSpectralBins(stacked, q, q.exactSpectralBins)).toBe(q.dispersiveSpectralBins);
     expect(filmSpectralBins({ nFilm: 1.33, nInside: 1, layers: [] }, q, q.exactSpectralBins)).toBe(q.exactSpectralBins);
     expect(filmStackDefines(stacked)).toMatchObject({ TFC_FILM_LAYERS: 1, TFC_FILM_LAYERS_MAX: LAYERS_DOMAIN.count.max });
-    expect(filmStackDefines({ layers: [] })).toEqual({});
+    expect(filmStackDefines({ nFilm: 1.33, nInside: 1, layers: [] })).toEqual({});
     expect(isDispersiveFilm(stacked)).toBe(false);
     expect(filmMediaDefines(stacked)).not.toHaveProperty('TFC_DISPERSIVE');
     expect(isDispersiveFilm({ ...stacked, layers: [] })).toBe(true);

@@ -6,9 +6,9 @@
  * matrix method.
  */
 import { describe, expect, it } from 'vitest';
-import { type Complex } from '../../../src/physics/complex.ts';
+import { type Complex, type RefractiveIndex } from '../../../src/physics/complex.ts';
 import {
-  type AbsorbingFilmStack,
+  type FilmStack,
   COMPLEX_INDEX_DOMAIN,
   filmOptics,
   filmReflectance,
@@ -58,7 +58,7 @@ function nCos(n: Complex, nOutside: number, angleDeg: number): Complex {
  * η = ñ cos θ (s) and ñ / cos θ = ñ² / (ñ cos θ) (p); [B, C] = M [1, η_c];
  * r = (η_a B − C)/(η_a B + C), T = 4 η_a Re η_c / |η_a B + C|², A = 4 η_a Re(B C* − η_c) / |η_a B + C|².
  */
-function tmm(lambdaNm: number, s: AbsorbingFilmStack, pol: 's' | 'p') {
+function tmm(lambdaNm: number, s: FilmStack<RefractiveIndex>, pol: 's' | 'p') {
   const [na, nb, nc] = [c(s.nOutside), index(s.nFilm), index(s.nInside)];
   const eta = (n: Complex) => {
     const nc0 = nCos(n, s.nOutside, s.angleDeg);
@@ -76,7 +76,7 @@ function tmm(lambdaNm: number, s: AbsorbingFilmStack, pol: 's' | 'p') {
 }
 
 const GOLD: Complex = c(0.43, 2.455); // Johnson & Christy 1972 at 2.26 eV (548.6 nm)
-const stack = (over: Partial<AbsorbingFilmStack>): AbsorbingFilmStack => ({
+const stack = (over: Partial<FilmStack<RefractiveIndex>>): FilmStack<RefractiveIndex> => ({
   nOutside: 1,
   nFilm: 1.33,
   nInside: 1,
@@ -198,7 +198,7 @@ describe('absorbing media: limits', () => {
   });
 
   it('refuses k < 0, n too small, a complex outside, each naming the parameter', () => {
-    const bad: [Partial<AbsorbingFilmStack>, string, RegExp][] = [
+    const bad: [Partial<FilmStack<RefractiveIndex>>, string, RegExp][] = [
       [{ nInside: c(0.43, -1) }, 'nInside', /k is -1, below 0/],
       [{ nFilm: c(0, 1) }, 'nFilm', /n is 0, below 0\.01/],
       [{ nFilm: c(Number.NaN, 1) }, 'nFilm', /n is not a finite number/],

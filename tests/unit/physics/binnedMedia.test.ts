@@ -5,7 +5,8 @@
 import { describe, expect, it } from 'vitest';
 import { spectralBins, stackBinnedXyz } from '../../../src/physics/binnedIntegration.ts';
 import { deltaE00 } from '../../../src/physics/colorDifference.ts';
-import type { MediumStack } from '../../../src/physics/medium.ts';
+import type { FilmStack } from '../../../src/physics/filmReflectance.ts';
+import type { Medium } from '../../../src/physics/medium.ts';
 import { filmXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
 import { spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
@@ -69,7 +70,7 @@ describe('the binned method on absorbing media (the shaders’ twin)', () => {
   });
 
   it(`stays within ΔE00 ${METAL_BINNED_DE00} of the reference for films on metals and an absorbing film, 0–1000 nm, 0–80°`, () => {
-    const stacks: readonly Omit<MediumStack, 'thicknessNm' | 'angleDeg'>[] = [
+    const stacks: readonly Omit<FilmStack<Medium>, 'thicknessNm' | 'angleDeg'>[] = [
       { nOutside: 1, nFilm: 1.38, nInside: 'Au' },
       { nOutside: 1, nFilm: 'TiO2', nInside: 'Ti' },
       { nOutside: 1, nFilm: 'Fe3O4', nInside: 'Fe' },

@@ -3,7 +3,6 @@ import { spectralBins } from '../../../src/physics/binnedIntegration.ts';
 import { deltaE00 } from '../../../src/physics/colorDifference.ts';
 import { dispersiveBinnedXyz, binnedXyz } from '../../../src/physics/binnedIntegration.ts';
 import {
-  type DispersiveFilmStack,
   type FilmIndex,
   filmIndexAt,
   filmIndexFromJson,
@@ -11,7 +10,7 @@ import {
   filmIndexText,
   readFilmIndex,
 } from '../../../src/physics/filmIndex.ts';
-import { filmOptics } from '../../../src/physics/filmReflectance.ts';
+import { type FilmStack, filmOptics } from '../../../src/physics/filmReflectance.ts';
 import { filmXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, spectralWeights } from '../../../src/physics/spectralWeights.ts';
@@ -182,7 +181,13 @@ describe('the binned method with a dispersive film (the shaders’ twin)', () =>
   const white = whiteXyz('D65');
 
   it('is binnedXyz when n does not vary', () => {
-    const stack: DispersiveFilmStack = { nOutside: 1, nFilm: { cauchy: [1.5, 0, 0] }, nInside: 1.2, thicknessNm: 700, angleDeg: 40 };
+    const stack = {
+      nOutside: 1,
+      nFilm: { cauchy: [1.5, 0, 0] },
+      nInside: 1.2,
+      thicknessNm: 700,
+      angleDeg: 40,
+    } satisfies FilmStack<FilmIndex>;
     const constant = binnedXyz(filmOptics({ ...stack, nFilm: 1.5 }), bins);
     dispersiveBinnedXyz(stack, 'unpolarized', bins).forEach((v, k) => expect(Math.abs(v - constant[k]!)).toBeLessThan(FLOAT_TOLERANCE));
   });

@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { XYZ_TO_LINEAR_SRGB } from '../../../src/physics/colorConversions.ts';
 import { SOAP_FILM_IN_AIR, filmReflectance } from '../../../src/physics/filmReflectance.ts';
 import { layersXyz } from '../../../src/physics/layersColor.ts';
+import { filmXyz } from '../../../src/physics/spectralIntegration.ts';
 import { DESIGN_NM, STACK_PRESETS } from '../../../src/physics/stackPresets.ts';
 import { layersReflectance } from '../../../src/physics/transferMatrix.ts';
 import { EN } from '../../../src/i18n/en.ts';
@@ -61,16 +62,16 @@ describe('the plots of a stack of films', () => {
     expect(Math.abs(single.reflectance[100]! - filmReflectance(480, { ...film, nInside: 1.52 }))).toBeLessThan(FEW_OPERATIONS_TOL);
   });
 
-  it("the probed colour of a stack is the stack's XYZ (eqs 15–18 over the transfer matrix's R)", () => {
+  it("the probed colour of a one-layer stack is the paper's film's XYZ (eqs 15–18 over eq 13's R), the transfer matrix's to rounding", () => {
     const p = STACK_PRESETS.arCoating;
     const film = { nOutside: 1, nFilm: 1.33, nInside: p.nInside, thicknessNm: 500, angleDeg: 10, layers: p.layers };
-    const xyz = layersXyz(
-      { nOutside: 1, nInside: p.nInside, angleDeg: 10, layers: [{ n: 1.38, thicknessNm: p.layers[0]!.thicknessNm as number }] },
-      LIGHT,
-    );
+    const layer = { n: 1.38, thicknessNm: p.layers[0]!.thicknessNm as number };
+    const xyz = filmXyz({ nOutside: 1, nFilm: layer.n, nInside: p.nInside, thicknessNm: layer.thicknessNm, angleDeg: 10 }, LIGHT);
     const c = probeColor(film, LIGHT, XYZ_TO_LINEAR_SRGB, xyz);
     c.xyz.forEach((v, i) => expect(Math.abs(v - xyz[i]!)).toBeLessThan(FEW_OPERATIONS_TOL));
     expect(c.deltaE00).toBeLessThan(FEW_OPERATIONS_TOL);
+    const recursion = layersXyz({ nOutside: 1, nInside: p.nInside, angleDeg: 10, layers: [layer] }, LIGHT);
+    c.xyz.forEach((v, i) => expect(Math.abs(v - recursion[i]!)).toBeLessThan(ALGEBRAIC_TOL));
   });
 
   it('the scale of a stack that does not follow the field is one colour; one with a d layer changes along it', () => {
