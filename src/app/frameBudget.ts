@@ -20,8 +20,10 @@ export const START_GRID = 32;
 export const GOVERNED_GRIDS = [16, 24, 32, 48, 64, 96, 128, 192, 256] as const;
 /** The governor's grid range (a user may ask for any grid of FLOW_PARAMETERS, 4–256). */
 export const GOVERNED_GRID = { min: 16, max: 256 } as const;
-/** The pixel ratios the governor chooses among, at most the device's (and 2). */
-export const GOVERNED_PIXEL_RATIOS = [0.5, 0.75, 1, 1.5, 2] as const;
+/** The pixel ratios the governor chooses among below the device's (shownPixelRatio), which tops them. */
+export const GOVERNED_PIXEL_RATIOS = [0.5, 0.75, 1, 1.5] as const;
+/** The pixel ratios the governor chooses among, ascending, on a device drawn at `shown` (shownPixelRatio): the governed ones below it, and it. */
+export const governedPixelRatios = (shown: number): readonly number[] => [...GOVERNED_PIXEL_RATIOS.filter((r) => r < shown), shown];
 /** The most steps per frame the governor gives. */
 export const GOVERNED_MAX_STEPS = 64;
 
