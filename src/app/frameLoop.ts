@@ -106,12 +106,13 @@ export class FrameLoop {
       this.clockRunning = false;
     }
     const report = this.draw(now, follows && this.clockRunning);
-    const behind = report.film?.behind === true;
-    if (this.clockRunning && behind) {
+    const film = report.film;
+    const behind = film?.behind === true;
+    if (this.clockRunning && film?.behind) {
       // A film simulated slower than the clock: the clock waits for it, so the time shown (and a
       // pause's frozen time) is the film's, with nothing to catch up.
-      this.clockOrigin = now - report.film!.timeSeconds * 1000;
-      this.clock.setTimeSeconds(report.film!.timeSeconds);
+      this.clockOrigin = now - film.timeSeconds * 1000;
+      this.clock.setTimeSeconds(film.timeSeconds);
     }
     if (this.clockRunning || report.coarse || behind) this.request();
   }

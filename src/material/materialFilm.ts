@@ -61,7 +61,7 @@ const drawnModeOf = (o: CheckedOptions): CheckedOptions['mode'] =>
   drawnFilmMethod(
     { mode: o.mode, layers: o.layers, nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: o.base ?? DEFAULT_SETTINGS.nInside },
     'material',
-  ).film.mode as CheckedOptions['mode'];
+  ).film.mode;
 
 /** Each material's metal from its colours, and the colours it was made from. */
 const metals = new WeakMap<MeshPhysicalMaterial, { readonly key: string; readonly medium: SampledIndex }>();
