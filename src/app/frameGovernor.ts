@@ -7,9 +7,8 @@ import {
   GOVERNED_GRIDS,
   GOVERNED_MAX_STEPS,
   governedPixelRatios,
-  initialBudget,
-  nextBudget,
-} from './frameBudget.ts';
+} from './budgetTerms.ts';
+import { initialBudget, nextBudget } from './frameBudget.ts';
 
 /** Full quality's grid, the ladder's top: the flowing film's default (FLOW_PARAMETERS); a finer one is a user's choice. */
 const FULL_QUALITY_GRID = flowParameterRow('gridN').defaultValue;

@@ -4,7 +4,7 @@ import { message } from '../i18n/messages.ts';
 import type { FrameReport } from '../scene/frameReport.ts';
 import { AUTO } from '../settings/parameterRow.ts';
 import type { ViewSettings } from '../settings/viewParameters.ts';
-import type { BudgetChoice } from './frameBudget.ts';
+import type { BudgetChoice } from './budgetTerms.ts';
 import { FilmRate } from './filmRate.ts';
 import { type GovernedView, FrameGovernor } from './frameGovernor.ts';
 

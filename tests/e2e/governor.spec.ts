@@ -1,6 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { FLOW_PARAMETERS } from '../../src/physics/flow/flowParameters.ts';
-import { GOVERNED_GRIDS } from '../../src/app/frameBudget.ts';
+import { GOVERNED_GRIDS } from '../../src/app/budgetTerms.ts';
 import { EN } from '../../src/i18n/en.ts';
 
 /**

@@ -8,10 +8,8 @@ import {
   GOVERNED_MAX_STEPS,
   governedPixelRatios,
   SLOW_BUDGET_MS,
-  initialBudget,
-  ladder,
-  nextBudget,
-} from '../../../src/app/frameBudget.ts';
+} from '../../../src/app/budgetTerms.ts';
+import { initialBudget, ladder, nextBudget } from '../../../src/app/frameBudget.ts';
 import { shownPixelRatio } from '../../../src/settings/pixelRatio.ts';
 import { mulberry32 } from '../../seededRandom.ts';
 import { GOVERNED_FRAME_RATIO, GOVERNOR_NOISE } from '../../tolerances.ts';

@@ -77,11 +77,11 @@ describe('what is drawn for what is asked', () => {
   });
 
   it('a new light whose transform is not ready keeps the light shown for a method that reads it, and says which is pending', () => {
-    const asked = { ...ASKED, mode: 'fourier' as const, illuminant: 'D50' as const };
+    const asked = { ...ASKED, mode: 'fourier' as const, illuminant: 'D93' as const };
     const waiting = { ...OFFERS, lightShown: D65_WHITE, lightReady: () => false };
     const frame = resolveFrame(asked, waiting);
     expect([frame.film.illuminant, frame.film.normalization]).toEqual(['D65', 'white']);
-    expect(frame.lightPending).toEqual({ illuminant: 'D50', normalization: asked.normalization });
+    expect(frame.lightPending).toEqual({ illuminant: 'D93', normalization: asked.normalization });
     expect(frame.notices.map((n) => n.setting)).toEqual(['illuminant']);
     // Ready, or a method that reads no transform (the table's own pass fills it), or no light shown yet: the light asked for.
     for (const [mode, offers] of [
@@ -90,7 +90,7 @@ describe('what is drawn for what is asked', () => {
       ['fourier', { ...waiting, lightShown: null }],
     ] as const) {
       const drawn = resolveFrame({ ...asked, mode }, offers);
-      expect([drawn.film.illuminant, drawn.lightPending]).toEqual(['D50', null]);
+      expect([drawn.film.illuminant, drawn.lightPending]).toEqual(['D93', null]);
     }
   });
 });
