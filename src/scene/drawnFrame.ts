@@ -1,8 +1,6 @@
 import { type HdrEnvironment, STAND_IN_ENVIRONMENT, isHdrEnvironment } from '../environments/environments.ts';
-import { THICKNESS_FIELDS, maxFieldThicknessNm } from '../fields/fields.ts';
-import { flowParametersOf } from '../fields/flowField.ts';
+import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import { methodReads } from '../methods/methods.ts';
-import type { FlowParameters } from '../physics/flow/flowParameters.ts';
 import { type DrawnNotice, drawnFilmMethod } from '../settings/drawnFilm.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import { AUTO } from '../settings/parameterRow.ts';
@@ -57,10 +55,6 @@ export interface DrawnFrame {
   readonly asked: ViewSettings;
   /** The film's settings as drawn: the method, environment, light and governed knobs substituted where they must be. */
   readonly film: FilmSettings;
-  /** The flowing film's parameters (null for another field), derived once for the field, its simulation and the table. */
-  readonly flow: FlowParameters | null;
-  /** The thickest film the field reaches: the film table's range (nm). */
-  readonly tableMaxThicknessNm: number;
   /** The drawing buffer's pixels per CSS pixel. */
   readonly pixelRatio: number;
   /** The most steps the flowing film takes in an app frame (Infinity: all the time asks for). */
@@ -140,8 +134,6 @@ export function resolveFrame(asked: ViewSettings, offers: FrameOffers): DrawnFra
   return Object.freeze({
     asked,
     film,
-    flow: THICKNESS_FIELDS[film.field].evolves === true ? flowParametersOf(film) : null,
-    tableMaxThicknessNm: maxFieldThicknessNm(film),
     pixelRatio: governed.pixelRatio,
     stepsPerFrame: governed.stepsPerFrame,
     keepsFrameWhileCompiling: offers.compilesInParallel,

@@ -32,7 +32,7 @@ describe('what is drawn for what is asked', () => {
     expect([frame.film.illuminant, frame.film.normalization]).toEqual([ASKED.illuminant, ASKED.normalization]);
     expect(frame.notices).toEqual([]);
     expect(frame.environment).toEqual({ state: 'shown' });
-    expect([frame.fetch, frame.lightPending, frame.flow]).toEqual([null, null, null]);
+    expect([frame.fetch, frame.lightPending]).toEqual([null, null]);
     expect(Object.isFrozen(frame)).toBe(true);
   });
 
@@ -105,8 +105,6 @@ describe('the governor, the device and the flowing film', () => {
       { setting: 'gridN', asked: 'auto', drawn: 48, message: null },
       { setting: 'pixelRatio', asked: 'auto', drawn: 0.75, message: null },
     ]);
-    // The flow's parameters once, on the grid drawn, with the settings asked.
-    expect(frame.flow).toMatchObject({ gridN: 48, seed: 7, thicknessNm: 600 });
   });
 
   it("what the user gave is drawn exactly; a given speed takes every step the time asks; a frozen view takes its quality's steps", () => {
@@ -124,10 +122,5 @@ describe('the governor, the device and the flowing film', () => {
     expect(dense.pixelRatio).toBe(2);
     expect(dense.notices).toEqual([{ setting: 'pixelRatio', asked: 'auto', drawn: 2, message: null }]);
     expect(resolveFrame({ ...ASKED, pixelRatio: 3 }, { ...OFFERS, devicePixelRatio: 3 }).pixelRatio).toBe(3);
-  });
-
-  it("the table's range is the field's thickest film: a uniform film's own thickness, a flowing film's above its mean", () => {
-    expect(resolveFrame({ ...ASKED, field: 'uniform', thicknessNm: 350 }, OFFERS).tableMaxThicknessNm).toBe(350);
-    expect(resolveFrame(FLOW, OFFERS).tableMaxThicknessNm).toBeGreaterThan(600);
   });
 });
