@@ -123,7 +123,7 @@ async function panelChanges(page: Page, how: DemoPlan): Promise<DemoPageFigures[
       type Counters = { programsLinked: number; longTasks: [number, number][] };
       type Drawn = { material?: { name?: string } };
       type Renderer = { render(drawn: Drawn, camera: unknown): void; getRenderTarget(): { scissor: { z: number; w: number } } | null };
-      const w = window as unknown as Counters & { bubbleView: { coarse: boolean; renderer: Renderer } };
+      const w = window as unknown as Counters & { bubbleView: { lastFrame: { coarse: boolean }; renderer: Renderer } };
       const view = w.bubbleView;
       let texelsDrawn = 0;
       const render = view.renderer.render.bind(view.renderer);
@@ -160,7 +160,7 @@ async function panelChanges(page: Page, how: DemoPlan): Promise<DemoPageFigures[
         const inputAt = performance.now();
         let fullAt = Infinity;
         const tick = (t: number) => {
-          if (t > inputAt && !view.coarse) fullAt = t;
+          if (t > inputAt && !view.lastFrame.coarse) fullAt = t;
           else requestAnimationFrame(tick);
         };
         set(name, value);

@@ -11,7 +11,7 @@ import {
 } from './budgetTerms.ts';
 
 /**
- * What a rung of the frame budget's ladder is predicted to cost (docs/governor.md#predicting): a
+ * What a rung of the frame budget's ladder is predicted to cost (docs/governor.md#the-decision): a
  * step at a grid and the bubble's draw at a pixel ratio, from the costs measured at others, and the
  * steps a frame affords there.
  */
