@@ -58,9 +58,10 @@ const PROBE: readonly [number, number] = [0.5, 0.35];
  */
 const RECORD_CHOICES = `
 const v = window.bubbleView;
-if (v && (v.film.flowGrid || v.film.timeSeconds === null)) {
+const f = v?.lastFrame.drawn ? v.lastFrame.film : undefined;
+if (f !== undefined && (f === null || f.flow)) {
   window.shownChoices ??= [];
-  const c = [t, v.film.flowGrid?.gridN ?? null, v.renderer.getPixelRatio(), v.flowStepsPerFrame];
+  const c = [t, f?.flow?.gridN ?? null, v.renderer.getPixelRatio(), window.bubbleApp.drawn.stepsPerFrame];
   const l = window.shownChoices.at(-1);
   if (!l || l[1] !== c[1] || l[2] !== c[2] || l[3] !== c[3]) window.shownChoices.push(c);
 }`;
@@ -69,18 +70,18 @@ if (v && (v.film.flowGrid || v.film.timeSeconds === null)) {
 async function animate(page: Page, how: DefaultViewPlan, firstFrameMs: number): Promise<Omit<AnimatedView, 'firstFrameMs'>> {
   return page.evaluate(
     async ([ms, first, settlingMs]) => {
-      type View = { film: { timeSeconds: number | null } };
+      type View = { lastFrame: { film: { timeSeconds: number } | null } };
       const w = window as unknown as { bubbleView: View; shownFrames: number[]; shownChoices: [number, number | null, number, number][] };
       const wait = (forMs: number) => new Promise((done) => setTimeout(done, Math.max(0, forMs)));
       const end = performance.now() + ms;
       // Film time against the clock once the governor has settled (a change of grid starts the film anew).
       await wait(first + settlingMs - performance.now());
-      const film0 = w.bubbleView.film.timeSeconds ?? 0;
+      const film0 = w.bubbleView.lastFrame.film?.timeSeconds ?? 0;
       const start = performance.now();
       await wait(end - start);
       const late = w.shownFrames.filter((t) => t - first >= settlingMs);
       const meanFrameMs = late.length > 1 ? (late.at(-1)! - late[0]!) / (late.length - 1) : NaN;
-      const filmRate = ((w.bubbleView.film.timeSeconds ?? 0) - film0) / ((performance.now() - start) / 1000);
+      const filmRate = ((w.bubbleView.lastFrame.film?.timeSeconds ?? 0) - film0) / ((performance.now() - start) / 1000);
       // The choice the first frame was shown with (made at or before it), then each change.
       const shownFirst = Math.max(0, w.shownChoices.filter(([t]) => t <= first).length - 1);
       const choices = w.shownChoices

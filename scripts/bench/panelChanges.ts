@@ -46,7 +46,7 @@ type PanelWindow = {
   programsLinked: number;
   longTasks: [number, number][];
   tableTexelsDrawn: number;
-  bubbleView: { coarse: boolean; renderer: Renderer };
+  bubbleView: { lastFrame: { coarse: boolean }; renderer: Renderer };
 };
 
 /**
@@ -89,7 +89,7 @@ async function measureChange(page: Page, name: string, value: string, windowMs: 
       const inputAt = performance.now();
       let fullAt = Infinity;
       const tick = (t: number) => {
-        if (t > inputAt && !w.bubbleView.coarse) fullAt = t;
+        if (t > inputAt && !w.bubbleView.lastFrame.coarse) fullAt = t;
         else requestAnimationFrame(tick);
       };
       const select = controller.querySelector('select');

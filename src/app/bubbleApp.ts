@@ -2,61 +2,29 @@ import type GUI from 'lil-gui';
 import type { WebGLRenderer } from 'three';
 import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import { type Catalogue, EN } from '../i18n/en.ts';
-import type { BubbleView } from '../scene/bubbleView.ts';
-import type { FilmSettings } from '../settings/filmSettings.ts';
-import { AUTO } from '../settings/parameterRow.ts';
-import { type AppSettings, type GovernedSettings, type ViewSettings, filmSettingsOf, governedValue } from '../settings/viewParameters.ts';
 import { message } from '../i18n/messages.ts';
-import type { BudgetChoice } from './frameBudget.ts';
-import { FilmRate } from './filmRate.ts';
-import { type GovernedView, FrameGovernor, devicePixelRatioShown } from './frameGovernor.ts';
+import { type DrawnFrame, resolveFrame } from '../scene/drawnFrame.ts';
+import type { FrameReport } from '../scene/frameReport.ts';
+import type { ViewSettings } from '../settings/viewParameters.ts';
 import { addAccessStyles } from './accessStyles.ts';
+import type { BubbleAppParts } from './bubbleAppParts.ts';
 import { createControlPanel } from './controlPanel.ts';
 import { FilmAtProbe } from './filmAtProbe.ts';
 import { FrameLoop } from './frameLoop.ts';
+import { GovernorSeat } from './governorSeat.ts';
 import { listenToProbeInput } from './probeInput.ts';
-import { shownMethod } from './shownMethod.ts';
 import { startsClosed } from './startsClosed.ts';
 import { StatusLines } from './statusLines.ts';
 
-export interface BubbleAppParts {
-  readonly view: BubbleView;
-  /**
-   * The element the bubble is shown in: its CSS box sizes the view; a press on it (mouse, pen or
-   * touch; not on the panel) moves the probe there, and the probe follows while the press drags.
-   */
-  readonly surface: HTMLElement;
-  /** Called after each frame is drawn (e.g. to copy a shared renderer's canvas to the page). */
-  readonly present?: () => void;
-  /**
-   * Where the lil-gui panel goes, if any. It starts closed where the page's CSS says so
-   * (startsClosed, read from this element).
-   */
-  readonly controls?: HTMLElement;
-  /** Where the plots go, if any; they are redrawn when this element's box changes (e.g. a drawer opens). */
-  readonly plots?: HTMLElement;
-  /**
-   * Where a line on the HDR environment goes while it loads, or if it failed, and the line saying
-   * that the method asked for is drawn with another (shownMethod) (role status; text only).
-   */
-  readonly messages?: HTMLElement;
-  /** Called when the panel or a press on the bubble changes the settings. */
-  readonly onChange?: (s: ViewSettings) => void;
-  /** Called after every frame; `complete` is false for a frame drawn from a coarse table (another follows). */
-  readonly onFrame?: (complete: boolean) => void;
-  /**
-   * The element that shows the bubble to the user (default `surface`): it takes focus, is labelled
-   * (role application), and its arrow keys move the probe.
-   */
-  readonly focusable?: HTMLElement;
-  /** The language of every text the app shows (default English). */
-  readonly catalogue?: Catalogue;
-}
+export type { BubbleAppParts } from './bubbleAppParts.ts';
 
 /**
- * A bubble on a page: the view, its controls and plots, and when to draw. Its rooms: FrameLoop
- * (when frames are drawn), probeInput (the pointer and keys on the bubble), FilmAtProbe (the plots,
- * the probe's ring and the live description), StatusLines (the notices in the page's messages).
+ * A bubble on a page: the settings asked for, the view that draws them, its controls and plots,
+ * and when to draw. The app owns the settings; each frame it resolves them with what the machine
+ * and the page offer into the frame the view draws (resolveFrame, src/scene/drawnFrame.ts). Its
+ * rooms: FrameLoop (when frames are drawn), GovernorSeat (its place in the page's frame governor),
+ * probeInput (the pointer and keys on the bubble), FilmAtProbe (the plots, the probe's ring and
+ * the live description), StatusLines (the notices in the page's messages).
  */
 export class BubbleApp {
   private gui: GUI | null = null;
@@ -64,48 +32,47 @@ export class BubbleApp {
   private readonly loop: FrameLoop;
   private readonly film: FilmAtProbe;
   private readonly status: StatusLines;
+  private readonly seat: GovernorSeat;
   /** What removes the app's listeners and observers (the rooms' own go with them). */
   private readonly stopListening: () => void;
   /** The surface's size the view was last fitted to. */
   private fitted = '';
-  /** The page's own settings and the governed knobs as asked (the view holds the film's, but for the method asked for). */
-  private app: AppSettings & GovernedSettings;
-  private askedMode: ViewSettings['mode'];
-  /** The document's frame governor, this app's place in it while it animates, and its choice then. */
-  private readonly governor: FrameGovernor;
-  private governed: GovernedView | null = null;
-  private choice: BudgetChoice | null = null;
-  private readonly filmRate = new FilmRate();
+  /** The settings asked for, and the frame drawn for them. */
+  private asked: ViewSettings;
+  private frame: DrawnFrame;
 
   constructor(
     private readonly parts: BubbleAppParts,
     initial: ViewSettings,
   ) {
     const { view, surface } = parts;
-    this.app = appSettingsOf(initial);
-    this.askedMode = view.current.mode;
-    this.governor = FrameGovernor.of(surface.ownerDocument);
+    this.asked = initial;
     this.cat = parts.catalogue ?? EN;
+    this.seat = new GovernorSeat(surface.ownerDocument, () => this.choiceChanged());
     addAccessStyles(surface.ownerDocument);
     this.film = new FilmAtProbe({
       view,
       surface,
       plots: parts.plots,
       cat: this.cat,
-      settings: () => this.current,
+      frame: () => this.frame,
       looping: () => this.loop.looping,
-      filmTime: () => this.filmTimeText('governor.sentence'),
+      filmTime: () => this.seat.filmTimeText(this.cat, 'governor.sentence'),
     });
     this.status = new StatusLines(surface.ownerDocument, parts.messages, this.cat);
-    this.showMethod(filmSettingsOf(initial));
+    this.frame = this.resolve();
     this.loop = new FrameLoop(
       view,
       surface,
       () => this.animating,
+      { timeSeconds: () => this.asked.timeSeconds, setTimeSeconds: (timeSeconds) => (this.asked = { ...this.asked, timeSeconds }) },
       (now, follows) => this.draw(now, follows),
     );
-    view.onEnvironmentChange = () => this.redraw();
-    this.govern();
+    view.onEnvironmentChange = () => {
+      this.resolve();
+      this.redraw();
+    };
+    this.seat.follow(this.asked, this.animating, view.offers.baseStepsPerFrame);
     this.fit();
     // The GPU compiles the first frame's programs while the panel is built.
     this.loop.start();
@@ -113,9 +80,14 @@ export class BubbleApp {
     this.stopListening = this.listen();
   }
 
-  /** The settings asked for (the view may draw another method: shownMethod). */
+  /** The settings asked for (the frame may draw others in their place: `drawn`). */
   get current(): ViewSettings {
-    return { ...this.parts.view.current, mode: this.askedMode, ...this.app };
+    return this.asked;
+  }
+
+  /** The frame drawn for them: what the view draws, and each substitution with why. */
+  get drawn(): DrawnFrame {
+    return this.frame;
   }
 
   get renderer(): WebGLRenderer {
@@ -124,10 +96,10 @@ export class BubbleApp {
 
   /** Shows new (validated) settings; the panel follows when `rebuildControls`. */
   set(s: ViewSettings, rebuildControls = false): void {
-    this.app = appSettingsOf(s);
-    this.showMethod(this.filmSettings(s));
-    this.filmRate.reset();
-    this.govern();
+    this.asked = s;
+    this.seat.restartRate();
+    this.seat.follow(s, this.animating, this.parts.view.offers.baseStepsPerFrame);
+    this.resolve();
     this.fit();
     this.film.settingsChanged();
     if (rebuildControls) this.buildControls();
@@ -135,15 +107,24 @@ export class BubbleApp {
   }
 
   dispose(): void {
-    if (this.governed) this.governor.leave(this.governed);
-    this.governed = null;
+    this.seat.leave();
     this.loop.dispose();
     this.film.dispose();
     this.stopListening();
     this.gui?.destroy();
     this.status.remove();
-    this.parts.view.onEnvironmentChange = null;
     this.parts.view.dispose();
+  }
+
+  /** Resolves the settings asked for with what the view, the governor and the device offer, and shows the frame (with its notices). */
+  private resolve(): DrawnFrame {
+    const { view } = this.parts;
+    this.frame = resolveFrame(this.asked, { ...view.offers, choice: this.seat.choice, devicePixelRatio: globalThis.devicePixelRatio });
+    view.show(this.frame);
+    const method = this.frame.notices.find((n) => n.setting === 'mode')?.message;
+    this.status.showMethodNotice(method ? message(this.cat, method.key, method.values) : null);
+    this.status.showEnvironment(this.frame.environment);
+    return this.frame;
   }
 
   /** Listens to the user's input on the bubble, to the surface's size and to a restored context; returns what stops it. */
@@ -154,8 +135,8 @@ export class BubbleApp {
       focusable: this.parts.focusable ?? surface,
       label: this.cat['bubble.label'],
       controls: this.parts.controls ?? null,
-      probe: () => this.current.probe,
-      moveProbe: (probe) => this.change({ ...this.current, probe }),
+      probe: () => this.asked.probe,
+      moveProbe: (probe) => this.change({ ...this.asked, probe }),
       blow: (fx, fy, vxPx, vyPx) => view.blow(fx, fy, vxPx, vyPx),
       blowAtProbe: () => this.blowAtProbe(),
     });
@@ -172,103 +153,44 @@ export class BubbleApp {
   }
 
   /**
-   * One frame, from a coarse table while the table is being rebuilt (FilmTable: the frames after
-   * a change complete it). A frame drawn while the HDR environment is on its way, or with a flowing
-   * film short of its frozen time, is not complete either. The plots follow a complete frame.
+   * One frame of the settings as they are now (the offers may have changed: a light's transform
+   * arrived). A frame drawn from a coarse table (FilmTable: the frames after a change complete it),
+   * while the HDR environment is on its way, or with a flowing film short of its frozen time is not
+   * complete; while the film animates, every frame shows its film time and is. The plots follow a complete frame.
    */
-  private draw(now: number, follows: boolean): void {
-    const view = this.parts.view;
+  private draw(now: number, follows: boolean): FrameReport {
+    const frame = this.resolve();
+    const report = this.parts.view.render(true);
     // A shared renderer's canvas holds another view's frame when this one did not draw.
-    if (view.render(true)) this.parts.present?.();
-    const cost = view.takeFrameCost();
-    if (this.governed && this.loop.looping) {
-      this.governor.drawn(now, { ...cost, settling: view.film.settling }, view.film.flowGrid, follows);
-      const filmSeconds = view.film.timeSeconds;
-      if (filmSeconds !== null) this.filmRate.frame(now, filmSeconds * view.current.simSpeed);
-    }
-    this.status.showEnvironment(view.environmentStatus);
-    // A flowing film short of a frozen time is not complete (the frames after bring it there); while
-    // the film animates, every frame shows its film time and is.
-    const complete = !view.coarse && (!view.film.behind || this.loop.looping) && view.environmentStatus.state !== 'loading';
+    if (report.drawn) this.parts.present?.();
+    if (this.loop.looping) this.seat.drawn(now, report, frame.film.simSpeed, follows);
+    const complete = !report.coarse && (!report.film?.behind || this.loop.looping) && frame.environment.state !== 'loading';
     this.film.frameShown(complete);
     this.parts.onFrame?.(complete);
-  }
-
-  /** Gives the view the film settings asked for, or those it draws instead, saying why. */
-  private showMethod(film: FilmSettings): void {
-    const { settings, notice } = shownMethod(film, this.cat);
-    this.askedMode = film.mode;
-    this.parts.view.apply(settings);
-    this.status.showMethodNotice(notice);
+    return report;
   }
 
   private get animating(): boolean {
-    return this.app.animate && THICKNESS_FIELDS[this.parts.view.current.field].animates;
+    return this.asked.animate && THICKNESS_FIELDS[this.asked.field].animates;
   }
 
-  /** The film settings the view draws: the governed knobs as asked, else as the governor chose, else their defaults (a frozen view's). */
-  private filmSettings(s: ViewSettings): FilmSettings {
-    return filmSettingsOf(s, this.choice ? { gridN: this.choice.gridN } : {});
-  }
-
-  /**
-   * Joins the document's frame governor while the film animates (with what the user fixed), leaves
-   * it otherwise: a frozen view draws the same pixels on every machine.
-   */
-  private govern(): void {
-    const { gridN, pixelRatio, simSpeed } = this.app;
-    const field = THICKNESS_FIELDS[this.parts.view.current.field];
-    const wanted = this.animating
-      ? {
-          gridN: gridN === AUTO ? undefined : gridN,
-          pixelRatio: pixelRatio === AUTO ? undefined : pixelRatio,
-          simSpeedGiven: simSpeed !== AUTO,
-          flows: field.evolves === true,
-          baseStepsPerFrame: this.parts.view.quality.flowStepsPerFrame,
-        }
-      : null;
-    const g = this.governed;
-    // The same knobs fixed as before (JSON leaves out `apply`): it stays where it is.
-    if (g && wanted && JSON.stringify(g) === JSON.stringify(wanted)) return;
-    if (g) this.governor.leave(g);
-    this.governed = wanted && { ...wanted, apply: (choice) => this.applyChoice(choice) };
-    if (this.governed) this.governor.join(this.governed);
-    else this.applyChoice(null);
-  }
-
-  /** The governor's choice (null: none, a frozen view) for the knobs the user left: the grid, the steps per frame, the pixel ratio. */
-  private applyChoice(choice: BudgetChoice | null): void {
-    this.choice = choice;
-    const view = this.parts.view;
-    const given = this.app.simSpeed !== AUTO;
-    view.flowStepsPerFrame = !choice ? view.quality.flowStepsPerFrame : given ? Infinity : choice.stepsPerFrame;
-    const film = this.filmSettings(this.current);
-    if (film.gridN !== view.current.gridN) {
-      this.filmRate.reset();
-      this.showMethod(film);
-    }
+  /** The governor's choice changed: the frame follows it. */
+  private choiceChanged(): void {
+    this.resolve();
     this.fit();
     this.loop.request();
-  }
-
-  /** The film's rate and grid as a text of the catalogue (`key`), or null while it is not governed or not yet measured. */
-  private filmTimeText(key: 'governor.line' | 'governor.sentence'): string | null {
-    const rate = this.filmRate.rate;
-    const grid = this.parts.view.film.flowGrid;
-    if (!this.governed || rate === null || !grid) return null;
-    return message(this.cat, key, { rate: +rate.toPrecision(2), grid: grid.gridN });
   }
 
   /** The user changed the settings (the panel, or the pointer or keys on the bubble). */
   private change(s: ViewSettings): void {
     this.film.userChanged();
-    this.set({ ...s, timeSeconds: this.current.timeSeconds });
-    this.parts.onChange?.(this.current);
+    this.set({ ...s, timeSeconds: this.asked.timeSeconds });
+    this.parts.onChange?.(this.asked);
   }
 
   /** Blows on a flowing film at the probe, to the right, five view heights a second (B, or the panel's button). */
   private blowAtProbe(): void {
-    const [x, y] = this.app.probe;
+    const [x, y] = this.asked.probe;
     this.parts.view.blow(x, y, 5 * this.parts.surface.clientHeight, 0);
   }
 
@@ -279,25 +201,22 @@ export class BubbleApp {
     this.gui?.destroy();
     this.gui = controls
       ? createControlPanel(
-          this.current,
+          this.asked,
           (s) => this.change(s),
           controls,
           this.cat,
           () => this.blowAtProbe(),
-          () => this.filmTimeText('governor.line') ?? '',
+          () => this.seat.filmTimeText(this.cat, 'governor.line') ?? '',
         )
       : null;
     if (closed) this.gui?.close();
   }
 
-  /**
-   * Sizes the view to the surface, at the pixel ratio given, else the governor's, else the
-   * device's (at most 2); a frame follows only if the size changed.
-   */
+  /** Sizes the view to the surface at the frame's pixel ratio; a frame follows only if the size changed. */
   private fit(): void {
     const { clientWidth, clientHeight } = this.parts.surface;
     if (clientWidth === 0 || clientHeight === 0) return; // hidden (display: none): nothing to draw
-    const pixelRatio = governedValue(this.app.pixelRatio, this.choice?.pixelRatio, devicePixelRatioShown());
+    const { pixelRatio } = this.frame;
     const size = `${clientWidth}×${clientHeight}@${pixelRatio}`;
     if (size === this.fitted) return;
     this.fitted = size;
@@ -311,12 +230,3 @@ export class BubbleApp {
     this.loop.request();
   }
 }
-
-/** The page's own settings and the governed knobs as asked. */
-const appSettingsOf = ({ animate, probe, gridN, simSpeed, pixelRatio }: ViewSettings): AppSettings & GovernedSettings => ({
-  animate,
-  probe,
-  gridN,
-  simSpeed,
-  pixelRatio,
-});

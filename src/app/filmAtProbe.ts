@@ -2,7 +2,7 @@ import type { Catalogue } from '../i18n/en.ts';
 import { PlotPanel } from '../plots/plotPanel.ts';
 import { probeDescription } from '../plots/probeDescription.ts';
 import type { BubbleView } from '../scene/bubbleView.ts';
-import type { ViewSettings } from '../settings/viewParameters.ts';
+import type { DrawnFrame } from '../scene/drawnFrame.ts';
 import { LiveDescription } from './liveDescription.ts';
 
 /** While the swirl animates, the plots follow the probed film this often. */
@@ -15,8 +15,8 @@ export interface FilmAtProbeParts {
   /** Where the plots go, if any; they are redrawn when this element's box changes (e.g. a drawer opens). */
   readonly plots: HTMLElement | undefined;
   readonly cat: Catalogue;
-  /** The settings shown, with the probe. */
-  readonly settings: () => ViewSettings;
+  /** The frame drawn: the settings asked for (with the probe) and the film drawn for them. */
+  readonly frame: () => DrawnFrame;
   /** Whether the film's time follows the clock (FrameLoop.looping): the plots then follow it every PLOT_INTERVAL_MS. */
   readonly looping: () => boolean;
   /** A sentence on the film's time against the clock and its grid while the frame governor keeps them (the live description adds it), or null. */
@@ -100,11 +100,11 @@ export class FilmAtProbe {
   /** Brings the plots up to date in a task of their own, after the complete frame shown. */
   private schedule(): void {
     if (this.timer) return;
-    const drawn = this.parts.view.current;
+    const drawn = this.parts.frame().film;
     this.timer = window.setTimeout(() => {
       this.timer = 0;
       // Settings changed since (an input event came first): their own complete frame will do it.
-      if (this.completeShown && this.parts.view.current === drawn) this.update(performance.now());
+      if (this.completeShown && this.parts.frame().film === drawn) this.update(performance.now());
     });
   }
 
@@ -113,12 +113,12 @@ export class FilmAtProbe {
     const changed = this.due;
     const due = changed || (this.parts.looping() && now - this.lastMs > PLOT_INTERVAL_MS);
     if ((!this.panel && !this.live.started) || this.probing || this.parts.view.contextLost || !due) return;
-    const s = this.parts.settings();
-    this.placeMarker(s.probe);
+    const frame = this.parts.frame();
+    this.placeMarker(frame.asked.probe);
     this.due = false;
     this.lastMs = now;
     this.probing = true;
-    this.read(s, changed);
+    this.read(frame, changed);
   }
 
   private placeMarker([fx, fy]: readonly [number, number]): void {
@@ -127,8 +127,8 @@ export class FilmAtProbe {
     Object.assign(this.marker.style, { left: `${offsetLeft + fx * clientWidth}px`, top: `${offsetTop + fy * clientHeight}px` });
   }
 
-  /** Shows the probe's reading for `s` when it is back, unless the settings were set again meanwhile. */
-  private read(s: ViewSettings, changed: boolean): void {
+  /** Shows the probe's reading for the frame when it is back, unless the settings were set again meanwhile. */
+  private read({ asked: s, film: drawn }: DrawnFrame, changed: boolean): void {
     const set = this.settingsSet;
     const { view, cat } = this.parts;
     view
@@ -136,8 +136,8 @@ export class FilmAtProbe {
       .then(
         (reading) => {
           if (this.disposed || set !== this.settingsSet) return;
-          // The film as drawn (its governed knobs as the view has them), under the method asked for.
-          const film = { ...view.current, mode: s.mode };
+          // The film as drawn (its governed knobs as the frame has them), under the method asked for.
+          const film = { ...drawn, mode: s.mode };
           this.panel?.update(film, s.probe, reading, view.displayIsP3);
           // Said after the user's changes only, not on each animation step (a screen reader would never rest).
           const filmTime = this.parts.filmTime?.() ?? null;

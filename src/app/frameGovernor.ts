@@ -1,22 +1,19 @@
 import { flowParameterRow } from '../settings/filmParameters.ts';
+import { shownPixelRatio } from '../settings/pixelRatio.ts';
 import {
   type BudgetChoice,
   type BudgetLimits,
   type BudgetState,
   GOVERNED_GRIDS,
   GOVERNED_MAX_STEPS,
-  GOVERNED_PIXEL_RATIOS,
-  initialBudget,
-  nextBudget,
-} from './frameBudget.ts';
+  governedPixelRatios,
+} from './budgetTerms.ts';
+import { initialBudget, nextBudget } from './frameBudget.ts';
 
 /** Full quality's grid, the ladder's top: the flowing film's default (FLOW_PARAMETERS); a finer one is a user's choice. */
 const FULL_QUALITY_GRID = flowParameterRow('gridN').defaultValue;
 /** The grids the governor chooses among. */
 const LADDER_GRIDS = GOVERNED_GRIDS.filter((n) => n <= FULL_QUALITY_GRID);
-
-/** The device's pixel ratio as a page draws it without a governor: at most 2 (the drawing buffer's pixels grow as its square). */
-export const devicePixelRatioShown = (): number => Math.min(2, globalThis.devicePixelRatio || 1);
 
 /** What a governed view gives the governor: what its user fixed, and how its flowing film steps. */
 export interface GovernedView {
@@ -148,13 +145,9 @@ export class FrameGovernor {
     const governedGrid = flowing.filter((v) => v.gridN === undefined);
     const fixedGrid = flowing.find((v) => v.gridN !== undefined)?.gridN;
     const fixedRatio = views.every((v) => v.pixelRatio !== undefined) ? views[0]?.pixelRatio : undefined;
-    const shown = devicePixelRatioShown();
     const limits: BudgetLimits = {
       grids: governedGrid.length > 0 ? LADDER_GRIDS : [fixedGrid ?? FULL_QUALITY_GRID],
-      pixelRatios:
-        fixedRatio !== undefined
-          ? [fixedRatio]
-          : [...new Set([...GOVERNED_PIXEL_RATIOS.filter((r) => r < shown), shown])].sort((a, b) => a - b),
+      pixelRatios: fixedRatio !== undefined ? [fixedRatio] : governedPixelRatios(shownPixelRatio()),
       maxStepsPerFrame: GOVERNED_MAX_STEPS,
       baseStepsPerFrame: Math.min(...views.map((v) => v.baseStepsPerFrame)),
       fixedStepsPerFrame: flowing.some((v) => !v.simSpeedGiven) ? null : 1,

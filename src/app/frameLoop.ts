@@ -1,4 +1,11 @@
 import type { BubbleView } from '../scene/bubbleView.ts';
+import type { FrameReport } from '../scene/frameReport.ts';
+
+/** The film's time (s) as the app asks for it: read when the clock starts, set as it runs. */
+export interface FilmClock {
+  readonly timeSeconds: () => number;
+  readonly setTimeSeconds: (t: number) => void;
+}
 
 /**
  * When a view draws. Frames are drawn on demand — one per request — and in a loop only while the
@@ -23,15 +30,17 @@ export class FrameLoop {
   };
 
   /**
-   * `animating` says whether the film's time should follow the clock; `draw` draws one frame of
-   * the view as it is, at the animation frame's time `now` (ms), `follows` saying whether the
-   * film's time followed the clock in this loop's frame just before too (the time between is then a frame's).
+   * `animating` says whether the film's time should follow the clock, which sets the app's film
+   * time (`clock`); `draw` draws one frame at the animation frame's time `now` (ms) and reports it,
+   * `follows` saying whether the film's time followed the clock in this loop's frame just before
+   * too (the time between is then a frame's).
    */
   constructor(
-    private readonly view: BubbleView,
+    private readonly view: Pick<BubbleView, 'prepare'>,
     surface: HTMLElement,
     private readonly animating: () => boolean,
-    private readonly draw: (now: number, follows: boolean) => void,
+    private readonly clock: FilmClock,
+    private readonly draw: (now: number, follows: boolean) => FrameReport,
   ) {
     this.screen = new IntersectionObserver((entries) => this.setOnScreen(entries.some((e) => e.isIntersecting)));
     this.screen.observe(surface);
@@ -88,23 +97,23 @@ export class FrameLoop {
       this.clockRunning = false;
       return;
     }
-    const view = this.view;
     const follows = this.clockRunning;
     if (this.animating()) {
-      if (!this.clockRunning) this.clockOrigin = now - view.current.timeSeconds * 1000;
+      if (!this.clockRunning) this.clockOrigin = now - this.clock.timeSeconds() * 1000;
       this.clockRunning = true;
-      view.apply({ ...view.current, timeSeconds: (now - this.clockOrigin) / 1000 });
+      this.clock.setTimeSeconds((now - this.clockOrigin) / 1000);
     } else {
       this.clockRunning = false;
     }
-    this.draw(now, follows && this.clockRunning);
-    const filmTime = view.film.timeSeconds;
-    if (this.clockRunning && view.film.behind && filmTime !== null) {
+    const report = this.draw(now, follows && this.clockRunning);
+    const film = report.film;
+    const behind = film?.behind === true;
+    if (this.clockRunning && film?.behind) {
       // A film simulated slower than the clock: the clock waits for it, so the time shown (and a
       // pause's frozen time) is the film's, with nothing to catch up.
-      this.clockOrigin = now - filmTime * 1000;
-      view.apply({ ...view.current, timeSeconds: filmTime });
+      this.clockOrigin = now - film.timeSeconds * 1000;
+      this.clock.setTimeSeconds(film.timeSeconds);
     }
-    if (this.clockRunning || view.coarse || view.film.behind) this.request();
+    if (this.clockRunning || report.coarse || behind) this.request();
   }
 }

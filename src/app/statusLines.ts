@@ -1,10 +1,10 @@
 import type { Catalogue } from '../i18n/en.ts';
-import type { EnvironmentStatus } from '../scene/shownEnvironment.ts';
+import type { EnvironmentStatus } from '../scene/drawnFrame.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
 
 /**
  * The app's lines in the page's messages (role status; as text, never HTML): that the view draws
- * with another method than the one asked for (shownMethod's notice), and that the HDR environment
+ * with another method than the one asked for (the frame's notice: src/scene/drawnFrame.ts), and that the HDR environment
  * is loading or failed. A line is in the messages while it has something to say; without a
  * messages element none is shown.
  */
@@ -21,7 +21,7 @@ export class StatusLines {
     this.environment = Object.assign(doc.createElement('p'), { className: 'environment-status' });
   }
 
-  /** Says why the view draws with another method (shownMethod's notice), or removes the line (null). */
+  /** Says why the view draws with another method (the frame's notice), or removes the line (null). */
   showMethodNotice(notice: string | null): void {
     this.show(this.method, notice);
   }

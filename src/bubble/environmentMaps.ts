@@ -70,6 +70,9 @@ const textures = new SharedTextures((key) => {
   return texture;
 });
 
+/** Whether an HDR environment's pixels have arrived (its texture is then at hand). */
+export const environmentLoaded = (name: HdrEnvironment): boolean => loaded.has(name);
+
 /** The loaded environment as a texture, shared by its holders; null until it has arrived. */
 export function environmentTexture(name: HdrEnvironment, holder: object): DataTexture | null {
   return loaded.has(name) ? textures.hold(name, holder) : null;

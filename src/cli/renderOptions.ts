@@ -1,6 +1,7 @@
 import { parameterNamed, readParameter, settingsToQuery } from '../settings/settingsQuery.ts';
 import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 import { DEMO_VIEW_SETTINGS } from '../settings/demoView.ts';
+import { MAX_PIXEL_RATIO } from '../settings/pixelRatio.ts';
 import { parseDecimal, describeValue, isInDomain, ParameterError, rejectValue } from '../input/validate.ts';
 import { readFlags, urlSpellings } from './readFlags.ts';
 import { mediumFromJson, mediumText } from '../physics/medium.ts';
@@ -25,8 +26,8 @@ export interface RenderView {
 export const PICTURE_OPTIONS = {
   width: { min: 16, max: 4096, unit: 'CSS px', fallback: 640, whole: true },
   height: { min: 16, max: 4096, unit: 'CSS px', fallback: 480, whole: true },
-  // The demo draws at most 2 device pixels per CSS pixel (its devicePixelRatio cap).
-  scale: { min: 1, max: 2, unit: '', fallback: 1, whole: false },
+  // The demo draws at most MAX_PIXEL_RATIO device pixels per CSS pixel.
+  scale: { min: 1, max: MAX_PIXEL_RATIO, unit: '', fallback: 1, whole: false },
 } as const;
 type PictureNumber = keyof typeof PICTURE_OPTIONS;
 const PICTURE_NUMBERS = Object.keys(PICTURE_OPTIONS) as PictureNumber[];

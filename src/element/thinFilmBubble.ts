@@ -8,6 +8,7 @@ import { catalogueFor, catalogueLang } from '../i18n/messages.ts';
 import { startsClosed } from '../app/startsClosed.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings, filmSettingsOf } from '../settings/viewParameters.ts';
 import { BubbleView } from '../scene/bubbleView.ts';
+import type { DrawnFrame } from '../scene/drawnFrame.ts';
 import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import type { ProbedFilm } from '../scene/probe.ts';
 import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
@@ -139,7 +140,7 @@ export class ThinFilmBubble extends HTMLElement {
       return;
     }
     const renderer = acquireSharedRenderer();
-    const view = new BubbleView(renderer, filmSettingsOf(settings));
+    const view = new BubbleView(renderer);
     const frames = new FrameCanvases(this.canvas);
     this.app = new BubbleApp(
       {
@@ -155,7 +156,7 @@ export class ThinFilmBubble extends HTMLElement {
         onFrame: (complete) => {
           if (!complete) return;
           this.dataset.frames = String(Number(this.dataset.frames ?? 0) + 1);
-          this.readProbe(view);
+          this.readProbe(view, this.app!.drawn);
         },
         onChange: (s) => {
           this.dispatchEvent(new CustomEvent('change', { detail: { settings: s, query: settingsToQuery(s) } }));
@@ -166,12 +167,12 @@ export class ThinFilmBubble extends HTMLElement {
   }
 
   /** Reads the film at the probe when the film or the probe changed since the last reading, and says so (`probechange`). */
-  private readProbe(view: BubbleView): void {
-    const { probe, animate, field } = this.app?.current ?? DEFAULT_VIEW_SETTINGS;
+  private readProbe(view: BubbleView, frame: DrawnFrame): void {
+    const { probe, animate, field } = frame.asked;
     const [film, at, ms] = this.probedOf;
     const now = performance.now();
-    if (at === probe && (film === view.current || (animate && THICKNESS_FIELDS[field].animates && now - ms < PROBE_INTERVAL_MS))) return;
-    const of = (this.probedOf = [view.current, probe, now]);
+    if (at === probe && (film === frame.film || (animate && THICKNESS_FIELDS[field].animates && now - ms < PROBE_INTERVAL_MS))) return;
+    const of = (this.probedOf = [frame.film, probe, now]);
     // The pixel comes back from the GPU a frame or two later; a reading asked for since (or the element removed) counts instead.
     view.probe(probe[0], probe[1]).then(
       (reading) => {

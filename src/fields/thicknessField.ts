@@ -118,11 +118,6 @@ export interface FieldState {
   /** The settings' time (s) its film shows: the last advance's, or less while the film is behind it. */
   readonly timeSeconds: number;
   /**
-   * Whether the last advance showed a film before its simulation, made the simulation, or took its
-   * first steps (which compile its programs): its cost is not the film's pace.
-   */
-  readonly settling: boolean;
-  /**
    * Blows air at a point of the bubble (unit, the view's frame, y up) with a velocity in m/s (its
    * part tangent there counts), over the film's next steps (a moment of film time): the film moves
    * only while it runs. A user's interaction, so not part of the settings (or of their reproducibility).
@@ -131,7 +126,7 @@ export interface FieldState {
   /** Makes its GPU objects anew after a lost context; the film starts again from its start. */
   invalidate(): void;
   dispose(): void;
-  /** The grid its film is simulated on now, or null before its simulation is made. */
+  /** The grid its film is simulated on now, or null before its simulation is made: one object per simulation, so a new object is a new simulation. */
   readonly grid: SimulationGrid | null;
   /** Its film's steps since its start (0 before its simulation is made). */
   readonly steps: number;

@@ -30,11 +30,8 @@ const STEP_SLACK = 1e-9;
 export class FlowFieldState implements FieldState {
   private simulation: GpuFilmSimulation | null = null;
   private key = '';
-  /** Whether the simulation has stepped since it was made. */
-  private stepped = false;
   /** The start on the coarse grid, shown in the frame before a simulation is made. */
   private preview: DataTexture | null = null;
-  settling = false;
   /** The time shown, in the settings' seconds. */
   timeSeconds = 0;
   /** The blow the next steps take (the simulation's frame) and the film seconds it has left. */
@@ -42,14 +39,13 @@ export class FlowFieldState implements FieldState {
 
   constructor(private readonly renderer: WebGLRenderer) {}
 
-  /** The simulation the film lives in now (null before the first advance). */
-  get current(): GpuFilmSimulation | null {
-    return this.simulation;
-  }
+  /** The grid of the simulation the film lives in, made once per simulation (FieldState.grid). */
+  private simulationGrid: { readonly sim: GpuFilmSimulation; readonly grid: SimulationGrid } | null = null;
 
   get grid(): SimulationGrid | null {
     const sim = this.simulation;
-    return sim && { gridN: sim.grid.n, stepSeconds: sim.stepSeconds };
+    if (sim && this.simulationGrid?.sim !== sim) this.simulationGrid = { sim, grid: { gridN: sim.grid.n, stepSeconds: sim.stepSeconds } };
+    return sim && this.simulationGrid!.grid;
   }
 
   get steps(): number {
@@ -73,7 +69,6 @@ export class FlowFieldState implements FieldState {
       this.preview = paddedStartTexture(cubeSphereGrid(COARSE_START_GRID_N), coarseStartFilm(parameters.seed));
       u.uFlowFilm!.value = this.preview;
       u.uFlowGridN!.value = COARSE_START_GRID_N;
-      this.settling = true;
       this.timeSeconds = 0;
       return false;
     }
@@ -90,9 +85,7 @@ export class FlowFieldState implements FieldState {
     // begin in the frame after. A frame that must show the time steps at once.
     const ready = !(made && shownFirst);
     const count = ready ? Math.min(wanted - sim.steps, maxSteps) : 0;
-    this.settling = made || (!this.stepped && count > 0);
     this.step(sim, count);
-    this.stepped ||= count > 0;
     // In the frame that made it, the film's start as made on the CPU.
     u.uFlowFilm!.value = ready ? sim.paddedFilm : sim.startPaddedFilm;
     u.uFlowGridN!.value = sim.grid.n;
@@ -115,7 +108,6 @@ export class FlowFieldState implements FieldState {
     const sim = new GpuFilmSimulation(this.renderer, parameters, { renew });
     this.simulation = sim;
     this.key = key;
-    this.stepped = false;
   }
 
   blow(point: Vec3, velocityMps: Vec3): void {

@@ -5,9 +5,9 @@ import { type Medium, absorbsInBand } from '../physics/medium.ts';
 import { type SampledIndex } from '../physics/sampledIndex.ts';
 import { type NumberDomain, assertInRange, expectedNumber, isInDomain } from '../input/validate.ts';
 import { filmColorDefines } from '../film/filmColor.ts';
-import { drawnMethod } from '../methods/methods.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { type FilmSettings } from '../settings/filmSettings.ts';
+import { drawnFilmMethod } from '../settings/drawnFilm.ts';
 import { type CheckedOptions } from './spectralIridescenceOptions.ts';
 
 /** A parameter's value within its domain: as given, or refused (a ParameterError), or clamped to it. */
@@ -56,14 +56,12 @@ export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit
   };
 }
 
-/**
- * The method drawn: the option's, or for a stack of films where that method has none (`fourier`)
- * the one drawn in its place (drawnMethod, the table). A single film is drawn by the option's method
- * whatever its media: the registry is asked about the stack alone (the default media, which every
- * method draws).
- */
-export const drawnModeOf = (o: CheckedOptions): CheckedOptions['mode'] =>
-  drawnMethod({ ...o, nFilm: DEFAULT_SETTINGS.nFilm, nInside: DEFAULT_SETTINGS.nInside }).mode as CheckedOptions['mode'];
+/** The method drawn: the option's, or where it has no form for the film (a stack in `fourier`) the one drawn in its place (drawnFilmMethod). */
+const drawnModeOf = (o: CheckedOptions): CheckedOptions['mode'] =>
+  drawnFilmMethod(
+    { mode: o.mode, layers: o.layers, nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: o.base ?? DEFAULT_SETTINGS.nInside },
+    'material',
+  ).film.mode;
 
 /** Each material's metal from its colours, and the colours it was made from. */
 const metals = new WeakMap<MeshPhysicalMaterial, { readonly key: string; readonly medium: SampledIndex }>();

@@ -53,7 +53,7 @@ function followInUrl(s: ViewSettings) {
 function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: HTMLElement, panel: HTMLElement): void {
   const drawer = plots.closest('details');
   if (drawer) drawer.open = !startsClosed(drawer, 'plots'); // a small view starts with the drawer closed (index.html's CSS)
-  const view = new BubbleView(createBubbleRenderer(canvas), filmSettingsOf(settings));
+  const view = new BubbleView(createBubbleRenderer(canvas));
   document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
   if (settings.space !== 'srgb' && !view.displayIsP3) say(cat['app.noDisplayP3']);
   // Whether a frame, and a frame in full, have been drawn: the User Timing marks of the first of each.

@@ -6,6 +6,7 @@
  * reference's colours at two angles, in the page's language.
  */
 import { arrowKeyStep } from '../app/arrowKeyStep.ts';
+import { shownPixelRatio } from '../settings/pixelRatio.ts';
 import { AgXToneMapping, EquirectangularReflectionMapping, type Mesh, Vector3, WebGLRenderer } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { environmentTexture, loadEnvironmentPixels } from '../bubble/environmentMaps.ts';
@@ -29,7 +30,7 @@ const titaniumValue = element<HTMLOutputElement>('#titanium-value');
 const stacks = element<HTMLDivElement>('#stacks');
 
 const renderer = new WebGLRenderer({ canvas, antialias: true });
-renderer.setPixelRatio(Math.min(devicePixelRatio, 2));
+renderer.setPixelRatio(shownPixelRatio());
 renderer.toneMapping = AgXToneMapping;
 renderer.toneMappingExposure = 1.6;
 const example = exampleScene(innerWidth / innerHeight);

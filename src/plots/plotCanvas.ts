@@ -1,6 +1,8 @@
+import { shownPixelRatio } from '../settings/pixelRatio.ts';
+
 /** A 2D canvas drawn at the device's pixel ratio, in CSS-pixel coordinates. */
 export function prepareCanvas(canvas: HTMLCanvasElement): { ctx: CanvasRenderingContext2D; width: number; height: number } {
-  const ratio = Math.min(2, globalThis.devicePixelRatio || 1);
+  const ratio = shownPixelRatio();
   const width = Math.max(1, canvas.clientWidth);
   const height = Math.max(1, canvas.clientHeight);
   if (canvas.width !== Math.round(width * ratio) || canvas.height !== Math.round(height * ratio)) {

@@ -22,12 +22,12 @@ export class ViewOutput {
   private toneMapping: ThreeToneMapping = NoToneMapping;
 
   /**
-   * Takes the settings asked for and those shown (`auto` tone mapping follows the environment
-   * shown); returns whether the tone mapping changed, which needs new programs.
+   * Takes the film drawn (`auto` tone mapping follows the environment drawn); returns whether the
+   * tone mapping changed, which needs new programs.
    */
-  take(renderer: WebGLRenderer, s: FilmSettings, shown: FilmSettings): boolean {
+  take(renderer: WebGLRenderer, s: FilmSettings): boolean {
     this.displayIsP3 = (s.space === 'display-p3' || s.space === 'wide-gamut') && drawsDisplayP3(renderer);
-    const toneMapping = TONE_MAPPINGS[toneMappingOf(shown)];
+    const toneMapping = TONE_MAPPINGS[toneMappingOf(s)];
     const changed = toneMapping !== this.toneMapping;
     this.toneMapping = toneMapping;
     return changed;

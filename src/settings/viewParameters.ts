@@ -7,7 +7,8 @@ import { autoNumberRow, flagRow } from './valueRows.ts';
 /**
  * The knobs a page may leave to its frame governor (docs/governor.md): `auto`, or a value a user
  * gave (URL, attribute, panel), honoured exactly. With `auto` a frozen view draws the film's
- * default grid (FILM_PARAMETERS), at simulation speed 1, at the device's pixel ratio (at most 2).
+ * default grid (FILM_PARAMETERS), at simulation speed 1, at the device's pixel ratio (at most
+ * MAX_PIXEL_RATIO: pixelRatio.ts).
  */
 export interface GovernedSettings {
   /** The flowing film's grid (FLOW_PARAMETERS' `gridN`). */

@@ -22,7 +22,7 @@ export async function recordCentreFrames(page: Page): Promise<() => Promise<Cent
       const pixel = new Uint8Array(4);
       gl.bindFramebuffer(gl.FRAMEBUFFER, null);
       gl.readPixels(gl.drawingBufferWidth >> 1, gl.drawingBufferHeight >> 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-      w.drawn.push([[pixel[0]!, pixel[1]!, pixel[2]!], !view.coarse]);
+      w.drawn.push([[pixel[0]!, pixel[1]!, pixel[2]!], !drew.coarse]);
       return drew;
     };
   });

@@ -1,8 +1,8 @@
 import { expect, test, type Page } from '@playwright/test';
-import type { WebGLRenderTarget } from 'three';
+import type { Texture, WebGLRenderTarget } from 'three';
 import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
 import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
-import { filmCells } from './harness/filmReadback.ts';
+import { paddedTexelIndex } from '../../src/flow/flowAtlas.ts';
 import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
 import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';
@@ -20,25 +20,41 @@ const FROZEN = `/?field=flow&grid=${GRID_N}&seed=5&wind=0.5&animate=0&time=0.06&
  */
 const RENEWED_S = 0.45;
 
-type Demo = Window & { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView };
+type Demo = Window & {
+  bubbleView: import('../../src/scene/bubbleView.ts').BubbleView;
+  bubbleApp: import('../../src/app/bubbleApp.ts').BubbleApp;
+};
 /** A page that reads its flowing film back (readsFilm). */
 type FilmReader = Window & { flowFilmTexels: () => number[] };
 
 /**
- * Gives every load of the page a reader of the demo's flowing film: the texels of its simulation's
- * film target (the public `stateTargets`), read through the view's renderer, for filmCells to decode.
+ * Gives every load of the page a reader of the demo's flowing film as the bubble samples it: the
+ * texels of the padded film its material's `uFlowFilm` holds (a render target's texture: three's
+ * `texture.renderTarget`), read through the view's renderer, for filmCells to decode.
  */
 const readsFilm = (page: Page) =>
   page.addInitScript(() => {
     (window as unknown as FilmReader).flowFilmTexels = () => {
       const view = (window as unknown as Demo).bubbleView;
-      const film = view.evolvingFilm as unknown as { current: { stateTargets: { film: WebGLRenderTarget } } };
-      const target = film.current.stateTargets.film;
+      const texture = view.bubble.material.uniforms.uFlowFilm!.value as Texture & { renderTarget: WebGLRenderTarget };
+      const target = texture.renderTarget;
       const texels = new Float32Array(4 * target.width * target.height);
       view.renderer.readRenderTargetPixels(target, 0, 0, target.width, target.height, texels);
       return [...texels];
     };
   });
+
+/** The padded film's texels (η, Γ, intact, mark per texel; one ring of ghosts round each face of n × n cells) as η and intact per cell, in the twin's cell order. */
+function filmCells(texels: ArrayLike<number>, n: number): { eta: Float32Array; intact: Uint8Array } {
+  const [eta, intact] = [new Float32Array(6 * n * n), new Uint8Array(6 * n * n)];
+  const m = n + 2;
+  for (let c = 0; c < eta.length; c++) {
+    const [face, j, i] = [Math.floor(c / (n * n)), Math.floor(c / n) % n, c % n];
+    const t = 4 * paddedTexelIndex(n, (face * m + j + 1) * m + i + 1);
+    [eta[c], intact[c]] = [texels[t]!, texels[t + 2]!];
+  }
+  return { eta, intact };
+}
 
 /** The drawing buffer as the page last drew it (a hash of every byte and how many are lit), and the film's steps. */
 const drawn = (page: Page) =>
@@ -54,8 +70,8 @@ const drawn = (page: Page) =>
       hash = Math.imul(hash ^ byte, 16777619) >>> 0;
       if (byte > 8) lit++;
     }
-    const film = view.evolvingFilm as unknown as { current: { steps: number; stepSeconds: number } | null } | null;
-    return { hash, lit, steps: film?.current?.steps ?? -1, stepSeconds: film?.current?.stepSeconds ?? 0 };
+    const flow = view.lastFrame.film?.flow;
+    return { hash, lit, steps: flow?.steps ?? -1, stepSeconds: flow?.stepSeconds ?? 0 };
   });
 
 async function load(page: Page, url: string) {
@@ -118,9 +134,9 @@ test('after a lost context the flowing film is simulated again from its start to
   await expect.poll(() => gpuObjects(page)).toEqual(objects);
   // A new film after the restore (its own targets), and the one it replaces disposed: no warning either.
   await page.evaluate(() => {
-    const view = (window as unknown as Demo).bubbleView;
-    view.apply({ ...view.current, seed: 6 });
-    view.render();
+    const { bubbleView, bubbleApp } = window as unknown as Demo;
+    bubbleApp.set({ ...bubbleApp.current, seed: 6 });
+    bubbleView.render();
   });
   expect(problems).toEqual([]);
 });
@@ -137,14 +153,14 @@ test("B on the bubble, or Enter on the panel's blow button, blows at the probe, 
   const filmAfter = async (blow: 'none' | 'key' | 'button') => {
     if (blow === 'button') await button.press('Enter');
     const texels = await page.evaluate((withKey) => {
-      const view = (window as unknown as Demo).bubbleView;
-      const start = view.current.timeSeconds;
+      const { bubbleView, bubbleApp } = window as unknown as Demo;
+      const start = bubbleApp.current.timeSeconds;
       if (withKey) document.querySelector<HTMLElement>('[role=application]')!.dispatchEvent(new KeyboardEvent('keydown', { key: 'b' }));
-      view.apply({ ...view.current, timeSeconds: start + 0.03 });
-      view.render();
+      bubbleApp.set({ ...bubbleApp.current, timeSeconds: start + 0.03 });
+      bubbleView.render();
       const film = (window as unknown as FilmReader).flowFilmTexels();
-      view.apply({ ...view.current, timeSeconds: start });
-      view.render();
+      bubbleApp.set({ ...bubbleApp.current, timeSeconds: start });
+      bubbleView.render();
       return film;
     }, blow === 'key');
     return [...filmCells(texels, GRID_N).eta];
@@ -166,11 +182,11 @@ test('showing the flowing film and leaving it again, five times, leaves the live
   const objects = await settledGpuObjects(page);
   const showAndLeave = (times: number) =>
     page.evaluate((n) => {
-      const view = (window as unknown as Demo).bubbleView;
+      const { bubbleView, bubbleApp } = window as unknown as Demo;
       for (let i = 0; i < n; i++)
         for (const field of ['flow', 'uniform'] as const) {
-          view.apply({ ...view.current, field });
-          view.render();
+          bubbleApp.set({ ...bubbleApp.current, field });
+          bubbleView.render();
         }
     }, times);
   await showAndLeave(1);

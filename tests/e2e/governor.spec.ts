@@ -1,6 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { FLOW_PARAMETERS } from '../../src/physics/flow/flowParameters.ts';
-import { GOVERNED_GRIDS } from '../../src/app/frameBudget.ts';
+import { GOVERNED_GRIDS } from '../../src/app/budgetTerms.ts';
 import { EN } from '../../src/i18n/en.ts';
 
 /**
@@ -9,7 +9,10 @@ import { EN } from '../../src/i18n/en.ts';
  * honoured exactly; a frozen view is not governed. One page, loaded with each URL in turn (the
  * governor is the document's: a fresh load starts it anew).
  */
-type Demo = Window & { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView };
+type Demo = Window & {
+  bubbleView: import('../../src/scene/bubbleView.ts').BubbleView;
+  bubbleApp: import('../../src/app/bubbleApp.ts').BubbleApp;
+};
 
 /** The panel's read-only line in the flow folder (its input's value). */
 const governorLine = (page: Page) =>
@@ -33,7 +36,7 @@ async function governedLine(page: Page): Promise<{ rate: number; grid: number }>
 }
 
 /** The grid the view's flowing film is simulated on now (null before it is made). */
-const simulated = (page: Page) => page.evaluate(() => (window as unknown as Demo).bubbleView.film.flowGrid?.gridN ?? null);
+const simulated = (page: Page) => page.evaluate(() => (window as unknown as Demo).bubbleView.lastFrame.film?.flow?.gridN ?? null);
 
 const DEFAULT_GRID = FLOW_PARAMETERS.find((r) => r.key === 'gridN')!.defaultValue;
 
@@ -49,7 +52,7 @@ test('an animating flow is governed and says so; a grid given is honoured; a fro
   expect((await governedLine(page)).grid).toBe(24);
   expect(await simulated(page)).toBe(24);
   // Further frames, further measures: still 24 (the line has been measured anew in between).
-  await expect.poll(() => page.evaluate(() => (window as unknown as Demo).bubbleView.film.timeSeconds)).toBeGreaterThan(0);
+  await expect.poll(() => page.evaluate(() => (window as unknown as Demo).bubbleView.lastFrame.film?.timeSeconds ?? 0)).toBeGreaterThan(0);
   expect(await simulated(page)).toBe(24);
 
   // Frozen: the default grid (none given), no line, the quality's own steps per frame.
@@ -58,8 +61,8 @@ test('an animating flow is governed and says so; a grid given is honoured; a fro
   expect(await simulated(page)).toBe(DEFAULT_GRID);
   await expect(governorLine(page)).toHaveValue('');
   const steps = await page.evaluate(() => {
-    const view = (window as unknown as Demo).bubbleView;
-    return [view.flowStepsPerFrame, view.quality.flowStepsPerFrame];
+    const { bubbleView, bubbleApp } = window as unknown as Demo;
+    return [bubbleApp.drawn.stepsPerFrame, bubbleView.quality.flowStepsPerFrame];
   });
   expect(steps[0]).toBe(steps[1]);
 });

@@ -17,9 +17,9 @@ test('the demo page loads with its title and WebGL2; a bad URL parameter shows a
   await expect(page.locator('#messages')).toContainText('nFilm');
   await expect(page.locator('#messages')).toContainText('[1, 4]');
   expect(await page.locator('#messages img').count()).toBe(0);
-  expect(await page.evaluate(() => (window as unknown as { bubbleView: { current: { nFilm: number } } }).bubbleView.current.nFilm)).toBe(
-    1.33,
-  );
+  expect(
+    await page.evaluate(() => (window as unknown as { bubbleApp: { drawn: { film: { nFilm: number } } } }).bubbleApp.drawn.film.nFilm),
+  ).toBe(1.33);
   expect(problems).toEqual([]);
 });
 
@@ -32,8 +32,8 @@ test('fourier with a dispersive film draws with the table and says why; the URL 
   const modes = () =>
     page.evaluate(() => {
       const w = window as unknown as {
-        bubbleView: { current: { mode: string }; table: { coarse: boolean; bind(u: Record<string, { value: unknown }>): void } };
-        bubbleApp: { current: { mode: string } };
+        bubbleView: { table: { coarse: boolean; bind(u: Record<string, { value: unknown }>): void } };
+        bubbleApp: { current: { mode: string }; drawn: { film: { mode: string } } };
       };
       // The grid the table binds: one texel until a table is built.
       const bound = {
@@ -44,7 +44,7 @@ test('fourier with a dispersive film draws with the table and says why; the URL 
       };
       w.bubbleView.table.bind(bound);
       const table = { width: bound.uFilmTableWidth.value, coarse: w.bubbleView.table.coarse };
-      return { shown: w.bubbleView.current.mode, asked: w.bubbleApp.current.mode, table };
+      return { shown: w.bubbleApp.drawn.film.mode, asked: w.bubbleApp.current.mode, table };
     });
   expect(await modes()).toMatchObject({ shown: 'table', asked: 'fourier', table: { coarse: false } });
   expect((await modes()).table.width).toBeGreaterThan(1);
@@ -94,8 +94,8 @@ test('the panel changes the view and the URL, and the URL restores the state', a
   const current = () =>
     page.evaluate(
       () =>
-        (window as unknown as { bubbleView: { current: { field: string; env: string; thicknessNm: number; nFilm: unknown } } }).bubbleView
-          .current,
+        (window as unknown as { bubbleApp: { drawn: { film: { field: string; env: string; thicknessNm: number; nFilm: unknown } } } })
+          .bubbleApp.drawn.film,
     );
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
   expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);

@@ -26,7 +26,7 @@ test('several bad URL parameters: a message for each naming its range, defaults 
     await expect(messages.filter({ hasText: `${name}=` })).toContainText(range);
   }
   await expect(messages.filter({ hasText: 'speed=' })).toContainText('(5000 characters)');
-  const current = await page.evaluate(() => (window as unknown as { bubbleView: { current: object } }).bubbleView.current);
+  const current = await page.evaluate(() => (window as unknown as { bubbleApp: { drawn: { film: object } } }).bubbleApp.drawn.film);
   expect(current).toMatchObject({
     thicknessNm: 550,
     nFilm: 1.33,

@@ -12,7 +12,7 @@ import type { BubbleView } from '../../../src/scene/bubbleView.ts';
 import { createBubbleRenderer } from '../../../src/scene/bubbleRenderer.ts';
 import { FilmXyzProbe } from '../../harness/filmXyzProbe.ts';
 import { loadEnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
-import { isHdrEnvironment } from '../../../src/settings/filmSettings.ts';
+import { type FilmSettings, isHdrEnvironment } from '../../../src/settings/filmSettings.ts';
 import {
   type BenchRowResult,
   type BenchRowSpec,
@@ -25,7 +25,7 @@ import {
 } from '../benchRow.ts';
 import type { FlowSpeedPlan } from '../flowSpeed.ts';
 import { gpuFlowSpeed } from './gpuFlowSpeed.ts';
-import { rowScene } from './rowScene.ts';
+import { rowScene, showFilm } from './rowScene.ts';
 import { TableWatch } from './tableWatch.ts';
 import { median } from '../median.ts';
 import { methodReads } from '../../../src/methods/methods.ts';
@@ -76,13 +76,17 @@ function drawAndWait(view: BubbleView): void {
 /** Draws the view's next frame and returns its time (ms). */
 type TimedFrame = () => number;
 
-/** The view's frames from `startSeconds` on, the animated field moving 1/60 s a frame as in the demo's loop. */
-function animatedFrames(view: BubbleView, startSeconds: number): TimedFrame {
-  let time = startSeconds;
+/** The row's film as last shown (showFilm): the frames move its time on, the changes change it. */
+interface ShownFilm {
+  film: FilmSettings;
+}
+
+/** The view's frames from the film's time on, the animated field moving 1/60 s a frame as in the demo's loop. */
+function animatedFrames(view: BubbleView, shown: ShownFilm): TimedFrame {
   return () => {
     const started = performance.now();
-    time += 1 / 60;
-    view.apply({ ...view.current, timeSeconds: time });
+    shown.film = { ...shown.film, timeSeconds: shown.film.timeSeconds + 1 / 60 };
+    showFilm(view, shown.film);
     drawAndWait(view);
     return performance.now() - started;
   };
@@ -164,7 +168,7 @@ function frameTimes(view: BubbleView, spec: BenchRowSpec, frame: TimedFrame): (F
  * (the median). None (null) for the textured sphere, which shows no film, for a row that does not
  * time them, and for a row whose frame alone outlasts the budget.
  */
-function changeTimes(view: BubbleView, spec: BenchRowSpec, firstSizeMs: number): (number | null)[] {
+function changeTimes(view: BubbleView, spec: BenchRowSpec, firstSizeMs: number, shown: ShownFilm): (number | null)[] {
   view.resize(...spec.sizes[0]!);
   const changesTimed = spec.kind === 'bubble' && spec.timesChanges && firstSizeMs <= spec.frameBudgetMs;
   return CHANGES.map(({ values }) => {
@@ -174,7 +178,8 @@ function changeTimes(view: BubbleView, spec: BenchRowSpec, firstSizeMs: number):
     for (let repeat = 0; repeat < spec.changeRepeats && (repeat === 0 || spentMs < spec.frameBudgetMs); repeat++)
       for (const [i, v] of values(spec.settings).entries()) {
         const started = performance.now();
-        view.apply({ ...view.current, ...v });
+        shown.film = { ...shown.film, ...v };
+        showFilm(view, shown.film);
         if (i > 0 && !(spec.changesBack && spentMs < spec.frameBudgetMs)) continue; // drawn with the next change
         drawAndWait(view);
         times.push(performance.now() - started);
@@ -197,10 +202,11 @@ function timeView(view: BubbleView, spec: BenchRowSpec, originMs: number): Omit<
   const firstFrameMs = performance.now() - originMs;
   const tableBuildMs = methodReads(spec.settings.mode, 'table') && spec.kind === 'bubble' ? table.firstBuildMs : null;
   const buildsBefore = table.builds;
-  const frames = frameTimes(view, spec, animatedFrames(view, spec.settings.timeSeconds));
+  const shown: ShownFilm = { film: spec.settings };
+  const frames = frameTimes(view, spec, animatedFrames(view, shown));
   const rebuildsWhileAnimating = table.builds - buildsBefore;
   table.stop();
-  const changeToFrameMs = changeTimes(view, spec, frames[0]!.medianMs);
+  const changeToFrameMs = changeTimes(view, spec, frames[0]!.medianMs, shown);
   return { firstFrameMs, tableBuildMs, rebuildsWhileAnimating, frames, changeToFrameMs };
 }
 

@@ -1,6 +1,9 @@
 /** A benchmark row's scene: the demo's BubbleView with the row's settings and quality, and the plain textured sphere in the bubble's place for the floor rows. */
 import { DataTexture, Mesh, MeshBasicMaterial, RGBAFormat, SRGBColorSpace, type WebGLRenderer } from 'three';
 import { BubbleView } from '../../../src/scene/bubbleView.ts';
+import { resolveFrame } from '../../../src/scene/drawnFrame.ts';
+import type { FilmSettings } from '../../../src/settings/filmSettings.ts';
+import { AUTO } from '../../../src/settings/parameterRow.ts';
 import type { BenchRowSpec } from '../benchRow.ts';
 
 /** A 256² sRGB texture for the floor row: the sphere then costs one texture fetch per pixel. */
@@ -17,9 +20,22 @@ function checkerTexture(): DataTexture {
   return t;
 }
 
+/**
+ * Shows `film` in the view as a frozen app's frame would, but with the method asked for even where
+ * the app draws another in its place (the bench times each method, `fourier`'s dispersive fallback included).
+ */
+export function showFilm(view: BubbleView, film: FilmSettings): void {
+  const frame = resolveFrame(
+    { ...film, animate: false, probe: [0.5, 0.5], pixelRatio: AUTO },
+    { ...view.offers, choice: null, devicePixelRatio: 1 },
+  );
+  view.show({ ...frame, film: { ...frame.film, mode: film.mode } });
+}
+
 /** The row's view on `renderer`, and the textured sphere standing in for the bubble (the floor rows); `dispose` frees all of it. */
 export function rowScene(renderer: WebGLRenderer, spec: BenchRowSpec): { view: BubbleView; dispose: () => void } {
-  const view = new BubbleView(renderer, spec.settings, spec.quality);
+  const view = new BubbleView(renderer, spec.quality);
+  showFilm(view, spec.settings);
   if (!spec.reflections) {
     // The model before environment reflections: reflectedRadiance (shaders/bubble/environment.glsl) returns the light's white.
     const m = view.bubble.material;

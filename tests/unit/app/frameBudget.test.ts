@@ -6,12 +6,11 @@ import {
   GOVERNED_GRID,
   GOVERNED_GRIDS,
   GOVERNED_MAX_STEPS,
-  GOVERNED_PIXEL_RATIOS,
+  governedPixelRatios,
   SLOW_BUDGET_MS,
-  initialBudget,
-  ladder,
-  nextBudget,
-} from '../../../src/app/frameBudget.ts';
+} from '../../../src/app/budgetTerms.ts';
+import { initialBudget, ladder, nextBudget } from '../../../src/app/frameBudget.ts';
+import { shownPixelRatio } from '../../../src/settings/pixelRatio.ts';
 import { mulberry32 } from '../../seededRandom.ts';
 import { GOVERNED_FRAME_RATIO, GOVERNOR_NOISE } from '../../tolerances.ts';
 
@@ -52,7 +51,7 @@ const ownFrameMs = (m: Machine) => Math.max(m.vsyncMs, m.drawFixedMs + m.drawPix
 function limitsFor(m: Machine, over: Partial<BudgetLimits> = {}): BudgetLimits {
   return {
     grids: LADDER,
-    pixelRatios: GOVERNED_PIXEL_RATIOS.filter((r) => r <= m.dpr),
+    pixelRatios: governedPixelRatios(shownPixelRatio(m.dpr)),
     maxStepsPerFrame: GOVERNED_MAX_STEPS,
     baseStepsPerFrame: 8,
     fixedStepsPerFrame: null,

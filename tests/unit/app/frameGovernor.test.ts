@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import type { BudgetChoice } from '../../../src/app/frameBudget.ts';
+import type { BudgetChoice } from '../../../src/app/budgetTerms.ts';
 import { FrameGovernor, type GovernedView } from '../../../src/app/frameGovernor.ts';
 
 /** A document as the governor uses it: a key, and its visibility events. */

@@ -1,0 +1,126 @@
+/**
+ * The one place where what is asked becomes what is drawn (src/scene/drawnFrame.ts): each offer of
+ * the machine and the page, alone, and the frame and notices it must give. The expected values are
+ * the rules' own (docs/architecture.md#what-is-asked-and-what-is-drawn), written out here.
+ */
+import { describe, expect, it } from 'vitest';
+import { type FrameOffers, resolveFrame } from '../../../src/scene/drawnFrame.ts';
+import { parseLayers } from '../../../src/physics/layersText.ts';
+import { DEFAULT_VIEW_SETTINGS, type ViewSettings } from '../../../src/settings/viewParameters.ts';
+
+/** A frozen view on a machine that offers everything at once: no governor, nothing loading, every light ready. */
+const OFFERS: FrameOffers = {
+  choice: null,
+  environmentLoaded: () => true,
+  environmentFailure: () => null,
+  compilesInParallel: true,
+  lightReady: () => true,
+  lightShown: null,
+  devicePixelRatio: 1,
+  baseStepsPerFrame: 8,
+};
+/** A frozen swirl in the sky, in the table, at grid and speed left to the governor: what the default view asks. */
+const ASKED: ViewSettings = { ...DEFAULT_VIEW_SETTINGS, field: 'swirl', env: 'sky', mode: 'table', animate: false };
+const FLOW: ViewSettings = { ...ASKED, field: 'flow', animate: true, seed: 7, thicknessNm: 600 };
+const D65_WHITE = { illuminant: 'D65', normalization: 'white' } as const;
+
+describe('what is drawn for what is asked', () => {
+  it('draws what is asked, without a notice, where the machine offers everything; the frame is frozen', () => {
+    const frame = resolveFrame(ASKED, OFFERS);
+    expect(frame.film.mode).toBe('table');
+    expect(frame.film.env).toBe('sky');
+    expect([frame.film.illuminant, frame.film.normalization]).toEqual([ASKED.illuminant, ASKED.normalization]);
+    expect(frame.notices).toEqual([]);
+    expect(frame.environment).toEqual({ state: 'shown' });
+    expect([frame.fetch, frame.lightPending]).toEqual([null, null]);
+    expect(Object.isFrozen(frame)).toBe(true);
+  });
+
+  it('a stack of films asked in `fourier` is drawn by the table, the notice naming the method and the layers', () => {
+    const frame = resolveFrame({ ...ASKED, mode: 'fourier', layers: parseLayers('layers', '1.38:99.6/1.6:50') }, OFFERS);
+    expect(frame.film.mode).toBe('table');
+    expect(frame.asked.mode).toBe('fourier');
+    expect(frame.notices).toEqual([
+      {
+        setting: 'mode',
+        asked: 'fourier',
+        drawn: 'table',
+        message: { key: 'app.stackAsTable', values: { method: 'fourier', layers: '2' } },
+      },
+    ]);
+  });
+
+  it('`fourier` with a dispersive film is drawn by the table, the notice naming the film; a plain film keeps `fourier`', () => {
+    const frame = resolveFrame({ ...ASKED, mode: 'fourier', nFilm: 'water' }, OFFERS);
+    expect(frame.film.mode).toBe('table');
+    expect(frame.notices[0]!.message).toEqual({ key: 'app.fourierAsTable', values: { name: 'nFilm', medium: 'water' } });
+    expect(resolveFrame({ ...ASKED, mode: 'fourier', nFilm: 1.33 }, OFFERS).film.mode).toBe('fourier');
+  });
+
+  it('an HDR environment not loaded yet: the sky meanwhile, its map fetched, said loading; a failed one: the sky, said why, not fetched again', () => {
+    const loading = resolveFrame({ ...ASKED, env: 'park' }, { ...OFFERS, environmentLoaded: () => false });
+    expect(loading.film.env).toBe('sky');
+    expect(loading.environment).toEqual({ state: 'loading', env: 'park' });
+    expect(loading.fetch).toBe('park');
+    expect(loading.notices).toEqual([{ setting: 'env', asked: 'park', drawn: 'sky', message: null }]);
+    const failed = resolveFrame({ ...ASKED, env: 'park' }, { ...OFFERS, environmentLoaded: () => false, environmentFailure: () => '404' });
+    expect(failed.film.env).toBe('sky');
+    expect(failed.environment).toEqual({ state: 'failed', env: 'park', reason: '404' });
+    expect(failed.fetch).toBe(null);
+    const loaded = resolveFrame({ ...ASKED, env: 'park' }, OFFERS);
+    expect([loaded.film.env, loaded.fetch, loaded.notices]).toEqual(['park', null, []]);
+  });
+
+  it('keeps the frame shown while the next programs compile only where the GPU compiles in parallel', () => {
+    expect(resolveFrame(ASKED, OFFERS).keepsFrameWhileCompiling).toBe(true);
+    expect(resolveFrame(ASKED, { ...OFFERS, compilesInParallel: false }).keepsFrameWhileCompiling).toBe(false);
+  });
+
+  it('a new light whose transform is not ready keeps the light shown for a method that reads it, and says which is pending', () => {
+    const asked = { ...ASKED, mode: 'fourier' as const, illuminant: 'D93' as const };
+    const waiting = { ...OFFERS, lightShown: D65_WHITE, lightReady: () => false };
+    const frame = resolveFrame(asked, waiting);
+    expect([frame.film.illuminant, frame.film.normalization]).toEqual(['D65', 'white']);
+    expect(frame.lightPending).toEqual({ illuminant: 'D93', normalization: asked.normalization });
+    expect(frame.notices.map((n) => n.setting)).toEqual(['illuminant']);
+    // Ready, or a method that reads no transform (the table's own pass fills it), or no light shown yet: the light asked for.
+    for (const [mode, offers] of [
+      ['fourier', { ...waiting, lightReady: () => true }],
+      ['exact', waiting],
+      ['fourier', { ...waiting, lightShown: null }],
+    ] as const) {
+      const drawn = resolveFrame({ ...asked, mode }, offers);
+      expect([drawn.film.illuminant, drawn.lightPending]).toEqual(['D93', null]);
+    }
+  });
+});
+
+describe('the governor, the device and the flowing film', () => {
+  const CHOICE = { gridN: 48, pixelRatio: 0.75, stepsPerFrame: 5 };
+
+  it("the governor's grid, pixel ratio and steps where the user left them, each grid and ratio with a notice", () => {
+    const frame = resolveFrame(FLOW, { ...OFFERS, choice: CHOICE, devicePixelRatio: 2 });
+    expect([frame.film.gridN, frame.pixelRatio, frame.stepsPerFrame]).toEqual([48, 0.75, 5]);
+    expect(frame.notices).toEqual([
+      { setting: 'gridN', asked: 'auto', drawn: 48, message: null },
+      { setting: 'pixelRatio', asked: 'auto', drawn: 0.75, message: null },
+    ]);
+  });
+
+  it("what the user gave is drawn exactly; a given speed takes every step the time asks; a frozen view takes its quality's steps", () => {
+    const given = resolveFrame({ ...FLOW, gridN: 24, pixelRatio: 1.5, simSpeed: 2 }, { ...OFFERS, choice: CHOICE });
+    expect([given.film.gridN, given.pixelRatio, given.stepsPerFrame, given.film.simSpeed]).toEqual([24, 1.5, Infinity, 2]);
+    expect(given.notices).toEqual([]);
+    // A frozen view: the flow's default grid, 128 (docs/flow.md's table of parameters), at the quality's steps.
+    const frozen = resolveFrame({ ...FLOW, animate: false }, OFFERS);
+    expect([frozen.film.gridN, frozen.stepsPerFrame]).toEqual([128, 8]);
+  });
+
+  it('the device pixel ratio is drawn up to 2, a larger one capped with a notice; a ratio given is drawn as given', () => {
+    expect(resolveFrame(ASKED, { ...OFFERS, devicePixelRatio: 1.5 }).pixelRatio).toBe(1.5);
+    const dense = resolveFrame(ASKED, { ...OFFERS, devicePixelRatio: 3 });
+    expect(dense.pixelRatio).toBe(2);
+    expect(dense.notices).toEqual([{ setting: 'pixelRatio', asked: 'auto', drawn: 2, message: null }]);
+    expect(resolveFrame({ ...ASKED, pixelRatio: 3 }, { ...OFFERS, devicePixelRatio: 3 }).pixelRatio).toBe(3);
+  });
+});
