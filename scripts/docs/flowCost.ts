@@ -134,15 +134,17 @@ export function gridCost(n: number): GridCost {
   const settingsAt = (frame: number): FieldSettings => ({ ...DEFAULT_SETTINGS, gridN: n, timeSeconds: frame / DISPLAY_HZ });
   const budget = DEFAULT_FILM_QUALITY.flowStepsPerFrame;
   // Made by a frame that must show its time: its steps are not held for programs compiled in parallel.
-  state.advance(uniforms, settingsAt(0), Infinity);
+  // The flow's parameters, as a frame derives them (the time is not one of them).
+  const parameters = flowParametersOf(settingsAt(0));
+  state.advance(uniforms, settingsAt(0), parameters, Infinity);
   renderer.draws = [];
-  for (let frame = 1; frame <= FRAMES; frame++) state.advance(uniforms, settingsAt(frame), budget);
+  for (let frame = 1; frame <= FRAMES; frame++) state.advance(uniforms, settingsAt(frame), parameters, budget);
   const frameDraws = renderer.draws;
   const steps = state.steps;
   state.dispose();
   // One step of a simulation of the same film that has stepped before (its first step's programs made).
   renderer.draws = [];
-  const sim = new GpuFilmSimulation(renderer as unknown as WebGLRenderer, flowParametersOf(settingsAt(0)));
+  const sim = new GpuFilmSimulation(renderer as unknown as WebGLRenderer, parameters);
   sim.step(1);
   renderer.draws = [];
   sim.step(1);

@@ -6,6 +6,7 @@
  * columns the cases' lookups read. Used by the parity harness and the benchmark's error columns.
  */
 import { FULLSCREEN_VERTEX } from '../../src/gpu/fullscreenPass.ts';
+import { maxFieldThicknessNm } from '../../src/fields/fields.ts';
 import { ShaderMaterial, type WebGLRenderTarget, type WebGLRenderer } from 'three';
 import { type FilmTableBinding, filmColorDefines, filmColorUniforms, updateFilmColorUniforms } from '../../src/film/filmColor.ts';
 import { type FilmQuality } from '../../src/settings/filmQuality.ts';
@@ -63,7 +64,7 @@ export class FilmXyzProbe {
     const key = JSON.stringify(quality);
     const table = this.tables.get(key) ?? { pass: new FilmTablePass(quality), target: tableTarget(2 * quality.table.rows) };
     this.tables.set(key, table);
-    const grid = table.pass.fullGrid(s);
+    const grid = table.pass.fullGrid(s, maxFieldThicknessNm(s));
     const columns = filmTableLookupColumns(quality.table, thicknessesNm, grid.maxThicknessNm, grid.width);
     table.pass.draw(this.renderer, s, table.target, grid, columns);
     table.pass.releaseLight();

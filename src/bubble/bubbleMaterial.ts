@@ -2,12 +2,9 @@ import { type DataTexture, type Matrix3, ShaderMaterial } from 'three';
 import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { type FilmSettings, SIDES } from '../settings/filmSettings.ts';
-import {
-  thicknessFieldDefines,
-  thicknessFieldSource,
-  thicknessFieldUniforms,
-  updateThicknessFieldUniforms,
-} from './thicknessFieldSource.ts';
+import { type FieldDerived, updateFieldUniforms } from '../fields/fields.ts';
+import type { DrawnField } from '../fields/thicknessField.ts';
+import { thicknessFieldDefines, thicknessFieldSource, thicknessFieldUniforms } from './thicknessFieldSource.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
@@ -43,12 +40,13 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
 }
 
 /**
- * Brings the material up to `s`: `table` for the table mode, `environmentMap` the texture of an
- * HDR `s.env` (the caller shows `sky` until it has arrived).
+ * Brings the material up to `s`, its field as `field` draws it (the frame's): `table` for the table
+ * mode, `environmentMap` the texture of an HDR `s.env` (the caller shows `sky` until it has arrived).
  */
 export function updateBubbleUniforms(
   m: ShaderMaterial,
   s: FilmSettings,
+  field: DrawnField<FieldDerived>,
   q: FilmQuality,
   table: FilmTableBinding | null,
   displayIsP3: boolean,
@@ -57,7 +55,7 @@ export function updateBubbleUniforms(
   const u = m.uniforms;
   setDefines(m, bubbleDefines(s, q));
   updateFilmColorUniforms(m, s, q, table);
-  updateThicknessFieldUniforms(u, s);
+  updateFieldUniforms(u, s, field);
   updateEnvironmentUniforms(m, s, environmentMap);
   (u.uXyzToLinearDisplay!.value as Matrix3).set(...(displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB));
 }

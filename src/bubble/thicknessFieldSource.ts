@@ -1,4 +1,4 @@
-import { FIELDS, type FieldName, type FieldSettings, THICKNESS_FIELDS } from '../fields/fields.ts';
+import { FIELDS, type FieldName, THICKNESS_FIELDS } from '../fields/fields.ts';
 import type { FieldUniforms } from '../fields/thicknessField.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
@@ -8,7 +8,7 @@ import { flowFilmDefines } from '../flow/flowTexels.ts';
  * The thickness fields as a shader sees them: every registered field's GLSL under its named
  * `#if` (thicknessField.glsl, made from the registry by shaderSource.ts), so a program holds the
  * one that TFC_THICKNESS_FIELD selects (`tfcThicknessAt`), and the uniforms of all of them, set
- * by the selected field's own update.
+ * by the selected field's own update (fields.ts's updateFieldUniforms).
  */
 export const thicknessFieldSource = (): string => shaderSource('thicknessField.glsl');
 
@@ -20,7 +20,3 @@ export const thicknessFieldDefines = (s: { readonly field: FieldName }): Record<
 
 export const thicknessFieldUniforms = (): FieldUniforms =>
   Object.assign({}, ...FIELDS.map((name) => THICKNESS_FIELDS[name].uniforms())) as FieldUniforms;
-
-export function updateThicknessFieldUniforms(u: FieldUniforms, s: FieldSettings & { readonly field: FieldName }): void {
-  THICKNESS_FIELDS[s.field].update(u, s);
-}

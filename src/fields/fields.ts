@@ -1,7 +1,15 @@
 import { drainageField } from './drainageField.ts';
 import { flowField } from './flowField.ts';
 import { swirlField } from './swirlField.ts';
-import type { FieldSetting, SettingValues, SharedFieldSettings, Vec3 } from './thicknessField.ts';
+import type {
+  DrawnField,
+  FieldSetting,
+  FieldUniforms,
+  SettingValues,
+  SharedFieldSettings,
+  ThicknessField,
+  Vec3,
+} from './thicknessField.ts';
 import { uniformField } from './uniformField.ts';
 
 /**
@@ -59,6 +67,32 @@ export const settingApplies = (key: string, name: FieldName): boolean =>
 export const thicknessAt = (p: Vec3, s: FieldSettings & { readonly field: FieldName }): number =>
   THICKNESS_FIELDS[s.field].thicknessAt(p, s);
 
+/** What a field derives of the settings (its `derive`): null for one that derives nothing. */
+type DerivedOf<F> = F extends ThicknessField<infer _R, infer _E, infer D> ? D : never;
+/** What the fields `K` derive of the settings: the flowing film's parameters; null for the others. */
+export type FieldDerived<K extends FieldName = FieldName> = DerivedOf<(typeof THICKNESS_FIELDS)[K]>;
+
+/** A registered field as the functions below call it, for the settings of any field (its own are among them). */
+interface AnyField {
+  derive?(s: FieldSettings): FieldDerived;
+  maxThicknessNm(s: FieldSettings, derived: FieldDerived): number;
+  update(u: FieldUniforms, s: FieldSettings, drawn: DrawnField<FieldDerived>): void;
+}
+const fieldOf = (name: FieldName): AnyField => THICKNESS_FIELDS[name];
+
+/** The field `s.field` as a frame draws it: what it derives of the settings, once, and the largest thickness it reaches. */
+export function drawnField(s: FieldSettings & { readonly field: FieldName }): DrawnField<FieldDerived> {
+  const field = fieldOf(s.field);
+  const derived = field.derive?.(s) ?? null;
+  return { derived, maxThicknessNm: field.maxThicknessNm(s, derived) };
+}
+
+/** Sets the uniforms of the field `s.field` to the settings as `drawn` (drawnField's) draws it. */
+export const updateFieldUniforms = (
+  u: FieldUniforms,
+  s: FieldSettings & { readonly field: FieldName },
+  drawn: DrawnField<FieldDerived>,
+): void => fieldOf(s.field).update(u, s, drawn);
+
 /** The largest thickness the field reaches, which the film table must cover. */
-export const maxFieldThicknessNm = (s: FieldSettings & { readonly field: FieldName }): number =>
-  THICKNESS_FIELDS[s.field].maxThicknessNm(s);
+export const maxFieldThicknessNm = (s: FieldSettings & { readonly field: FieldName }): number => drawnField(s).maxThicknessNm;

@@ -90,8 +90,7 @@ export const coarseStartFilm = (seed: number): ReturnType<typeof initialFilm> =>
  * resting profile h̄ (a/sinh a) e^(−a cos θ), a = g/M: docs/flow.md#the-stationary-film), times
  * TABLE_MARGIN, within the film stack's domain.
  */
-function flowMaxNm(s: FlowSettings): number {
-  const p = flowParametersOf(s);
+function flowMaxNm(p: FlowParameters): number {
   const numbers = flowNumbers(p);
   const a = numbers.gravity / numbers.marangoni;
   const settledBottom = (2 * a) / -Math.expm1(-2 * a);
@@ -116,17 +115,19 @@ export const flowField = thicknessField({
     uFlowGridN: { value: 1 },
     uCubeFaces: { value: Float32Array.from(cubeFaceColumns()) },
   }),
-  update: (u, s) => {
-    u.uThicknessNm!.value = flowParametersOf(s).thicknessNm;
-    u.uFlowMaxThicknessNm!.value = flowMaxNm(s);
+  derive: flowParametersOf,
+  update: (u, _, drawn) => {
+    u.uThicknessNm!.value = drawn.derived.thicknessNm;
+    u.uFlowMaxThicknessNm!.value = drawn.maxThicknessNm;
   },
   thicknessAt: (p, s) => {
-    const { gridN, seed, thicknessNm } = flowParametersOf(s);
+    const parameters = flowParametersOf(s);
+    const { gridN, seed, thicknessNm } = parameters;
     const out = new Float64Array(1);
     paddedSampler(cubeSphereHalo(cubeSphereGrid(gridN)), 1)(startFilm(gridN, seed).padded, ...flowDirection(p), out);
-    return Math.min(flowMaxNm(s), Math.max(0, thicknessNm * out[0]!));
+    return Math.min(flowMaxNm(parameters), Math.max(0, thicknessNm * out[0]!));
   },
-  maxThicknessNm: flowMaxNm,
+  maxThicknessNm: (_, parameters) => flowMaxNm(parameters),
   animates: true,
   evolves: true,
 });

@@ -62,13 +62,23 @@ export type FieldInput<R extends FieldSettingRows> = SharedFieldSettings & Setti
 export type FieldUniforms = Record<string, { value: unknown }>;
 
 /**
+ * A field as a frame draws it (fields.ts's drawnField, once per frame): what the field derives of
+ * the settings (its `derive`; null for a field that derives nothing) and the largest thickness it
+ * reaches, which the film table covers. Its uniforms' update and its simulation take these.
+ */
+export interface DrawnField<D> {
+  readonly derived: D;
+  readonly maxThicknessNm: number;
+}
+
+/**
  * A film thickness field over the bubble: one TypeScript module and its GLSL twin (the same
  * name in shaders/fields/), registered once in src/fields/fields.ts. The module declares its own
- * settings (the schema's rows and the settings' members follow) and owns its uniforms, their update
- * per frame, its thickness lookup, the largest thickness it reaches (which the film table must
- * cover), whether it changes with time and whether its film evolves.
+ * settings (the schema's rows and the settings' members follow) and owns what it derives of them
+ * once a frame, its uniforms, their update per frame, its thickness lookup, the largest thickness
+ * it reaches (which the film table must cover), whether it changes with time and whether its film evolves.
  */
-export interface ThicknessField<R extends FieldSettingRows, E extends boolean> {
+export interface ThicknessField<R extends FieldSettingRows, E extends boolean, D = null> {
   /** Its GLSL file, which defines `float tfcThicknessAt(vec3 p)` and declares the uniforms below. */
   readonly glsl: string;
   /**
@@ -80,12 +90,17 @@ export interface ThicknessField<R extends FieldSettingRows, E extends boolean> {
   readonly reads: readonly (keyof SharedFieldSettings)[];
   /** Its uniforms, with placeholder values. */
   readonly uniforms: () => FieldUniforms;
-  /** Sets its uniforms to the settings (each frame). */
-  readonly update: (u: FieldUniforms, s: FieldInput<R>) => void;
+  /**
+   * What it derives of the settings, once for a frame (its range, its uniforms and its simulation
+   * take it: the flowing film's parameters); none (null) if absent.
+   */
+  readonly derive?: (s: FieldInput<R>) => D;
+  /** Sets its uniforms to the settings as the frame draws the field (each frame). */
+  readonly update: (u: FieldUniforms, s: FieldInput<R>, drawn: DrawnField<D>) => void;
   /** The thickness in nm at `p` (the twin of its GLSL `tfcThicknessAt`; an evolving field's film at its start). */
   readonly thicknessAt: (p: Vec3, s: FieldInput<R>) => number;
   /** The largest thickness it reaches, in nm, at least 1 (the field is clamped to the domain's 20 µm). */
-  readonly maxThicknessNm: (s: FieldInput<R>) => number;
+  readonly maxThicknessNm: (s: FieldInput<R>, derived: D) => number;
   /** Whether it changes with time (the view animates only such a field). */
   readonly animates: boolean;
   /**
@@ -97,7 +112,9 @@ export interface ThicknessField<R extends FieldSettingRows, E extends boolean> {
 }
 
 /** A field as its module declares it: its settings' types follow from `settings`. */
-export const thicknessField = <R extends FieldSettingRows, E extends boolean>(field: ThicknessField<R, E>): ThicknessField<R, E> => field;
+export const thicknessField = <R extends FieldSettingRows, E extends boolean, D = null>(
+  field: ThicknessField<R, E, D>,
+): ThicknessField<R, E, D> => field;
 
 /** The grid an evolving film is simulated on: cells per side (of a cube face) and the fixed step in film seconds. */
 export interface SimulationGrid {
@@ -105,16 +122,17 @@ export interface SimulationGrid {
   readonly stepSeconds: number;
 }
 
-/** The simulation an evolving field's film lives in, kept by the view while it shows the field. */
-export interface FieldState {
+/** The simulation an evolving field's film lives in, kept by the view while it shows the field; `D`: what the field derives of the settings (its `derive`). */
+export interface FieldState<D = unknown> {
   /**
-   * Brings the film to the settings' time by at most `maxSteps` fixed steps (from its start if its
+   * Brings the film of the settings and of what the field derives of them (`derived`, the
+   * frame's) to the settings' time by at most `maxSteps` fixed steps (from its start if its
    * parameters changed or the time went back) and points the uniforms at it; returns whether it
    * reached that time. Nothing runs when it is there already. With a finite `maxSteps` (an
    * animating app's frame) a film made anew is shown at its start first, its steps beginning in a
    * later frame; with Infinity (a frame that must show the time) it reaches the time.
    */
-  advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean;
+  advance(u: FieldUniforms, s: FieldSettings, derived: D, maxSteps: number): boolean;
   /** The settings' time (s) its film shows: the last advance's, or less while the film is behind it. */
   readonly timeSeconds: number;
   /**

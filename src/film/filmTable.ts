@@ -1,5 +1,4 @@
 import type { ShaderMaterial, WebGLRenderTarget, WebGLRenderer } from 'three';
-import { maxFieldThicknessNm } from '../fields/fields.ts';
 import type { FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import { followsField } from '../physics/filmLayers.ts';
@@ -10,12 +9,13 @@ import { FilmTablePass, tableTarget } from './filmTablePass.ts';
 import { ProgressiveTableBuild } from './progressiveTableBuild.ts';
 
 /**
- * What the table depends on; anything else (the field's animation, exposure, space) leaves it alone:
- * a stack of films in place of nFilm, and the field's range only where the film follows the field.
+ * What the table of `s` over thicknesses up to `maxThicknessNm` (the field's range) depends on;
+ * anything else (the field's animation, exposure, space) leaves it alone: a stack of films in place
+ * of nFilm, and the range only where the film follows the field.
  */
-export function tableKey(s: FilmSettings & StackedSettings): string {
+export function tableKey(s: FilmSettings & StackedSettings, maxThicknessNm: number): string {
   const films = filmLayersOf(s);
-  const range = followsField(films) ? maxFieldThicknessNm(s) : null;
+  const range = followsField(films) ? maxThicknessNm : null;
   return JSON.stringify([s.nOutside, films, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
 }
 
@@ -64,17 +64,18 @@ export class FilmTable {
   }
 
   /**
-   * Brings the table up to date with the settings: at once, or if `quick` by one step (a coarse
-   * table for new settings, else the next band of the full one); returns whether what `bind` binds changed.
+   * Brings the table up to date with the settings over thicknesses up to `maxThicknessNm` (the
+   * field's range, as the frame draws it: fields.ts's drawnField): at once, or if `quick` by one step
+   * (a coarse table for new settings, else the next band of the full one); returns whether what `bind` binds changed.
    */
-  update(renderer: WebGLRenderer, s: FilmSettings, quick = false): boolean {
-    const key = tableKey(s);
+  update(renderer: WebGLRenderer, s: FilmSettings, maxThicknessNm: number, quick = false): boolean {
+    const key = tableKey(s, maxThicknessNm);
     this.waiting = false;
     this.build.poll();
     if (!quick) {
       this.build.stop();
       if (key === this.shown.key && !this.shown.coarse) return false;
-      const grid = this.pass.fullGrid(s);
+      const grid = this.pass.fullGrid(s, maxThicknessNm);
       this.pass.draw(renderer, s, this.target, grid, null);
       this.pass.releaseLight();
       this.shown = { key, coarse: false, grid };
@@ -82,7 +83,7 @@ export class FilmTable {
     }
     if (key !== this.shown.key) {
       // A table shown (the first is not waited for) stays until what it needs is at hand.
-      const coarse = this.build.begin(renderer, s, this.coarseTarget, this.shown.key !== '');
+      const coarse = this.build.begin(renderer, s, maxThicknessNm, this.coarseTarget, this.shown.key !== '');
       this.waiting = coarse === null;
       if (coarse) this.shown = { key, coarse: true, grid: coarse };
       return coarse !== null;

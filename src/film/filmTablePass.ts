@@ -2,7 +2,6 @@ import { type DataTexture, FloatType, HalfFloatType, LinearFilter, RGBAFormat, t
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { enumCode } from '../gpu/enumDefines.ts';
 import { FullscreenPass } from '../gpu/fullscreenPass.ts';
-import { maxFieldThicknessNm } from '../fields/fields.ts';
 import type { FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import { type FilmTableLayout, filmTableWidth } from '../settings/filmTableLayout.ts';
@@ -58,13 +57,12 @@ export class FilmTablePass {
   }
 
   /**
-   * The full grid for the settings: its width follows the thickness range and the film's index (a
-   * stack's: the sum of its field-following films'). A stack that does not follow the field is the
-   * same at every thickness: two equal columns, which any lookup reads alike.
+   * The full grid for the settings over thicknesses up to `maxThicknessNm`: its width follows that
+   * range and the film's index (a stack's: the sum of its field-following films'). A stack that does
+   * not follow the field is the same at every thickness: two equal columns, which any lookup reads alike.
    */
-  fullGrid(s: FilmSettings & StackedSettings): FilmTableGrid {
+  fullGrid(s: FilmSettings & StackedSettings, maxThicknessNm: number): FilmTableGrid {
     const layout = this.quality.table;
-    const maxThicknessNm = maxFieldThicknessNm(s);
     const index = fillReads(s, 'stack') ? stackFieldIndex(s.layers ?? [], this.programs.bins(s)) : filmIndexMax(s.nFilm);
     const width = index === null ? 2 : filmTableWidth(layout, maxThicknessNm, index);
     return { width, rows: layout.rows, maxThicknessNm };

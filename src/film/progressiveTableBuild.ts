@@ -35,12 +35,18 @@ export class ProgressiveTableBuild {
   }
 
   /**
-   * Starts building `s`: draws its coarse grid into `target` and returns it; or, if `mayWait` and
+   * Starts building `s` over thicknesses up to `maxThicknessNm`: draws its coarse grid into `target` and returns it; or, if `mayWait` and
    * what Web Workers compute for it (the light's transform, a dispersive film's row terms for both
    * grids) is not at hand yet, draws nothing and returns null.
    */
-  begin(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, mayWait: boolean): FilmTableGrid | null {
-    const full = this.pass.fullGrid(s);
+  begin(
+    renderer: WebGLRenderer,
+    s: FilmSettings,
+    maxThicknessNm: number,
+    target: WebGLRenderTarget,
+    mayWait: boolean,
+  ): FilmTableGrid | null {
+    const full = this.pass.fullGrid(s, maxThicknessNm);
     const divisor = this.budget.coarseDivisor(passKind(s), full.width * 2 * full.rows);
     const grid = {
       width: Math.max(2, Math.ceil(full.width / divisor)),

@@ -1,9 +1,9 @@
 import type { DataTexture, WebGLRenderer } from 'three';
-import { COARSE_START_GRID_N, coarseStartFilm, flowDirection, flowParametersOf } from '../fields/flowField.ts';
+import { COARSE_START_GRID_N, coarseStartFilm, flowDirection } from '../fields/flowField.ts';
 import type { FieldSettings } from '../fields/fields.ts';
 import type { FieldState, FieldUniforms, SimulationGrid, Vec3 } from '../fields/thicknessField.ts';
 import { cubeSphereGrid } from '../physics/flow/cubeSphereGrid.ts';
-import type { FlowParameters } from '../physics/flow/flowParameters.ts';
+import { FLOW_PARAMETERS, type FlowParameters } from '../physics/flow/flowParameters.ts';
 import { GpuFilmSimulation } from './gpuFilmSimulation.ts';
 import { paddedStartTexture } from './paddedStart.ts';
 
@@ -14,6 +14,14 @@ const CALM: Vec3 = [0, 0, 0];
 
 /** Where `finish` reads its texel (the film's targets are RGBA float). */
 const TEXEL = new Float32Array(4);
+
+/** What a simulation is made of: the flow's parameters and whether a new bubble follows a burst. */
+interface FilmMade {
+  readonly parameters: FlowParameters;
+  readonly renew: boolean;
+}
+const sameFilm = (a: FilmMade | null, b: FilmMade): boolean =>
+  a !== null && a.renew === b.renew && FLOW_PARAMETERS.every((r) => a.parameters[r.key] === b.parameters[r.key]);
 
 /** A relative slack so that k·Δt film seconds take k steps despite rounding (the twin's advanceFilm's). */
 const STEP_SLACK = 1e-9;
@@ -27,9 +35,10 @@ const STEP_SLACK = 1e-9;
  * coarse grid (COARSE_START_GRID_N, cheap to make) and makes its simulation in the next frame, so
  * the first frame of a page costs little more than the bubble's own.
  */
-export class FlowFieldState implements FieldState {
+export class FlowFieldState implements FieldState<FlowParameters> {
   private simulation: GpuFilmSimulation | null = null;
-  private key = '';
+  /** What the film shown is made of (null: none). */
+  private film: FilmMade | null = null;
   /** The start on the coarse grid, shown in the frame before a simulation is made. */
   private preview: DataTexture | null = null;
   /** The time shown, in the settings' seconds. */
@@ -56,15 +65,15 @@ export class FlowFieldState implements FieldState {
     if (this.simulation) this.renderer.readRenderTargetPixels(this.simulation.stateTargets.film, 0, 0, 1, 1, TEXEL);
   }
 
-  advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): boolean {
-    const parameters = flowParametersOf(s);
-    const key = JSON.stringify([parameters, s.renew]);
+  advance(u: FieldUniforms, s: FieldSettings, parameters: FlowParameters, maxSteps: number): boolean {
+    const film: FilmMade = { parameters, renew: s.renew };
+    const changed = !sameFilm(this.film, film);
     const shownFirst = Number.isFinite(maxSteps);
-    if (key !== this.key && shownFirst) {
+    if (changed && shownFirst) {
       // A new film in an animating frame: its start on the coarse grid now, its simulation in the next frame.
       this.simulation?.dispose();
       this.simulation = null;
-      this.key = key;
+      this.film = film;
       this.preview?.dispose();
       this.preview = paddedStartTexture(cubeSphereGrid(COARSE_START_GRID_N), coarseStartFilm(parameters.seed));
       u.uFlowFilm!.value = this.preview;
@@ -72,10 +81,10 @@ export class FlowFieldState implements FieldState {
       this.timeSeconds = 0;
       return false;
     }
-    const made = !this.simulation || key !== this.key;
-    if (made) this.make(parameters, s.renew, key);
+    const made = !this.simulation || changed;
+    if (made) this.make(film);
     const sim = this.simulation!;
-    const wanted = Math.floor(((s.timeSeconds * s.simSpeed) / sim.stepSeconds) * (1 + STEP_SLACK));
+    const wanted = Math.floor(((s.timeSeconds * parameters.simSpeed) / sim.stepSeconds) * (1 + STEP_SLACK));
     if (wanted < sim.steps) {
       // The film starts again: a blow still under way was on the film given up, not on its start.
       sim.reset();
@@ -91,23 +100,22 @@ export class FlowFieldState implements FieldState {
     u.uFlowGridN!.value = sim.grid.n;
     const reached = sim.steps === wanted;
     // Short of the time: the time of the steps taken, which gives back exactly these steps.
-    this.timeSeconds = reached ? s.timeSeconds : (sim.steps * sim.stepSeconds) / s.simSpeed;
+    this.timeSeconds = reached ? s.timeSeconds : (sim.steps * sim.stepSeconds) / parameters.simSpeed;
     return reached;
   }
 
   /**
-   * A simulation of `parameters` at its start, for the settings' `key`. (Its programs compile in
-   * the frame of its first steps, not with three's compileAsync: that one's polling outlives a lost
-   * context and queries the restored one with names it no longer has.)
+   * A simulation of `film` at its start. (Its programs compile in the frame of its first steps, not
+   * with three's compileAsync: that one's polling outlives a lost context and queries the restored
+   * one with names it no longer has.)
    */
-  private make(parameters: FlowParameters, renew: boolean, key: string): void {
+  private make(film: FilmMade): void {
     this.simulation?.dispose();
     // The coarse start is drawn no more (the simulation draws its own start until it steps).
     this.preview?.dispose();
     this.preview = null;
-    const sim = new GpuFilmSimulation(this.renderer, parameters, { renew });
-    this.simulation = sim;
-    this.key = key;
+    this.simulation = new GpuFilmSimulation(this.renderer, film.parameters, { renew: film.renew });
+    this.film = film;
   }
 
   blow(point: Vec3, velocityMps: Vec3): void {
@@ -143,6 +151,6 @@ export class FlowFieldState implements FieldState {
     this.preview = null;
     this.simulation?.dispose();
     this.simulation = null;
-    this.key = '';
+    this.film = null;
   }
 }

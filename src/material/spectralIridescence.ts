@@ -3,6 +3,7 @@ import { filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } 
 import { filmStackUniforms } from '../film/filmStack.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { FilmTable, tableKey } from '../film/filmTable.ts';
+import { maxFieldThicknessNm } from '../fields/fields.ts';
 import { methodReads } from '../methods/methods.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import {
@@ -37,11 +38,12 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
   );
   if (s.mode !== o.mode) warnOnce(film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
   if (methodReads(s.mode, 'table')) {
-    const table = tables.hold(JSON.stringify({ quality: o.quality, table: tableKey(s) }), film);
+    const maxThicknessNm = maxFieldThicknessNm(s);
+    const table = tables.hold(JSON.stringify({ quality: o.quality, table: tableKey(s, maxThicknessNm) }), film);
     const restores = restoresOf(renderer);
     if (tableRestores.get(table) !== restores) table.invalidate();
     tableRestores.set(table, restores);
-    table.update(renderer, s);
+    table.update(renderer, s, maxThicknessNm);
     film.table = table;
   } else if (film.table) {
     tables.release(film);

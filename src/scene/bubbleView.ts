@@ -116,11 +116,11 @@ export class BubbleView {
   show(frame: DrawnFrame): void {
     this.frame = frame;
     if (frame.fetch) this.environments.fetch(frame.fetch);
-    this.draw(frame.film);
+    this.draw(frame.film, frame.field);
   }
 
-  /** Sets the materials to the film drawn. */
-  private draw(s: FilmSettings): void {
+  /** Sets the materials to the film drawn (its field as the frame draws it). */
+  private draw(s: FilmSettings, field: DrawnFrame['field']): void {
     this.settings = s;
     this.film.show(s.field);
     const map = this.environments.map(s.env);
@@ -132,7 +132,7 @@ export class BubbleView {
     }
     this.background.visible = environmentKind(s.env) !== 'none';
     updateBackgroundMaterial(this.background.material, s, map);
-    updateBubbleUniforms(this.bubble.material, s, this.quality, this.drawsTable ? this.table : null, this.output.displayIsP3, map);
+    updateBubbleUniforms(this.bubble.material, s, field, this.quality, this.drawsTable ? this.table : null, this.output.displayIsP3, map);
   }
 
   /**
@@ -149,9 +149,10 @@ export class BubbleView {
     await this.programs.compile(this.output.programKey, this.filmProbe);
   }
 
-  /** Rebuilds the table if a parameter it depends on changed since it was drawn (coarsely first if `quick`). */
+  /** Rebuilds the table if a parameter it depends on or its range (the frame's) changed since it was drawn (coarsely first if `quick`). */
   private syncTable(quick = false): void {
-    if (!this.drawsTable || !this.table.update(this.renderer, this.settings, quick)) return;
+    const range = this.frame?.field.maxThicknessNm;
+    if (range === undefined || !this.drawsTable || !this.table.update(this.renderer, this.settings, range, quick)) return;
     this.table.bind(this.bubble.material.uniforms);
   }
 
@@ -194,20 +195,20 @@ export class BubbleView {
     if (keeps) return (this.report = { ...NOT_DRAWN, film: this.film.reading });
     this.output.setSpace(r);
     // A frame that does not wait draws the light asked for, its transform computed here.
-    if (!quick && frame.lightPending) this.draw({ ...frame.film, ...frame.lightPending });
+    if (!quick && frame.lightPending) this.draw({ ...frame.film, ...frame.lightPending }, frame.field);
     this.syncTable(quick);
     const uniforms = this.bubble.material.uniforms;
     let cost: FrameReport['cost'] = null;
     if (quick) {
       this.cost.simulate(
-        () => this.film.advance(uniforms, this.settings, frame.stepsPerFrame),
+        () => this.film.advance(uniforms, this.settings, frame.field.derived, frame.stepsPerFrame),
         () => this.film.finish(),
         this.film.reading?.flow?.gridN,
       );
       this.cost.draw(() => r.render(this.scene, this.camera));
       cost = { ...this.cost.take(), settling: this.film.settling };
     } else {
-      this.film.advance(uniforms, this.settings, Infinity);
+      this.film.advance(uniforms, this.settings, frame.field.derived, Infinity);
       r.render(this.scene, this.camera);
     }
     const coarse = (this.drawsTable && this.table.coarse) || (quick && frame.lightPending !== null) || this.programs.busy;

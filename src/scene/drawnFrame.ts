@@ -1,5 +1,6 @@
 import { type HdrEnvironment, STAND_IN_ENVIRONMENT, isHdrEnvironment } from '../environments/environments.ts';
-import { THICKNESS_FIELDS } from '../fields/fields.ts';
+import { type FieldDerived, THICKNESS_FIELDS, drawnField } from '../fields/fields.ts';
+import type { DrawnField } from '../fields/thicknessField.ts';
 import { methodReads } from '../methods/methods.ts';
 import { type DrawnNotice, drawnFilmMethod } from '../settings/drawnFilm.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
@@ -55,6 +56,12 @@ export interface DrawnFrame {
   readonly asked: ViewSettings;
   /** The film's settings as drawn: the method, environment, light and governed knobs substituted where they must be. */
   readonly film: FilmSettings;
+  /**
+   * The film's field as drawn, derived once of `film`: what the field derives (the flowing film's
+   * parameters, the governor's grid in them; null for a field that derives nothing), which its
+   * uniforms and its simulation take, and the largest thickness it reaches: the film table's range.
+   */
+  readonly field: DrawnField<FieldDerived>;
   /** The drawing buffer's pixels per CSS pixel. */
   readonly pixelRatio: number;
   /** The most steps the flowing film takes in an app frame (Infinity: all the time asks for). */
@@ -117,8 +124,9 @@ function governedOf(
  * The one place where what is asked becomes what is drawn (docs/architecture.md#what-is-asked-and-what-is-drawn):
  * the method (drawnFilmMethod), the environment (the stand-in until its map arrives), the light
  * (the one shown until the new one's transform arrives), the flowing film's grid, steps and the
- * pixel ratio (the governor's, or the device's within MAX_PIXEL_RATIO). A pure function of the
- * settings asked and the offers.
+ * pixel ratio (the governor's, or the device's within MAX_PIXEL_RATIO); and, derived once of the
+ * film drawn, its field's values (the flow's parameters) and the table's range. A pure function of
+ * the settings asked and the offers.
  */
 export function resolveFrame(asked: ViewSettings, offers: FrameOffers): DrawnFrame {
   const governed = governedOf(asked, offers);
@@ -134,6 +142,7 @@ export function resolveFrame(asked: ViewSettings, offers: FrameOffers): DrawnFra
   return Object.freeze({
     asked,
     film,
+    field: Object.freeze(drawnField(film)),
     pixelRatio: governed.pixelRatio,
     stepsPerFrame: governed.stepsPerFrame,
     keepsFrameWhileCompiling: offers.compilesInParallel,

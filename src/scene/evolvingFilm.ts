@@ -1,6 +1,6 @@
 import type { WebGLRenderer } from 'three';
 import { createFieldState } from '../bubble/fieldStates.ts';
-import type { FieldName, FieldSettings } from '../fields/fields.ts';
+import type { FieldDerived, FieldName, FieldSettings } from '../fields/fields.ts';
 import type { FieldUniforms, FieldState, SimulationGrid, Vec3 } from '../fields/thicknessField.ts';
 
 /** An evolving film as a frame drew it: the settings' time it shows (s), whether it is short of theirs, and its simulation's grid, step and steps (null before it is made). */
@@ -16,7 +16,7 @@ export interface EvolvingFilmReading {
  * the field's FieldState.
  */
 export class EvolvingFilm {
-  private current: { readonly field: FieldName; readonly state: FieldState } | null = null;
+  private current: { readonly field: FieldName; readonly state: FieldState<FieldDerived> } | null = null;
   /** Whether the last advance left the film short of the settings' time (more frames bring it there). */
   private behind = false;
   /**
@@ -56,11 +56,11 @@ export class EvolvingFilm {
     this.current?.state.finish();
   }
 
-  /** Brings the film towards the settings' time by at most `maxSteps` steps (FieldState.advance); returns the steps taken. */
-  advance(u: FieldUniforms, s: FieldSettings, maxSteps: number): number {
+  /** Brings the film of the settings and of what its field derives of them (the frame's) towards the settings' time by at most `maxSteps` steps (FieldState.advance); returns the steps taken. */
+  advance(u: FieldUniforms, s: FieldSettings, derived: FieldDerived, maxSteps: number): number {
     if (!this.current) return 0;
     const before = this.current.state.steps;
-    this.behind = !this.current.state.advance(u, s, maxSteps);
+    this.behind = !this.current.state.advance(u, s, derived, maxSteps);
     const after = this.current.state.steps;
     // A film made anew or started again counts its steps from its start.
     const steps = after >= before ? after - before : after;

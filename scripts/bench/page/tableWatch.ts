@@ -27,9 +27,9 @@ export class TableWatch {
 
   constructor(private readonly table: FilmTable) {
     const update = table.update.bind(table);
-    table.update = (renderer, s, quick) => {
+    table.update = (renderer, s, maxThicknessNm, quick) => {
       const started = performance.now();
-      const changed = update(renderer, s, quick);
+      const changed = update(renderer, s, maxThicknessNm, quick);
       if (!changed || table.coarse) return changed;
       this.builds++;
       if (!quick && this.firstBuildMs === null) {

@@ -5,14 +5,14 @@
  */
 import { FULLSCREEN_VERTEX } from '../../../src/gpu/fullscreenPass.ts';
 import { ShaderMaterial, type WebGLRenderer } from 'three';
-import type { FieldName, FieldSettings as ThicknessFieldSettings } from '../../../src/fields/fields.ts';
-import { createFieldState } from '../../../src/bubble/fieldStates.ts';
 import {
-  thicknessFieldDefines,
-  thicknessFieldSource,
-  thicknessFieldUniforms,
-  updateThicknessFieldUniforms,
-} from '../../../src/bubble/thicknessFieldSource.ts';
+  type FieldName,
+  type FieldSettings as ThicknessFieldSettings,
+  drawnField,
+  updateFieldUniforms,
+} from '../../../src/fields/fields.ts';
+import { createFieldState } from '../../../src/bubble/fieldStates.ts';
+import { thicknessFieldDefines, thicknessFieldSource, thicknessFieldUniforms } from '../../../src/bubble/thicknessFieldSource.ts';
 import { floatRowTexture, renderFloatRow } from '../../../src/gpu/floatRow.ts';
 
 export type FieldSettings = ThicknessFieldSettings & { readonly field: FieldName };
@@ -36,10 +36,11 @@ export function renderThickness(
     vertexShader: FULLSCREEN_VERTEX,
     fragmentShader: FRAGMENT,
   });
-  updateThicknessFieldUniforms(material.uniforms, s);
+  const field = drawnField(s);
+  updateFieldUniforms(material.uniforms, s, field);
   // An evolving field's film, advanced to the settings' time (at simSpeed 0: its start).
   const state = createFieldState(s.field, renderer);
-  state?.advance(material.uniforms, s, Infinity);
+  state?.advance(material.uniforms, s, field.derived, Infinity);
   const out = renderFloatRow(renderer, material, points.length);
   state?.dispose();
   texture.dispose();

@@ -7,8 +7,11 @@ import {
   type FieldName,
   type FieldSettings,
   THICKNESS_FIELDS,
+  drawnField,
   fieldReads,
+  maxFieldThicknessNm,
   settingApplies,
+  updateFieldUniforms,
 } from '../../../src/fields/fields.ts';
 import type { FieldSetting, SharedFieldSettings } from '../../../src/fields/thicknessField.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
@@ -50,12 +53,13 @@ const SPHERE_POINTS = Array.from({ length: 400 }, (_, i) => {
   return [r * Math.cos(azimuth), y, r * Math.sin(azimuth)] as const;
 });
 
-/** Everything a field computes from the settings: its thickness over the sphere, its maximum, its uniforms. */
+/** Everything a field computes from the settings: its thickness over the sphere, what it derives, its maximum, its uniforms. */
 function computed(name: FieldName, s: FieldSettings) {
   const field = THICKNESS_FIELDS[name];
   const uniforms = field.uniforms();
-  field.update(uniforms, s);
-  return { thickness: SPHERE_POINTS.map((p) => field.thicknessAt(p, s)), max: field.maxThicknessNm(s), uniforms };
+  const drawn = drawnField({ ...s, field: name });
+  updateFieldUniforms(uniforms, { ...s, field: name }, drawn);
+  return { thickness: SPHERE_POINTS.map((p) => field.thicknessAt(p, s)), derived: drawn.derived, max: drawn.maxThicknessNm, uniforms };
 }
 
 describe('thickness fields', () => {
@@ -68,7 +72,7 @@ describe('thickness fields', () => {
   it.each(FIELDS)('%s: never thicker than its maximum, at points all over the sphere and over time', (name) => {
     const field = THICKNESS_FIELDS[name];
     for (const s of [DEFAULT_SETTINGS, { ...DEFAULT_SETTINGS, thicknessNm: 3000, thicknessRangeNm: 5000, timeSeconds: 37 }]) {
-      const max = field.maxThicknessNm(s);
+      const max = maxFieldThicknessNm({ ...s, field: name });
       for (const p of SPHERE_POINTS) {
         const d = field.thicknessAt(p, s);
         expect(d).toBeGreaterThanOrEqual(0);

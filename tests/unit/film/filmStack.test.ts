@@ -72,12 +72,13 @@ describe('a stack of films on the GPU', () => {
   it("builds a stack of fixed layers as two equal columns, whatever the field's range, and one that follows the field over it", () => {
     const pass = new FilmTablePass(DEFAULT_FILM_QUALITY);
     const fixed = { ...DEFAULT_SETTINGS, layers: FIXED };
-    expect(pass.fullGrid(fixed).width).toBe(2);
-    expect(tableKey({ ...fixed, thicknessRangeNm: 1200 })).toBe(tableKey(fixed));
+    expect(pass.fullGrid(fixed, 800).width).toBe(2);
+    expect(tableKey(fixed, 1200)).toBe(tableKey(fixed, 800));
     const following = { ...DEFAULT_SETTINGS, layers: FOLLOWING };
-    expect(pass.fullGrid(following).width).toBeGreaterThan(pass.fullGrid({ ...DEFAULT_SETTINGS, layers: [] }).width);
-    expect(tableKey({ ...following, thicknessRangeNm: 1200 })).not.toBe(tableKey(following));
-    expect(tableKey(following)).not.toBe(tableKey(fixed));
+    expect(pass.fullGrid(following, 800).width).toBeGreaterThan(pass.fullGrid({ ...DEFAULT_SETTINGS, layers: [] }, 800).width);
+    expect(pass.fullGrid(following, 1200).width).toBeGreaterThan(pass.fullGrid(following, 800).width);
+    expect(tableKey(following, 1200)).not.toBe(tableKey(following, 800));
+    expect(tableKey(following, 800)).not.toBe(tableKey(fixed, 800));
     pass.dispose();
   });
 });
