@@ -122,4 +122,12 @@ describe('thickness fields', () => {
     // A setting no field reads is not a field's: it applies under every field.
     for (const name of FIELDS) expect(settingApplies('exposure', name)).toBe(true);
   });
+
+  it("the flowing film's uniforms take the thickness and range the frame gives, not derived again of the settings", () => {
+    const uniforms = THICKNESS_FIELDS.flow.uniforms();
+    const drawn = drawnField({ ...DEFAULT_SETTINGS, field: 'flow' });
+    const given = { derived: { ...drawn.derived!, thicknessNm: 321 }, maxThicknessNm: 1234 };
+    updateFieldUniforms(uniforms, { ...DEFAULT_SETTINGS, field: 'flow' }, given);
+    expect([uniforms.uThicknessNm!.value, uniforms.uFlowMaxThicknessNm!.value]).toEqual([321, 1234]);
+  });
 });

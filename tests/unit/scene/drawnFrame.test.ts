@@ -4,9 +4,11 @@
  * the rules' own (docs/architecture.md#what-is-asked-and-what-is-drawn), written out here.
  */
 import { describe, expect, it } from 'vitest';
+import { maxFieldThicknessNm } from '../../../src/fields/fields.ts';
+import { flowParametersOf } from '../../../src/fields/flowField.ts';
 import { type FrameOffers, resolveFrame } from '../../../src/scene/drawnFrame.ts';
 import { parseLayers } from '../../../src/physics/layersText.ts';
-import { DEFAULT_VIEW_SETTINGS, type ViewSettings } from '../../../src/settings/viewParameters.ts';
+import { DEFAULT_VIEW_SETTINGS, type ViewSettings, filmSettingsOf } from '../../../src/settings/viewParameters.ts';
 
 /** A frozen view on a machine that offers everything at once: no governor, nothing loading, every light ready. */
 const OFFERS: FrameOffers = {
@@ -122,5 +124,27 @@ describe('the governor, the device and the flowing film', () => {
     expect(dense.pixelRatio).toBe(2);
     expect(dense.notices).toEqual([{ setting: 'pixelRatio', asked: 'auto', drawn: 2, message: null }]);
     expect(resolveFrame({ ...ASKED, pixelRatio: 3 }, { ...OFFERS, devicePixelRatio: 3 }).pixelRatio).toBe(3);
+  });
+});
+
+describe("the field as drawn: what it derives, once, and the table's range", () => {
+  it("a flowing film's parameters are derived of the film drawn: the governor's grid in them, a frozen view's default grid", () => {
+    const governed = resolveFrame(FLOW, { ...OFFERS, choice: { gridN: 48, pixelRatio: 1, stepsPerFrame: 5 } });
+    expect(governed.field.derived).toEqual(flowParametersOf({ ...filmSettingsOf(FLOW), gridN: 48 }));
+    expect(governed.field.derived).toMatchObject({ gridN: 48, seed: 7, thicknessNm: 600 });
+    // A frozen view: the flow's default grid, 128 (docs/flow.md's table of parameters).
+    expect(resolveFrame({ ...FLOW, animate: false }, OFFERS).field.derived).toMatchObject({ gridN: 128, seed: 7 });
+    // The film table covers the field drawn: its range is the field's largest thickness, above the mean.
+    expect(governed.field.maxThicknessNm).toBe(maxFieldThicknessNm(governed.film));
+    expect(governed.field.maxThicknessNm).toBeGreaterThan(600);
+    expect(Object.isFrozen(governed.field)).toBe(true);
+  });
+
+  it("a field whose film does not evolve derives nothing; a uniform film's table reaches its thickness, a swirl's its field's largest", () => {
+    const uniform = resolveFrame({ ...ASKED, field: 'uniform', thicknessNm: 420 }, OFFERS);
+    expect(uniform.field).toEqual({ derived: null, maxThicknessNm: 420 });
+    const swirl = resolveFrame(ASKED, { ...OFFERS, choice: { gridN: 48, pixelRatio: 1, stepsPerFrame: 5 } });
+    expect(swirl.field.derived).toBeNull();
+    expect(swirl.field.maxThicknessNm).toBe(maxFieldThicknessNm(swirl.film));
   });
 });
