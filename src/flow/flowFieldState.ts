@@ -28,7 +28,8 @@ const STEP_SLACK = 1e-9;
 
 /**
  * The flow field's film (src/fields/flowField.ts) as the view keeps it: a GpuFilmSimulation of the
- * settings' parameters, advanced in whole fixed steps to the film time timeSeconds × simSpeed, so
+ * flow's parameters as the frame derives them (the field's `derive`, flowParametersOf), given to
+ * each advance, advanced in whole fixed steps to the film time timeSeconds × simSpeed, so
  * the same settings give the same film on every load whatever the display rate; made anew from its
  * start when a parameter changes or the time goes back. With the settings' `renew` a new bubble
  * follows a burst (src/flow/renewFilm.ts). An animating frame shows a new film at its start on the

@@ -2,7 +2,6 @@ import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB, xyzToXy } from '../physic
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 import { type FilmSettings } from '../settings/filmSettings.ts';
-import { maxFieldThicknessNm } from '../fields/fields.ts';
 import type { ProbeReading } from '../scene/probe.ts';
 import { drawChromaticityPlot } from './chromaticityPlot.ts';
 import { type ProbedView, downloadName } from './downloadName.ts';
@@ -176,10 +175,11 @@ export class PlotPanel {
   }
 
   /**
-   * Redraws for new settings and a new reading at `probe` (fractions of the view; a null reading:
-   * the probe is off the bubble).
+   * Redraws for new settings, their field's largest thickness (the frame's: the film table's range,
+   * which the scale spans) and a new reading at `probe` (fractions of the view; a null reading: the
+   * probe is off the bubble).
    */
-  update(s: FilmSettings, probe: readonly [number, number], reading: ProbeReading | null, displayIsP3: boolean): void {
+  update(s: FilmSettings, fieldMaxNm: number, probe: readonly [number, number], reading: ProbeReading | null, displayIsP3: boolean): void {
     const show = (f: (typeof FIELDS)[number], text: string) => (this.values.get(f)!.textContent = text);
     this.element.dataset.probe = `${probe.join(',')} ${reading ? 'bubble' : 'miss'}`;
     this.shown = null;
@@ -213,7 +213,7 @@ export class PlotPanel {
     this.stackNote.textContent = stackText;
     this.spectrum.setAttribute('aria-label', [stackText, spectrumLabel(spectrum, this.cat)].filter(Boolean).join(' '));
     this.fillTable();
-    const maxNm = Math.max(MIN_SCALE_NM, maxFieldThicknessNm(s));
+    const maxNm = Math.max(MIN_SCALE_NM, fieldMaxNm);
     this.scalePoint = { thicknessNm: reading.thicknessNm, xyz: c.xyz, rgb8: c.rgb8, maxNm };
     const request = {
       stack,
