@@ -64,7 +64,7 @@ function namePicks(text: string, kind: Kind): string[] {
   // The lists the file declares, by their name.
   const declared = new Map<string, string>();
   for (const m of text.matchAll(/(?:const|let)\s+(\w+)\b[^=;]*=\s*(?:new Set(?:<[^>]*>)?\(\s*)?(\[[^\][]*\])/g)) declared.set(m[1]!, m[2]!);
-  const search = /(?<list>\[[^\][]*\]|\b\w+)(?:\s+as\s+[^()]*?)?\)?\s*\.(?:includes|indexOf|has)\(\s*(?<expr>[\w$.?!\]\[]+)\s*[,)]/g;
+  const search = /(?<list>\[[^\][]*\]|\b\w+)(?:\s+as\s+[^()]*?)?\)?\s*\.(?:includes|indexOf|has)\(\s*(?<expr>[\w$.?!\][]+)\s*[,)]/g;
   for (const m of text.matchAll(search)) {
     const list = m.groups!.list!.startsWith('[') ? m.groups!.list! : (declared.get(m.groups!.list!) ?? '');
     if (holds(m.groups!.expr!) && namesMember(list, kind)) found.push(m[0]);
