@@ -102,7 +102,7 @@ describe('registries', () => {
     expect(codeFiles).toContain('tests/e2e/parity.spec.ts');
   });
 
-  it("a pick added to any scanned file of each folder, outside the kind's home, is found", () => {
+  it("a pick added to a scanned file of each folder, outside the kind's home, is found", () => {
     for (const kind of Object.values(KINDS))
       for (const folder of SCANNED) {
         const file = codeFiles.find((f) => f.startsWith(`${folder}/`) && !kind.home.some((home) => f.startsWith(home)))!;
