@@ -3,6 +3,7 @@
  * demo page) with their expected relative cost, and the time left estimated from the stages done.
  */
 import type { BenchRow } from './rows.ts';
+import { THICKNESS_FIELDS } from '../../src/fields/fields.ts';
 import { FILM_METHOD_REGISTRY, methodReads } from '../../src/methods/methods.ts';
 
 export interface Stage {
@@ -17,8 +18,8 @@ export interface Stage {
  * trimmed to one frame, so even the slowest stays within a few fast rows).
  */
 export function rowCost(row: BenchRow): number {
-  // The flow rows, grid 32 to 128, took 1.3–3 times the floor's time in a full run.
-  if (row.settings.field === 'flow') return 2;
+  // A row whose film evolves steps its simulation each frame: the flow rows, grid 32 to 128, took 1.3–3 times the floor's time in a full run.
+  if (THICKNESS_FIELDS[row.settings.field].evolves) return 2;
   const dispersive = typeof row.settings.nFilm !== 'number';
   const mode = row.settings.mode;
   // A bubble row builds its table at the start: by bins, that build weighs like a slower frame.

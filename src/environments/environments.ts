@@ -35,7 +35,8 @@ export type HdrEnvironment = {
   [K in Environment]: (typeof ENVIRONMENT_REGISTRY)[K] extends { readonly kind: 'map' } ? K : never;
 }[Environment];
 
-export const environmentKind = (env: Environment): EnvironmentKind => ENVIRONMENT_REGISTRY[env].kind;
+/** How `env` is drawn (its type follows the name: the kind of a given environment is known where its name is). */
+export const environmentKind = <E extends Environment>(env: E): (typeof ENVIRONMENT_REGISTRY)[E]['kind'] => ENVIRONMENT_REGISTRY[env].kind;
 export const isHdrEnvironment = (env: Environment): env is HdrEnvironment => environmentKind(env) === 'map';
 export const HDR_ENVIRONMENTS = ENVIRONMENTS.filter(isHdrEnvironment);
 

@@ -5,7 +5,8 @@ import { type Medium, mediumText } from '../../src/physics/medium.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
 import { type ShownEnvironment, environmentRadiance } from '../../src/twins/environment.ts';
 import { loadEnvironmentPixels } from '../../src/bubble/environmentMaps.ts';
-import { type HdrEnvironment, type ToneMapping } from '../../src/settings/filmSettings.ts';
+import { type HdrEnvironment, environmentKind, isHdrEnvironment } from '../../src/environments/environments.ts';
+import type { ToneMapping } from '../../src/settings/filmSettings.ts';
 import { toneMap } from '../../src/twins/toneMapping.ts';
 import { CAMERA_DISTANCE, FOV_DEG } from '../../src/twins/cpuBubbleImage.ts';
 import { MAX_CODE_DIFFERENCE, worstCodeDifference } from './referenceColor.ts';
@@ -40,8 +41,9 @@ for (const c of CASES) {
   test(`a uniform film${over} in ${c.env} (turned ${c.rotationDeg}°, tone mapping ${c.tonemap}, exposure ${c.exposure}) reflects it in the mirror direction${opaque ? '' : ' and shows it behind'}`, async ({
     page,
   }) => {
-    const env: ShownEnvironment =
-      c.env === 'sky' ? { kind: 'sky' } : { kind: 'map', pixels: await loadEnvironmentPixels(c.env), rotationDeg: c.rotationDeg };
+    const env: ShownEnvironment = isHdrEnvironment(c.env)
+      ? { kind: 'map', pixels: await loadEnvironmentPixels(c.env), rotationDeg: c.rotationDeg }
+      : { kind: environmentKind(c.env) };
     await page.goto(
       `/?field=uniform&thickness=${THICKNESS_NM}&env=${c.env}&envRotation=${c.rotationDeg}&tonemap=${c.tonemap}` +
         `&exposure=${c.exposure}&sides=front&animate=0&nInside=${encodeURIComponent(mediumText(c.nInside))}`,
