@@ -139,6 +139,8 @@ export class BubbleApp {
       moveProbe: (probe) => this.change({ ...this.asked, probe }),
       blow: (fx, fy, vxPx, vyPx) => view.blow(fx, fy, vxPx, vyPx),
       blowAtProbe: () => this.blowAtProbe(),
+      burst: (fx, fy) => view.burst(fx, fy),
+      burstAtProbe: () => this.burstAtProbe(),
     });
     const onRestored = () => this.redraw();
     const glCanvas = view.renderer.domElement;
@@ -194,6 +196,11 @@ export class BubbleApp {
     this.parts.view.blow(x, y, 5 * this.parts.surface.clientHeight, 0);
   }
 
+  /** Bursts a flowing film at the probe (P, or the panel's button). */
+  private burstAtProbe(): void {
+    this.parts.view.burst(...this.asked.probe);
+  }
+
   /** Builds the panel anew: closed if the one it replaces was, else as the page's CSS says for its size. */
   private buildControls(): void {
     const { controls } = this.parts;
@@ -205,7 +212,7 @@ export class BubbleApp {
           (s) => this.change(s),
           controls,
           this.cat,
-          () => this.blowAtProbe(),
+          { blow: () => this.blowAtProbe(), burst: () => this.burstAtProbe() },
           () => this.seat.filmTimeText(this.cat, 'governor.line') ?? '',
         )
       : null;

@@ -44,12 +44,16 @@ interface RowParts {
 const options = (cat: Catalogue, key: string, values: readonly string[]): Record<string, string> =>
   Object.fromEntries(values.map((v) => [cat[choiceKey(key, v)] ?? v, v]));
 
+const FLOW_ACTIONS = ['blow', 'burst'] as const;
+/** The flow folder's buttons, each named `panel.<action>`: blow at the probe and burst the film there, what B and P on the bubble do. */
+export type FlowActions = Readonly<Record<(typeof FLOW_ACTIONS)[number], () => void>>;
+
 /**
  * A lil-gui panel over every parameter the schema (VIEW_PARAMETERS) gives a control, grouped in
  * its folders. Sliders span each parameter's whole domain, so the panel cannot produce an invalid
  * setting and reaches every valid one. It shows only what applies to the settings
  * (shownControls.ts), after every change; what it hides keeps its value. `onChange` receives the
- * new settings; `blow`, if given, is the flow folder's button (what B on the bubble does);
+ * new settings; `actions`, if given, are the flow folder's buttons (FlowActions);
  * `filmTime`, if given, the flow folder's read-only line on the film's time and grid as the frame
  * governor keeps them (followed while the panel is shown).
  */
@@ -58,7 +62,7 @@ export function createControlPanel(
   onChange: (s: ViewSettings) => void,
   container?: HTMLElement,
   cat: Catalogue = EN,
-  blow?: () => void,
+  actions?: FlowActions,
   filmTime?: () => string,
 ): GUI {
   const state: Record<string, unknown> = { ...initial };
@@ -91,7 +95,7 @@ export function createControlPanel(
       const parts = addControl(folder, row, state, cat);
       rows.push({ key: row.key, controllers: folder.controllers.slice(before), parts });
     }
-    if (folderName === 'flow' && blow) folder.add({ blow }, 'blow').name(cat['panel.blow']);
+    if (folderName === 'flow' && actions) for (const name of FLOW_ACTIONS) folder.add(actions, name).name(cat[`panel.${name}`]);
     if (folderName === 'flow' && filmTime) {
       // A read-only line followed while shown (lil-gui's listen), never a setting.
       const status = Object.defineProperty({}, 'line', { get: filmTime, set: () => {}, enumerable: true }) as { line: string };

@@ -26,32 +26,38 @@ export interface ProbeInput {
   readonly blow: (fx: number, fy: number, vxPx: number, vyPx: number) => void;
   /** Blows at the probe (the key B). */
   readonly blowAtProbe: () => void;
+  /** Bursts a flowing film at a point (BubbleView.burst): a double-click or double-tap there. */
+  readonly burst: (fx: number, fy: number) => void;
+  /** Bursts it at the probe (the key P). */
+  readonly burstAtProbe: () => void;
 }
 
 /** Listens to the pointer on the surface and the keys on the focusable element; returns what stops listening. */
 export function listenToProbeInput(input: ProbeInput): () => void {
-  const stopPointer = listenToPointer(input);
-  const stopKeys = listenToKeys(input);
-  return () => {
-    stopPointer();
-    stopKeys();
-  };
+  const stops = [listenToPointer(input), listenToDoubleClick(input), listenToKeys(input)];
+  return () => stops.forEach((stop) => stop());
 }
 
-/** Where a pointer event is over `surface`, as fractions of its box. */
-function pointOf(e: PointerEvent, surface: HTMLElement): ViewPoint {
+/** Where a mouse or pointer event is over `surface`, as fractions of its box. */
+function pointOf(e: MouseEvent, surface: HTMLElement): ViewPoint {
   const box = surface.getBoundingClientRect();
   return [(e.clientX - box.left) / box.width, (e.clientY - box.top) / box.height];
 }
+
+/** Whether a point is on the view. */
+const inView = (point: ViewPoint): boolean => point.every((v) => v >= 0 && v <= 1);
+
+/** Whether an event is on the panel (not on the bubble). */
+const onPanel = (e: Event, controls: HTMLElement | null): boolean => e.target instanceof Node && (controls?.contains(e.target) ?? false);
 
 /** A primary press moves the probe and captures the pointer; a drag moves it along and blows on a flowing film as fast as it moves. */
 function listenToPointer({ surface, controls, moveProbe, blow }: ProbeInput): () => void {
   const probeAt = (e: PointerEvent) => {
     const probe = pointOf(e, surface);
-    if (probe.every((v) => v >= 0 && v <= 1)) moveProbe(probe);
+    if (inView(probe)) moveProbe(probe);
   };
   const onPress = (e: PointerEvent) => {
-    if (!e.isPrimary || e.button !== 0 || (e.target instanceof Node && controls?.contains(e.target))) return;
+    if (!e.isPrimary || e.button !== 0 || onPanel(e, controls)) return;
     surface.setPointerCapture(e.pointerId);
     probeAt(e);
   };
@@ -75,8 +81,28 @@ function listenToPointer({ surface, controls, moveProbe, blow }: ProbeInput): ()
   };
 }
 
-/** Makes the focusable element a labelled application whose arrow keys move the probe (within the view) and whose B blows at it. */
-function listenToKeys({ focusable, label, probe, moveProbe, blowAtProbe }: ProbeInput): () => void {
+/** A double-click or double-tap with the primary button bursts a flowing film there (its presses have moved the probe there). */
+function listenToDoubleClick({ surface, controls, burst }: ProbeInput): () => void {
+  const onDoubleClick = (e: MouseEvent) => {
+    const point = pointOf(e, surface);
+    if (e.button === 0 && !onPanel(e, controls) && inView(point)) burst(...point);
+  };
+  surface.addEventListener('dblclick', onDoubleClick);
+  return () => surface.removeEventListener('dblclick', onDoubleClick);
+}
+
+/** The keys that act on a flowing film at the probe, each with what it does. */
+const FILM_KEYS = new Map<string, 'blowAtProbe' | 'burstAtProbe'>([
+  ['b', 'blowAtProbe'],
+  ['p', 'burstAtProbe'],
+]);
+
+/**
+ * Makes the focusable element a labelled application whose arrow keys move the probe (within the
+ * view), whose B blows at it and whose P bursts the film there (FILM_KEYS; either case, no modifier).
+ */
+function listenToKeys(input: ProbeInput): () => void {
+  const { focusable, label, probe, moveProbe } = input;
   focusable.tabIndex = 0;
   focusable.classList.add('tfb-focusable');
   focusable.setAttribute('role', 'application');
@@ -84,8 +110,9 @@ function listenToKeys({ focusable, label, probe, moveProbe, blowAtProbe }: Probe
   const clamp = (v: number) => Math.min(1, Math.max(0, +v.toFixed(4)));
   const onKey = (e: KeyboardEvent) => {
     const modified = e.altKey || e.ctrlKey || e.metaKey;
-    if ((e.key === 'b' || e.key === 'B') && !modified) {
-      blowAtProbe();
+    const act = FILM_KEYS.get(e.key.toLowerCase());
+    if (act && !modified) {
+      input[act]();
       return;
     }
     const move = arrowKeyStep(e, PROBE_STEP);

@@ -141,6 +141,12 @@ export interface FieldState<D = unknown> {
    * only while it runs. A user's interaction, so not part of the settings (or of their reproducibility).
    */
   blow?(point: Vec3, velocityMps: Vec3): void;
+  /**
+   * Bursts the bubble at a point of it (the view's frame, y up; any length but 0): a hole opens
+   * there and its rim runs outward as in a rupture of the film's own. A user's interaction, so not
+   * part of the settings; the film bursts as it runs (a frozen one when its time moves on).
+   */
+  burst?(point: Vec3): void;
   /** Makes its GPU objects anew after a lost context; the film starts again from its start. */
   invalidate(): void;
   dispose(): void;

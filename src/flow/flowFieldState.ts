@@ -125,6 +125,16 @@ export class FlowFieldState implements FieldState<FlowParameters> {
     this.blowing = { center: [x / r, y / r, z / r], velocity: flowDirection(velocityMps), seconds: BLOW_FILM_SECONDS };
   }
 
+  /**
+   * Pricks the simulated film at the point (GpuFilmSimulation.puncture, whose reference is the
+   * twin's punctureFilm): its rims, and with `renew` the new bubble, follow as after a rupture.
+   * Nothing before the simulation is made (a new film's first frame shows its start on the coarse
+   * grid, a film the simulation does not hold); a film started again from its start drops it.
+   */
+  burst(point: Vec3): void {
+    this.simulation?.puncture(...flowDirection(point));
+  }
+
   /** `count` steps, the first of them in the blow while it lasts. */
   private step(sim: GpuFilmSimulation, count: number): void {
     const b = this.blowing;

@@ -134,6 +134,7 @@ export const EN = {
   'panel.insideMedium': 'inside medium',
   'panel.complex': 'complex n,k (ñ = n + ik)',
   'panel.blow': 'blow (B)',
+  'panel.burst': 'burst (P)',
   'panel.auto': '{label}: auto',
   'panel.governor': 'frame budget',
   'governor.line': 'film time {rate}× real time, grid {grid}',
@@ -154,7 +155,7 @@ export const EN = {
   'app.plotsSummary': 'the film at the probe (click or tap the bubble, or use the arrow keys)',
   'app.messages': 'messages',
   'bubble.label':
-    'Soap bubble showing thin-film interference. Arrow keys move the probe, Shift with an arrow moves it further. On a flowing film, a drag or B blows air on it.',
+    'Soap bubble showing thin-film interference. Arrow keys move the probe, Shift with an arrow moves it further. On a flowing film, a drag or B blows air on it, and a double-click or P bursts it.',
   'bubble.description': 'Probe at {x}% across, {y}% down: film {thickness} nm thick, θi {angle}°, {colour} ({hex}).',
   'bubble.offBubble': 'Probe at {x}% across, {y}% down: off the bubble.',
   'bubble.plotsSummary': 'the film at the probe',

@@ -134,6 +134,7 @@ export const JA: Catalogue = {
   'panel.insideMedium': '内側の媒質',
   'panel.complex': '複素屈折率 n,k（ñ = n + ik）',
   'panel.blow': '息を吹きかける（B）',
+  'panel.burst': '割る（P）',
   'panel.auto': '{label}：自動',
   'panel.governor': 'フレーム予算',
   'governor.line': '膜の時間は実時間の {rate} 倍、グリッド {grid}',
@@ -154,7 +155,7 @@ export const JA: Catalogue = {
   'app.plotsSummary': 'プローブ位置の薄膜（泡をクリック・タップするか、矢印キーで動かす）',
   'app.messages': 'メッセージ',
   'bubble.label':
-    '薄膜干渉で色づくシャボン玉。矢印キーでプローブを動かす（Shift を押しながらで大きく動く）。流れる膜では、ドラッグまたは B キーで風を吹きかける。',
+    '薄膜干渉で色づくシャボン玉。矢印キーでプローブを動かす（Shift を押しながらで大きく動く）。流れる膜では、ドラッグまたは B キーで風を吹きかけ、ダブルクリックまたは P キーで割る。',
   'bubble.description': 'プローブは左から {x}%、上から {y}%：膜厚 {thickness} nm、入射角 θi {angle}°、{colour}（{hex}）。',
   'bubble.offBubble': 'プローブは左から {x}%、上から {y}%：泡の外。',
   'bubble.plotsSummary': 'プローブ位置の薄膜',

@@ -1,8 +1,8 @@
-import { type PerspectiveCamera, Raycaster, Sphere, Vector2, Vector3 } from 'three';
+import type { PerspectiveCamera } from 'three';
 import type { Vec3 } from '../fields/thicknessField.ts';
 import { FLOW_PARAMETERS } from '../physics/flow/flowParameters.ts';
+import { bubbleHit } from './bubbleRay.ts';
 
-const UNIT_SPHERE = new Sphere(new Vector3(), 1);
 /** The fastest blow: the wind's upper end. */
 const BLOW_MAX_MPS = FLOW_PARAMETERS.find((r) => r.key === 'windMps')!.domain.max;
 
@@ -16,12 +16,10 @@ export function blowOnBubble(
   camera: PerspectiveCamera,
   viewHeightPx: number,
   radiusMm: number,
-  [fx, fy]: readonly [number, number],
+  at: readonly [number, number],
   [vxPx, vyPx]: readonly [number, number],
 ): { readonly point: Vec3; readonly velocityMps: Vec3 } | null {
-  const raycaster = new Raycaster();
-  raycaster.setFromCamera(new Vector2(2 * fx - 1, 1 - 2 * fy), camera);
-  const hit = raycaster.ray.intersectSphere(UNIT_SPHERE, new Vector3());
+  const hit = bubbleHit(camera, at)?.point;
   if (!hit) return null;
   // Metres per CSS pixel at the point's distance (the camera looks along −z: x right, y up).
   const viewHeight = 2 * hit.distanceTo(camera.position) * Math.tan((camera.fov * Math.PI) / 360);

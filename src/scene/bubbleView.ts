@@ -10,6 +10,7 @@ import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../settings/filmQuality.
 import { FilmTable } from '../film/filmTable.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import { blowOnBubble } from './blowOnBubble.ts';
+import { bubbleHit } from './bubbleRay.ts';
 import type { DrawnFrame } from './drawnFrame.ts';
 import { EnvironmentLoads } from './environmentLoads.ts';
 import { type FrameReport, NOT_DRAWN, type ViewOffers } from './frameReport.ts';
@@ -163,6 +164,11 @@ export class BubbleView {
    */
   blow(fx: number, fy: number, vxPx: number, vyPx: number): void {
     this.film.blow(blowOnBubble(this.camera, this.size.height, this.settings.radiusMm, [fx, fy], [vxPx, vyPx]));
+  }
+
+  /** Bursts an evolving film where a point of the view (fractions from the top left) meets the bubble (bubbleRay.ts); as `blow`, nothing off it. */
+  burst(fx: number, fy: number): void {
+    this.film.burst(bubbleHit(this.camera, [fx, fy])?.point.toArray() ?? null);
   }
 
   /** Whether the renderer's WebGL context is lost (nothing can be drawn or read until it is restored). */

@@ -83,6 +83,11 @@ export class EvolvingFilm {
     if (blown) this.current?.state.blow?.(blown.point, blown.velocityMps);
   }
 
+  /** Bursts the film where it evolves and can burst (FieldState.burst); nothing for `null` (off the bubble). */
+  burst(point: Vec3 | null): void {
+    if (point) this.current?.state.burst?.(point);
+  }
+
   invalidate(): void {
     this.current?.state.invalidate();
   }

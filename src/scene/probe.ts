@@ -2,18 +2,15 @@ import {
   FloatType,
   type Mesh,
   type PerspectiveCamera,
-  Ray,
   RGBAFormat,
   ShaderMaterial,
-  Sphere,
   type SphereGeometry,
-  Vector2,
-  Vector3,
   type WebGLRenderer,
   WebGLRenderTarget,
 } from 'three';
 import type { Xyz } from '../physics/spectralWeights.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
+import { bubbleHit } from './bubbleRay.ts';
 
 /** What the bubble shows at one point of the view: the near wall's film there. */
 export interface ProbeReading {
@@ -26,7 +23,6 @@ export interface ProbeReading {
 /** The film at the probe without the GPU's colour: what a bubble's `probechange` event carries. */
 export type ProbedFilm = Pick<ProbeReading, 'thicknessNm' | 'angleDeg'>;
 
-const UNIT_SPHERE = new Sphere(new Vector3(), 1);
 /** How often a probe's fence is polled (ms): a few times a frame. */
 const FENCE_POLL_MS = 4;
 
@@ -74,13 +70,9 @@ function readPixelAsync(renderer: WebGLRenderer): Promise<Float32Array> {
  * unit bubble, or null where it misses: the angle between the ray and the sphere's normal.
  */
 export function incidenceAngleDeg(camera: PerspectiveCamera, fx: number, fy: number): number | null {
-  camera.updateMatrixWorld();
-  const ndc = new Vector2(2 * fx - 1, 1 - 2 * fy);
-  const origin = new Vector3().setFromMatrixPosition(camera.matrixWorld);
-  const direction = new Vector3(ndc.x, ndc.y, 0.5).unproject(camera).sub(origin).normalize();
-  const hit = new Ray(origin, direction).intersectSphere(UNIT_SPHERE, new Vector3());
+  const hit = bubbleHit(camera, [fx, fy]);
   if (!hit) return null;
-  const cos = Math.min(1, Math.abs(hit.normalize().dot(direction)));
+  const cos = Math.min(1, Math.abs(hit.point.clone().normalize().dot(hit.ray.direction)));
   return (Math.acos(cos) * 180) / Math.PI;
 }
 

@@ -3,12 +3,17 @@
  * √(2γ/(ρh)) × the rim-speed factor (γ = γ_a − R̄TΓ0, h the film's thickness, computed here from the
  * published constants), the same cells empty as in the float64 twin, and with `renew` a new bubble
  * follows. The hole's radius is read from the area the film has lost, A = 2π(1 − cos r) for a cap
- * of angular radius r, as the twin's test does.
+ * of angular radius r, as the twin's test does. The user's burst in the demo (a double-click, P, the
+ * panel's button) empties the cells the twin pricked at the same point and step empties.
  */
 import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.ts';
 import { createFilmSimulation, punctureFilm, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
+import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
+import type { ViewSettings } from '../../src/settings/viewParameters.ts';
 import { FLOW_BURST_DIFFERING_CELLS, FLOW_BURST_RAY_TOL, RIM_SPEED_REL_TOL } from '../tolerances.ts';
+import { type Demo, type FilmReader, installFilmReader, paddedFilmCells } from './demoFlowFilm.ts';
+import { openPanel } from './panel.ts';
 
 /**
  * A surfactant-rich film (its settled profile varies by e^(±0.043): it hardly drains while the rim
@@ -110,4 +115,79 @@ test('with renew a new bubble follows the burst: every cell whole again, holding
   expect(renewed.intact.every((v) => v === 1)).toBe(true);
   expect(renewed.holes).toEqual([]);
   expect(Math.abs(volume / (4 * Math.PI) - 1)).toBeLessThan(1e-5);
+});
+
+/**
+ * The user's burst, in the demo: a frozen film of a large, thick bubble in still air, whose rim
+ * (√(2γ/(ρh)) ≈ 8 m/s at 2000 nm over a 100 mm radius) runs about 1.3 rad in a step of grid 16, so
+ * one step after a prick the hole is a cap round it, short of the far side.
+ */
+const USER_BURST = { gridN: 16, seed: 5, windMps: 0, radiusMm: 100, thicknessNm: 2000 } as const;
+const USER_BURST_VIEW: Partial<ViewSettings> = { ...USER_BURST, field: 'flow', simSpeed: 1, timeSeconds: 0.06, animate: false };
+/** The bubble's front, the view's (0, 0, 1) under its centre, in the simulation's frame (z up: flowDirection). */
+const FRONT: [number, number, number] = [0, -1, 0];
+
+test("a double-click on the bubble's centre, P at the probe there, or the panel's burst button bursts the flowing film there, as the twin pricked there bursts", async ({
+  demoPage: page,
+}) => {
+  await page.evaluate(installFilmReader);
+  await page.evaluate((settings) => {
+    const { bubbleApp } = window as unknown as Demo;
+    document.body.dataset.frames = 'changed';
+    bubbleApp.set({ ...bubbleApp.current, ...settings }, true);
+  }, USER_BURST_VIEW);
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+  const flow = await page.evaluate(() => (window as unknown as Demo).bubbleView.lastFrame.film!.flow!);
+  const bubble = page.locator('#bubble');
+  const box = (await bubble.boundingBox())!;
+  await openPanel(page);
+  const burstBy = {
+    none: () => Promise.resolve(),
+    'double-click': () => bubble.dblclick({ position: { x: box.width / 2, y: box.height / 2 } }),
+    P: () => page.locator('[role=application]').press('p'),
+    button: () => page.getByRole('button', { name: 'burst (P)' }).press('Enter'),
+  };
+  /** Whether each cell is whole one step after the burst (or none); the film is then started again at the frozen time. */
+  const intactAfter = async (how: keyof typeof burstBy) => {
+    await burstBy[how]();
+    const texels = await page.evaluate((dt) => {
+      const { bubbleView, bubbleApp } = window as unknown as Demo;
+      const start = bubbleApp.current.timeSeconds;
+      bubbleApp.set({ ...bubbleApp.current, timeSeconds: start + dt });
+      bubbleView.render();
+      const film = (window as unknown as FilmReader).flowFilmTexels();
+      bubbleApp.set({ ...bubbleApp.current, timeSeconds: start });
+      bubbleView.render();
+      return film;
+    }, flow.stepSeconds);
+    return [...paddedFilmCells(texels, USER_BURST.gridN).intact];
+  };
+  const calm = await intactAfter('none');
+  const [byDoubleClick, byKey, byButton] = [await intactAfter('double-click'), await intactAfter('P'), await intactAfter('button')];
+
+  const twin = createFilmSimulation(USER_BURST);
+  for (let k = 0; k < flow.steps; k++) stepFilm(twin);
+  punctureFilm(twin, ...FRONT);
+  stepFilm(twin);
+  const twinIntact = [...twin.state.intact];
+  const differing = byDoubleClick.filter((v, c) => v !== twinIntact[c]).length;
+  const whole = (cells: number[]) => cells.reduce((s, v) => s + v, 0);
+  console.log(
+    `user's burst after ${flow.steps} steps: ${whole(byDoubleClick)} of ${calm.length} cells whole a step later, ` +
+      `${whole(twinIntact)} in the twin; ${differing} differ`,
+  );
+  // The same film as the twin's: the view's settings are its parameters, at its step.
+  expect(flow.stepSeconds).toBe(twin.stepSeconds);
+  expect(flow.steps).toBe(Math.floor(0.06 / twin.stepSeconds));
+  // Unpricked, the film is whole: the hole is the user's.
+  expect(whole(calm)).toBe(calm.length);
+  // A cap round the front: the front gone, the back whole.
+  expect(byDoubleClick[nearestCell(twin.grid, ...FRONT)]).toBe(0);
+  expect(byDoubleClick[nearestCell(twin.grid, 0, 1, 0)]).toBe(1);
+  expect(whole(twinIntact)).toBeGreaterThan(0);
+  expect(whole(twinIntact)).toBeLessThan(calm.length);
+  expect(differing).toBeLessThanOrEqual(FLOW_BURST_DIFFERING_CELLS);
+  // P and the button burst at the probe, which the double-click's presses put at the centre.
+  expect(byKey).toEqual(byDoubleClick);
+  expect(byButton).toEqual(byDoubleClick);
 });

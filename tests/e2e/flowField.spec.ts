@@ -1,8 +1,7 @@
 import { expect, test, type Page } from '@playwright/test';
-import type { Texture, WebGLRenderTarget } from 'three';
 import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
 import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
-import { paddedTexelIndex } from '../../src/flow/flowAtlas.ts';
+import { type Demo, type FilmReader, installFilmReader, paddedFilmCells } from './demoFlowFilm.ts';
 import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
 import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';
@@ -19,42 +18,6 @@ const FROZEN = `/?field=flow&grid=${GRID_N}&seed=5&wind=0.5&animate=0&time=0.06&
  * that 4.9 ms step, and with renew the film is new again 0.25 s (RENEW_DELAY_S) after that.
  */
 const RENEWED_S = 0.45;
-
-type Demo = Window & {
-  bubbleView: import('../../src/scene/bubbleView.ts').BubbleView;
-  bubbleApp: import('../../src/app/bubbleApp.ts').BubbleApp;
-};
-/** A page that reads its flowing film back (readsFilm). */
-type FilmReader = Window & { flowFilmTexels: () => number[] };
-
-/**
- * Gives every load of the page a reader of the demo's flowing film as the bubble samples it: the
- * texels of the padded film its material's `uFlowFilm` holds (a render target's texture: three's
- * `texture.renderTarget`), read through the view's renderer, for filmCells to decode.
- */
-const readsFilm = (page: Page) =>
-  page.addInitScript(() => {
-    (window as unknown as FilmReader).flowFilmTexels = () => {
-      const view = (window as unknown as Demo).bubbleView;
-      const texture = view.bubble.material.uniforms.uFlowFilm!.value as Texture & { renderTarget: WebGLRenderTarget };
-      const target = texture.renderTarget;
-      const texels = new Float32Array(4 * target.width * target.height);
-      view.renderer.readRenderTargetPixels(target, 0, 0, target.width, target.height, texels);
-      return [...texels];
-    };
-  });
-
-/** The padded film's texels (η, Γ, intact, mark per texel; one ring of ghosts round each face of n × n cells) as η and intact per cell, in the twin's cell order. */
-function filmCells(texels: ArrayLike<number>, n: number): { eta: Float32Array; intact: Uint8Array } {
-  const [eta, intact] = [new Float32Array(6 * n * n), new Uint8Array(6 * n * n)];
-  const m = n + 2;
-  for (let c = 0; c < eta.length; c++) {
-    const [face, j, i] = [Math.floor(c / (n * n)), Math.floor(c / n) % n, c % n];
-    const t = 4 * paddedTexelIndex(n, (face * m + j + 1) * m + i + 1);
-    [eta[c], intact[c]] = [texels[t]!, texels[t + 2]!];
-  }
-  return { eta, intact };
-}
 
 /** The drawing buffer as the page last drew it (a hash of every byte and how many are lit), and the film's steps. */
 const drawn = (page: Page) =>
@@ -94,10 +57,13 @@ test('field=flow at a frozen time draws the same pixels on every load, the film 
 });
 
 test('a burst film is gone for good with renew=0; with renew=1 a whole new bubble follows', async ({ page }) => {
-  await readsFilm(page);
+  await page.addInitScript(installFilmReader);
   const at = (seconds: number, renew: number) => load(page, `${FROZEN.replace('time=0.06', `time=${seconds}`)}&renew=${renew}`);
   const intactCells = async () =>
-    filmCells(await page.evaluate(() => (window as unknown as FilmReader).flowFilmTexels()), GRID_N).intact.reduce((s, v) => s + v, 0);
+    paddedFilmCells(await page.evaluate(() => (window as unknown as FilmReader).flowFilmTexels()), GRID_N).intact.reduce(
+      (s, v) => s + v,
+      0,
+    );
   const gone = await at(RENEWED_S, 0);
   expect(await intactCells()).toBe(0);
   const renewed = await at(RENEWED_S, 1);
@@ -144,7 +110,7 @@ test('after a lost context the flowing film is simulated again from its start to
 test("B on the bubble, or Enter on the panel's blow button, blows at the probe, to the right: the film there moves right", async ({
   page,
 }) => {
-  await readsFilm(page);
+  await page.addInitScript(installFilmReader);
   // Still air, so the blow is the only air.
   await load(page, FROZEN.replace('wind=0.5', 'wind=0'));
   await openPanel(page);
@@ -163,7 +129,7 @@ test("B on the bubble, or Enter on the panel's blow button, blows at the probe, 
       bubbleView.render();
       return film;
     }, blow === 'key');
-    return [...filmCells(texels, GRID_N).eta];
+    return [...paddedFilmCells(texels, GRID_N).eta];
   };
   const calm = await filmAfter('none');
   const grid = cubeSphereGrid(GRID_N);

@@ -34,15 +34,22 @@ const key = (name: string, mods: Partial<Record<'shiftKey' | 'altKey' | 'ctrlKey
     ...mods,
   });
 
-const pointer = (type: string, clientX: number, clientY: number, timeStamp = 0) => {
-  const e = Object.assign(new Event(type), { isPrimary: true, button: 0, pointerId: 1, clientX, clientY });
+const pointer = (type: string, clientX: number, clientY: number, timeStamp = 0, button = 0) => {
+  const e = Object.assign(new Event(type), { isPrimary: true, button, pointerId: 1, clientX, clientY });
   return Object.defineProperty(e, 'timeStamp', { value: timeStamp });
 };
 
 /** The probe input over fake elements, recording what it asks for. */
 function setUp(start: readonly [number, number] = [0.5, 0.5], controls: { contains: (n: unknown) => boolean } | null = null) {
   const surface = new FakeElement();
-  const calls = { probe: [...start] as readonly [number, number], moves: 0, blows: [] as number[][], blowsAtProbe: 0 };
+  const calls = {
+    probe: [...start] as readonly [number, number],
+    moves: 0,
+    blows: [] as number[][],
+    blowsAtProbe: 0,
+    bursts: [] as number[][],
+    burstsAtProbe: 0,
+  };
   const input: ProbeInput = {
     surface: surface as unknown as HTMLElement,
     focusable: surface as unknown as HTMLElement,
@@ -55,6 +62,8 @@ function setUp(start: readonly [number, number] = [0.5, 0.5], controls: { contai
     },
     blow: (...args) => calls.blows.push(args),
     blowAtProbe: () => calls.blowsAtProbe++,
+    burst: (...args) => calls.bursts.push(args),
+    burstAtProbe: () => calls.burstsAtProbe++,
   };
   const stop = listenToProbeInput(input);
   return { surface, calls, stop };
@@ -99,6 +108,28 @@ describe('the probe input', () => {
     expect(calls.blowsAtProbe).toBe(2);
   });
 
+  it('bursts at the probe with P or p, not with Ctrl+P, nor with another key', () => {
+    const { surface, calls } = setUp();
+    surface.dispatchEvent(key('p'));
+    surface.dispatchEvent(key('P', { shiftKey: true }));
+    surface.dispatchEvent(key('p', { ctrlKey: true }));
+    surface.dispatchEvent(key('o'));
+    expect(calls.burstsAtProbe).toBe(2);
+    expect(calls.blowsAtProbe).toBe(0);
+  });
+
+  it('bursts where a double-click or double-tap lands on the view, not off it, nor on the panel, nor with another button', () => {
+    const { surface, calls } = setUp();
+    surface.dispatchEvent(pointer('dblclick', 150, 75));
+    expect(calls.bursts).toEqual([[0.25, 0.25]]);
+    surface.dispatchEvent(pointer('dblclick', 301, 75));
+    surface.dispatchEvent(pointer('dblclick', 150, 75, 0, 2));
+    expect(calls.bursts).toHaveLength(1);
+    const onPanel = setUp([0.5, 0.5], { contains: () => true });
+    onPanel.surface.dispatchEvent(pointer('dblclick', 150, 75));
+    expect(onPanel.calls.bursts).toEqual([]);
+  });
+
   it('moves the probe where a press lands on the view, not off it, nor on the panel', () => {
     const { surface, calls } = setUp();
     surface.dispatchEvent(pointer('pointerdown', 150, 75));
@@ -130,7 +161,9 @@ describe('the probe input', () => {
     stop();
     surface.dispatchEvent(key('ArrowRight'));
     surface.dispatchEvent(key('b'));
+    surface.dispatchEvent(key('p'));
     surface.dispatchEvent(pointer('pointerdown', 150, 75));
-    expect(calls).toMatchObject({ moves: 0, blowsAtProbe: 0 });
+    surface.dispatchEvent(pointer('dblclick', 150, 75));
+    expect(calls).toMatchObject({ moves: 0, blowsAtProbe: 0, bursts: [], burstsAtProbe: 0 });
   });
 });
