@@ -10,17 +10,17 @@ import {
   mediumText,
 } from '../physics/medium.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralWeights.ts';
-import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN, followsField } from '../physics/filmLayers.ts';
+import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN, followsField } from '../physics/stackFilms.ts';
 import { isInDomain, type NumberDomain, oneOf, ParameterError, rejectValue, expectedNumber } from '../input/validate.ts';
 import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../settings/filmParameters.ts';
 
 /** One film to colour: what the command line or one entry of a cases file describes. */
 export interface ColorCase {
   readonly id: string | number;
-  /** The single film; with `layers`, its nOutside, nInside and angle, and its thickness that of every FIELD_THICKNESS layer. */
+  /** The single film; with `films`, its nOutside, nInside and angle, and its thickness that of every FIELD_THICKNESS film. */
   readonly stack: FilmStack<Medium>;
-  /** A stack of films in place of the stack's single film (filmLayers.ts); empty: the single film. */
-  readonly layers: readonly FilmLayer[];
+  /** The films its option `layers` stacks in place of the stack's single film (stackFilms.ts); empty: the single film. */
+  readonly films: readonly FilmLayer[];
   readonly illuminant: IlluminantSpec;
   readonly polarization: Polarization;
   readonly normalization: Normalization;
@@ -123,7 +123,7 @@ export function validateColorCase(
     return isInDomain(value, d) ? value : rejectValue(nameOf(field), value, expectedNumber(d));
   };
   const orDefault = (field: CaseField, fallback: string) => (raw[field] === undefined ? fallback : raw[field]);
-  const layers = raw.layers === undefined ? [] : validateLayers(raw, nameOf, layerThickness);
+  const films = raw.layers === undefined ? [] : validateLayers(raw, nameOf, layerThickness);
   const stack: FilmStack<Medium> = {
     nOutside: validateMedium(raw.nOutside, 'nOutside', nameOf('nOutside')),
     nFilm: validateMedium(raw.nFilm, 'nFilm', nameOf('nFilm')),
@@ -134,11 +134,11 @@ export function validateColorCase(
   return {
     id: validateId(raw.id, index, nameOf('id')),
     stack,
-    layers,
+    films,
     illuminant: raw.illuminant === undefined ? DEFAULT_SETTINGS.illuminant : illuminantFromJson(raw.illuminant, nameOf('illuminant')),
     polarization: oneOf(nameOf('polarization'), orDefault('polarization', DEFAULT_SETTINGS.polarization), POLARIZATIONS),
     normalization: oneOf(nameOf('normalization'), orDefault('normalization', DEFAULT_SETTINGS.normalization), NORMALIZATIONS),
-    wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm'), stack, layers),
+    wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm'), stack, films),
   };
 }
 

@@ -59,7 +59,7 @@ export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit
 /** The method drawn: the option's, or where it has no form for the film (a stack in `fourier`) the one drawn in its place (drawnFilmMethod). */
 const drawnModeOf = (o: CheckedOptions): CheckedOptions['mode'] =>
   drawnFilmMethod(
-    { mode: o.mode, layers: o.layers, nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: o.base ?? DEFAULT_SETTINGS.nInside },
+    { ...o, nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: o.base ?? DEFAULT_SETTINGS.nInside },
     'material',
   ).film.mode;
 

@@ -4,8 +4,8 @@ import { POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts'
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
 import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
 import { type Medium, assertMedium, mediumFromJson, parseMediumText } from '../physics/medium.ts';
-import type { FilmLayer } from '../physics/filmLayers.ts';
-import { layersText, parseLayers } from '../physics/layersText.ts';
+import type { FilmLayer } from '../physics/stackFilms.ts';
+import { layersText, parseLayers } from '../physics/stackText.ts';
 import { ParameterError, isInDomain, oneOf } from '../input/validate.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions, filmQualityFrom } from '../settings/filmQuality.ts';

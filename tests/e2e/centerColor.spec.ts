@@ -10,8 +10,8 @@ import { DISPERSIVE_FIRST_FRAME_MS, STACK_FIRST_FRAME_MS } from './waits.ts';
 import { MAX_CODE_DIFFERENCE_STACK } from '../tolerances.ts';
 import { EN } from '../../src/i18n/en.ts';
 import { message } from '../../src/i18n/messages.ts';
-import { type FilmLayer, resolveLayers } from '../../src/physics/filmLayers.ts';
-import { layersText, parseLayers } from '../../src/physics/layersText.ts';
+import { type FilmLayer, resolveLayers } from '../../src/physics/stackFilms.ts';
+import { layersText, parseLayers } from '../../src/physics/stackText.ts';
 import { type Medium, mediumText } from '../../src/physics/medium.ts';
 import { STACK_PRESETS } from '../../src/physics/stackPresets.ts';
 
@@ -118,7 +118,7 @@ test("a stack of films: the centre pixel is the transfer matrix's sRGB colour in
       expect.soft(() => expectClose(rgb, expected, `${name}, ${mode}`, MAX_CODE_DIFFERENCE_STACK)).not.toThrow();
       // A method that reads neither the stack nor a table (fourier) gives way to the table.
       if (!methodReads(mode, 'stack') && !methodReads(mode, 'table'))
-        await expect(notice).toHaveText(message(EN, 'app.stackAsTable', { method: 'fourier', layers: String(layers.length) }));
+        await expect(notice).toHaveText(message(EN, 'app.stackAsTable', { method: 'fourier', count: String(layers.length) }));
       else await expect(notice).toHaveCount(0);
     }
   }

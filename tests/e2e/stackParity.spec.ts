@@ -1,9 +1,9 @@
 import { BOTH_BACKENDS, expect, test } from './fixtures.ts';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
-import { type FilmLayer, resolveLayers } from '../../src/physics/filmLayers.ts';
+import { type FilmLayer, resolveLayers } from '../../src/physics/stackFilms.ts';
 import type { Polarization } from '../../src/physics/filmReflectance.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
-import { layersXyz } from '../../src/physics/layersColor.ts';
+import { layersXyz } from '../../src/physics/stackColor.ts';
 import { whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import { deltaStats } from '../../scripts/harness/deltaStats.ts';

@@ -10,7 +10,7 @@ import { filmMediaDefines, isDispersiveFilm } from '../../../src/film/filmMedia.
 import { tableKey } from '../../../src/film/filmTable.ts';
 import { FilmTablePass } from '../../../src/film/filmTablePass.ts';
 import { asComplex } from '../../../src/physics/complex.ts';
-import { type FilmLayer, LAYERS_DOMAIN } from '../../../src/physics/filmLayers.ts';
+import { type FilmLayer, LAYERS_DOMAIN } from '../../../src/physics/stackFilms.ts';
 import { mediumIndexAt } from '../../../src/physics/medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../../../src/physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';

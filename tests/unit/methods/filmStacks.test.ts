@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { FILM_FILLS, fillReads, filmFill } from '../../../src/methods/filmFills.ts';
 import { filmLayersOf, filmStackOf, singleFilmOf, stackReflectance, stackXyz } from '../../../src/methods/filmStacks.ts';
 import { FILM_METHODS, drawnMethod, supports } from '../../../src/methods/methods.ts';
-import { layersXyz } from '../../../src/physics/layersColor.ts';
+import { layersXyz } from '../../../src/physics/stackColor.ts';
 import { dispersiveReflectance, filmXyz } from '../../../src/physics/spectralIntegration.ts';
 import { layersReflectance } from '../../../src/physics/transferMatrix.ts';
 import { ALGEBRAIC_TOL } from '../../tolerances.ts';

@@ -5,7 +5,7 @@
 import { describe, expect, it } from 'vitest';
 import { EN } from '../../../src/i18n/en.ts';
 import { JA } from '../../../src/i18n/ja.ts';
-import type { FilmLayer } from '../../../src/physics/filmLayers.ts';
+import type { FilmLayer } from '../../../src/physics/stackFilms.ts';
 import { FILM_METHODS, drawnMethod, methodReads } from '../../../src/methods/methods.ts';
 
 const STACK: readonly FilmLayer[] = [

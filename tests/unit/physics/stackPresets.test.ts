@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { FIELD_THICKNESS, LAYERS_DOMAIN, resolveLayers } from '../../../src/physics/filmLayers.ts';
+import { FIELD_THICKNESS, LAYERS_DOMAIN, resolveLayers } from '../../../src/physics/stackFilms.ts';
 import { mediumProblem, transparentIndexAt } from '../../../src/physics/medium.ts';
 import {
   BEETLE_DEPTH_NM,

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { XYZ_TO_LINEAR_SRGB } from '../../../src/physics/colorConversions.ts';
 import { SOAP_FILM_IN_AIR, filmReflectance } from '../../../src/physics/filmReflectance.ts';
-import { layersXyz } from '../../../src/physics/layersColor.ts';
+import { layersXyz } from '../../../src/physics/stackColor.ts';
 import { filmXyz } from '../../../src/physics/spectralIntegration.ts';
 import { DESIGN_NM, STACK_PRESETS } from '../../../src/physics/stackPresets.ts';
 import { layersReflectance } from '../../../src/physics/transferMatrix.ts';
