@@ -87,7 +87,7 @@ const GROUPS: readonly Group[] = STACKS.flatMap(({ name, layers, nInside, thickn
 
 /** The float64 reference: the stack's XYZ by the transfer matrix, sampled by its adaptive rule (layersXyz). */
 const referenceXyz = (g: Group, thicknessNm: number, angleDeg: number): Xyz =>
-  layersXyz({ nOutside: g.nOutside, layers: resolveLayers(g.layers!, thicknessNm), nInside: g.nInside, angleDeg }, g);
+  layersXyz({ nOutside: g.nOutside, films: resolveLayers(g.layers!, thicknessNm), nInside: g.nInside, angleDeg }, g);
 
 const REFERENCE = GROUPS.map((g) => g.cases.map((c) => referenceXyz(g, c.thicknessNm, c.angleDeg)));
 

@@ -28,7 +28,7 @@ describe('films as stacks (src/methods/filmStacks.ts)', () => {
       { n: 2.1, thicknessNm: 'd' },
       { n: 1.38, thicknessNm: 100 },
     ] as const;
-    expect(filmStackOf({ ...SOAP, layers }).layers).toEqual([
+    expect(filmStackOf({ ...SOAP, layers }).films).toEqual([
       { n: 2.1, thicknessNm: 420 },
       { n: 1.38, thicknessNm: 100 },
     ]);
