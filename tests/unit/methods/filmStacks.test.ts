@@ -18,7 +18,7 @@ const LIGHT = { illuminant: 'D65', polarization: 'unpolarized', normalization: '
 
 describe('films as stacks (src/methods/filmStacks.ts)', () => {
   it('a film without the layers option is the one layer of nFilm at its thickness', () => {
-    expect(filmStackOf(SOAP)).toEqual({ nOutside: 1, layers: [{ n: 1.33, thicknessNm: 420 }], nInside: 1, angleDeg: 30 });
+    expect(filmStackOf(SOAP)).toEqual({ nOutside: 1, films: [{ n: 1.33, thicknessNm: 420 }], nInside: 1, angleDeg: 30 });
     expect(filmStackOf({ ...SOAP, layers: [] })).toEqual(filmStackOf(SOAP));
     expect(filmLayersOf(SOAP)).toEqual([{ n: 1.33, thicknessNm: 'd' }]);
   });

@@ -24,7 +24,7 @@ describe('methods and stacks of films', () => {
       }
       expect(shown, mode).toBe('table');
       expect(instead?.notice, mode).toBe('app.stackAsTable');
-      expect(instead?.values, mode).toEqual({ method: mode, layers: '2' });
+      expect(instead?.values, mode).toEqual({ method: mode, count: '2' });
     }
     // The Fourier method is one of those that give way: it has no closed form for a stack.
     expect(drawn.find(([m]) => m === 'fourier')?.[1].mode).toBe('table');
@@ -38,8 +38,8 @@ describe('methods and stacks of films', () => {
     }
   });
 
-  it("the notice names the method and the stack's layers in both catalogues", () => {
+  it("the notice names the method and the stack's count of films in both catalogues", () => {
     for (const text of [EN['app.stackAsTable'], JA['app.stackAsTable']])
-      expect(text).toMatch(/\{method\}.*\{layers\}|\{layers\}.*\{method\}/s);
+      expect(text).toMatch(/\{method\}.*\{count\}|\{count\}.*\{method\}/s);
   });
 });
