@@ -169,7 +169,7 @@ function validateMediumIn(value: unknown, role: MediumRole, name: string): Mediu
 }
 
 /**
- * Where a case's layers take their thickness from: `own`, each its number (a cases file, where
+ * Where a case's films take their thickness from: `own`, each its number (a cases file, where
  * `thicknessNm` is the single film's); `orField`, a number or FIELD_THICKNESS, the case's
  * thicknessNm (the command line's --layers, whose --thickness and thickness tables set it).
  */
@@ -180,7 +180,7 @@ const LAYERS_JSON_EXPECTED = `an array of ${LAYERS_DOMAIN.count.min} to ${LAYERS
 
 /**
  * A case's stack of films: `[{ "n", "thicknessNm" }, …]` (the command line's --layers arrives
- * parsed into the same form), each n a medium a film takes. A case with layers gives no nFilm (each
+ * parsed into the same form), each n a medium a film takes. A case with `layers` gives no nFilm (each
  * layer has its own), and in a cases file no thicknessNm (each layer has its own, and none takes
  * the case's: FIELD_THICKNESS is refused there).
  */
@@ -194,7 +194,7 @@ function validateLayers(raw: RawCase, nameOf: (field: CaseField) => string, laye
   const value = raw.layers;
   const { count, thicknessNm: thickness } = LAYERS_DOMAIN;
   if (!Array.isArray(value) || value.length < count.min || value.length > count.max) return rejectValue(name, value, LAYERS_JSON_EXPECTED);
-  const layers = value.map((entry: unknown, i): FilmLayer => {
+  const films = value.map((entry: unknown, i): FilmLayer => {
     const isLayer = typeof entry === 'object' && entry !== null && !Array.isArray(entry);
     if (!isLayer || Object.keys(entry).sort().join() !== 'n,thicknessNm') return rejectValue(`${name}[${i}]`, entry, LAYERS_JSON_EXPECTED);
     const { n, thicknessNm } = entry as { n: unknown; thicknessNm: unknown };
@@ -208,23 +208,23 @@ function validateLayers(raw: RawCase, nameOf: (field: CaseField) => string, laye
       ? { n: medium, thicknessNm }
       : rejectValue(`${name}[${i}].thicknessNm`, thicknessNm, expectedNumber(thickness));
   });
-  if (raw.thicknessNm !== undefined && !followsField(layers)) {
+  if (raw.thicknessNm !== undefined && !followsField(films)) {
     const message = `${nameOf('thicknessNm')}: not allowed with ${name} that has no ${FIELD_THICKNESS} layer (no layer takes the thickness)`;
     throw new ParameterError(nameOf('thicknessNm'), message);
   }
-  return layers;
+  return films;
 }
 
 /**
  * Wavelengths within WAVELENGTH_DOMAIN_NM and within the range of every medium's source (a metal's
  * table ends near 368 nm, so R(300 nm) on gold has no data behind it).
  */
-function validateWavelengths(value: unknown, name: string, stack: FilmStack<Medium>, layers: readonly FilmLayer[]): readonly number[] {
+function validateWavelengths(value: unknown, name: string, stack: FilmStack<Medium>, films: readonly FilmLayer[]): readonly number[] {
   if (value === undefined) return [];
   let domain = WAVELENGTH_DOMAIN_NM;
   let why = '';
-  const films: [string, Medium][] = layers.length === 0 ? [['nFilm', stack.nFilm]] : layers.map((l, i) => [`layers[${i}].n`, l.n]);
-  for (const [field, medium] of [...films, ['nInside', stack.nInside] as [string, Medium]]) {
+  const media: [string, Medium][] = films.length === 0 ? [['nFilm', stack.nFilm]] : films.map((l, i) => [`layers[${i}].n`, l.n]);
+  for (const [field, medium] of [...media, ['nInside', stack.nInside] as [string, Medium]]) {
     const range = mediumRangeNm(medium);
     if (range && (range.min > domain.min || range.max < domain.max)) {
       domain = { ...domain, min: Math.max(domain.min, range.min), max: Math.min(domain.max, range.max) };

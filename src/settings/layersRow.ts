@@ -4,7 +4,7 @@ import type { Expectation, PanelFolder, ParameterRow, RowNames } from './paramet
 import { textRow } from './textRows.ts';
 
 /**
- * The longest layers text the URL reads: every one of LAYERS_DOMAIN.count.max layers written out
+ * The longest layers text the URL reads: every one of LAYERS_DOMAIN.count.max films written out
  * with a Cauchy film's three coefficients and a thickness, each number at full precision, fits.
  */
 export const LAYERS_MAX_CHARS = 8192;
