@@ -8,7 +8,7 @@ import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/settings/filmQ
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
 import { type FilmSettings, HDR_ENVIRONMENTS } from '../../src/settings/filmSettings.ts';
 import type { FilmTableLayout } from '../../src/settings/filmTableLayout.ts';
-import type { FilmLayer } from '../../src/physics/filmLayers.ts';
+import type { FilmLayer } from '../../src/physics/stackFilms.ts';
 import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
 import { flowNumbers } from '../../src/physics/flow/flowNumbers.ts';
 import { validateFlowParameters } from '../../src/physics/flow/flowParameters.ts';

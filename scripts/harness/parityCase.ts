@@ -1,4 +1,4 @@
-import type { FilmLayer } from '../../src/physics/filmLayers.ts';
+import type { FilmLayer } from '../../src/physics/stackFilms.ts';
 import type { FilmSettings } from '../../src/settings/filmSettings.ts';
 
 /**

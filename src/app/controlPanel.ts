@@ -1,9 +1,9 @@
 import GUI, { type Controller } from 'lil-gui';
 import { message } from '../i18n/messages.ts';
 import { FILM_MATERIALS } from '../physics/filmIndex.ts';
-import type { FilmLayer } from '../physics/filmLayers.ts';
-import { layersText } from '../physics/layersText.ts';
-import { readLayersField } from './layersField.ts';
+import type { FilmLayer } from '../physics/stackFilms.ts';
+import { layersText } from '../physics/stackText.ts';
+import { readStackField } from './stackField.ts';
 import { CAUCHY_INDEX, COMPLEX_INDEX, CONSTANT_INDEX, TEXT_KINDS, mediumKind, shownControls } from './shownControls.ts';
 import { type Medium, type MediumRole, mediumExpected, mediumText, readMedium } from '../physics/medium.ts';
 import { NAMED_MEDIA } from '../physics/namedMedia.ts';
@@ -142,8 +142,8 @@ function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<
         control.role === 'film' ? FILM_MEDIUM_KINDS : INSIDE_MEDIUM_KINDS,
         control.role,
       );
-    case 'layers':
-      return { join: addLayersControl(folder, row, state[row.key] as readonly FilmLayer[], cat) };
+    case 'stack':
+      return { join: addStackControl(folder, row, state[row.key] as readonly FilmLayer[], cat) };
     case 'auto':
       return addAutoControl(folder, row, control, state[row.key] as Auto<number>, cat);
   }
@@ -168,17 +168,17 @@ function addAutoControl(
 }
 
 /**
- * A stack of films as text (layersText.ts; empty: the single film). A text that is not one is not
+ * A stack of films as text (stackText.ts; empty: the single film). A text that is not one is not
  * taken: the last good stack stays, and the field says why in its title. While a stack is set, the
- * film index's controls are hidden (shownControls.ts): the stack's layers carry their own indices.
+ * film index's controls are hidden (shownControls.ts): the stack's films carry their own indices.
  */
-function addLayersControl(folder: GUI, row: ParameterRow<ViewSettings>, initial: readonly FilmLayer[], cat: Catalogue): Joined {
+function addStackControl(folder: GUI, row: ParameterRow<ViewSettings>, initial: readonly FilmLayer[], cat: Catalogue): Joined {
   const controls = { text: layersText(initial) };
   let good = initial;
   const field = folder.add(controls, 'text').name(cat[labelKey(row.key)]);
   return () => {
-    const reading = readLayersField(row, controls.text, good, cat);
-    good = reading.layers;
+    const reading = readStackField(row, controls.text, good, cat);
+    good = reading.films;
     field.domElement.title = reading.title;
     return { [row.key]: good };
   };

@@ -38,7 +38,7 @@ const MEDIUM_ROWS = PANEL_ROWS.filter((row) => row.control!.kind === 'medium' ||
  * What of the panel applies to the settings `s`, and so is shown:
  * - a setting some thickness field reads, only under the fields that read it (fields.ts,
  *   `settingApplies`): the swirl's speed and range under the swirl, the flow folder under the flow;
- * - the film's own index only while `layers` is empty (a stack's layers carry their own indices);
+ * - the film's own index only while no stack of films is set (a stack's films carry their own indices);
  * - a medium's Cauchy or complex text field only while its kind is the one chosen: `kinds` gives the
  *   kind chosen in each medium's list where the panel holds one (a text that is not taken leaves the
  *   setting as it was, and its field stays shown to be put right), else the setting's own kind.

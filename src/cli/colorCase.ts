@@ -10,17 +10,17 @@ import {
   mediumText,
 } from '../physics/medium.ts';
 import { type Normalization, NORMALIZATIONS } from '../physics/spectralWeights.ts';
-import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN, followsField } from '../physics/filmLayers.ts';
+import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN, followsField } from '../physics/stackFilms.ts';
 import { isInDomain, type NumberDomain, oneOf, ParameterError, rejectValue, expectedNumber } from '../input/validate.ts';
 import { DEFAULT_SETTINGS, FILM_PARAMETERS } from '../settings/filmParameters.ts';
 
 /** One film to colour: what the command line or one entry of a cases file describes. */
 export interface ColorCase {
   readonly id: string | number;
-  /** The single film; with `layers`, its nOutside, nInside and angle, and its thickness that of every FIELD_THICKNESS layer. */
+  /** The single film; with `films`, its nOutside, nInside and angle, and its thickness that of every FIELD_THICKNESS film. */
   readonly stack: FilmStack<Medium>;
-  /** A stack of films in place of the stack's single film (filmLayers.ts); empty: the single film. */
-  readonly layers: readonly FilmLayer[];
+  /** The films its option `layers` stacks in place of the stack's single film (stackFilms.ts); empty: the single film. */
+  readonly films: readonly FilmLayer[];
   readonly illuminant: IlluminantSpec;
   readonly polarization: Polarization;
   readonly normalization: Normalization;
@@ -123,7 +123,7 @@ export function validateColorCase(
     return isInDomain(value, d) ? value : rejectValue(nameOf(field), value, expectedNumber(d));
   };
   const orDefault = (field: CaseField, fallback: string) => (raw[field] === undefined ? fallback : raw[field]);
-  const layers = raw.layers === undefined ? [] : validateLayers(raw, nameOf, layerThickness);
+  const films = raw.layers === undefined ? [] : validateLayers(raw, nameOf, layerThickness);
   const stack: FilmStack<Medium> = {
     nOutside: validateMedium(raw.nOutside, 'nOutside', nameOf('nOutside')),
     nFilm: validateMedium(raw.nFilm, 'nFilm', nameOf('nFilm')),
@@ -134,11 +134,11 @@ export function validateColorCase(
   return {
     id: validateId(raw.id, index, nameOf('id')),
     stack,
-    layers,
+    films,
     illuminant: raw.illuminant === undefined ? DEFAULT_SETTINGS.illuminant : illuminantFromJson(raw.illuminant, nameOf('illuminant')),
     polarization: oneOf(nameOf('polarization'), orDefault('polarization', DEFAULT_SETTINGS.polarization), POLARIZATIONS),
     normalization: oneOf(nameOf('normalization'), orDefault('normalization', DEFAULT_SETTINGS.normalization), NORMALIZATIONS),
-    wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm'), stack, layers),
+    wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm'), stack, films),
   };
 }
 
@@ -169,7 +169,7 @@ function validateMediumIn(value: unknown, role: MediumRole, name: string): Mediu
 }
 
 /**
- * Where a case's layers take their thickness from: `own`, each its number (a cases file, where
+ * Where a case's films take their thickness from: `own`, each its number (a cases file, where
  * `thicknessNm` is the single film's); `orField`, a number or FIELD_THICKNESS, the case's
  * thicknessNm (the command line's --layers, whose --thickness and thickness tables set it).
  */
@@ -180,7 +180,7 @@ const LAYERS_JSON_EXPECTED = `an array of ${LAYERS_DOMAIN.count.min} to ${LAYERS
 
 /**
  * A case's stack of films: `[{ "n", "thicknessNm" }, …]` (the command line's --layers arrives
- * parsed into the same form), each n a medium a film takes. A case with layers gives no nFilm (each
+ * parsed into the same form), each n a medium a film takes. A case with `layers` gives no nFilm (each
  * layer has its own), and in a cases file no thicknessNm (each layer has its own, and none takes
  * the case's: FIELD_THICKNESS is refused there).
  */
@@ -194,7 +194,7 @@ function validateLayers(raw: RawCase, nameOf: (field: CaseField) => string, laye
   const value = raw.layers;
   const { count, thicknessNm: thickness } = LAYERS_DOMAIN;
   if (!Array.isArray(value) || value.length < count.min || value.length > count.max) return rejectValue(name, value, LAYERS_JSON_EXPECTED);
-  const layers = value.map((entry: unknown, i): FilmLayer => {
+  const films = value.map((entry: unknown, i): FilmLayer => {
     const isLayer = typeof entry === 'object' && entry !== null && !Array.isArray(entry);
     if (!isLayer || Object.keys(entry).sort().join() !== 'n,thicknessNm') return rejectValue(`${name}[${i}]`, entry, LAYERS_JSON_EXPECTED);
     const { n, thicknessNm } = entry as { n: unknown; thicknessNm: unknown };
@@ -208,23 +208,23 @@ function validateLayers(raw: RawCase, nameOf: (field: CaseField) => string, laye
       ? { n: medium, thicknessNm }
       : rejectValue(`${name}[${i}].thicknessNm`, thicknessNm, expectedNumber(thickness));
   });
-  if (raw.thicknessNm !== undefined && !followsField(layers)) {
+  if (raw.thicknessNm !== undefined && !followsField(films)) {
     const message = `${nameOf('thicknessNm')}: not allowed with ${name} that has no ${FIELD_THICKNESS} layer (no layer takes the thickness)`;
     throw new ParameterError(nameOf('thicknessNm'), message);
   }
-  return layers;
+  return films;
 }
 
 /**
  * Wavelengths within WAVELENGTH_DOMAIN_NM and within the range of every medium's source (a metal's
  * table ends near 368 nm, so R(300 nm) on gold has no data behind it).
  */
-function validateWavelengths(value: unknown, name: string, stack: FilmStack<Medium>, layers: readonly FilmLayer[]): readonly number[] {
+function validateWavelengths(value: unknown, name: string, stack: FilmStack<Medium>, films: readonly FilmLayer[]): readonly number[] {
   if (value === undefined) return [];
   let domain = WAVELENGTH_DOMAIN_NM;
   let why = '';
-  const films: [string, Medium][] = layers.length === 0 ? [['nFilm', stack.nFilm]] : layers.map((l, i) => [`layers[${i}].n`, l.n]);
-  for (const [field, medium] of [...films, ['nInside', stack.nInside] as [string, Medium]]) {
+  const media: [string, Medium][] = films.length === 0 ? [['nFilm', stack.nFilm]] : films.map((l, i) => [`layers[${i}].n`, l.n]);
+  for (const [field, medium] of [...media, ['nInside', stack.nInside] as [string, Medium]]) {
     const range = mediumRangeNm(medium);
     if (range && (range.min > domain.min || range.max < domain.max)) {
       domain = { ...domain, min: Math.max(domain.min, range.min), max: Math.min(domain.max, range.max) };

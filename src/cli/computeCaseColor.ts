@@ -12,7 +12,7 @@ import type { IlluminantSpec } from '../physics/illuminants.ts';
 import { type IndexJson, type Medium, indexJson, mediumIndexAt } from '../physics/medium.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 import { fillReads } from '../methods/filmFills.ts';
-import { filmStackOf, stackReflectance, stackXyz } from '../methods/filmStacks.ts';
+import { filmStackOf, stackReflectance, stackXyz, withOptionFilms } from '../methods/filmStacks.ts';
 import type { ColorCase } from './colorCase.ts';
 
 /** What the CLI reports for one case. */
@@ -34,7 +34,7 @@ export interface CaseColor {
   readonly reflectance: readonly number[];
   /** ñ_b(λ), the film's index, at each of the case's `wavelengthsNm`: a number when real, { n, k } when it absorbs (a single film). */
   readonly nFilm?: readonly IndexJson[];
-  /** With layers: at each of `wavelengthsNm`, every layer's index from the outside in, as `nFilm` writes one. */
+  /** For a stack of films: at each of `wavelengthsNm`, every film's index from the outside in, as `nFilm` writes one. */
   readonly nLayers?: readonly (readonly IndexJson[])[];
   /** ñ_c(λ), the inside's index, the same way. */
   readonly nInside: readonly IndexJson[];
@@ -52,7 +52,8 @@ const to8Bit = (linear: Rgb, luminance: number, gamut: GamutMapping): Rgb => {
  */
 export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
   const options = { illuminant: c.illuminant, polarization: c.polarization, normalization: c.normalization };
-  const stack = filmStackOf({ ...c.stack, layers: c.layers });
+  const film = withOptionFilms(c.stack, c.films);
+  const stack = filmStackOf(film);
   const xyz = stackXyz(stack, options);
   const indicesAt = (m: Medium) => c.wavelengthsNm.map((lambdaNm) => indexJson(mediumIndexAt(m, lambdaNm)));
   const linearSrgb = applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz);
@@ -66,9 +67,9 @@ export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
     linearWideGamut: applyMatrix3(XYZ_TO_LINEAR_WIDE_GAMUT, xyz),
     displayP3_8: to8Bit(applyMatrix3(XYZ_TO_LINEAR_DISPLAY_P3, xyz), xyz[1], gamut),
     reflectance: c.wavelengthsNm.map((lambdaNm) => stackReflectance(lambdaNm, stack, c.polarization)),
-    // The report names the media as the case gives them: each layer's when its `layers` option is set.
-    ...(fillReads({ ...c.stack, layers: c.layers }, 'stack')
-      ? { nLayers: c.wavelengthsNm.map((lambdaNm) => stack.layers.map((l) => indexJson(mediumIndexAt(l.n, lambdaNm)))) }
+    // The report names the media as the case gives them: each film's where its option stacks films.
+    ...(fillReads(film, 'stack')
+      ? { nLayers: c.wavelengthsNm.map((lambdaNm) => stack.films.map((l) => indexJson(mediumIndexAt(l.n, lambdaNm)))) }
       : { nFilm: indicesAt(c.stack.nFilm) }),
     nInside: indicesAt(c.stack.nInside),
   };

@@ -30,7 +30,7 @@ const nk = (index: IndexJson): [number, number] => (typeof index === 'number' ? 
 
 /**
  * A table as CSV: a header line, then one line per row; R(λ) columns are named `R_<λ>nm`, the film's
- * ñ_b(λ) = n + ik columns `nFilm_<λ>nm` and `kFilm_<λ>nm` (with `layerCount` layers, layer i's from
+ * ñ_b(λ) = n + ik columns `nFilm_<λ>nm` and `kFilm_<λ>nm` (with `layerCount` films, film i's from
  * the outside, counted from 1, `nLayer<i>_<λ>nm` and `kLayer<i>_<λ>nm`), the inside's `nInside_<λ>nm` and `kInside_<λ>nm`.
  */
 export function tableCsv(rows: readonly TableRow[], wavelengthsNm: readonly number[], layerCount = 0): string {

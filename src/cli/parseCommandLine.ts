@@ -1,9 +1,9 @@
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
 import { ILLUMINANT_EXPECTED, parseIlluminant } from '../physics/illuminants.ts';
 import { mediumExpected, readMedium } from '../physics/medium.ts';
-import { FIELD_THICKNESS, followsField } from '../physics/filmLayers.ts';
-import { parseLayers } from '../physics/layersText.ts';
-import { filmLayersOf } from '../methods/filmStacks.ts';
+import { FIELD_THICKNESS, followsField } from '../physics/stackFilms.ts';
+import { parseLayers } from '../physics/stackText.ts';
+import { filmLayersOf, withOptionFilms } from '../methods/filmStacks.ts';
 import { oneOf, ParameterError, rejectValue, expectedNumber } from '../input/validate.ts';
 import {
   CASE_FLAGS,
@@ -100,7 +100,7 @@ function thicknessRange(flags: Map<Flag, string>, base: ColorCase): number[] {
   if (flags.has('thickness')) {
     throw new ParameterError('--thickness', '--thickness: not allowed with --from/--to/--step (the table varies the thickness)');
   }
-  if (!followsField(filmLayersOf({ nFilm: base.stack.nFilm, layers: base.layers }))) {
+  if (!followsField(filmLayersOf(withOptionFilms(base.stack, base.films)))) {
     const message = `--layers: not allowed with --from/--to/--step without a ${FIELD_THICKNESS} layer (the table varies the thickness ${FIELD_THICKNESS})`;
     throw new ParameterError('--layers', message);
   }

@@ -73,7 +73,7 @@ function render(command: Exclude<Command, { kind: 'chart' }>, readTextFile: Read
     case 'table': {
       const { base, variable, gamut } = command;
       const rows = tableRows(base, variable, command.values, gamut);
-      return command.format === 'csv' ? tableCsv(rows, base.wavelengthsNm, base.layers.length) : jsonLines(rows);
+      return command.format === 'csv' ? tableCsv(rows, base.wavelengthsNm, base.films.length) : jsonLines(rows);
     }
   }
 }

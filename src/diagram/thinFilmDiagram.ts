@@ -3,6 +3,7 @@ import { catalogueFor, catalogueLang, message } from '../i18n/messages.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { BEAM_TAIL_FRACTION, type FilmBeams, filmBeams } from '../physics/reflectedBeams.ts';
 import { isInDomain, quoted } from '../input/validate.ts';
+import { type FilmMediaOption, optionFilmsOf } from '../methods/filmStacks.ts';
 import type { ProbedFilm } from '../scene/probe.ts';
 import { drawBeamFigure } from './beamFigure.ts';
 import { fillBeamTable } from './beamTable.ts';
@@ -41,7 +42,7 @@ function beamSentence(beams: FilmBeams, cat: Catalogue): string {
  * (or the page's) chooses the language. `reflectance` holds R; `diagramchange` (detail:
  * { reflectance, beamCount }) follows every change. A bad attribute is named with its range in a
  * message (text only) and its earlier value kept. It draws one film only: when the bubble it
- * follows shows a stack of films (its `layers` setting), a note says so and points to the bubble's
+ * follows shows a stack of films, a note says so and points to the bubble's
  * plots, which show the stack's R(λ) (docs/diagram.md#one-film-only).
  */
 export class ThinFilmDiagram extends HTMLElement {
@@ -50,8 +51,8 @@ export class ThinFilmDiagram extends HTMLElement {
   private flipTop = false;
   private errors: readonly string[] = [];
   private linkError: string | null = null;
-  /** The layers of the stack the linked bubble shows (0: one film, or no bubble). */
-  private bubbleLayers = 0;
+  /** The films of the stack the linked bubble shows (0: one film, or no bubble). */
+  private bubbleFilms = 0;
   private unlink: () => void = () => {};
   private parts: {
     readonly controls: DiagramControls;
@@ -167,7 +168,7 @@ export class ThinFilmDiagram extends HTMLElement {
     this.unlink();
     this.unlink = () => {};
     this.linkError = null;
-    this.bubbleLayers = 0;
+    this.bubbleFilms = 0;
     const id = this.getAttribute('for');
     if (id === null) return this.render();
     const bubble = this.ownerDocument.getElementById(id);
@@ -181,7 +182,7 @@ export class ThinFilmDiagram extends HTMLElement {
     }
     const follow = (probe: ProbedFilm | null | undefined) => {
       // Read through the bubble's public `settings` (the element layer sits above this one).
-      this.bubbleLayers = (bubble as HTMLElement & { settings?: { layers?: readonly unknown[] } | null }).settings?.layers?.length ?? 0;
+      this.bubbleFilms = optionFilmsOf((bubble as HTMLElement & { settings?: FilmMediaOption | null }).settings ?? {}).length;
       if (
         !probe ||
         !isInDomain(probe.thicknessNm, FILM_STACK_DOMAIN.thicknessNm) ||
@@ -209,8 +210,8 @@ export class ThinFilmDiagram extends HTMLElement {
     this.beamCount = Math.max(...beams.channels.map((c) => c.beams.beams.length));
     parts.controls.sync(s, this.flipTop);
     const messages = this.linkError ? [...this.errors, this.linkError] : this.errors;
-    parts.stackNote.hidden = this.bubbleLayers === 0;
-    parts.stackNote.textContent = this.bubbleLayers ? message(cat, 'diagram.oneFilm', { count: this.bubbleLayers }) : '';
+    parts.stackNote.hidden = this.bubbleFilms === 0;
+    parts.stackNote.textContent = this.bubbleFilms ? message(cat, 'diagram.oneFilm', { count: this.bubbleFilms }) : '';
     parts.errors.replaceChildren(...messages.map((e) => Object.assign(this.ownerDocument.createElement('p'), { textContent: e })));
     parts.summary.textContent = `${message(cat, 'diagram.summary', {
       reflectance: fourFigures(this.r),

@@ -5,6 +5,7 @@ import { type FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import type { FilmMethodInput } from '../methods/filmMethod.ts';
 import { FILM_METHOD_REGISTRY, FILM_METHODS, methodReads } from '../methods/methods.ts';
+import { withOptionFilms } from '../methods/filmStacks.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { type FilmMedia, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from './filmMedia.ts';
 import { filmTableLayoutDefines } from './filmTableDefines.ts';
@@ -76,7 +77,7 @@ function updateFilmColorTextures(
     u.uSpectralTransform!.value = null;
   }
   // The stack's uniforms are a material's that may draw one (filmStackUniforms: the bubble, the parity probe).
-  if ('uFilmLayers' in u) updateFilmStackUniforms(u, methodReads(s.mode, 'stack') ? s : { ...s, layers: [] }, bins, m);
+  if ('uFilmLayers' in u) updateFilmStackUniforms(u, methodReads(s.mode, 'stack') ? s : withOptionFilms(s, []), bins, m);
 }
 
 /** Frees what a film-colour material holds (call before disposing it). */

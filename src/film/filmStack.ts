@@ -3,23 +3,24 @@ import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { packTexelRecord, texelRecord, texelRecordDefines } from '../gpu/texelRecord.ts';
 import { binCenterNm } from '../physics/binnedIntegration.ts';
 import { asComplex } from '../physics/complex.ts';
-import { type FilmLayer, FIELD_THICKNESS, LAYERS_DOMAIN, followsField } from '../physics/filmLayers.ts';
+import { type FilmLayer, FIELD_THICKNESS, LAYERS_DOMAIN, followsField } from '../physics/stackFilms.ts';
 import { type Medium, mediumIndexAt } from '../physics/medium.ts';
 import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
 import { fillReads } from '../methods/filmFills.ts';
 import type { FilmMethodSettings } from '../methods/filmMethod.ts';
+import { optionFilmsOf } from '../methods/filmStacks.ts';
 
 /**
  * A stack of films on the GPU (docs/gpu.md#stacks-of-films): shaders/physics/transferMatrix.glsl
- * reads each layer's ñ at every spectral bin's centre, its thickness and whether it takes the
- * thickness field's value from one data texture, `uFilmLayers`, a row per layer from the outside
+ * reads each film's ñ at every spectral bin's centre, its thickness and whether it takes the
+ * thickness field's value from one data texture, `uFilmLayers`, a row per film from the outside
  * in and a last row for the inside, a column per bin (ñ in float64 from src/physics/medium.ts).
  */
 
-/** What carries a stack: `layers` (none or empty: the single film of nFilm), with the media its fill depends on (filmFills.ts). */
+/** What carries a stack: the films its option stacks (none: the single film of nFilm), with the media its fill depends on (filmFills.ts). */
 export type StackedSettings = FilmMethodSettings;
 
-/** The texel of a layer (or the inside) at a bin, read by these names in transferMatrix.glsl. */
+/** The texel of a film (or the inside) at a bin, read by these names in transferMatrix.glsl. */
 export const FILM_LAYER = texelRecord('TFC_FILM_LAYER', { N: 2, THICKNESS_NM: 1, FOLLOWS_FIELD: 1 });
 
 /**
@@ -34,14 +35,14 @@ export const filmSpectralBins = (s: StackedSettings, q: FilmQuality, constant: n
 export const filmStackDefines = (s: StackedSettings): Record<string, number> =>
   fillReads(s, 'stack') ? { TFC_FILM_LAYERS: 1, TFC_FILM_LAYERS_MAX: LAYERS_DOMAIN.count.max, ...texelRecordDefines(FILM_LAYER) } : {};
 
-/** The uniforms transferMatrix.glsl declares: the stack's texture and its layer count. */
+/** The uniforms transferMatrix.glsl declares: the stack's texture and its film count. */
 export const filmStackUniforms = () => ({
   uFilmLayers: { value: null as DataTexture | null },
   uFilmLayerCount: { value: 0 },
 });
 
 interface StackKey {
-  readonly layers: readonly FilmLayer[];
+  readonly films: readonly FilmLayer[];
   readonly nInside: Medium;
   readonly bins: number;
 }
@@ -51,16 +52,16 @@ const nk = (m: Medium, lambdaNm: number): [number, number] => {
   return [z.re, z.im];
 };
 
-/** The texels of a stack: row l < layers the layer l (outside in), the last row the inside; column b the bin b's centre. */
-export function filmStackTexels({ layers, nInside, bins }: StackKey): Float32Array {
-  const data = new Float32Array(FILM_LAYER.floats * bins * (layers.length + 1));
-  const rows: readonly FilmLayer[] = [...layers, { n: nInside, thicknessNm: 0 }];
-  rows.forEach((layer, row) => {
-    const field = layer.thicknessNm === FIELD_THICKNESS;
+/** The texels of a stack: row l < films the film l (outside in), the last row the inside; column b the bin b's centre. */
+export function filmStackTexels({ films, nInside, bins }: StackKey): Float32Array {
+  const data = new Float32Array(FILM_LAYER.floats * bins * (films.length + 1));
+  const rows: readonly FilmLayer[] = [...films, { n: nInside, thicknessNm: 0 }];
+  rows.forEach((entry, row) => {
+    const field = entry.thicknessNm === FIELD_THICKNESS;
     for (let b = 0; b < bins; b++)
       packTexelRecord(FILM_LAYER, data, row * bins + b, {
-        N: nk(layer.n, binCenterNm(b, bins)),
-        THICKNESS_NM: field ? 0 : layer.thicknessNm,
+        N: nk(entry.n, binCenterNm(b, bins)),
+        THICKNESS_NM: field ? 0 : entry.thicknessNm,
         FOLLOWS_FIELD: field ? 1 : 0,
       });
   });
@@ -69,7 +70,7 @@ export function filmStackTexels({ layers, nInside, bins }: StackKey): Float32Arr
 
 const shared = new SharedTextures((key) => {
   const stack = JSON.parse(key) as StackKey;
-  const texture = new DataTexture(filmStackTexels(stack), FILM_LAYER.texels * stack.bins, stack.layers.length + 1, RGBAFormat, FloatType);
+  const texture = new DataTexture(filmStackTexels(stack), FILM_LAYER.texels * stack.bins, stack.films.length + 1, RGBAFormat, FloatType);
   texture.minFilter = texture.magFilter = NearestFilter;
   texture.needsUpdate = true;
   return texture;
@@ -83,9 +84,9 @@ export function updateFilmStackUniforms(u: Record<string, { value: unknown }>, s
     u.uFilmLayerCount!.value = 0;
     return;
   }
-  const layers = s.layers ?? [];
-  u.uFilmLayers!.value = shared.hold(JSON.stringify({ layers, nInside: s.nInside, bins } satisfies StackKey), holder);
-  u.uFilmLayerCount!.value = layers.length;
+  const films = optionFilmsOf(s);
+  u.uFilmLayers!.value = shared.hold(JSON.stringify({ films, nInside: s.nInside, bins } satisfies StackKey), holder);
+  u.uFilmLayerCount!.value = films.length;
 }
 
 /** `holder` needs no stack texture any more. */
@@ -93,16 +94,16 @@ export const releaseFilmStackTexture = (holder: object): void => shared.release(
 
 /**
  * The real index whose fringes in the field's thickness a stack's table resolves: the sum over its
- * FIELD_THICKNESS layers of each one's largest real index at the bins (the phase turns by all of
+ * FIELD_THICKNESS films of each one's largest real index at the bins (the phase turns by all of
  * them as the field's thickness grows); null for a stack that does not follow the field.
  */
-export function stackFieldIndex(layers: readonly FilmLayer[], bins: number): number | null {
-  if (!followsField(layers)) return null;
+export function stackFieldIndex(films: readonly FilmLayer[], bins: number): number | null {
+  if (!followsField(films)) return null;
   let sum = 0;
-  for (const layer of layers) {
-    if (layer.thicknessNm !== FIELD_THICKNESS) continue;
+  for (const film of films) {
+    if (film.thicknessNm !== FIELD_THICKNESS) continue;
     let max = 0;
-    for (let b = 0; b < bins; b++) max = Math.max(max, nk(layer.n, binCenterNm(b, bins))[0]);
+    for (let b = 0; b < bins; b++) max = Math.max(max, nk(film.n, binCenterNm(b, bins))[0]);
     sum += max;
   }
   return sum;

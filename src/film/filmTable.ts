@@ -1,7 +1,7 @@
 import type { ShaderMaterial, WebGLRenderTarget, WebGLRenderer } from 'three';
 import type { FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import { followsField } from '../physics/filmLayers.ts';
+import { followsField } from '../physics/stackFilms.ts';
 import { filmLayersOf } from '../methods/filmStacks.ts';
 import type { StackedSettings } from './filmStack.ts';
 import { type FilmTableGrid, bindFilmTable } from './filmTableGrid.ts';

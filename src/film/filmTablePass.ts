@@ -12,6 +12,7 @@ import { filmIndexMax, isDispersiveFilm, updateFilmMediaUniforms } from './filmM
 import { type FilmTableGrid, setFilmTableGridUniforms } from './filmTableGrid.ts';
 import { type StackedSettings, releaseFilmStackTexture, stackFieldIndex, updateFilmStackUniforms } from './filmStack.ts';
 import { fillReads } from '../methods/filmFills.ts';
+import { optionFilmsOf } from '../methods/filmStacks.ts';
 import { releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
 import { releaseSpectralTransformTexture, spectralTransformReady, spectralTransformTexture } from './spectralTransformTexture.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
@@ -63,7 +64,7 @@ export class FilmTablePass {
    */
   fullGrid(s: FilmSettings & StackedSettings, maxThicknessNm: number): FilmTableGrid {
     const layout = this.quality.table;
-    const index = fillReads(s, 'stack') ? stackFieldIndex(s.layers ?? [], this.programs.bins(s)) : filmIndexMax(s.nFilm);
+    const index = fillReads(s, 'stack') ? stackFieldIndex(optionFilmsOf(s), this.programs.bins(s)) : filmIndexMax(s.nFilm);
     const width = index === null ? 2 : filmTableWidth(layout, maxThicknessNm, index);
     return { width, rows: layout.rows, maxThicknessNm };
   }

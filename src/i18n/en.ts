@@ -144,7 +144,7 @@ export const EN = {
   'app.fourierAsTable':
     'mode=fourier has no Airy series where the film or the inside is dispersive ({name}={medium}): drawing with mode=table, filled from the same spectral bins.',
   'app.stackAsTable':
-    "mode={method} has no closed form for a stack of films ({layers} layers): drawing with mode=table, filled by the stack's transfer-matrix recursion.",
+    "mode={method} has no closed form for a stack of films ({count} layers): drawing with mode=table, filled by the stack's transfer-matrix recursion.",
   'app.heading': 'thin-film interference: a soap bubble',
   'app.noDisplayP3': 'This browser has no Display P3 canvas: showing sRGB.',
   'app.environmentLoading': 'Loading the environment {env}…',

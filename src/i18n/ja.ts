@@ -144,7 +144,7 @@ export const JA: Catalogue = {
   'app.fourierAsTable':
     '分散のある薄膜または内側の媒質（{name} = {medium}）にはエアリー級数がないため、計算方法「フーリエ級数」の代わりに「表」で描いている（表は同じスペクトルのビンから作る）。',
   'app.stackAsTable':
-    '薄膜の積層（{layers} 層）には計算方法 {method} の閉じた式がないため、代わりに「表」で描いている（表は積層の転送行列の漸化式で作る）。',
+    '薄膜の積層（{count} 層）には計算方法 {method} の閉じた式がないため、代わりに「表」で描いている（表は積層の転送行列の漸化式で作る）。',
   'app.heading': '薄膜干渉：シャボン玉',
   'app.noDisplayP3': 'このブラウザには P3 のキャンバスがないため、sRGB で表示している。',
   'app.environmentLoading': '環境 {env} を読み込み中…',

@@ -4,8 +4,8 @@ import { POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts'
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
 import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
 import { type Medium, assertMedium, mediumFromJson, parseMediumText } from '../physics/medium.ts';
-import type { FilmLayer } from '../physics/filmLayers.ts';
-import { layersText, parseLayers } from '../physics/layersText.ts';
+import type { FilmLayer } from '../physics/stackFilms.ts';
+import { layersText, parseLayers } from '../physics/stackText.ts';
 import { ParameterError, isInDomain, oneOf } from '../input/validate.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions, filmQualityFrom } from '../settings/filmQuality.ts';
@@ -17,7 +17,7 @@ export type FilmMode = (typeof MODES)[number];
 /** A base or a film as given: a medium, or its text (a name is one: `'Ti'`, `'complex:2.6,3.4'`). */
 export type BaseInput = Exclude<Medium, string> | string;
 
-/** A stack of films as given: its layers, or their text (`'(2.35:56.6/1.46:91.1)*8'`, `'1.68:d/1.43:30'`). */
+/** A stack of films as given: its films, or their text (`'(2.35:56.6/1.46:91.1)*8'`, `'1.68:d/1.43:30'`). */
 export type LayersInput = readonly FilmLayer[] | string;
 
 /** An edge tint as given: a three.js Color, a hex number (sRGB, as three reads one) or linear [r, g, b]. */
@@ -51,7 +51,7 @@ export interface SpectralIridescenceOptions {
    */
   readonly edgeTint?: EdgeTintInput | null;
   /**
-   * A stack of films in place of the one film (docs/physics.md#stacks-of-films): its layers from the
+   * A stack of films in place of the one film (docs/physics.md#stacks-of-films): its films from the
    * outside in, as the demo's `layers` takes them (`'(2.35:56.6/1.46:91.1)*8'`, or
    * `[{ n: 1.68, thicknessNm: 'd' }, …]`), over the base. A `d` layer takes the glTF iridescence
    * thickness (iridescenceThicknessRange, iridescenceThicknessMap); empty (the default): the film.
@@ -80,7 +80,7 @@ export interface SpectralIridescenceProperties {
   /** a metal's edge tint (a Color, a hex number, linear [r, g, b]), or null for the base colour */
   set edgeTint(value: EdgeTintInput | null);
   get layers(): readonly FilmLayer[];
-  /** the layers or their text; empty for the one film */
+  /** the films or their text; empty for the one film */
   set layers(value: LayersInput);
   get quality(): FilmQuality;
   /** any of the knobs, over the defaults (not over the current ones) */
@@ -144,7 +144,7 @@ function mediumOf(name: 'base' | 'film', given: BaseInput | null, role: 'inside'
 }
 
 /**
- * The layers checked as the demo's `layers` is (parseLayers: each layer's medium and thickness, the
+ * The films checked as the demo's `layers` is (parseLayers: each film's medium and thickness, the
  * count): a text read, a list written as its text and read back (a ParameterError naming `layers`).
  */
 function layersOf(given: LayersInput): readonly FilmLayer[] {

@@ -1,7 +1,6 @@
-import type { FilmLayer } from '../physics/filmLayers.ts';
-import type { Medium } from '../physics/medium.ts';
 import type { MessageKey } from '../i18n/en.ts';
 import type { FilmFill } from './filmFills.ts';
+import type { FilmMediaOption } from './filmStacks.ts';
 
 /**
  * What a method's shader reads beside TFC_FILM_MODE, each made for it by src/film/filmColor.ts:
@@ -15,12 +14,7 @@ import type { FilmFill } from './filmFills.ts';
 export type FilmMethodInput = 'polarization' | 'media' | 'spectralBins' | 'spectralTransform' | 'table' | 'stack';
 
 /** What a method is asked to draw: the film's media or a stack of films (its fallback may depend on them). */
-export interface FilmMethodSettings {
-  readonly nFilm: Medium;
-  readonly nInside: Medium;
-  /** A stack of films in place of the film of nFilm (none or empty: that single film). */
-  readonly layers?: readonly FilmLayer[];
-}
+export type FilmMethodSettings = FilmMediaOption;
 
 /** Another method drawn in a method's place, and the message that says why (with its `{marks}`). */
 export interface DrawnInstead {

@@ -135,7 +135,7 @@ type Triple = readonly [number, number, number];
 
 /**
  * The stacks of films, in a column between the knots below the coins: each a named object of the
- * spectral material with the preset's `layers` over its inside (`base`). A coated lens is a
+ * spectral material with the preset's films as its option `layers` over its inside (`base`). A coated lens is a
  * flattened sphere, a lens's front element seen in its dark barrel; nacre lines the inside of a
  * shell, a half sphere open to the camera. three.js's iridescence has no stack of films: they are
  * spectral in every view.
@@ -156,10 +156,10 @@ const STACK_OBJECTS: Readonly<
 /** Each stack's object: a black glossy surface whose reflection is all the stack's. */
 function stackMeshes(): Mesh<SphereGeometry, MeshPhysicalMaterial>[] {
   return SWATCH_STACKS.map((preset) => {
-    const { layers, nInside } = STACK_PRESETS[preset];
+    const { films, nInside } = STACK_PRESETS[preset];
     const o = STACK_OBJECTS[preset];
     const surface = new MeshPhysicalMaterial({ color: 0x000000, roughness: 0.08, metalness: 0, iridescence: 1, side: DoubleSide });
-    const mesh = new Mesh(o.shape(), spectralIridescence(surface, { layers, base: nInside }));
+    const mesh = new Mesh(o.shape(), spectralIridescence(surface, { layers: films, base: nInside }));
     mesh.name = o.name;
     mesh.position.set(0, o.y, 0.5);
     mesh.rotation.set(...o.rotation);

@@ -1,6 +1,6 @@
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
-import { resolveLayers } from '../physics/filmLayers.ts';
-import { layersXyz } from '../physics/layersColor.ts';
+import { resolveLayers } from '../physics/stackFilms.ts';
+import { layersXyz } from '../physics/stackColor.ts';
 import { transparentIndexAt } from '../physics/medium.ts';
 import { DESIGN_NM, STACK_PRESETS, type StackPresetName } from '../physics/stackPresets.ts';
 import { type LayerStack, layersReflectance } from '../physics/transferMatrix.ts';
@@ -12,7 +12,7 @@ export const SWATCH_ANGLES_DEG = [0, 45] as const;
 /** A named stack at θ_i, as the transfer matrix takes it. */
 const stackAt = (name: StackPresetName, angleDeg: number): LayerStack => {
   const p = STACK_PRESETS[name];
-  return { nOutside: p.nOutside, layers: resolveLayers(p.layers, 0), nInside: p.nInside, angleDeg };
+  return { nOutside: p.nOutside, films: resolveLayers(p.films, 0), nInside: p.nInside, angleDeg };
 };
 
 /** The reference colour (eqs 15–19, D65, sRGB, gamut-mapped) of a named stack at θ_i, 8 bits per channel. */

@@ -1,22 +1,22 @@
-import type { FilmLayer } from './filmLayers.ts';
+import type { FilmLayer } from './stackFilms.ts';
 import { type Medium, transparentIndexAt } from './medium.ts';
 
 /**
  * Named stacks of films (docs/physics.md#named-stacks): a coated lens, a dielectric mirror and two
- * of nature's reflectors, each with the numbers its source gives. Layers run from the outside in,
- * every thickness in nm (none follows the thickness field), every layer within LAYERS_DOMAIN.
+ * of nature's reflectors, each with the numbers its source gives. Films run from the outside in,
+ * every thickness in nm (none follows the thickness field), every film within LAYERS_DOMAIN.
  */
 export const STACK_PRESET_NAMES = ['arCoating', 'braggMirror', 'nacre', 'chirpedBeetle'] as const;
 export type StackPresetName = (typeof STACK_PRESET_NAMES)[number];
 
 /** A stack as a source describes it. */
 export interface StackPreset {
-  readonly layers: readonly FilmLayer[];
+  readonly films: readonly FilmLayer[];
   /** n_a, where the light comes from: a real constant */
   readonly nOutside: number;
-  /** the medium under the last layer */
+  /** the medium under the last film */
   readonly nInside: Medium;
-  /** The wavelength the layers are quarter waves at (for the chirped stack: its middle), nm; null when none. */
+  /** The wavelength the films are quarter waves at (for the chirped stack: its middle), nm; null when none. */
   readonly designNm: number | null;
   /** One line on what it is. */
   readonly description: string;
@@ -54,7 +54,7 @@ export const NACRE_TABLET_NM = 500;
 export const NACRE_ORGANIC_NM = 25;
 export const NACRE_PERIODS = 10;
 
-/** The beetle's layers: the real parts of Noyes, Vukusic & Hooper's fit (2007). */
+/** The beetle's films: the real parts of Noyes, Vukusic & Hooper's fit (2007). */
 export const BEETLE_HIGH_INDEX = 1.68;
 export const BEETLE_LOW_INDEX = 1.55;
 /** Quarter-wave pairs, and the wavelength they are tuned to at the surface and at the deepest pair. */
@@ -78,7 +78,7 @@ const MACLEOD = 'H. A. Macleod, Thin-Film Optical Filters, 4th ed. (CRC Press, 2
 /** Every named stack. */
 export const STACK_PRESETS: Readonly<Record<StackPresetName, StackPreset>> = {
   arCoating: {
-    layers: [quarterWaveLayer(MGF2_INDEX, DESIGN_NM)],
+    films: [quarterWaveLayer(MGF2_INDEX, DESIGN_NM)],
     nOutside: 1,
     nInside: CROWN_GLASS_INDEX,
     designNm: DESIGN_NM,
@@ -88,7 +88,7 @@ export const STACK_PRESETS: Readonly<Record<StackPresetName, StackPreset>> = {
       'n = 1.52, in air: R = ((n₀n_s − n₁²)/(n₀n_s + n₁²))² = 1.26 % at the design wavelength (here 550 nm: d = 99.6 nm)',
   },
   braggMirror: {
-    layers: braggMirrorLayers(BRAGG_PERIODS),
+    films: braggMirrorLayers(BRAGG_PERIODS),
     nOutside: 1,
     nInside: CROWN_GLASS_INDEX,
     designNm: DESIGN_NM,
@@ -99,7 +99,7 @@ export const STACK_PRESETS: Readonly<Record<StackPresetName, StackPreset>> = {
       'n = 2.164 at 550 nm: 63.5 nm) and SiO₂ (Malitson 1965, n = 1.460: 94.2 nm) on crown glass, n = 1.52',
   },
   nacre: {
-    layers: repeatLayers(
+    films: repeatLayers(
       [
         { n: ARAGONITE_INDEX, thicknessNm: NACRE_TABLET_NM },
         { n: NACRE_ORGANIC_INDEX, thicknessNm: NACRE_ORGANIC_NM },
@@ -117,14 +117,14 @@ export const STACK_PRESETS: Readonly<Record<StackPresetName, StackPreset>> = {
       'this preset, not a measured value',
   },
   chirpedBeetle: {
-    layers: chirpedLayers(BEETLE_HIGH_INDEX, BEETLE_LOW_INDEX, BEETLE_PAIRS, BEETLE_SURFACE_NM, BEETLE_DEPTH_NM),
+    films: chirpedLayers(BEETLE_HIGH_INDEX, BEETLE_LOW_INDEX, BEETLE_PAIRS, BEETLE_SURFACE_NM, BEETLE_DEPTH_NM),
     nOutside: 1,
     nInside: BEETLE_LOW_INDEX,
     designNm: (BEETLE_SURFACE_NM + BEETLE_DEPTH_NM) / 2,
-    description: 'a jewel-beetle-like chirped stack: 16 pairs of cuticle layers, quarter waves at 480 nm near the surface to 660 nm deep',
+    description: 'a jewel-beetle-like chirped stack: 16 pairs of cuticle films, quarter waves at 480 nm near the surface to 660 nm deep',
     source:
       'J. A. Noyes, P. Vukusic & I. R. Hooper, "Experimental method for reliably establishing the refractive index of ' +
-      'buprestid beetle exocuticle", Opt. Express 15, 4351 (2007): the layers of Chrysochroa raja, n = 1.68 (k = 0.03) and ' +
+      'buprestid beetle exocuticle", Opt. Express 15, 4351 (2007): the alternating films of Chrysochroa raja, n = 1.68 (k = 0.03) and ' +
       'n = 1.55 (k = 0.14), taken here without k; the chirp, optical thickness changing steadily with depth, after A. R. ' +
       'Parker, D. R. McKenzie & M. C. J. Large, "Multilayer reflectors in animals using green and gold beetles as ' +
       'contrasting examples", J. Exp. Biol. 201, 1307 (1998); its pairs and span are this preset\'s choice',

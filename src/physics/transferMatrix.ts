@@ -1,5 +1,5 @@
 import { type Complex, type RefractiveIndex, cAbs2, cAdd, cDiv, cExpI, cMul, cScale, cSub, cTimesIndex, sameIndex } from './complex.ts';
-import { LAYERS_DOMAIN, type ResolvedLayer } from './filmLayers.ts';
+import { LAYERS_DOMAIN, type ResolvedLayer } from './stackFilms.ts';
 import { FILM_STACK_DOMAIN, type Polarization, channelCoefficients, channelsOf } from './filmReflectance.ts';
 import { fresnelCoefficients, transmittedFluxRatio } from './fresnel.ts';
 import { type Medium, assertMedium, mediumIndexAt, transparentIndexAt } from './medium.ts';
@@ -8,8 +8,8 @@ import { assertInRange } from '../input/validate.ts';
 
 /**
  * Every film: a stack of one or more films between a transparent outside and an inside
- * (docs/physics.md#stacks-of-films). The media are numbered 0 (the outside), 1…N (the layers, outside
- * in) and N + 1 (the inside). Domain (LAYERS_DOMAIN, FILM_STACK_DOMAIN): 1–64 layers, each
+ * (docs/physics.md#stacks-of-films). The media are numbered 0 (the outside), 1…N (the films, outside
+ * in) and N + 1 (the inside). Domain (LAYERS_DOMAIN, FILM_STACK_DOMAIN): 1–64 films, each
  * 0–20 000 nm thick and of any medium a film takes (a real n in [1, 4], water, a Cauchy film, a named
  * medium, complex:n,k); the inside any medium the single film's inside takes; the outside a real n in
  * [1, 4] where a user gives it (assertLayerStack), any transparent medium where the film is seen from
@@ -18,19 +18,19 @@ import { assertInRange } from '../input/validate.ts';
  */
 export interface LayerStack {
   readonly nOutside: Medium;
-  readonly layers: readonly ResolvedLayer[];
+  readonly films: readonly ResolvedLayer[];
   readonly nInside: Medium;
   readonly angleDeg: number;
 }
 
-/** Throws a ParameterError naming the first field outside the domain of LayerStack (`layers[i].n`, `layers[i].thicknessNm`, …). */
+/** Throws a ParameterError naming the first field outside the domain of LayerStack (`films[i].n`, `films[i].thicknessNm`, …). */
 export function assertLayerStack(stack: LayerStack): void {
   assertMedium('nOutside', stack.nOutside, 'outside');
   const { count, thicknessNm } = LAYERS_DOMAIN;
-  assertInRange('layers', stack.layers.length, count.min, count.max, count.unit);
-  stack.layers.forEach((layer, i) => {
-    assertMedium(`layers[${i}].n`, layer.n, 'film');
-    assertInRange(`layers[${i}].thicknessNm`, layer.thicknessNm, thicknessNm.min, thicknessNm.max, thicknessNm.unit);
+  assertInRange('films', stack.films.length, count.min, count.max, count.unit);
+  stack.films.forEach((film, i) => {
+    assertMedium(`films[${i}].n`, film.n, 'film');
+    assertInRange(`films[${i}].thicknessNm`, film.thicknessNm, thicknessNm.min, thicknessNm.max, thicknessNm.unit);
   });
   assertMedium('nInside', stack.nInside, 'inside');
   const { angleDeg } = FILM_STACK_DOMAIN;
@@ -69,8 +69,8 @@ const isZero = (z: Complex): boolean => z.re === 0 && z.im === 0;
 export function layersOpticsUnchecked(stack: LayerStack, lambdaNm: number, polarization: Polarization): LayersOptics {
   const n0 = transparentIndexAt(stack.nOutside, lambdaNm);
   const cosIncidence = cosDeg(stack.angleDeg);
-  const layers = polarization === 'paper' ? stack.layers : stack.layers.filter((l) => l.thicknessNm > 0);
-  const indices: RefractiveIndex[] = [n0, ...layers.map((l) => mediumIndexAt(l.n, lambdaNm)), mediumIndexAt(stack.nInside, lambdaNm)];
+  const films = polarization === 'paper' ? stack.films : stack.films.filter((l) => l.thicknessNm > 0);
+  const indices: RefractiveIndex[] = [n0, ...films.map((l) => mediumIndexAt(l.n, lambdaNm)), mediumIndexAt(stack.nInside, lambdaNm)];
   const cos = indices.map((n) => refractedCos(n, n0, cosIncidence));
   const interfaces = indices.slice(1).map((next, j) => ({
     forward: fresnelCoefficients(indices[j]!, cos[j]!, next, cos[j + 1]!),
@@ -83,7 +83,7 @@ export function layersOpticsUnchecked(stack: LayerStack, lambdaNm: number, polar
       return { r, t, rBack, tBack };
     }),
   );
-  const opticalPathsNm = layers.map((l, i) => cScale(cTimesIndex(cos[i + 1]!, indices[i + 1]!), 2 * l.thicknessNm));
+  const opticalPathsNm = films.map((l, i) => cScale(cTimesIndex(cos[i + 1]!, indices[i + 1]!), 2 * l.thicknessNm));
   // As for the single film: at exact grazing incidence only a stack with no interface at all passes light.
   const noInterface = indices.every((n) => sameIndex(n, n0));
   const fluxRatio = transmittedFluxRatio(n0, cos[0]!, indices[indices.length - 1]!, cos[cos.length - 1]!, noInterface);
@@ -121,10 +121,10 @@ export function airyStep(step: InterfaceAmplitudes, behind: Complex, z: Complex)
  *   Γ_N = r_{N,N+1},  τ_N = t_{N,N+1},  and for j = N−1 … 0 (airyStep), with z = e^{iφ_{j+1}},
  *   Γ_j = r_{j,j+1} + t_{j,j+1} t_{j+1,j} Γ_{j+1} z / (1 − r_{j+1,j} Γ_{j+1} z),
  *   τ_j = t_{j,j+1} τ_{j+1} z^{1/2} / (1 − r_{j+1,j} Γ_{j+1} z).
- * Each step is eq (13) with the layers behind the interface folded into one reflector Γ_{j+1}, so
+ * Each step is eq (13) with the films behind the interface folded into one reflector Γ_{j+1}, so
  * one layer is eq (13) itself. |z| ≤ 1, so a thick evanescent or absorbing layer makes z underflow
  * to 0 and every value stays finite, where a product of 2×2 characteristic matrices overflows.
- * `interfaces` are 0|1 … N|N+1, `halfPhases` e^{iφ_j/2} of layers 1 … N.
+ * `interfaces` are 0|1 … N|N+1, `halfPhases` e^{iφ_j/2} of films 1 … N.
  */
 export function channelAmplitudes(interfaces: readonly InterfaceAmplitudes[], halfPhases: readonly Complex[]): { r: Complex; t: Complex } {
   const last = interfaces[interfaces.length - 1]!;
@@ -167,7 +167,7 @@ export const layersTransmittance = (lambdaNm: number, stack: LayerStack, polariz
   layersTransmittanceAt(layersOptics(stack, lambdaNm, polarization), lambdaNm);
 
 /**
- * A(λ) = 1 − R − T: what the layers absorb, plus all that enters an absorbing inside. 0 to rounding
+ * A(λ) = 1 − R − T: what the films absorb, plus all that enters an absorbing inside. 0 to rounding
  * for a lossless stack in the physical modes; in `paper`, whose amplitudes conserve no energy, only a remainder.
  */
 export function layersAbsorptance(lambdaNm: number, stack: LayerStack, polarization: Polarization = 'unpolarized'): number {

@@ -3,7 +3,7 @@ import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantSpd } from '../physics/illuminants.ts';
 import { isDispersiveMedium, mediumIndexAt } from '../physics/medium.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
-import { type FilmOption, filmStackOf, singleFilmOf, stackReflectanceSpectrum } from '../methods/filmStacks.ts';
+import { type FilmOption, filmStackOf, optionFilmsOf, singleFilmOf, stackReflectanceSpectrum } from '../methods/filmStacks.ts';
 
 /** The spectra behind a film's colour, sampled over the integration range (eqs 15–18's integrand). */
 export interface FilmSpectrum {
@@ -14,15 +14,15 @@ export interface FilmSpectrum {
   readonly incident: Float64Array;
   /** I_out(λ) = R(λ)·I_in(λ), on the same scale as `incident`. */
   readonly reflected: Float64Array;
-  /** n_b(λ) (Re ñ_b) of a dispersive film of one layer; null when its index is the same at every wavelength, and for two or more layers. */
+  /** n_b(λ) (Re ñ_b) of a dispersive single film; null when its index is the same at every wavelength, and for a stack of two or more films. */
   readonly filmIndex: Float64Array | null;
-  /** The layers the film's option gives; 0 for the film of nFilm. */
+  /** The films the film's option stacks; 0 for the film of nFilm. */
   readonly layerCount: number;
 }
 
 /**
  * Samples R, I_in and I_out every `stepNm` from 380 to 830 nm: R of the film's stack (filmStackOf:
- * eqs 11–14 for one layer, the transfer matrix for more).
+ * eqs 11–14 for one film, the transfer matrix for more).
  */
 export function filmSpectrum(film: FilmOption, illuminant: IlluminantSpec, polarization: Polarization, stepNm = 1): FilmSpectrum {
   const count = Math.floor((LAMBDA_MAX_NM - LAMBDA_MIN_NM) / stepNm) + 1;
@@ -39,5 +39,5 @@ export function filmSpectrum(film: FilmOption, illuminant: IlluminantSpec, polar
     incident[i]! /= peak;
     reflected[i] = reflectance[i]! * incident[i]!;
   }
-  return { lambdasNm, reflectance, incident, reflected, filmIndex, layerCount: film.layers?.length ?? 0 };
+  return { lambdasNm, reflectance, incident, reflected, filmIndex, layerCount: optionFilmsOf(film).length };
 }

@@ -1,5 +1,5 @@
 import { type Matrix3, type Rgb, applyMatrix3, encode8, mapToGamut } from '../physics/colorConversions.ts';
-import { followsField } from '../physics/filmLayers.ts';
+import { followsField } from '../physics/stackFilms.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';

@@ -14,6 +14,7 @@ import { opaquePngUrl, saveUrl, textUrl } from './saveDownload.ts';
 import { drawScaleStrip } from './scaleStrip.ts';
 import { spectrumCsv } from './spectrumCsv.ts';
 import { SPECTRUM_LEGEND, drawSpectrumPlot } from './spectrumPlot.ts';
+import { filmOptionAt } from '../methods/filmStacks.ts';
 
 /** The colour scale runs from 0 to the field's thickest film, and at least this far. */
 const MIN_SCALE_NM = 1000;
@@ -192,7 +193,7 @@ export class PlotPanel {
       this.fillTable();
       return;
     }
-    const stack = { nOutside: s.nOutside, nFilm: s.nFilm, nInside: s.nInside, layers: s.layers, angleDeg: reading.angleDeg };
+    const stack = filmOptionAt(s, reading.angleDeg);
     const toRgb = displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB;
     const c = probeColor({ ...stack, thicknessNm: reading.thicknessNm }, s, toRgb, reading.renderedXyz);
     const fmt = (xs: readonly number[]) => xs.map((v) => v.toFixed(4)).join(' ');

@@ -6,6 +6,7 @@ import type { ProbeReading } from '../scene/probe.ts';
 import { type ColorName, colorName } from './colorName.ts';
 import { probeColor } from './probeColor.ts';
 import { fillReads } from '../methods/filmFills.ts';
+import { filmOptionAt, optionFilmsOf } from '../methods/filmStacks.ts';
 
 /** A colour's name in a catalogue's language ("dark blue", "暗い青"). */
 export function colorNameText(name: ColorName, cat: Catalogue): string {
@@ -16,19 +17,12 @@ export function colorNameText(name: ColorName, cat: Catalogue): string {
 /**
  * One sentence on the film at the probe, for a screen reader: where the probe is (per cent of
  * the view), the film's thickness and θ_i, and its reference colour (eqs 15–19) in sRGB as a name
- * and a hex, and whether the film is a stack of layers; or that the probe is off the bubble (a null reading).
+ * and a hex, and whether the film is a stack of films; or that the probe is off the bubble (a null reading).
  */
 export function probeDescription(s: FilmSettings, probe: readonly [number, number], reading: ProbeReading | null, cat: Catalogue): string {
   const [x, y] = probe.map((v) => Math.round(v * 100));
   if (!reading) return message(cat, 'bubble.offBubble', { x: x!, y: y! });
-  const film = {
-    nOutside: s.nOutside,
-    nFilm: s.nFilm,
-    nInside: s.nInside,
-    layers: s.layers,
-    angleDeg: reading.angleDeg,
-    thicknessNm: reading.thicknessNm,
-  };
+  const film = { ...filmOptionAt(s, reading.angleDeg), thicknessNm: reading.thicknessNm };
   const c = probeColor(film, s, XYZ_TO_LINEAR_SRGB, reading.renderedXyz);
   const sentence = message(cat, 'bubble.description', {
     x: x!,
@@ -38,5 +32,5 @@ export function probeDescription(s: FilmSettings, probe: readonly [number, numbe
     colour: colorNameText(colorName(c.rgb8), cat),
     hex: c.hex,
   });
-  return fillReads(s, 'stack') ? `${sentence} ${message(cat, 'plots.stackNote', { count: s.layers.length })}` : sentence;
+  return fillReads(s, 'stack') ? `${sentence} ${message(cat, 'plots.stackNote', { count: optionFilmsOf(s).length })}` : sentence;
 }

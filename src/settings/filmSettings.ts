@@ -1,5 +1,5 @@
 import { type Medium } from '../physics/medium.ts';
-import type { FilmLayer } from '../physics/filmLayers.ts';
+import type { FilmLayer } from '../physics/stackFilms.ts';
 import { FIELDS, type FieldName, type FieldSettings } from '../fields/fields.ts';
 import { ENVIRONMENTS, type Environment, HDR_ENVIRONMENTS, type HdrEnvironment, isHdrEnvironment } from '../environments/environments.ts';
 import { FILM_METHODS, type FilmMethodName, MODES } from '../methods/methods.ts';
@@ -34,7 +34,7 @@ export interface FilmSettings extends FieldSettings {
   /** ñ_b: a number, a material, a Cauchy film, a named medium or a complex constant (medium.ts) */
   readonly nFilm: Medium;
   /**
-   * A stack of films from the outside in (filmLayers.ts), in place of the single film of `nFilm`
+   * A stack of films from the outside in (stackFilms.ts), in place of the single film of `nFilm`
    * and `thicknessNm`; a layer of FIELD_THICKNESS takes the thickness field's value. Empty: the single film.
    */
   readonly layers: readonly FilmLayer[];

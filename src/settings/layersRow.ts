@@ -1,10 +1,10 @@
-import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN } from '../physics/filmLayers.ts';
-import { LAYERS_EXPECTED, layersText, readLayers } from '../physics/layersText.ts';
+import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN } from '../physics/stackFilms.ts';
+import { LAYERS_EXPECTED, layersText, readLayers } from '../physics/stackText.ts';
 import type { Expectation, PanelFolder, ParameterRow, RowNames } from './parameterRow.ts';
 import { textRow } from './textRows.ts';
 
 /**
- * The longest layers text the URL reads: every one of LAYERS_DOMAIN.count.max layers written out
+ * The longest layers text the URL reads: every one of LAYERS_DOMAIN.count.max films written out
  * with a Cauchy film's three coefficients and a thickness, each number at full precision, fits.
  */
 export const LAYERS_MAX_CHARS = 8192;
@@ -22,7 +22,7 @@ const EXPECTS: Expectation = {
 };
 
 /**
- * A stack of films (layersText.ts): `INDEX:THICKNESS` entries separated by `/`, groups `(…)*N`.
+ * A stack of films (stackText.ts): `INDEX:THICKNESS` entries separated by `/`, groups `(…)*N`.
  * The empty text is the empty list, the default: no stack, the single film of the row `nFilm`.
  */
 export const layersRow = <S, K extends keyof S & string>(n: RowNames<S, K>, folder: PanelFolder | null): ParameterRow<S> => ({
@@ -32,10 +32,10 @@ export const layersRow = <S, K extends keyof S & string>(n: RowNames<S, K>, fold
     parse: (raw) => {
       if (raw.trim() === '') return { value: [] };
       const reading = readLayers(raw);
-      return 'layers' in reading ? { value: reading.layers } : reading;
+      return 'films' in reading ? { value: reading.films } : reading;
     },
     text: layersText,
-    control: (folder) => ({ folder, kind: 'layers' }),
+    control: (folder) => ({ folder, kind: 'stack' }),
   }),
   maxLength: LAYERS_MAX_CHARS,
 });

@@ -13,8 +13,8 @@ export type PanelControl =
   | { readonly folder: PanelFolder; readonly kind: 'filmIndex' }
   /** A medium (medium.ts): a film index's controls, a named medium (a metal, an oxide) or a complex constant (text n,k). */
   | { readonly folder: PanelFolder; readonly kind: 'medium'; readonly role: Exclude<MediumRole, 'outside'> }
-  /** A stack of films as text (layersText.ts); while it holds layers, the film's own index is not used. */
-  | { readonly folder: PanelFolder; readonly kind: 'layers' }
+  /** A stack of films as text (stackText.ts); while it holds films, the film's own index is not used. */
+  | { readonly folder: PanelFolder; readonly kind: 'stack' }
   /** `auto` (a toggle) or a number (a slider over the whole domain, shown while the toggle is off, starting at `start`). */
   | {
       readonly folder: PanelFolder;

@@ -10,8 +10,8 @@ import { DISPERSIVE_FIRST_FRAME_MS, STACK_FIRST_FRAME_MS } from './waits.ts';
 import { MAX_CODE_DIFFERENCE_STACK } from '../tolerances.ts';
 import { EN } from '../../src/i18n/en.ts';
 import { message } from '../../src/i18n/messages.ts';
-import { type FilmLayer, resolveLayers } from '../../src/physics/filmLayers.ts';
-import { layersText, parseLayers } from '../../src/physics/layersText.ts';
+import { type FilmLayer, resolveLayers } from '../../src/physics/stackFilms.ts';
+import { layersText, parseLayers } from '../../src/physics/stackText.ts';
 import { type Medium, mediumText } from '../../src/physics/medium.ts';
 import { STACK_PRESETS } from '../../src/physics/stackPresets.ts';
 
@@ -98,8 +98,8 @@ test('space=display-p3 shows the reference P3 colour, or falls back to sRGB wher
  * coated lens of stackPresets.ts on their insides, and a nacre-like stack that follows the field.
  */
 const STACKS: readonly { name: string; layers: readonly FilmLayer[]; nInside: Medium; thicknessNm: number }[] = [
-  { name: 'Bragg mirror', ...STACK_PRESETS.braggMirror, thicknessNm: 450 },
-  { name: 'AR coating', ...STACK_PRESETS.arCoating, thicknessNm: 450 },
+  { name: 'Bragg mirror', layers: STACK_PRESETS.braggMirror.films, nInside: STACK_PRESETS.braggMirror.nInside, thicknessNm: 450 },
+  { name: 'AR coating', layers: STACK_PRESETS.arCoating.films, nInside: STACK_PRESETS.arCoating.nInside, thicknessNm: 450 },
   { name: 'nacre-like (1.68:d/1.43:30)*2', layers: parseLayers('layers', '(1.68:d/1.43:30)*2'), nInside: 1.53, thicknessNm: 400 },
 ];
 
@@ -110,7 +110,7 @@ test("a stack of films: the centre pixel is the transfer matrix's sRGB colour in
   test.setTimeout(STACK_FIRST_FRAME_MS + 120_000);
   const notice = page.locator('#messages .method-notice');
   for (const { name, layers, nInside, thicknessNm } of STACKS) {
-    const expected = stackReference8({ nOutside: 1, layers: resolveLayers(layers, thicknessNm), nInside, angleDeg: 0 });
+    const expected = stackReference8({ nOutside: 1, films: resolveLayers(layers, thicknessNm), nInside, angleDeg: 0 });
     const query = `thickness=${thicknessNm}&nInside=${encodeURIComponent(mediumText(nInside))}&layers=${encodeURIComponent(layersText(layers))}`;
     for (const mode of ['table', 'exact', 'fourier'] as const) {
       const { rgb } = await centre(page, `${query}&illuminant=D65&mode=${mode}`, STACK_FIRST_FRAME_MS);
@@ -118,7 +118,7 @@ test("a stack of films: the centre pixel is the transfer matrix's sRGB colour in
       expect.soft(() => expectClose(rgb, expected, `${name}, ${mode}`, MAX_CODE_DIFFERENCE_STACK)).not.toThrow();
       // A method that reads neither the stack nor a table (fourier) gives way to the table.
       if (!methodReads(mode, 'stack') && !methodReads(mode, 'table'))
-        await expect(notice).toHaveText(message(EN, 'app.stackAsTable', { method: 'fourier', layers: String(layers.length) }));
+        await expect(notice).toHaveText(message(EN, 'app.stackAsTable', { method: 'fourier', count: String(layers.length) }));
       else await expect(notice).toHaveCount(0);
     }
   }

@@ -1,7 +1,7 @@
 import { type Matrix3, XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } from '../../src/physics/colorConversions.ts';
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
-import { layersXyz } from '../../src/physics/layersColor.ts';
+import { layersXyz } from '../../src/physics/stackColor.ts';
 import type { FilmStack } from '../../src/physics/filmReflectance.ts';
 import type { Medium } from '../../src/physics/medium.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';

@@ -1,9 +1,9 @@
 import { BOTH_BACKENDS, expect, test } from './fixtures.ts';
 import { deltaE00 } from '../../src/physics/colorDifference.ts';
-import { type FilmLayer, resolveLayers } from '../../src/physics/filmLayers.ts';
+import { type FilmLayer, resolveLayers } from '../../src/physics/stackFilms.ts';
 import type { Polarization } from '../../src/physics/filmReflectance.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
-import { layersXyz } from '../../src/physics/layersColor.ts';
+import { layersXyz } from '../../src/physics/stackColor.ts';
 import { whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import { deltaStats } from '../../scripts/harness/deltaStats.ts';
@@ -87,7 +87,7 @@ const GROUPS: readonly Group[] = STACKS.flatMap(({ name, layers, nInside, thickn
 
 /** The float64 reference: the stack's XYZ by the transfer matrix, sampled by its adaptive rule (layersXyz). */
 const referenceXyz = (g: Group, thicknessNm: number, angleDeg: number): Xyz =>
-  layersXyz({ nOutside: g.nOutside, layers: resolveLayers(g.layers!, thicknessNm), nInside: g.nInside, angleDeg }, g);
+  layersXyz({ nOutside: g.nOutside, films: resolveLayers(g.layers!, thicknessNm), nInside: g.nInside, angleDeg }, g);
 
 const REFERENCE = GROUPS.map((g) => g.cases.map((c) => referenceXyz(g, c.thicknessNm, c.angleDeg)));
 

@@ -10,7 +10,7 @@ import { filmMediaDefines, isDispersiveFilm } from '../../../src/film/filmMedia.
 import { tableKey } from '../../../src/film/filmTable.ts';
 import { FilmTablePass } from '../../../src/film/filmTablePass.ts';
 import { asComplex } from '../../../src/physics/complex.ts';
-import { type FilmLayer, LAYERS_DOMAIN } from '../../../src/physics/filmLayers.ts';
+import { type FilmLayer, LAYERS_DOMAIN } from '../../../src/physics/stackFilms.ts';
 import { mediumIndexAt } from '../../../src/physics/medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../../../src/physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
@@ -36,7 +36,7 @@ describe('a stack of films on the GPU', () => {
   it("holds each layer's ñ at the bins' centres, its thickness or the field's flag, and the inside last", () => {
     const bins = 150;
     const layers = [...FIXED, ...FOLLOWING];
-    const data = filmStackTexels({ layers, nInside: 'Au', bins });
+    const data = filmStackTexels({ films: layers, nInside: 'Au', bins });
     expect(data.length).toBe(FILM_LAYER.floats * bins * (layers.length + 1));
     const rows = [...layers, { n: 'Au', thicknessNm: 0 } as const];
     for (const [row, layer] of rows.entries())

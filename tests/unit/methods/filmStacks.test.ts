@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { FILM_FILLS, fillReads, filmFill } from '../../../src/methods/filmFills.ts';
 import { filmLayersOf, filmStackOf, singleFilmOf, stackReflectance, stackXyz } from '../../../src/methods/filmStacks.ts';
 import { FILM_METHODS, drawnMethod, supports } from '../../../src/methods/methods.ts';
-import { layersXyz } from '../../../src/physics/layersColor.ts';
+import { layersXyz } from '../../../src/physics/stackColor.ts';
 import { dispersiveReflectance, filmXyz } from '../../../src/physics/spectralIntegration.ts';
 import { layersReflectance } from '../../../src/physics/transferMatrix.ts';
 import { ALGEBRAIC_TOL } from '../../tolerances.ts';
@@ -18,7 +18,7 @@ const LIGHT = { illuminant: 'D65', polarization: 'unpolarized', normalization: '
 
 describe('films as stacks (src/methods/filmStacks.ts)', () => {
   it('a film without the layers option is the one layer of nFilm at its thickness', () => {
-    expect(filmStackOf(SOAP)).toEqual({ nOutside: 1, layers: [{ n: 1.33, thicknessNm: 420 }], nInside: 1, angleDeg: 30 });
+    expect(filmStackOf(SOAP)).toEqual({ nOutside: 1, films: [{ n: 1.33, thicknessNm: 420 }], nInside: 1, angleDeg: 30 });
     expect(filmStackOf({ ...SOAP, layers: [] })).toEqual(filmStackOf(SOAP));
     expect(filmLayersOf(SOAP)).toEqual([{ n: 1.33, thicknessNm: 'd' }]);
   });
@@ -28,7 +28,7 @@ describe('films as stacks (src/methods/filmStacks.ts)', () => {
       { n: 2.1, thicknessNm: 'd' },
       { n: 1.38, thicknessNm: 100 },
     ] as const;
-    expect(filmStackOf({ ...SOAP, layers }).layers).toEqual([
+    expect(filmStackOf({ ...SOAP, layers }).films).toEqual([
       { n: 2.1, thicknessNm: 420 },
       { n: 1.38, thicknessNm: 100 },
     ]);

@@ -5,7 +5,7 @@
 import { describe, expect, it } from 'vitest';
 import { EN } from '../../../src/i18n/en.ts';
 import { JA } from '../../../src/i18n/ja.ts';
-import type { FilmLayer } from '../../../src/physics/filmLayers.ts';
+import type { FilmLayer } from '../../../src/physics/stackFilms.ts';
 import { FILM_METHODS, drawnMethod, methodReads } from '../../../src/methods/methods.ts';
 
 const STACK: readonly FilmLayer[] = [
@@ -24,7 +24,7 @@ describe('methods and stacks of films', () => {
       }
       expect(shown, mode).toBe('table');
       expect(instead?.notice, mode).toBe('app.stackAsTable');
-      expect(instead?.values, mode).toEqual({ method: mode, layers: '2' });
+      expect(instead?.values, mode).toEqual({ method: mode, count: '2' });
     }
     // The Fourier method is one of those that give way: it has no closed form for a stack.
     expect(drawnMethod({ ...FILM, layers: STACK, mode: 'fourier' }).mode).toBe('table');
@@ -38,8 +38,8 @@ describe('methods and stacks of films', () => {
     }
   });
 
-  it("the notice names the method and the stack's layers in both catalogues", () => {
+  it("the notice names the method and the stack's count of films in both catalogues", () => {
     for (const text of [EN['app.stackAsTable'], JA['app.stackAsTable']])
-      expect(text).toMatch(/\{method\}.*\{layers\}|\{layers\}.*\{method\}/s);
+      expect(text).toMatch(/\{method\}.*\{count\}|\{count\}.*\{method\}/s);
   });
 });

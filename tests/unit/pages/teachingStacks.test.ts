@@ -1,6 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { layersText, readLayers } from '../../../src/physics/layersText.ts';
+import { layersText, readLayers } from '../../../src/physics/stackText.ts';
 import { braggMirrorLayers } from '../../../src/physics/stackPresets.ts';
 
 /** The `layers` attributes of a page's bubbles. */
@@ -14,7 +14,7 @@ describe('the teaching pages’ stacks', () => {
   for (const page of ['public/teaching.html', 'public/teaching.ja.html'])
     it(`${page} shows the named mirror (stackPresets.ts) with 1, 2, 4 and 8 pairs, each a valid layers text`, () => {
       const texts = layersOf(page);
-      for (const text of texts) expect(readLayers(text), text).toHaveProperty('layers');
+      for (const text of texts) expect(readLayers(text), text).toHaveProperty('films');
       expect(new Set(texts)).toEqual(new Set([1, 2, 4, 8].map(mirrorText)));
     });
 });

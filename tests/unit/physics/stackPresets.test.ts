@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { FIELD_THICKNESS, LAYERS_DOMAIN, resolveLayers } from '../../../src/physics/filmLayers.ts';
+import { FIELD_THICKNESS, LAYERS_DOMAIN, resolveLayers } from '../../../src/physics/stackFilms.ts';
 import { mediumProblem, transparentIndexAt } from '../../../src/physics/medium.ts';
 import {
   BEETLE_DEPTH_NM,
@@ -21,7 +21,7 @@ import { ALGEBRAIC_TOL, BRAGG_BAND_CENTRE_G_TOL, BRAGG_PEAK_NM_TOL, TMM_GOLDEN_T
 
 const stackOf = (p: StackPreset, angleDeg = 0): LayerStack => ({
   nOutside: p.nOutside,
-  layers: resolveLayers(p.layers, 0),
+  films: resolveLayers(p.films, 0),
   nInside: p.nInside,
   angleDeg,
 });
@@ -45,9 +45,9 @@ describe('named stacks', () => {
     for (const name of STACK_PRESET_NAMES) {
       const p = STACK_PRESETS[name];
       const { count, thicknessNm } = LAYERS_DOMAIN;
-      expect(p.layers.length, name).toBeGreaterThanOrEqual(count.min);
-      expect(p.layers.length, name).toBeLessThanOrEqual(count.max);
-      for (const layer of p.layers) {
+      expect(p.films.length, name).toBeGreaterThanOrEqual(count.min);
+      expect(p.films.length, name).toBeLessThanOrEqual(count.max);
+      for (const layer of p.films) {
         expect(layer.thicknessNm, name).not.toBe(FIELD_THICKNESS);
         expect(layer.thicknessNm as number, name).toBeGreaterThanOrEqual(thicknessNm.min);
         expect(layer.thicknessNm as number, name).toBeLessThanOrEqual(thicknessNm.max);
@@ -105,8 +105,8 @@ describe('named stacks', () => {
   it('the chirped stack reflects a wider band than a regular one of the same mean period', () => {
     const p = STACK_PRESETS.chirpedBeetle;
     const meanNm = (BEETLE_SURFACE_NM + BEETLE_DEPTH_NM) / 2;
-    const regular = { ...p, layers: chirpedLayers(BEETLE_HIGH_INDEX, BEETLE_LOW_INDEX, BEETLE_PAIRS, meanNm, meanNm) };
-    const total = (q: StackPreset) => resolveLayers(q.layers, 0).reduce((sum, l) => sum + l.thicknessNm, 0);
+    const regular = { ...p, films: chirpedLayers(BEETLE_HIGH_INDEX, BEETLE_LOW_INDEX, BEETLE_PAIRS, meanNm, meanNm) };
+    const total = (q: StackPreset) => resolveLayers(q.films, 0).reduce((sum, l) => sum + l.thicknessNm, 0);
     // The same mean period: the quarter-wave thicknesses are linear in the design wavelength.
     expect(total(p)).toBeCloseTo(total(regular), 9);
     const width = (q: StackPreset) => {
@@ -116,8 +116,8 @@ describe('named stacks', () => {
     expect(width(p)).toBeGreaterThan(2 * width(regular));
   });
 
-  it('nacre and the chirped stack reflect what tmm (Byrnes 2016, v0.2.0) computes for the same layers', () => {
-    // coh_tmm('s'/'p', [1, …layers, inside], [inf, …d, inf], θ, λ), unpolarised = the mean.
+  it('nacre and the chirped stack reflect what tmm (Byrnes 2016, v0.2.0) computes for the same films', () => {
+    // coh_tmm('s'/'p', [1, …films, inside], [inf, …d, inf], θ, λ), unpolarised = the mean.
     const golden: [keyof typeof STACK_PRESETS, number, number, number][] = [
       ['nacre', 440, 0, 0.5769420740337887],
       ['nacre', 587, 0, 0.44499395389698654],

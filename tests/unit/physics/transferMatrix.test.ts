@@ -8,9 +8,9 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { deltaE00 } from '../../../src/physics/colorDifference.ts';
 import { type RefractiveIndex } from '../../../src/physics/complex.ts';
-import { type ResolvedLayer } from '../../../src/physics/filmLayers.ts';
+import { type ResolvedLayer } from '../../../src/physics/stackFilms.ts';
 import { POLARIZATIONS, type Polarization, filmReflectance, filmTransmittance } from '../../../src/physics/filmReflectance.ts';
-import { layersStepsPerNm, layersXyz } from '../../../src/physics/layersColor.ts';
+import { layersStepsPerNm, layersXyz } from '../../../src/physics/stackColor.ts';
 import { type Medium } from '../../../src/physics/medium.ts';
 import { dispersiveReflectance, filmXyz, integrateXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
 import { spectralWeights } from '../../../src/physics/spectralWeights.ts';
@@ -65,7 +65,7 @@ describe('one layer is the single film, eqs (13)–(14)', () => {
               for (const lambdaNm of [380, 555, 830])
                 for (const polarization of POLARIZATIONS) {
                   const film = { nOutside, nFilm: index(nFilm), nInside: index(nInside), thicknessNm, angleDeg };
-                  const stack: LayerStack = { nOutside, layers: [{ n: medium(nFilm), thicknessNm }], nInside: medium(nInside), angleDeg };
+                  const stack: LayerStack = { nOutside, films: [{ n: medium(nFilm), thicknessNm }], nInside: medium(nInside), angleDeg };
                   const dR = Math.abs(layersReflectance(lambdaNm, stack, polarization) - filmReflectance(lambdaNm, film, polarization));
                   const dT = Math.abs(layersTransmittance(lambdaNm, stack, polarization) - filmTransmittance(lambdaNm, film, polarization));
                   worst = Math.max(worst, dR, dT);
@@ -85,7 +85,7 @@ describe('one layer is the single film, eqs (13)–(14)', () => {
       for (const angleDeg of [0, 60])
         for (const polarization of ['unpolarized', 'paper'] as const) {
           const film = { nOutside: 1, nFilm, nInside, thicknessNm: 420, angleDeg };
-          const stack: LayerStack = { nOutside: 1, layers: [{ n: nFilm, thicknessNm: 420 }], nInside, angleDeg };
+          const stack: LayerStack = { nOutside: 1, films: [{ n: nFilm, thicknessNm: 420 }], nInside, angleDeg };
           const got = layersXyz(stack, { polarization });
           const want = filmXyz(film, { polarization });
           got.forEach((v, i) => expect(Math.abs(v - want[i]!)).toBeLessThan(ROUNDING_TOL));
@@ -99,20 +99,20 @@ describe('the colour of a stack', () => {
     const white = whiteXyz('D65');
     const metal = medium([0.05, 4]);
     const stacks: LayerStack[] = [
-      { nOutside: 1, layers: bragg(8), nInside: N_GLASS, angleDeg: 0 },
-      { nOutside: 1, layers: bragg(8), nInside: N_GLASS, angleDeg: 70 },
-      { nOutside: 1, layers: Array.from({ length: 10 }, (_, i) => ({ n: i % 2 ? 1.33 : 2, thicknessNm: 1500 })), nInside: 1, angleDeg: 60 },
+      { nOutside: 1, films: bragg(8), nInside: N_GLASS, angleDeg: 0 },
+      { nOutside: 1, films: bragg(8), nInside: N_GLASS, angleDeg: 70 },
+      { nOutside: 1, films: Array.from({ length: 10 }, (_, i) => ({ n: i % 2 ? 1.33 : 2, thicknessNm: 1500 })), nInside: 1, angleDeg: 60 },
       // A Fabry–Perot filter: a 4-wave spacer between two (HL)^6 mirrors, its pass band 0.4 nm wide.
       {
         nOutside: 1,
-        layers: [...bragg(6), { n: N_L, thicknessNm: (4 * DESIGN_NM) / (2 * N_L) }, ...bragg(6).reverse()],
+        films: [...bragg(6), { n: N_L, thicknessNm: (4 * DESIGN_NM) / (2 * N_L) }, ...bragg(6).reverse()],
         nInside: N_GLASS,
         angleDeg: 0,
       },
       // A metal–dielectric–metal cavity.
       {
         nOutside: 1,
-        layers: [
+        films: [
           { n: metal, thicknessNm: 40 },
           { n: 1.46, thicknessNm: 3000 },
           { n: metal, thicknessNm: 200 },
@@ -133,7 +133,7 @@ describe('a quarter-wave mirror at its design wavelength', () => {
   it('(HL)^8 on glass: R = ((1 − Y)/(1 + Y))², Y = (n_H/n_L)^16 n_s', () => {
     const y = (N_H / N_L) ** 16 * N_GLASS;
     for (const polarization of POLARIZATIONS.filter((p) => p !== 'paper')) {
-      const r = layersReflectance(DESIGN_NM, { nOutside: 1, layers: bragg(8), nInside: N_GLASS, angleDeg: 0 }, polarization);
+      const r = layersReflectance(DESIGN_NM, { nOutside: 1, films: bragg(8), nInside: N_GLASS, angleDeg: 0 }, polarization);
       expect(Math.abs(r - reflectance(y))).toBeLessThan(BRAGG_CLOSED_FORM_TOL);
     }
     expect(reflectance(y)).toBeGreaterThan(0.998);
@@ -141,27 +141,27 @@ describe('a quarter-wave mirror at its design wavelength', () => {
 
   it('(HL)^N H for N = 0 … 12: Y = n_H^{2N+2} / (n_L^{2N} n_s)', () => {
     for (let periods = 0; periods <= 12; periods++) {
-      const layers = [...bragg(periods), { n: N_H, thicknessNm: DESIGN_NM / (4 * N_H) }];
+      const films = [...bragg(periods), { n: N_H, thicknessNm: DESIGN_NM / (4 * N_H) }];
       const y = N_H ** (2 * periods + 2) / (N_L ** (2 * periods) * N_GLASS);
-      const r = layersReflectance(DESIGN_NM, { nOutside: 1, layers, nInside: N_GLASS, angleDeg: 0 });
+      const r = layersReflectance(DESIGN_NM, { nOutside: 1, films, nInside: N_GLASS, angleDeg: 0 });
       expect(Math.abs(r - reflectance(y))).toBeLessThan(BRAGG_CLOSED_FORM_TOL);
     }
   });
 });
 
-/** A stack of 1–12 layers drawn at random: real indices in [1, 2.6] or, when `absorbing`, some complex ones. */
+/** A stack of 1–12 films drawn at random: real indices in [1, 2.6] or, when `absorbing`, some complex ones. */
 function randomStack(random: () => number, absorbing: boolean): LayerStack {
   const count = 1 + Math.floor(random() * 12);
-  const layers = Array.from({ length: count }, () => ({
+  const films = Array.from({ length: count }, () => ({
     n: absorbing && random() < 0.3 ? medium([0.05 + 3 * random(), 4 * random()]) : 1 + 1.6 * random(),
     thicknessNm: random() < 0.1 ? 0 : 600 * random(),
   }));
   const nInside = absorbing && random() < 0.5 ? medium(METAL) : 1 + 1.6 * random();
-  return { nOutside: [1, 1.33, 1.52, 2][Math.floor(random() * 4)]!, layers, nInside, angleDeg: 90 * random() };
+  return { nOutside: [1, 1.33, 1.52, 2][Math.floor(random() * 4)]!, films, nInside, angleDeg: 90 * random() };
 }
 
 describe('conservation and bounds', () => {
-  it('R + T = 1 and A = 0 for lossless stacks, evanescent layers and total reflection included', () => {
+  it('R + T = 1 and A = 0 for lossless stacks, evanescent films and total reflection included', () => {
     const random = mulberry32(7);
     let worst = 0;
     for (let i = 0; i < 300; i++) {
@@ -195,7 +195,7 @@ describe('conservation and bounds', () => {
   });
 
   it('at grazing incidence everything is reflected', () => {
-    const stack: LayerStack = { nOutside: 1, layers: bragg(3), nInside: N_GLASS, angleDeg: 90 };
+    const stack: LayerStack = { nOutside: 1, films: bragg(3), nInside: N_GLASS, angleDeg: 90 };
     for (const p of PHYSICAL) {
       expect(layersReflectance(480, stack, p)).toBe(1);
       expect(layersTransmittance(480, stack, p)).toBe(0);
@@ -227,17 +227,17 @@ describe('symmetries', () => {
 
   it('a 0 nm layer anywhere is no layer', () => {
     stacks.forEach((s, i) => {
-      const at = Math.floor(random() * (s.layers.length + 1));
-      const withZero = { ...s, layers: [...s.layers.slice(0, at), { n: medium([1.7, 0.4]), thicknessNm: 0 }, ...s.layers.slice(at)] };
+      const at = Math.floor(random() * (s.films.length + 1));
+      const withZero = { ...s, films: [...s.films.slice(0, at), { n: medium([1.7, 0.4]), thicknessNm: 0 }, ...s.films.slice(at)] };
       expect(differ(withZero, s, lambdas[i]!)).toBe(0);
     });
   });
 
-  it('a stack of 0 nm layers is the bare interface, its colour too', () => {
+  it('a stack of 0 nm films is the bare interface, its colour too', () => {
     const white = whiteXyz('D65');
     for (const nInside of [1, 1.52, medium(METAL)]) {
       const bare = { nOutside: 1.33, nFilm: nInside, nInside, thicknessNm: 0, angleDeg: 40 };
-      const stack = { nOutside: 1.33, layers: bragg(2).map((l) => ({ ...l, thicknessNm: 0 })), nInside, angleDeg: 40 };
+      const stack = { nOutside: 1.33, films: bragg(2).map((l) => ({ ...l, thicknessNm: 0 })), nInside, angleDeg: 40 };
       for (const p of PHYSICAL)
         expect(Math.abs(layersReflectance(500, stack, p) - dispersiveReflectance(500, bare, p))).toBeLessThan(ROUNDING_TOL);
       expect(deltaE00(layersXyz(stack), filmXyz(bare), white)).toBeLessThan(ALGEBRAIC_TOL);
@@ -247,14 +247,14 @@ describe('symmetries', () => {
   it('a layer split in two of the same medium is the same layer', () => {
     let worst = 0;
     stacks.forEach((s, i) => {
-      const at = Math.floor(random() * s.layers.length);
-      const layer = s.layers[at]!;
+      const at = Math.floor(random() * s.films.length);
+      const layer = s.films[at]!;
       const part = random() * layer.thicknessNm;
       const halves = [
         { n: layer.n, thicknessNm: part },
         { n: layer.n, thicknessNm: layer.thicknessNm - part },
       ];
-      const split = { ...s, layers: [...s.layers.slice(0, at), ...halves, ...s.layers.slice(at + 1)] };
+      const split = { ...s, films: [...s.films.slice(0, at), ...halves, ...s.films.slice(at + 1)] };
       worst = Math.max(worst, differ(split, s, lambdas[i]!));
     });
     expect(worst).toBeLessThan(ROUNDING_TOL);
@@ -262,7 +262,7 @@ describe('symmetries', () => {
 
   it("a layer of the outside's index, of any thickness, next to the outside changes nothing (real indices)", () => {
     stacks.forEach((s, i) => {
-      const withOutside = { ...s, layers: [{ n: s.nOutside, thicknessNm: 20000 * random() }, ...s.layers] };
+      const withOutside = { ...s, films: [{ n: s.nOutside, thicknessNm: 20000 * random() }, ...s.films] };
       // R is unchanged; so is T (the phase of a lossless layer on the way in has modulus 1).
       expect(differ(withOutside, s, lambdas[i]!)).toBeLessThan(ROUNDING_TOL);
     });
@@ -281,25 +281,25 @@ describe('the edges of the domain stay finite', () => {
           expect(values[0]).toBeLessThanOrEqual(1);
         }
   };
-  it('64 layers of 0.2+5i, 20 µm each, in air', () => {
-    const layers = Array.from({ length: 64 }, () => ({ n: medium([0.2, 5]), thicknessNm: 20000 }));
-    finite({ nOutside: 1, layers, nInside: 1, angleDeg: 0 });
+  it('64 films of 0.2+5i, 20 µm each, in air', () => {
+    const films = Array.from({ length: 64 }, () => ({ n: medium([0.2, 5]), thicknessNm: 20000 }));
+    finite({ nOutside: 1, films, nInside: 1, angleDeg: 0 });
     // The first layer is opaque: R is that of the bulk metal, 0.2+5i, at normal incidence.
     const bulk = (0.8 ** 2 + 25) / (1.2 ** 2 + 25);
-    expect(Math.abs(layersReflectance(600, { nOutside: 1, layers, nInside: 1, angleDeg: 0 }) - bulk)).toBeLessThan(ROUNDING_TOL);
+    expect(Math.abs(layersReflectance(600, { nOutside: 1, films, nInside: 1, angleDeg: 0 }) - bulk)).toBeLessThan(ROUNDING_TOL);
   });
-  it('64 alternating metal and evanescent layers, 20 µm each, lit from n = 4', () => {
-    const layers = Array.from({ length: 64 }, (_, i) => ({ n: i % 2 ? 1 : medium([0.05, 100]), thicknessNm: 20000 }));
-    finite({ nOutside: 4, layers, nInside: medium(METAL), angleDeg: 0 });
-    finite({ nOutside: 4, layers: layers.map((l) => ({ ...l, n: 1 })), nInside: 4, angleDeg: 0 });
+  it('64 alternating metal and evanescent films, 20 µm each, lit from n = 4', () => {
+    const films = Array.from({ length: 64 }, (_, i) => ({ n: i % 2 ? 1 : medium([0.05, 100]), thicknessNm: 20000 }));
+    finite({ nOutside: 4, films, nInside: medium(METAL), angleDeg: 0 });
+    finite({ nOutside: 4, films: films.map((l) => ({ ...l, n: 1 })), nInside: 4, angleDeg: 0 });
   });
-  it('its colour: finite, and sized by the layers the light reaches', () => {
-    const layers = Array.from({ length: 64 }, (_, i) => ({ n: i % 2 ? 2.5 : medium([0.2, 5]), thicknessNm: 20000 }));
-    const stack = { nOutside: 1, layers, nInside: 1, angleDeg: 30 };
+  it('its colour: finite, and sized by the films the light reaches', () => {
+    const films = Array.from({ length: 64 }, (_, i) => ({ n: i % 2 ? 2.5 : medium([0.2, 5]), thicknessNm: 20000 }));
+    const stack = { nOutside: 1, films, nInside: 1, angleDeg: 30 };
     // Only the first, opaque layer is reached: sampled as that one film on what lies behind it.
     const steps = layersStepsPerNm(stack);
-    expect(steps).toBe(layersStepsPerNm({ ...stack, layers: layers.slice(0, 1), nInside: 2.5 }));
-    expect(steps).toBeLessThan(layersStepsPerNm({ ...stack, layers: layers.map((l) => ({ ...l, n: 2.5 })) }));
+    expect(steps).toBe(layersStepsPerNm({ ...stack, films: films.slice(0, 1), nInside: 2.5 }));
+    expect(steps).toBeLessThan(layersStepsPerNm({ ...stack, films: films.map((l) => ({ ...l, n: 2.5 })) }));
     for (const v of layersXyz(stack)) expect(Number.isFinite(v)).toBe(true);
   });
 });
@@ -322,13 +322,13 @@ interface Fixtures {
 const fixtures = JSON.parse(readFileSync(new URL('fixtures/tmmStacks.json', import.meta.url), 'utf8')) as Fixtures;
 const stackOf = (f: FixtureStack): LayerStack => ({
   nOutside: f.nOutside,
-  layers: f.layers.map((l) => ({ n: medium(l.n), thicknessNm: l.thicknessNm })),
+  films: f.layers.map((l) => ({ n: medium(l.n), thicknessNm: l.thicknessNm })),
   nInside: medium(f.nInside),
   angleDeg: f.angleDeg,
 });
 
 describe('tmm (Byrnes 2016, coh_tmm)', () => {
-  it('R_s, R_p and T at single wavelengths: 2–16 layers, absorbing, on metals, past the critical angle', () => {
+  it('R_s, R_p and T at single wavelengths: 2–16 films, absorbing, on metals, past the critical angle', () => {
     expect(fixtures.points.length).toBeGreaterThan(50);
     let worst = 0;
     for (const f of fixtures.points) {
@@ -363,18 +363,18 @@ describe('tmm (Byrnes 2016, coh_tmm)', () => {
 });
 
 describe('bad stacks are refused, naming the field', () => {
-  const good: LayerStack = { nOutside: 1, layers: bragg(2), nInside: N_GLASS, angleDeg: 0 };
+  const good: LayerStack = { nOutside: 1, films: bragg(2), nInside: N_GLASS, angleDeg: 0 };
   const cases: [string, LayerStack, RegExp][] = [
-    ['layers', { ...good, layers: [] }, /^layers: 0 is not allowed; expected a number in \[1, 64\] layers/],
-    ['layers', { ...good, layers: bragg(33) }, /^layers: 66 is not allowed/],
+    ['films', { ...good, films: [] }, /^films: 0 is not allowed; expected a number in \[1, 64\] films/],
+    ['films', { ...good, films: bragg(33) }, /^films: 66 is not allowed/],
     [
-      'layers[2].thicknessNm',
-      { ...good, layers: [...bragg(1), { n: 1.5, thicknessNm: -1 }] },
-      /^layers\[2\]\.thicknessNm: -1 .*\[0, 20000\] nm/,
+      'films[2].thicknessNm',
+      { ...good, films: [...bragg(1), { n: 1.5, thicknessNm: -1 }] },
+      /^films\[2\]\.thicknessNm: -1 .*\[0, 20000\] nm/,
     ],
-    ['layers[0].thicknessNm', { ...good, layers: [{ n: 1.5, thicknessNm: Number.NaN }] }, /^layers\[0\]\.thicknessNm: NaN/],
-    ['layers[1].n', { ...good, layers: [...bragg(1).slice(0, 1), { n: 0.5, thicknessNm: 10 }] }, /^layers\[1\]\.n: 0\.5 is not allowed/],
-    ['layers[0].n', { ...good, layers: [{ n: { complex: [1, -1] }, thicknessNm: 10 }] }, /^layers\[0\]\.n: complex:1,-1 .*gain/],
+    ['films[0].thicknessNm', { ...good, films: [{ n: 1.5, thicknessNm: Number.NaN }] }, /^films\[0\]\.thicknessNm: NaN/],
+    ['films[1].n', { ...good, films: [...bragg(1).slice(0, 1), { n: 0.5, thicknessNm: 10 }] }, /^films\[1\]\.n: 0\.5 is not allowed/],
+    ['films[0].n', { ...good, films: [{ n: { complex: [1, -1] }, thicknessNm: 10 }] }, /^films\[0\]\.n: complex:1,-1 .*gain/],
     ['nOutside', { ...good, nOutside: 5 }, /^nOutside: 5 is not allowed/],
     ['nInside', { ...good, nInside: { complex: [0, 1] } }, /^nInside: complex:0,1 is not allowed/],
     ['angleDeg', { ...good, angleDeg: 91 }, /^angleDeg: 91 is not allowed; expected a number in \[0, 90\] degrees/],

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { XYZ_TO_LINEAR_SRGB } from '../../../src/physics/colorConversions.ts';
 import { SOAP_FILM_IN_AIR, filmReflectance } from '../../../src/physics/filmReflectance.ts';
-import { layersXyz } from '../../../src/physics/layersColor.ts';
+import { layersXyz } from '../../../src/physics/stackColor.ts';
 import { filmXyz } from '../../../src/physics/spectralIntegration.ts';
 import { DESIGN_NM, STACK_PRESETS } from '../../../src/physics/stackPresets.ts';
 import { layersReflectance } from '../../../src/physics/transferMatrix.ts';
@@ -42,7 +42,7 @@ describe('the plots of a stack of films', () => {
       nOutside: 1,
       nInside: 1.52,
       angleDeg: 20,
-      layers: [
+      films: [
         { n: 2.1, thicknessNm: 250 },
         { n: 1.38, thicknessNm: 100 },
       ],
@@ -54,7 +54,7 @@ describe('the plots of a stack of films', () => {
   it("the mirror's spectrum is its stack's (16 layers), highest near its design wavelength, and an empty list is the single film", () => {
     const p = STACK_PRESETS.braggMirror;
     const film = { nOutside: p.nOutside, nFilm: 1.33, nInside: p.nInside, thicknessNm: 300, angleDeg: 0 };
-    const s = filmSpectrum({ ...film, layers: p.layers }, 'D65', 'unpolarized');
+    const s = filmSpectrum({ ...film, layers: p.films }, 'D65', 'unpolarized');
     expect(s.layerCount).toBe(16);
     expect(s.reflectance[DESIGN_NM - 380]!).toBeGreaterThan(0.99);
     const single = filmSpectrum({ ...film, layers: [] }, 'D65', 'unpolarized');
@@ -64,13 +64,13 @@ describe('the plots of a stack of films', () => {
 
   it("the probed colour of a one-layer stack is the paper's film's XYZ (eqs 15–18 over eq 13's R), the transfer matrix's to rounding", () => {
     const p = STACK_PRESETS.arCoating;
-    const film = { nOutside: 1, nFilm: 1.33, nInside: p.nInside, thicknessNm: 500, angleDeg: 10, layers: p.layers };
-    const layer = { n: 1.38, thicknessNm: p.layers[0]!.thicknessNm as number };
+    const film = { nOutside: 1, nFilm: 1.33, nInside: p.nInside, thicknessNm: 500, angleDeg: 10, layers: p.films };
+    const layer = { n: 1.38, thicknessNm: p.films[0]!.thicknessNm as number };
     const xyz = filmXyz({ nOutside: 1, nFilm: layer.n, nInside: p.nInside, thicknessNm: layer.thicknessNm, angleDeg: 10 }, LIGHT);
     const c = probeColor(film, LIGHT, XYZ_TO_LINEAR_SRGB, xyz);
     c.xyz.forEach((v, i) => expect(Math.abs(v - xyz[i]!)).toBeLessThan(FEW_OPERATIONS_TOL));
     expect(c.deltaE00).toBeLessThan(FEW_OPERATIONS_TOL);
-    const recursion = layersXyz({ nOutside: 1, nInside: p.nInside, angleDeg: 10, layers: [layer] }, LIGHT);
+    const recursion = layersXyz({ nOutside: 1, nInside: p.nInside, angleDeg: 10, films: [layer] }, LIGHT);
     c.xyz.forEach((v, i) => expect(Math.abs(v - recursion[i]!)).toBeLessThan(ALGEBRAIC_TOL));
   });
 
@@ -85,7 +85,7 @@ describe('the plots of a stack of films', () => {
 
   it('the sentence for a screen reader says the film is a stack', () => {
     const reading = { thicknessNm: 300, angleDeg: 0, renderedXyz: [0.1, 0.1, 0.1] as const };
-    const stack = { ...DEFAULT_SETTINGS, layers: STACK_PRESETS.braggMirror.layers };
+    const stack = { ...DEFAULT_SETTINGS, layers: STACK_PRESETS.braggMirror.films };
     expect(probeDescription(stack, [0.5, 0.5], reading, EN)).toContain('A stack of 16 layers');
     expect(probeDescription(DEFAULT_SETTINGS, [0.5, 0.5], reading, EN)).not.toContain('stack');
   });

@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { maxFieldThicknessNm } from '../../../src/fields/fields.ts';
 import { flowParametersOf } from '../../../src/fields/flowField.ts';
 import { type FrameOffers, resolveFrame } from '../../../src/scene/drawnFrame.ts';
-import { parseLayers } from '../../../src/physics/layersText.ts';
+import { parseLayers } from '../../../src/physics/stackText.ts';
 import { DEFAULT_VIEW_SETTINGS, type ViewSettings, filmSettingsOf } from '../../../src/settings/viewParameters.ts';
 
 /** A frozen view on a machine that offers everything at once: no governor, nothing loading, every light ready. */
@@ -47,7 +47,7 @@ describe('what is drawn for what is asked', () => {
         setting: 'mode',
         asked: 'fourier',
         drawn: 'table',
-        message: { key: 'app.stackAsTable', values: { method: 'fourier', layers: '2' } },
+        message: { key: 'app.stackAsTable', values: { method: 'fourier', count: '2' } },
       },
     ]);
   });

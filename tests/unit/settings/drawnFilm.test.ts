@@ -1,6 +1,6 @@
 /** The film-level part of what is drawn (src/settings/drawnFilm.ts): the same rule for the demo's view and for a material. */
 import { describe, expect, it } from 'vitest';
-import { parseLayers } from '../../../src/physics/layersText.ts';
+import { parseLayers } from '../../../src/physics/stackText.ts';
 import { drawnFilmMethod } from '../../../src/settings/drawnFilm.ts';
 
 const FILM = { mode: 'fourier', nFilm: 1.33, nInside: 1 } as const;
@@ -11,7 +11,7 @@ describe('which method draws a film, and why', () => {
     for (const drawer of ['view', 'material'] as const) {
       const { film, notice } = drawnFilmMethod({ ...FILM, layers: STACK }, drawer);
       expect(film).toEqual({ ...FILM, layers: STACK, mode: 'table' });
-      expect(notice).toEqual({ key: 'app.stackAsTable', values: { method: 'fourier', layers: '16' } });
+      expect(notice).toEqual({ key: 'app.stackAsTable', values: { method: 'fourier', count: '16' } });
     }
   });
 

@@ -155,7 +155,7 @@ describe('URL parameters', () => {
     ]),
   ];
 
-  /** Bad stacks of films and the rule each breaks (layersText.ts); the value's faulty part is quoted once more in the rule. */
+  /** Bad stacks of films and the rule each breaks (stackText.ts); the value's faulty part is quoted once more in the rule. */
   const LAYERS_ROWS: [string, string, string][] = [
     ['1.5', 'has no :NM'],
     ['unobtainium:100', 'not a medium a film takes'],

@@ -3,7 +3,7 @@ import type { Medium } from './medium.ts';
 import type { NumberDomain } from '../input/validate.ts';
 
 /**
- * A stack of films (docs/physics.md#stacks-of-films): layers from the outside in, each a medium
+ * A stack of films (docs/physics.md#stacks-of-films): films from the outside in, each a medium
  * (anything a film takes: a number, `water`, a Cauchy film, a named medium, `complex:n,k`) and a
  * thickness. A layer whose thickness is FIELD_THICKNESS takes the thickness field's value where
  * the bubble is drawn, so the field can stretch the stack; the others keep theirs.
@@ -25,17 +25,17 @@ export interface ResolvedLayer {
 
 /** The limits every entry point holds a stack to. */
 export const LAYERS_DOMAIN = {
-  /** Layers after every `*N` is expanded. */
-  count: { min: 1, max: 64, unit: 'layers' },
+  /** Films after every `*N` is expanded. */
+  count: { min: 1, max: 64, unit: 'films' },
   /** A layer's thickness: the single film's domain. */
   thicknessNm: FILM_STACK_DOMAIN.thicknessNm,
   /** The N of a group `(…)*N`. */
   repeat: { min: 1, max: 64, unit: '' },
 } as const satisfies Record<string, NumberDomain>;
 
-/** The layers with every FIELD_THICKNESS layer at `fieldThicknessNm`. */
-export const resolveLayers = (layers: readonly FilmLayer[], fieldThicknessNm: number): ResolvedLayer[] =>
-  layers.map(({ n, thicknessNm }) => ({ n, thicknessNm: thicknessNm === FIELD_THICKNESS ? fieldThicknessNm : thicknessNm }));
+/** The films with every FIELD_THICKNESS film at `fieldThicknessNm`. */
+export const resolveLayers = (films: readonly FilmLayer[], fieldThicknessNm: number): ResolvedLayer[] =>
+  films.map(({ n, thicknessNm }) => ({ n, thicknessNm: thicknessNm === FIELD_THICKNESS ? fieldThicknessNm : thicknessNm }));
 
-/** Whether any layer takes the field's thickness (else the stack is the same everywhere on the bubble). */
-export const followsField = (layers: readonly FilmLayer[]): boolean => layers.some((l) => l.thicknessNm === FIELD_THICKNESS);
+/** Whether any film takes the field's thickness (else the stack is the same everywhere on the bubble). */
+export const followsField = (films: readonly FilmLayer[]): boolean => films.some((l) => l.thicknessNm === FIELD_THICKNESS);

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { FIELD_THICKNESS, type FilmLayer } from '../../../src/physics/filmLayers.ts';
-import { LAYERS_EXPECTED, layersText, parseLayers, readLayers } from '../../../src/physics/layersText.ts';
+import { FIELD_THICKNESS, type FilmLayer } from '../../../src/physics/stackFilms.ts';
+import { LAYERS_EXPECTED, layersText, parseLayers, readLayers } from '../../../src/physics/stackText.ts';
 import { type Medium } from '../../../src/physics/medium.ts';
 import { NAMED_MEDIA } from '../../../src/physics/namedMedia.ts';
 import { ParameterError } from '../../../src/input/validate.ts';

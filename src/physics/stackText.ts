@@ -1,4 +1,4 @@
-import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN } from './filmLayers.ts';
+import { FIELD_THICKNESS, type FilmLayer, LAYERS_DOMAIN } from './stackFilms.ts';
 import { mediumText, readMedium } from './medium.ts';
 import { ParameterError, expectedNumber, isInDomain, parseDecimal, quoted } from '../input/validate.ts';
 
@@ -6,45 +6,45 @@ import { ParameterError, expectedNumber, isInDomain, parseDecimal, quoted } from
  * A stack of films as URL, attribute and command line write it (docs/physics.md#stacks-of-films):
  * entries `INDEX:NM` from the outside in, separated by `/`. INDEX is anything a film takes as
  * text (`1.46`, `water`, `cauchy:1.45,6000`, `TiO2`, `complex:0.2,3.4`: an entry is split at its
- * last `:`); NM is the layer's thickness in nm within LAYERS_DOMAIN.thicknessNm, or FIELD_THICKNESS
+ * last `:`); NM is the film's thickness in nm within LAYERS_DOMAIN.thicknessNm, or FIELD_THICKNESS
  * (`d`) for the thickness field's value. A group `(…)*N` repeats its entries N times (N in LAYERS_DOMAIN.repeat);
- * groups may nest. Whitespace around every token is ignored. At most LAYERS_DOMAIN.count.max layers
+ * groups may nest. Whitespace around every token is ignored. At most LAYERS_DOMAIN.count.max films
  * after every group is expanded, and at least one.
  *
- *     (2.35:56.6/1.46:91.1)*8          a quarter-wave mirror at 530 nm: 16 layers
+ *     (2.35:56.6/1.46:91.1)*8          a quarter-wave mirror at 530 nm: 16 films
  *     1.38:d/(TiO2:50/SiO2:90)*3       a field-thick film over three pairs
  */
 
 const { count: COUNT, repeat: REPEAT, thicknessNm: THICKNESS } = LAYERS_DOMAIN;
 
-/** What a layers text is, as every refusal states it. */
+/** What the text of a stack is, as every refusal states it (the option `layers`' own words). */
 export const LAYERS_EXPECTED =
   `INDEX:NM entries separated by /, outside in (INDEX as nFilm takes it; NM in [${THICKNESS.min}, ${THICKNESS.max}] or ${FIELD_THICKNESS}); ` +
   `(…)*N repeats a group, N in [${REPEAT.min}, ${REPEAT.max}]; at most ${COUNT.max} layers`;
 
-/** The characters that structure a layers text; no medium's text holds one. */
+/** The characters that structure the text of a stack; no medium's text holds one. */
 const STRUCTURE = /([()/*])/;
 
-/** A group under construction: its layers so far, and whether an entry or a group must come next. */
+/** A group under construction: its films so far, and whether an entry or a group must come next. */
 interface Frame {
-  readonly layers: FilmLayer[];
+  readonly films: FilmLayer[];
   expectsItem: boolean;
 }
 
-/** The checked layers of a text, or what rule it breaks. */
-export function readLayers(text: string): { readonly layers: readonly FilmLayer[] } | { readonly problem: string } {
+/** The checked films of a text, or what rule it breaks. */
+export function readLayers(text: string): { readonly films: readonly FilmLayer[] } | { readonly problem: string } {
   try {
-    return { layers: parseLayerTokens(text.split(STRUCTURE)) };
+    return { films: parseLayerTokens(text.split(STRUCTURE)) };
   } catch (error) {
     if (error instanceof LayersProblem) return { problem: error.message };
     throw error;
   }
 }
 
-/** The layers of a text, or a ParameterError naming `name` (`layers`, `--layers`) and the rule broken. */
+/** The films of a text, or a ParameterError naming `name` (the option: `layers`, `--layers`) and the rule broken. */
 export function parseLayers(name: string, text: string): readonly FilmLayer[] {
   const reading = readLayers(text);
-  if ('layers' in reading) return reading.layers;
+  if ('films' in reading) return reading.films;
   throw new ParameterError(name, `${name}: ${quoted(text)} is not allowed (${reading.problem}); expected ${LAYERS_EXPECTED}`);
 }
 
@@ -55,20 +55,20 @@ const refuse = (problem: string): never => {
 
 /** The tokens of `text.split(STRUCTURE)`: text between the structure characters, and each of those. */
 function parseLayerTokens(tokens: readonly string[]): FilmLayer[] {
-  const frames: Frame[] = [{ layers: [], expectsItem: true }];
+  const frames: Frame[] = [{ films: [], expectsItem: true }];
   const top = () => frames[frames.length - 1]!;
-  const add = (layers: readonly FilmLayer[]) => {
+  const add = (films: readonly FilmLayer[]) => {
     const frame = top();
     if (!frame.expectsItem) refuse('entries must be separated by /');
-    if (frame.layers.length + layers.length > COUNT.max) refuse(`more than ${COUNT.max} layers after repetition`);
-    frame.layers.push(...layers);
+    if (frame.films.length + films.length > COUNT.max) refuse(`more than ${COUNT.max} layers after repetition`);
+    frame.films.push(...films);
     frame.expectsItem = false;
   };
   for (let i = 0; i < tokens.length; i++) {
     const token = tokens[i]!;
     if (token === '(') {
       if (!top().expectsItem) refuse('entries must be separated by /');
-      frames.push({ layers: [], expectsItem: true });
+      frames.push({ films: [], expectsItem: true });
     } else if (token === ')') {
       if (frames.length === 1) refuse('unbalanced parentheses: a ")" without its "("');
       const group = frames.pop()!;
@@ -77,7 +77,7 @@ function parseLayerTokens(tokens: readonly string[]): FilmLayer[] {
       if (tokens[i + 1]?.trim() !== '' || tokens[i + 2] !== '*') refuse('a group (…) must be followed by *N');
       const times = repeatCount(tokens[i + 3] ?? '');
       i += 3;
-      add(Array.from({ length: times }, () => group.layers).flat());
+      add(Array.from({ length: times }, () => group.films).flat());
     } else if (token === '/') {
       if (top().expectsItem) refuse('an empty entry');
       top().expectsItem = true;
@@ -88,8 +88,8 @@ function parseLayerTokens(tokens: readonly string[]): FilmLayer[] {
     }
   }
   if (frames.length > 1) refuse('unbalanced parentheses: a "(" without its ")"');
-  if (top().expectsItem) refuse(top().layers.length === 0 ? 'no layers' : 'an empty entry');
-  return top().layers;
+  if (top().expectsItem) refuse(top().films.length === 0 ? 'no layers' : 'an empty entry');
+  return top().films;
 }
 
 /** The N of `*N`. */
@@ -116,19 +116,19 @@ function layerOf(entry: string): FilmLayer {
   if (!isInDomain(thicknessNm, THICKNESS)) {
     refuse(`the thickness ${quoted(thicknessText)} is not ${expectedNumber(THICKNESS)} or ${FIELD_THICKNESS}`);
   }
-  // -0 reads as 0: the text a layer prints back is the same.
+  // -0 reads as 0: the text a film prints back is the same.
   return { n: reading.medium, thicknessNm: thicknessNm + 0 };
 }
 
-/** One layer's entry. */
-const entryText = (layer: FilmLayer): string => `${mediumText(layer.n)}:${layer.thicknessNm}`;
+/** One film's entry. */
+const entryText = (film: FilmLayer): string => `${mediumText(film.n)}:${film.thicknessNm}`;
 
 /**
- * The text `readLayers` reads back into these layers: their entries, a run of a repeated block
+ * The text `readLayers` reads back into these films: their entries, a run of a repeated block
  * written `(…)*N` where that is shorter. An empty list is the empty text (no stack: the single film).
  */
-export function layersText(layers: readonly FilmLayer[]): string {
-  const entries = layers.map(entryText);
+export function layersText(films: readonly FilmLayer[]): string {
+  const entries = films.map(entryText);
   const parts: string[] = [];
   let i = 0;
   while (i < entries.length) {

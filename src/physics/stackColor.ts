@@ -15,7 +15,7 @@ import {
 } from './transferMatrix.ts';
 
 /**
- * Where the light reaching deeper layers has lost so much on its round trip (|Π e^{iφ_j}| below
+ * Where the light reaching deeper films has lost so much on its round trip (|Π e^{iφ_j}| below
  * this) that their fringes change R by less than about this much: their path no longer adds to
  * the fringe density (docs/physics.md#stacks-of-films).
  */
@@ -24,8 +24,8 @@ export const OPAQUE_ROUND_TRIP = 1e-9;
 /**
  * |Γ_j Γ'_j e^{iφ_j}| of every layer j = 1 … N in one channel at λ: the gain of the layer's round
  * trip, which meets on its inner side Γ_j (the recursion's reflector of everything behind it) and
- * on its outer side Γ'_j (the same recursion run outward through the layers before it), and loses
- * |e^{iφ_j}| on the way. A cavity between two mirrors has both near 1, however many layers each
+ * on its outer side Γ'_j (the same recursion run outward through the films before it), and loses
+ * |e^{iφ_j}| on the way. A cavity between two mirrors has both near 1, however many films each
  * mirror takes; an opaque layer's gain is 0.
  */
 function layerRoundTrips(interfaces: readonly InterfaceAmplitudes[], halfPhases: readonly Complex[]): number[] {
@@ -47,9 +47,9 @@ function layerRoundTrips(interfaces: readonly InterfaceAmplitudes[], halfPhases:
 
 /**
  * The stack's fringes at λ for the sampling rule of docs/physics.md#sampling, as dense and as
- * sharp as one film's would be: their path is the sum of Re Δ_j over the layers the light reaches
+ * sharp as one film's would be: their path is the sum of Re Δ_j over the films the light reaches
  * (the phases add, so R(λ) turns no faster than one film of the whole path), and their round trip
- * the largest gain |Γ_j Γ'_j e^{iφ_j}| of those layers whose wave propagates (Re Δ_j > 0). For one
+ * the largest gain |Γ_j Γ'_j e^{iφ_j}| of those films whose wave propagates (Re Δ_j > 0). For one
  * lossless layer this is |r_ba r_bc|, the film's own rule exactly; for an absorbing one at most
  * that (the film's rule leaves out the loss).
  */
@@ -69,7 +69,7 @@ function layerFringes(optics: LayersOptics, lambdaNm: number): Fringes {
 }
 
 const isDispersiveStack = (stack: LayerStack): boolean =>
-  [stack.nOutside, stack.nInside, ...stack.layers.map((l) => l.n)].some(isDispersiveMedium);
+  [stack.nOutside, stack.nInside, ...stack.films.map((l) => l.n)].some(isDispersiveMedium);
 
 /** The stack's optics at any λ: computed once when no medium depends on λ, at every λ otherwise. */
 function opticsOf(stack: LayerStack, polarization: Polarization): (lambdaNm: number) => LayersOptics {
@@ -84,7 +84,7 @@ const stepsPerNmOf = (opticsAt: (lambdaNm: number) => LayersOptics): number => f
  * Sub-steps per nm of the adaptive rule for a stack: fringeStepsPerNm of its fringes
  * (layerFringes) at every probe wavelength, so a dispersive layer is taken at its group path. Cost
  * grows with the stack's total optical path: a few thousand R evaluations for stacks a few µm
- * thick, far more for tens of layers each many µm thick.
+ * thick, far more for tens of films each many µm thick.
  */
 export function layersStepsPerNm(stack: LayerStack, polarization: Polarization = 'unpolarized'): number {
   assertLayerStack(stack);
