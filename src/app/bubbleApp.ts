@@ -162,7 +162,7 @@ export class BubbleApp {
    */
   private draw(now: number, follows: boolean): FrameReport {
     const frame = this.resolve();
-    const report = this.parts.view.render(true);
+    const report = this.parts.view.render('paced');
     // A shared renderer's canvas holds another view's frame when this one did not draw.
     if (report.drawn) this.parts.present?.();
     if (this.loop.looping) this.seat.drawn(now, report, frame.film.simSpeed, follows);

@@ -27,18 +27,18 @@ const NO_GRID: FilmTableGrid = { width: 1, rows: 1, maxThicknessNm: 1 };
  * (thickness 0..max, cos θ_i 0..1), for light from outside and from inside, laid out as
  * `quality.table` says. It is rebuilt only when `tableKey` changes.
  *
- * A `quick` update (the app's frames) that finds the settings changed draws a coarse grid in a small
- * texture of its own, and the quick updates after it the full grid band by band
+ * A `progressive` update (the app's paced frames) that finds the settings changed draws a coarse grid in a small
+ * texture of its own, and the progressive updates after it the full grid band by band
  * (ProgressiveTableBuild); the full one is shown once complete. A new light's spectral transform
- * is computed in a Web Worker: until it arrives, quick updates keep the table shown (the previous
- * light's). Without `quick` (tests, screenshots, the material) the full grid is built at once.
+ * is computed in a Web Worker: until it arrives, progressive updates keep the table shown (the previous
+ * light's). Without `progressive` (tests, screenshots, the material) the full grid is built at once.
  */
 export class FilmTable {
   private target: WebGLRenderTarget;
   private coarseTarget: WebGLRenderTarget;
   /** What is shown: the settings' tableKey ('' for nothing), whether from the coarse texture, and its grid. */
   private shown = { key: '', coarse: false, grid: NO_GRID };
-  /** Whether quick updates wait for a new light's transform (the table shown is for other settings). */
+  /** Whether progressive updates wait for a new light's transform (the table shown is for other settings). */
   private waiting = false;
   private readonly pass: FilmTablePass;
   private readonly build: ProgressiveTableBuild;
@@ -51,7 +51,7 @@ export class FilmTable {
   }
 
   /**
-   * Whether the table shown is the coarse one, or another settings' while a quick update waits for
+   * Whether the table shown is the coarse one, or another settings' while a progressive update waits for
    * the light's transform: more updates will make it the full one for the settings.
    */
   get coarse(): boolean {
@@ -65,14 +65,14 @@ export class FilmTable {
 
   /**
    * Brings the table up to date with the settings over thicknesses up to `maxThicknessNm` (the
-   * field's range, as the frame draws it: fields.ts's drawnField): at once, or if `quick` by one step
+   * field's range, as the frame draws it: fields.ts's drawnField): at once, or if `progressive` by one step
    * (a coarse table for new settings, else the next band of the full one); returns whether what `bind` binds changed.
    */
-  update(renderer: WebGLRenderer, s: FilmSettings, maxThicknessNm: number, quick = false): boolean {
+  update(renderer: WebGLRenderer, s: FilmSettings, maxThicknessNm: number, progressive = false): boolean {
     const key = tableKey(s, maxThicknessNm);
     this.waiting = false;
     this.build.poll();
-    if (!quick) {
+    if (!progressive) {
       this.build.stop();
       if (key === this.shown.key && !this.shown.coarse) return false;
       const grid = this.pass.fullGrid(s, maxThicknessNm);

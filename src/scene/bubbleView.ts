@@ -13,7 +13,7 @@ import { blowOnBubble } from './blowOnBubble.ts';
 import { bubbleHit } from './bubbleRay.ts';
 import type { DrawnFrame } from './drawnFrame.ts';
 import { EnvironmentLoads } from './environmentLoads.ts';
-import { type FrameReport, NOT_DRAWN, type ViewOffers } from './frameReport.ts';
+import { type FramePace, type FrameReport, NOT_DRAWN, type ViewOffers } from './frameReport.ts';
 import { EvolvingFilm } from './evolvingFilm.ts';
 import { FrameCost } from './frameCost.ts';
 import { compilesInParallel } from './framePrograms.ts';
@@ -150,10 +150,10 @@ export class BubbleView {
     await this.programs.compile(this.output.programKey, this.filmProbe);
   }
 
-  /** Rebuilds the table if a parameter it depends on or its range (the frame's) changed since it was drawn (coarsely first if `quick`). */
-  private syncTable(quick = false): void {
+  /** Rebuilds the table if a parameter it depends on or its range (the frame's) changed since it was drawn (coarsely first in a paced frame). */
+  private syncTable(paced = false): void {
     const range = this.frame?.field.maxThicknessNm;
-    if (range === undefined || !this.drawsTable || !this.table.update(this.renderer, this.settings, range, quick)) return;
+    if (range === undefined || !this.drawsTable || !this.table.update(this.renderer, this.settings, range, paced)) return;
     this.table.bind(this.bubble.material.uniforms);
   }
 
@@ -183,29 +183,24 @@ export class BubbleView {
     this.camera.updateProjectionMatrix();
   }
 
-  /**
-   * Draws the frame shown into the renderer's canvas, sized to this view first, and reports it. An
-   * app's frame (`quick`) keeps the frame shown while the programs of the new one compile (where
-   * they compile in parallel), draws a table that has to be rebuilt coarsely first (the frame after
-   * completes it), keeps the light shown while a new one's transform is computed, and is measured
-   * for the page's frame governor. Another frame (tests, screenshots) draws all the frame asks.
-   */
-  render(quick = false): FrameReport {
+  /** Draws the frame shown into the renderer's canvas, sized to this view first, and reports it: paced or complete (FramePace). */
+  render(pace: FramePace = 'complete'): FrameReport {
+    const paced = pace === 'paced';
     const r = this.renderer;
     const frame = this.frame;
     this.output.fit(r, this.size);
     if (this.contextLost || !frame) return (this.report = NOT_DRAWN);
     // Per frame, as views may share the renderer (each view's materials are compiled for its own).
     this.output.toneMap(r);
-    const keeps = quick && frame.keepsFrameWhileCompiling && !this.programs.ready(this.output.programKey, this.filmProbe);
+    const keeps = paced && frame.keepsFrameWhileCompiling && !this.programs.ready(this.output.programKey, this.filmProbe);
     if (keeps) return (this.report = { ...NOT_DRAWN, film: this.film.reading });
     this.output.setSpace(r);
     // A frame that does not wait draws the light asked for, its transform computed here.
-    if (!quick && frame.lightPending) this.draw({ ...frame.film, ...frame.lightPending }, frame.field);
-    this.syncTable(quick);
+    if (!paced && frame.lightPending) this.draw({ ...frame.film, ...frame.lightPending }, frame.field);
+    this.syncTable(paced);
     const uniforms = this.bubble.material.uniforms;
     let cost: FrameReport['cost'] = null;
-    if (quick) {
+    if (paced) {
       this.cost.simulate(
         () => this.film.advance(uniforms, this.settings, frame.field.derived, frame.stepsPerFrame),
         () => this.film.finish(),
@@ -217,7 +212,7 @@ export class BubbleView {
       this.film.advance(uniforms, this.settings, frame.field.derived, Infinity);
       r.render(this.scene, this.camera);
     }
-    const coarse = (this.drawsTable && this.table.coarse) || (quick && frame.lightPending !== null) || this.programs.busy;
+    const coarse = (this.drawsTable && this.table.coarse) || (paced && frame.lightPending !== null) || this.programs.busy;
     return (this.report = { drawn: true, coarse, film: this.film.reading, cost });
   }
 

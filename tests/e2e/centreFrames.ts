@@ -16,8 +16,8 @@ export async function recordCentreFrames(page: Page): Promise<() => Promise<Cent
     const view = w.bubbleView;
     const render = view.render.bind(view);
     w.drawn = [];
-    view.render = (quick?: boolean) => {
-      const drew = render(quick);
+    view.render = (pace) => {
+      const drew = render(pace);
       const gl = view.renderer.getContext();
       const pixel = new Uint8Array(4);
       gl.bindFramebuffer(gl.FRAMEBUFFER, null);

@@ -22,17 +22,17 @@ function readTablePixel(renderer: WebGLRenderer, table: FilmTable): void {
 export class TableWatch {
   /** Full tables shown since the watch began: updates that changed what `bind` binds and left no coarse table. */
   builds = 0;
-  /** Milliseconds of the first table built at once (an update without `quick`), or null before one. */
+  /** Milliseconds of the first table built at once (an update without `progressive`), or null before one. */
   firstBuildMs: number | null = null;
 
   constructor(private readonly table: FilmTable) {
     const update = table.update.bind(table);
-    table.update = (renderer, s, maxThicknessNm, quick) => {
+    table.update = (renderer, s, maxThicknessNm, progressive) => {
       const started = performance.now();
-      const changed = update(renderer, s, maxThicknessNm, quick);
+      const changed = update(renderer, s, maxThicknessNm, progressive);
       if (!changed || table.coarse) return changed;
       this.builds++;
-      if (!quick && this.firstBuildMs === null) {
+      if (!progressive && this.firstBuildMs === null) {
         readTablePixel(renderer, table);
         this.firstBuildMs = performance.now() - started;
       }
