@@ -12,7 +12,7 @@ const TEST_PAGES = ['tests/e2e/harness/parity.html', 'tests/e2e/harness/material
  * The library's entries (package.json `exports`): the float64 physics, the spectral material for
  * three.js scenes, and the element; three.js stays outside (a peer dependency).
  */
-const LIBRARY_ENTRIES = { physics: 'src/lib/physics.ts', material: 'src/lib/material.ts', element: ELEMENT_ENTRY };
+const LIBRARY_ENTRIES = { physics: 'src/packageEntries/physics.ts', material: 'src/packageEntries/material.ts', element: ELEMENT_ENTRY };
 
 /**
  * The library's and the element's files (the light's Web Worker, the HDR environments) are found

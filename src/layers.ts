@@ -9,11 +9,11 @@ export const SOURCE_LAYERS: readonly (readonly string[])[] = [
   ['fields', 'methods', 'environments'], // the registries: the film's thickness over the bubble (fields.ts), the ways to compute its colour (methods.ts), the light around it (environments.ts)
   ['settings'], // the schema of every user-facing parameter, the film's quality knobs, and the facts a frame and a material share (the method drawn, the pixel-ratio cap)
   ['gpu'], // three.js plumbing: shader source, defines, shared resources, the fullscreen pass
-  ['film', 'flow'], // the film's colour on the GPU; the flowing film's simulation on the GPU
-  ['bubble'], // the bubble's and the environment's materials
-  ['material', 'twins'], // the material for any three.js mesh; the CPU twins of the bubble's shaders
-  ['scene'], // what is drawn for what is asked (the frame), and the bubble's view that draws it: renderer, probe
+  ['film', 'gpuFilmDynamics'], // the film's colour on the GPU; the flowing film's dynamics on the GPU (physics/filmDynamics/ is its float64 twin)
+  ['bubbleMaterials'], // the bubble's and the environment's materials
+  ['meshMaterial', 'bubbleTwins'], // the material for any three.js mesh; the CPU twins of the bubble's shaders
+  ['view'], // what is drawn for what is asked (the frame), and the bubble's view that draws it: renderer, probe
   ['plots'], // the plots of the film at the probe
   ['app', 'diagram'], // the demo's app: panel, settings in the URL, messages; the SVG diagram of the reflected beams
-  ['element', 'pages', 'lib', 'cli'], // entries: the custom element, the pages, the library, the command line
+  ['element', 'pages', 'packageEntries', 'cli'], // entries: the custom element, the pages, the package's library entries (physics, material), the command line
 ];

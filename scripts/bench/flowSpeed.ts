@@ -80,7 +80,7 @@ export function flowSpeedMarkdown(
     '|---|---|---|---|---|',
     ...lines,
     '',
-    `Steps per wall second: the median of ${plan.batches} batch${plan.batches === 1 ? '' : 'es'} of ${plan.batchSteps} step${plan.batchSteps === 1 ? '' : 's'}, after ${plan.warmUpSteps} untimed, of a film seeded ${SPEED_FILM.seed} in a ${SPEED_FILM.windMps} m/s wind, every other parameter at its default. GPU: a GpuFilmSimulation on the benchmark page's renderer (headless Chromium's WebGL2), each batch synced by a 1-pixel read-back of the film target; its draws per step counted by three's renderer.info (render.calls) around one step, to set beside the passes per step of docs/flow.md's cost table. Twin: src/physics/flow's stepFilm in Node, in the bench's own process (\`npm run bench:flow\` prints more of it). Film s per s: steps per second × Δt, 1 where the film keeps real time.`,
+    `Steps per wall second: the median of ${plan.batches} batch${plan.batches === 1 ? '' : 'es'} of ${plan.batchSteps} step${plan.batchSteps === 1 ? '' : 's'}, after ${plan.warmUpSteps} untimed, of a film seeded ${SPEED_FILM.seed} in a ${SPEED_FILM.windMps} m/s wind, every other parameter at its default. GPU: a GpuFilmSimulation on the benchmark page's renderer (headless Chromium's WebGL2), each batch synced by a 1-pixel read-back of the film target; its draws per step counted by three's renderer.info (render.calls) around one step, to set beside the passes per step of docs/flow.md's cost table. Twin: src/physics/filmDynamics's stepFilm in Node, in the bench's own process (\`npm run bench:flow\` prints more of it). Film s per s: steps per second × Δt, 1 where the film keeps real time.`,
   ].join('\n');
 }
 

@@ -1,12 +1,12 @@
 /**
- * `npm run bench:flow`: the speed of the float64 film-flow simulation (src/physics/flow) in Node,
+ * `npm run bench:flow`: the speed of the float64 film-flow simulation (src/physics/filmDynamics) in Node,
  * the reference a GPU port is checked against. For 64² and 128² cells per cube face it prints
  * steps per second, film seconds per wall second, the wall and CPU time per cell-step, the step and
  * its surfactant solve's iterations, and what the run reached: the solve's residual and the drift
  * of the conserved totals. Benchmarks measure; the tests check.
  */
-import { createFilmSimulation, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
-import { sphereIntegral } from '../../src/physics/flow/filmMeasures.ts';
+import { createFilmSimulation, stepFilm } from '../../src/physics/filmDynamics/filmSimulation.ts';
+import { sphereIntegral } from '../../src/physics/filmDynamics/filmMeasures.ts';
 import { SPEED_FILM } from './flowSpeed.ts';
 
 /** Steps timed per grid after a few untimed ones (a seeded, gently blown film, so every pass has work). */

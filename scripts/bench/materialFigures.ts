@@ -89,7 +89,7 @@ async function frameTimes(browser: Browser, baseUrl: string, how: FrameTimesPlan
 /** A minimal three.js app: one iridescent MeshPhysicalMaterial drawn once; `spectral` adds the one call that makes it spectral. */
 const appSource = (spectral: boolean) => `
 import { Mesh, MeshPhysicalMaterial, PerspectiveCamera, Scene, TorusKnotGeometry, WebGLRenderer } from 'three';
-${spectral ? `import { spectralIridescence } from ${JSON.stringify(resolve('src/lib/material.ts'))};` : ''}
+${spectral ? `import { spectralIridescence } from ${JSON.stringify(resolve('src/packageEntries/material.ts'))};` : ''}
 const material = new MeshPhysicalMaterial({ iridescence: 1, iridescenceIOR: 1.33 });
 ${spectral ? 'spectralIridescence(material);' : ''}
 const scene = new Scene();

@@ -9,10 +9,10 @@ import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
 import { type FilmSettings, HDR_ENVIRONMENTS } from '../../src/settings/filmSettings.ts';
 import type { FilmTableLayout } from '../../src/settings/filmTableLayout.ts';
 import type { FilmLayer } from '../../src/physics/stackFilms.ts';
-import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
-import { flowNumbers } from '../../src/physics/flow/flowNumbers.ts';
-import { validateFlowParameters } from '../../src/physics/flow/flowParameters.ts';
-import { timeStep } from '../../src/physics/flow/timeStep.ts';
+import { cubeSphereGrid } from '../../src/physics/filmDynamics/cubeSphereGrid.ts';
+import { flowNumbers } from '../../src/physics/filmDynamics/flowNumbers.ts';
+import { validateFlowParameters } from '../../src/physics/filmDynamics/flowParameters.ts';
+import { timeStep } from '../../src/physics/filmDynamics/timeStep.ts';
 
 export interface BenchRow {
   readonly name: string;

@@ -1,5 +1,5 @@
-/** The float64 twin's speed in Node (src/physics/flow): steps per wall second at each grid of the plan. */
-import { createFilmSimulation, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
+/** The float64 twin's speed in Node (src/physics/filmDynamics): steps per wall second at each grid of the plan. */
+import { createFilmSimulation, stepFilm } from '../../src/physics/filmDynamics/filmSimulation.ts';
 import { type FlowSpeedPlan, SPEED_FILM, type SimulationSpeed, simulationSpeed, timedStepsPerSecond } from './flowSpeed.ts';
 
 export function twinSpeed(plan: FlowSpeedPlan): SimulationSpeed[] {

@@ -10,15 +10,15 @@
  * as the shaders' text comes through Vite's `import.meta.glob` (src/gpu/shaderSource.ts).
  */
 import type { Color, Mesh, ShaderMaterial, WebGLRenderTarget, WebGLRenderer } from 'three';
-import { FLOW_PARAMETERS } from '../../src/physics/flow/flowParameters.ts';
+import { FLOW_PARAMETERS } from '../../src/physics/filmDynamics/flowParameters.ts';
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
 import { DEFAULT_FILM_QUALITY } from '../../src/settings/filmQuality.ts';
 import type { FieldSettings } from '../../src/fields/fields.ts';
 import type { FieldUniforms } from '../../src/fields/thicknessField.ts';
 import { flowParametersOf } from '../../src/fields/flowField.ts';
-import { FlowFieldState } from '../../src/flow/flowFieldState.ts';
-import { GpuFilmSimulation } from '../../src/flow/gpuFilmSimulation.ts';
-import { PASSES, type PassName } from '../../src/flow/flowPasses.ts';
+import { FlowFieldState } from '../../src/gpuFilmDynamics/flowFieldState.ts';
+import { GpuFilmSimulation } from '../../src/gpuFilmDynamics/gpuFilmSimulation.ts';
+import { PASSES, type PassName } from '../../src/gpuFilmDynamics/flowPasses.ts';
 import { loopNames, textureFetchesPerFragment } from './textureFetches.ts';
 
 /** The grids of the table, beside the default. */

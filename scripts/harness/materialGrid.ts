@@ -23,7 +23,7 @@ import {
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3, invert3 } from '../../src/physics/colorConversions.ts';
 import type { Medium } from '../../src/physics/medium.ts';
 import type { ParityGroup, ParityMode } from './parityCase.ts';
-import { spectralIridescence } from '../../src/material/spectralIridescence.ts';
+import { spectralIridescence } from '../../src/meshMaterial/spectralIridescence.ts';
 
 /** The material's indices are three's iridescenceIOR and ior, numbers: the grids must be of constant real media. */
 function constantIndex(index: Medium): number {

@@ -3,8 +3,8 @@ import type { WebGLRenderer } from 'three';
 import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import { type Catalogue, EN } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
-import { type DrawnFrame, resolveFrame } from '../scene/drawnFrame.ts';
-import type { FrameReport } from '../scene/frameReport.ts';
+import { type DrawnFrame, resolveFrame } from '../view/drawnFrame.ts';
+import type { FrameReport } from '../view/frameReport.ts';
 import type { ViewSettings } from '../settings/viewParameters.ts';
 import { addAccessStyles } from './accessStyles.ts';
 import type { BubbleAppParts } from './bubbleAppParts.ts';
@@ -21,7 +21,7 @@ export type { BubbleAppParts } from './bubbleAppParts.ts';
 /**
  * A bubble on a page: the settings asked for, the view that draws them, its controls and plots,
  * and when to draw. The app owns the settings; each frame it resolves them with what the machine
- * and the page offer into the frame the view draws (resolveFrame, src/scene/drawnFrame.ts). Its
+ * and the page offer into the frame the view draws (resolveFrame, src/view/drawnFrame.ts). Its
  * rooms: FrameLoop (when frames are drawn), GovernorSeat (its place in the page's frame governor),
  * probeInput (the pointer and keys on the bubble), FilmAtProbe (the plots, the probe's ring and
  * the live description), StatusLines (the notices in the page's messages).

@@ -1,5 +1,5 @@
 import type { Catalogue } from '../i18n/en.ts';
-import type { BubbleView } from '../scene/bubbleView.ts';
+import type { BubbleView } from '../view/bubbleView.ts';
 import type { ViewSettings } from '../settings/viewParameters.ts';
 
 /** What a BubbleApp is made of: its view, the page's elements it uses, and the page's callbacks. */

@@ -1,7 +1,7 @@
-import { type EnvironmentPixels, loadEnvironmentPixels } from '../bubble/environmentMaps.ts';
+import { type EnvironmentPixels, loadEnvironmentPixels } from '../bubbleMaterials/environmentMaps.ts';
 import { STAND_IN_ENVIRONMENT, isHdrEnvironment } from '../environments/environments.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import { cpuBubbleImage } from '../twins/cpuBubbleImage.ts';
+import { cpuBubbleImage } from '../bubbleTwins/cpuBubbleImage.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
 import { type Catalogue, EN } from '../i18n/en.ts';
 

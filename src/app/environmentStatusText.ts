@@ -1,6 +1,6 @@
 import { type Catalogue, EN } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
-import type { EnvironmentStatus } from '../scene/drawnFrame.ts';
+import type { EnvironmentStatus } from '../view/drawnFrame.ts';
 import { choiceKey } from '../settings/parameterRow.ts';
 
 /** The line a page shows while an HDR environment loads, or after it failed, in a catalogue's language. */

@@ -1,8 +1,8 @@
 import type { Catalogue } from '../i18n/en.ts';
 import { PlotPanel } from '../plots/plotPanel.ts';
 import { probeDescription } from '../plots/probeDescription.ts';
-import type { BubbleView } from '../scene/bubbleView.ts';
-import type { DrawnFrame } from '../scene/drawnFrame.ts';
+import type { BubbleView } from '../view/bubbleView.ts';
+import type { DrawnFrame } from '../view/drawnFrame.ts';
 import { LiveDescription } from './liveDescription.ts';
 
 /** While the swirl animates, the plots follow the probed film this often. */

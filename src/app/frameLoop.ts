@@ -1,5 +1,5 @@
-import type { BubbleView } from '../scene/bubbleView.ts';
-import type { FrameReport } from '../scene/frameReport.ts';
+import type { BubbleView } from '../view/bubbleView.ts';
+import type { FrameReport } from '../view/frameReport.ts';
 
 /** The film's time (s) as the app asks for it: read when the clock starts, set as it runs. */
 export interface FilmClock {

@@ -1,7 +1,7 @@
 import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import type { Catalogue } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
-import type { FrameReport } from '../scene/frameReport.ts';
+import type { FrameReport } from '../view/frameReport.ts';
 import { AUTO } from '../settings/parameterRow.ts';
 import type { ViewSettings } from '../settings/viewParameters.ts';
 import type { BudgetChoice } from './budgetTerms.ts';

@@ -1,10 +1,10 @@
 import type { Catalogue } from '../i18n/en.ts';
-import type { EnvironmentStatus } from '../scene/drawnFrame.ts';
+import type { EnvironmentStatus } from '../view/drawnFrame.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
 
 /**
  * The app's lines in the page's messages (role status; as text, never HTML): that the view draws
- * with another method than the one asked for (the frame's notice: src/scene/drawnFrame.ts), and that the HDR environment
+ * with another method than the one asked for (the frame's notice: src/view/drawnFrame.ts), and that the HDR environment
  * is loading or failed. A line is in the messages while it has something to say; without a
  * messages element none is shown.
  */

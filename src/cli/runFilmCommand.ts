@@ -1,12 +1,12 @@
-import { createFilmSimulation, advanceFilm, filmSeconds } from '../physics/flow/filmSimulation.ts';
-import { PROFILE_THETA_DEG, sphereIntegral, thicknessProfileNm, thicknessRangeNm } from '../physics/flow/filmMeasures.ts';
+import { createFilmSimulation, advanceFilm, filmSeconds } from '../physics/filmDynamics/filmSimulation.ts';
+import { PROFILE_THETA_DEG, sphereIntegral, thicknessProfileNm, thicknessRangeNm } from '../physics/filmDynamics/filmMeasures.ts';
 import {
   FLOW_PARAMETERS,
   type FlowParameterRow,
   acceptsFlowValue,
   expectedFlowValue,
   type FlowParameterKey,
-} from '../physics/flow/flowParameters.ts';
+} from '../physics/filmDynamics/flowParameters.ts';
 import { ParameterError, expectedNumber, isInDomain, type NumberDomain, rejectValue } from '../input/validate.ts';
 import { FILM_PARAMETERS } from '../settings/filmParameters.ts';
 import { optionLines } from './optionLines.ts';

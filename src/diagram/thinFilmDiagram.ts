@@ -4,7 +4,7 @@ import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { BEAM_TAIL_FRACTION, type FilmBeams, filmBeams } from '../physics/reflectedBeams.ts';
 import { isInDomain, quoted } from '../input/validate.ts';
 import { type FilmMediaOption, optionFilmsOf } from '../methods/filmStacks.ts';
-import type { ProbedFilm } from '../scene/probe.ts';
+import type { ProbedFilm } from '../view/probe.ts';
 import { drawBeamFigure } from './beamFigure.ts';
 import { fillBeamTable } from './beamTable.ts';
 import { type DiagramControls, buildDiagramControls, polarizationName } from './diagramControls.ts';

@@ -6,7 +6,7 @@ import { defineThinFilmDiagram } from '../diagram/thinFilmDiagram.ts';
 import { defineThinFilmBubble } from './thinFilmBubble.ts';
 
 export { ThinFilmBubble, defineThinFilmBubble } from './thinFilmBubble.ts';
-export type { ProbedFilm } from '../scene/probe.ts';
+export type { ProbedFilm } from '../view/probe.ts';
 export { ThinFilmDiagram, defineThinFilmDiagram } from '../diagram/thinFilmDiagram.ts';
 defineThinFilmBubble();
 defineThinFilmDiagram();

@@ -1,5 +1,5 @@
 import type { WebGLRenderer } from 'three';
-import { createBubbleRenderer } from '../scene/bubbleRenderer.ts';
+import { createBubbleRenderer } from '../view/bubbleRenderer.ts';
 
 let renderer: WebGLRenderer | null = null;
 let users = 0;

@@ -7,10 +7,10 @@ import type { Catalogue } from '../i18n/en.ts';
 import { catalogueFor, catalogueLang } from '../i18n/messages.ts';
 import { startsClosed } from '../app/startsClosed.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings, filmSettingsOf } from '../settings/viewParameters.ts';
-import { BubbleView } from '../scene/bubbleView.ts';
-import type { DrawnFrame } from '../scene/drawnFrame.ts';
+import { BubbleView } from '../view/bubbleView.ts';
+import type { DrawnFrame } from '../view/drawnFrame.ts';
 import { THICKNESS_FIELDS } from '../fields/fields.ts';
-import type { ProbedFilm } from '../scene/probe.ts';
+import type { ProbedFilm } from '../view/probe.ts';
 import { acquireSharedRenderer, releaseSharedRenderer } from './sharedRenderer.ts';
 import { FrameCanvases } from './frameCanvases.ts';
 

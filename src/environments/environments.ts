@@ -1,6 +1,6 @@
 /**
- * How an environment is drawn (TFC_ENVIRONMENT in shaders/bubble/environment.glsl, and the CPU
- * twin src/twins/environment.ts): black, the procedural sky, or an equirectangular HDR map.
+ * How an environment is drawn (TFC_ENVIRONMENT in shaders/bubbleMaterials/environment.glsl, and the CPU
+ * twin src/bubbleTwins/environment.ts): black, the procedural sky, or an equirectangular HDR map.
  */
 export const ENVIRONMENT_KINDS = ['none', 'sky', 'map'] as const;
 export type EnvironmentKind = (typeof ENVIRONMENT_KINDS)[number];

@@ -16,7 +16,7 @@ import { uniformField } from './uniformField.ts';
  * Every thickness field, by its name in the URL (`field=`): the one place a field is registered.
  * The schema's choices and the rows of the fields' own settings, the settings' members, the
  * shader's TFC_THICKNESS_FIELD, the table's range and the simulations of the evolving ones
- * (src/bubble/fieldStates.ts) all come from here.
+ * (src/bubbleMaterials/fieldStates.ts) all come from here.
  */
 export const THICKNESS_FIELDS = {
   uniform: uniformField,

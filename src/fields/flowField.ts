@@ -1,10 +1,10 @@
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
-import { cubeFaceColumns } from '../physics/flow/cubeSphereFaces.ts';
-import { cubeSphereGrid } from '../physics/flow/cubeSphereGrid.ts';
-import { cubeSphereHalo, padField, paddedSampler } from '../physics/flow/cubeSphereSampler.ts';
-import { flowNumbers } from '../physics/flow/flowNumbers.ts';
-import { FLOW_PARAMETERS, type FlowParameterKey, type FlowParameters } from '../physics/flow/flowParameters.ts';
-import { initialFilm } from '../physics/flow/initialFilm.ts';
+import { cubeFaceColumns } from '../physics/filmDynamics/cubeSphereFaces.ts';
+import { cubeSphereGrid } from '../physics/filmDynamics/cubeSphereGrid.ts';
+import { cubeSphereHalo, padField, paddedSampler } from '../physics/filmDynamics/cubeSphereSampler.ts';
+import { flowNumbers } from '../physics/filmDynamics/flowNumbers.ts';
+import { FLOW_PARAMETERS, type FlowParameterKey, type FlowParameters } from '../physics/filmDynamics/flowParameters.ts';
+import { initialFilm } from '../physics/filmDynamics/initialFilm.ts';
 import { type FieldInput, type NumberSetting, type Vec3, flagSetting, numberSetting, thicknessField } from './thicknessField.ts';
 
 /** The flow's mean thickness: the view's, at least the model's lowest (its numbers divide by η0). */
@@ -28,7 +28,7 @@ function flowParameterSettings<K extends FlowParameterKey>(given: Record<K, read
  * The flowing film's own settings, in the panel's flow folder. `simSpeed` and `gridN` are what a
  * view draws when the page leaves them to it (a frozen view; the page's own rows,
  * src/settings/viewParameters.ts, take `auto`); `renew`: a new bubble after a burst (the GPU's own,
- * src/flow/renewFilm.ts).
+ * src/gpuFilmDynamics/renewFilm.ts).
  */
 const FLOW_SETTINGS = {
   ...flowParameterSettings({
@@ -69,7 +69,7 @@ function startFilm(gridN: number, seed: number) {
 /**
  * The coarse grid the film's start is sampled on where the grid it is simulated on is not needed:
  * to size the table (which then need not change with the grid), and to show a film in the frame
- * before its simulation is made (src/flow/flowFieldState.ts). Its bumps are smooth over several
+ * before its simulation is made (src/gpuFilmDynamics/flowFieldState.ts). Its bumps are smooth over several
  * cells of it, and it is cheap to make.
  */
 export const COARSE_START_GRID_N = 16;
@@ -100,13 +100,13 @@ function flowMaxNm(p: FlowParameters): number {
 
 /**
  * The flowing soap film (shaders/fields/flowField.glsl): the full thickness h̄·η sampled from the
- * simulation of src/physics/flow/, run on the GPU by src/flow/ (the view's FieldState), bilinear
+ * simulation of src/physics/filmDynamics/, run on the GPU by src/gpuFilmDynamics/ (the view's FieldState), bilinear
  * within a cube face and seamless across them. Its TypeScript twin is the film at its start.
  */
 export const flowField = thicknessField({
   glsl: 'flowField.glsl',
   settings: FLOW_SETTINGS,
-  // Its film is simulated to the time timeSeconds × simSpeed (src/flow/flowFieldState.ts).
+  // Its film is simulated to the time timeSeconds × simSpeed (src/gpuFilmDynamics/flowFieldState.ts).
   reads: ['thicknessNm', 'timeSeconds'],
   uniforms: () => ({
     uThicknessNm: { value: 500 },

@@ -105,7 +105,7 @@ export interface ThicknessField<R extends FieldSettingRows, E extends boolean, D
   readonly animates: boolean;
   /**
    * Whether its film evolves in a simulation the view holds (a FieldState, made for it by the table
-   * of src/bubble/fieldStates.ts, whose type asks one of each evolving field) and advances to the
+   * of src/bubbleMaterials/fieldStates.ts, whose type asks one of each evolving field) and advances to the
    * settings' time before each frame.
    */
   readonly evolves: E;

@@ -7,7 +7,7 @@ const checked = new WeakSet<WebGLProgram>();
  * Where the GPU compiles in parallel, three's own check of a new program asks for its info log at
  * its first draw: a synchronous round trip that waits out all the GPU's queued work (up to seconds on
  * a CPU rasteriser), a stall the parallel compile was meant to spare. Such a renderer leaves that
- * check off (src/scene/bubbleRenderer.ts) and its programs are checked here once compiled: the link status
+ * check off (src/view/bubbleRenderer.ts) and its programs are checked here once compiled: the link status
  * is at hand without a wait then, and the logs are asked for only of a program that failed.
  * Returns one message per program that failed to link, each said once. The caller asks only of
  * programs of the context as it is (none compiled before a loss since): asking whether a program

@@ -17,7 +17,7 @@ const keptSets = new WeakMap<ShaderMaterial, string[]>();
  * `dispose()` (three frees a material's programs only on its `dispose` event), and the material is
  * set up anew on its next draw, so switching settings for an hour holds at most `kept` programs per
  * material, not one per set. Only for materials no one outside the project holds: a user's
- * material (the spectral one, src/material/) never fires `dispose` while in use, since its
+ * material (the spectral one, src/meshMaterial/) never fires `dispose` while in use, since its
  * listeners would take it as gone; it keeps its programs until its own `dispose()`, as three's do.
  */
 export function setDefines(m: ShaderMaterial, defines: Record<string, number>, kept = KEPT_DEFINE_SETS): void {

@@ -6,8 +6,8 @@ import { startsClosed } from '../app/startsClosed.ts';
 import { pageLanguage, prefersReducedMotion } from '../app/pagePreferences.ts';
 import { type ViewSettings, filmSettingsOf } from '../settings/viewParameters.ts';
 import { DEMO_VIEW_SETTINGS } from '../settings/demoView.ts';
-import { BubbleView } from '../scene/bubbleView.ts';
-import { createBubbleRenderer } from '../scene/bubbleRenderer.ts';
+import { BubbleView } from '../view/bubbleView.ts';
+import { createBubbleRenderer } from '../view/bubbleRenderer.ts';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#bubble');
 const messages = document.querySelector<HTMLElement>('#messages');

@@ -9,7 +9,7 @@ import { arrowKeyStep } from '../app/arrowKeyStep.ts';
 import { shownPixelRatio } from '../settings/pixelRatio.ts';
 import { AgXToneMapping, EquirectangularReflectionMapping, type Mesh, Vector3, WebGLRenderer } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { environmentTexture, loadEnvironmentPixels } from '../bubble/environmentMaps.ts';
+import { environmentTexture, loadEnvironmentPixels } from '../bubbleMaterials/environmentMaps.ts';
 import { TITANIUM_OXIDE_NM, VIEWS, type View, exampleScene } from './materialsScene.ts';
 import { anodizingText } from './anodizingVoltage.ts';
 import { pixelDeltaE00 } from '../physics/pixelDeltaE.ts';

@@ -15,7 +15,7 @@ import {
   TorusKnotGeometry,
   Vector2,
 } from 'three';
-import { spectralIridescence } from '../material/spectralIridescence.ts';
+import { spectralIridescence } from '../meshMaterial/spectralIridescence.ts';
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3 } from '../physics/colorConversions.ts';
 import { type NamedMedium } from '../physics/namedMedia.ts';
 import { transparentIndexAt } from '../physics/medium.ts';

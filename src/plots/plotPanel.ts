@@ -2,7 +2,7 @@ import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB, xyzToXy } from '../physic
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 import { type FilmSettings } from '../settings/filmSettings.ts';
-import type { ProbeReading } from '../scene/probe.ts';
+import type { ProbeReading } from '../view/probe.ts';
 import { drawChromaticityPlot } from './chromaticityPlot.ts';
 import { type ProbedView, downloadName } from './downloadName.ts';
 import { type FilmSpectrum, filmSpectrum } from './filmSpectrum.ts';

@@ -2,7 +2,7 @@ import { XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import type { Catalogue, MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import type { ProbeReading } from '../scene/probe.ts';
+import type { ProbeReading } from '../view/probe.ts';
 import { type ColorName, colorName } from './colorName.ts';
 import { probeColor } from './probeColor.ts';
 import { fillReads } from '../methods/filmFills.ts';

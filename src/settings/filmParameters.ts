@@ -1,6 +1,6 @@
 import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { FIELD_SETTINGS, type FieldSettings } from '../fields/fields.ts';
-import { FLOW_PARAMETERS, type FlowParameterKey } from '../physics/flow/flowParameters.ts';
+import { FLOW_PARAMETERS, type FlowParameterKey } from '../physics/filmDynamics/flowParameters.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
 import { layersRow } from './layersRow.ts';

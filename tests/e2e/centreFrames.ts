@@ -12,7 +12,7 @@ export type CentreFrame = [number[], boolean];
  */
 export async function recordCentreFrames(page: Page): Promise<() => Promise<CentreFrame[]>> {
   await page.evaluate(() => {
-    const w = window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView; drawn: [number[], boolean][] };
+    const w = window as unknown as { bubbleView: import('../../src/view/bubbleView.ts').BubbleView; drawn: [number[], boolean][] };
     const view = w.bubbleView;
     const render = view.render.bind(view);
     w.drawn = [];

@@ -4,13 +4,13 @@
  * through the view's renderer, and decoded here into the float64 twin's cell order.
  */
 import type { Texture, WebGLRenderTarget } from 'three';
-import { paddedTexelIndex } from '../../src/flow/flowAtlas.ts';
-import { FLOW_FILM } from '../../src/flow/flowTexels.ts';
+import { paddedTexelIndex } from '../../src/gpuFilmDynamics/flowAtlas.ts';
+import { FLOW_FILM } from '../../src/gpuFilmDynamics/flowTexels.ts';
 import { texelFloat } from './harness/filmReadback.ts';
 
 /** The demo's globals (src/pages/demo.ts). */
 export type Demo = Window & {
-  bubbleView: import('../../src/scene/bubbleView.ts').BubbleView;
+  bubbleView: import('../../src/view/bubbleView.ts').BubbleView;
   bubbleApp: import('../../src/app/bubbleApp.ts').BubbleApp;
 };
 /** A page with the reader installFilmReader gives it. */

@@ -30,7 +30,7 @@ test('each plot saves as a PNG of its pixels, the spectrum as the reference CSV,
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
   // The film the plots show: the probe's reading (thickness from the shader, θ_i from the camera ray), once back from the GPU.
   const reading = await page.evaluate(
-    ([fx, fy]) => (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView.probe(fx, fy),
+    ([fx, fy]) => (window as unknown as { bubbleView: import('../../src/view/bubbleView.ts').BubbleView }).bubbleView.probe(fx, fy),
     PROBE,
   );
   expect(reading, 'the probe is on the bubble').not.toBeNull();

@@ -7,7 +7,7 @@ import type { Page } from '@playwright/test';
  */
 export const centrePixel = (page: Page, draw = true): Promise<number[]> =>
   page.evaluate((drawFirst) => {
-    const view = (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView;
+    const view = (window as unknown as { bubbleView: import('../../src/view/bubbleView.ts').BubbleView }).bubbleView;
     if (drawFirst) view.render();
     const gl = view.renderer.getContext();
     const pixel = new Uint8Array(4);

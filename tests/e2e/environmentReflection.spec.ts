@@ -3,12 +3,12 @@ import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../../src/p
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import { type Medium, mediumText } from '../../src/physics/medium.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
-import { type ShownEnvironment, environmentRadiance } from '../../src/twins/environment.ts';
-import { loadEnvironmentPixels } from '../../src/bubble/environmentMaps.ts';
+import { type ShownEnvironment, environmentRadiance } from '../../src/bubbleTwins/environment.ts';
+import { loadEnvironmentPixels } from '../../src/bubbleMaterials/environmentMaps.ts';
 import { type HdrEnvironment, environmentKind, isHdrEnvironment } from '../../src/environments/environments.ts';
 import type { ToneMapping } from '../../src/settings/filmSettings.ts';
-import { toneMap } from '../../src/twins/toneMapping.ts';
-import { CAMERA_DISTANCE, FOV_DEG } from '../../src/twins/cpuBubbleImage.ts';
+import { toneMap } from '../../src/bubbleTwins/toneMapping.ts';
+import { CAMERA_DISTANCE, FOV_DEG } from '../../src/bubbleTwins/cpuBubbleImage.ts';
 import { MAX_CODE_DIFFERENCE, worstCodeDifference } from './referenceColor.ts';
 
 /**
@@ -50,7 +50,7 @@ for (const c of CASES) {
     );
     await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
     const read = await page.evaluate((points) => {
-      const view = (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView;
+      const view = (window as unknown as { bubbleView: import('../../src/view/bubbleView.ts').BubbleView }).bubbleView;
       view.render();
       const gl = view.renderer.getContext();
       const w = gl.drawingBufferWidth,

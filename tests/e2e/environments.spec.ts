@@ -12,7 +12,7 @@ import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './we
  * frame as ready; one that fails to load says so and shows the sky.
  */
 
-type Window_ = Window & { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView };
+type Window_ = Window & { bubbleView: import('../../src/view/bubbleView.ts').BubbleView };
 const DRAINED = 'field=drainage&thickness=600&thicknessRange=1100&animate=0';
 
 /** The drawing buffer's pixels, drawn afresh, with the spread of luminance over the bubble's middle third. */

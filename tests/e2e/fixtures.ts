@@ -22,7 +22,7 @@ export const VIEWPORT = { width: 640, height: 480 } as const;
 
 type Demo = Window & {
   bubbleApp: import('../../src/app/bubbleApp.ts').BubbleApp;
-  bubbleView: import('../../src/scene/bubbleView.ts').BubbleView;
+  bubbleView: import('../../src/view/bubbleView.ts').BubbleView;
 };
 
 async function sharedPage(browser: Browser, path: string, readiness: readonly [string, string]): Promise<Page> {

@@ -8,8 +8,8 @@
  */
 import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.ts';
-import { createFilmSimulation, punctureFilm, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
-import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
+import { createFilmSimulation, punctureFilm, stepFilm } from '../../src/physics/filmDynamics/filmSimulation.ts';
+import { nearestCell } from '../../src/physics/filmDynamics/cubeSphereSampler.ts';
 import type { ViewSettings } from '../../src/settings/viewParameters.ts';
 import { FLOW_BURST_DIFFERING_CELLS, FLOW_BURST_RAY_TOL, RIM_SPEED_REL_TOL } from '../tolerances.ts';
 import { type Demo, type FilmReader, installFilmReader, paddedFilmCells } from './demoFlowFilm.ts';

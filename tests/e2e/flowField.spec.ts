@@ -1,6 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
-import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
-import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
+import { cubeSphereGrid } from '../../src/physics/filmDynamics/cubeSphereGrid.ts';
+import { nearestCell } from '../../src/physics/filmDynamics/cubeSphereSampler.ts';
 import { type Demo, type FilmReader, installFilmReader, paddedFilmCells } from './demoFlowFilm.ts';
 import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';

@@ -1,7 +1,7 @@
 import { BOTH_BACKENDS, expect, test } from './fixtures.ts';
-import { createFilmSimulation, stepFilm } from '../../src/physics/flow/filmSimulation.ts';
-import { cubeSphereGrid } from '../../src/physics/flow/cubeSphereGrid.ts';
-import { nearestCell } from '../../src/physics/flow/cubeSphereSampler.ts';
+import { createFilmSimulation, stepFilm } from '../../src/physics/filmDynamics/filmSimulation.ts';
+import { cubeSphereGrid } from '../../src/physics/filmDynamics/cubeSphereGrid.ts';
+import { nearestCell } from '../../src/physics/filmDynamics/cubeSphereSampler.ts';
 import { FLOW_GPU_CHEBYSHEV_RESIDUAL_MAX, FLOW_GPU_FLOW_STEP_FIELD_TOL, FLOW_GPU_VELOCITY_TOL, PADDED_START_TOL } from '../tolerances.ts';
 
 /** A small seeded film with wind and evaporation, so every pass moves something (two transport sub-steps a step). */

@@ -1,5 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
-import { FLOW_PARAMETERS } from '../../src/physics/flow/flowParameters.ts';
+import { FLOW_PARAMETERS } from '../../src/physics/filmDynamics/flowParameters.ts';
 import { GOVERNED_GRIDS } from '../../src/app/budgetTerms.ts';
 import { EN } from '../../src/i18n/en.ts';
 
@@ -10,7 +10,7 @@ import { EN } from '../../src/i18n/en.ts';
  * governor is the document's: a fresh load starts it anew).
  */
 type Demo = Window & {
-  bubbleView: import('../../src/scene/bubbleView.ts').BubbleView;
+  bubbleView: import('../../src/view/bubbleView.ts').BubbleView;
   bubbleApp: import('../../src/app/bubbleApp.ts').BubbleApp;
 };
 

@@ -9,7 +9,7 @@ import { srgbDecode } from '../../src/physics/colorConversions.ts';
 import { type Medium } from '../../src/physics/medium.ts';
 
 /**
- * The spectral iridescence (src/material/spectralIridescence.ts) in three.js scenes, one harness
+ * The spectral iridescence (src/meshMaterial/spectralIridescence.ts) in three.js scenes, one harness
  * page (tests/e2e/harness/material.ts) for every check: the film's pixel against the float64
  * reference on a box, through a glTF round trip, the rest of the physical material untouched, and
  * the programs and textures as materials come and go, and a table rebuilt after a lost context.

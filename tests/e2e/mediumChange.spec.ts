@@ -30,7 +30,7 @@ test('a change to a metal inside and back shows one medium or the other in every
   const programIds = () =>
     page.evaluate(
       (name) =>
-        (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView.renderer.info
+        (window as unknown as { bubbleView: import('../../src/view/bubbleView.ts').BubbleView }).bubbleView.renderer.info
           .programs!.filter((p) => p.name === name)
           .map((p) => p.id),
       TABLE_PASS_NAME,

@@ -25,7 +25,7 @@ const VIEWS = {
 /** Draws a frame and sums up the middle 160×160 pixels, where the bubble is, from the drawing buffer. */
 async function bubbleStats(page: Page): Promise<{ distinctColors: number; meanLevel: number }> {
   return page.evaluate(() => {
-    const view = (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView;
+    const view = (window as unknown as { bubbleView: import('../../src/view/bubbleView.ts').BubbleView }).bubbleView;
     view.render();
     const gl = view.renderer.getContext();
     const size = 160;

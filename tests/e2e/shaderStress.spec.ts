@@ -143,7 +143,7 @@ test('the whole bubble pipeline at extreme settings draws no black (NaN) pixel i
       await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: 60_000 });
       const black = await page.evaluate((fraction) => {
         // The frame the page drew (its drawing buffer is preserved): exact mode takes seconds per frame here.
-        const view = (window as unknown as { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView }).bubbleView;
+        const view = (window as unknown as { bubbleView: import('../../src/view/bubbleView.ts').BubbleView }).bubbleView;
         const gl = view.renderer.getContext();
         const [w, h] = [gl.drawingBufferWidth, gl.drawingBufferHeight];
         const pixels = new Uint8Array(4 * w * h);

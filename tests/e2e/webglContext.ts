@@ -1,7 +1,7 @@
 import type { Page } from '@playwright/test';
 
 /** The demo page's globals these helpers read. */
-type Window_ = Window & { bubbleView: import('../../src/scene/bubbleView.ts').BubbleView };
+type Window_ = Window & { bubbleView: import('../../src/view/bubbleView.ts').BubbleView };
 
 /**
  * three's count of the demo view's live GPU objects, once the plots have been drawn (their probe

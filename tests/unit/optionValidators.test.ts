@@ -3,7 +3,7 @@
  * values with the same message (both call the option's one validator).
  */
 import { describe, expect, it } from 'vitest';
-import { spectralIridescenceOptions } from '../../src/material/spectralIridescenceOptions.ts';
+import { spectralIridescenceOptions } from '../../src/meshMaterial/spectralIridescenceOptions.ts';
 import { validateColorCase } from '../../src/cli/colorCase.ts';
 
 const errorOf = (f: () => unknown): string => {

@@ -8,10 +8,10 @@
  * the renderer as the first found it.
  */
 import { WebGLRenderer } from 'three';
-import type { BubbleView } from '../../../src/scene/bubbleView.ts';
-import { createBubbleRenderer } from '../../../src/scene/bubbleRenderer.ts';
+import type { BubbleView } from '../../../src/view/bubbleView.ts';
+import { createBubbleRenderer } from '../../../src/view/bubbleRenderer.ts';
 import { FilmXyzProbe } from '../../harness/filmXyzProbe.ts';
-import { loadEnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
+import { loadEnvironmentPixels } from '../../../src/bubbleMaterials/environmentMaps.ts';
 import { type FilmSettings, isHdrEnvironment } from '../../../src/settings/filmSettings.ts';
 import {
   type BenchRowResult,

@@ -4,7 +4,7 @@
  * renderer counts them (renderer.info.render.calls, its reset per render held off around the step).
  */
 import type { WebGLRenderer } from 'three';
-import { GpuFilmSimulation } from '../../../src/flow/gpuFilmSimulation.ts';
+import { GpuFilmSimulation } from '../../../src/gpuFilmDynamics/gpuFilmSimulation.ts';
 import { type FlowSpeedPlan, type GpuSimulationSpeed, SPEED_FILM, simulationSpeed, timedStepsPerSecond } from '../flowSpeed.ts';
 
 /** The draws `work` makes on `renderer`, as its info counts them. */

@@ -1,7 +1,7 @@
 /** A benchmark row's scene: the demo's BubbleView with the row's settings and quality, and the plain textured sphere in the bubble's place for the floor rows. */
 import { DataTexture, Mesh, MeshBasicMaterial, RGBAFormat, SRGBColorSpace, type WebGLRenderer } from 'three';
-import { BubbleView } from '../../../src/scene/bubbleView.ts';
-import { resolveFrame } from '../../../src/scene/drawnFrame.ts';
+import { BubbleView } from '../../../src/view/bubbleView.ts';
+import { resolveFrame } from '../../../src/view/drawnFrame.ts';
 import type { FilmSettings } from '../../../src/settings/filmSettings.ts';
 import { AUTO } from '../../../src/settings/parameterRow.ts';
 import type { BenchRowSpec } from '../benchRow.ts';
@@ -37,7 +37,7 @@ export function rowScene(renderer: WebGLRenderer, spec: BenchRowSpec): { view: B
   const view = new BubbleView(renderer, spec.quality);
   showFilm(view, spec.settings);
   if (!spec.reflections) {
-    // The model before environment reflections: reflectedRadiance (shaders/bubble/environment.glsl) returns the light's white.
+    // The model before environment reflections: reflectedRadiance (shaders/bubbleMaterials/environment.glsl) returns the light's white.
     const m = view.bubble.material;
     m.onBeforeCompile = (shader) => {
       shader.fragmentShader = shader.fragmentShader.replace(/vec3 reflectedRadiance\(vec3 direction\) \{/, '$&\n  return vec3(1.0);');

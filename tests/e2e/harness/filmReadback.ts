@@ -1,15 +1,15 @@
 /**
  * The GPU film read back in the float64 twin's orders, for the browser tests: a GpuFilmSimulation's
  * targets (its public `stateTargets`) read through the renderer, and their texels decoded by the
- * layouts and records the passes write (src/flow/flowAtlas.ts, flowLayouts.ts, flowTexels.ts), each
+ * layouts and records the passes write (src/gpuFilmDynamics/flowAtlas.ts, flowLayouts.ts, flowTexels.ts), each
  * field by its name. The decoders are pure, so a test in Node decodes texels read on a page.
  */
 import type { WebGLRenderTarget, WebGLRenderer } from 'three';
-import { HOLE_RAYS, MAX_HOLES } from '../../../src/physics/flow/filmHoles.ts';
-import { cellTexelIndex } from '../../../src/flow/flowAtlas.ts';
-import { HOLE_TABLE, holeFrameTexel } from '../../../src/flow/flowLayouts.ts';
-import { EDGE_VELOCITY, FLOW_FILM, HOLE_ORIGIN, HOLE_RAY } from '../../../src/flow/flowTexels.ts';
-import type { GpuFilmSimulation } from '../../../src/flow/gpuFilmSimulation.ts';
+import { HOLE_RAYS, MAX_HOLES } from '../../../src/physics/filmDynamics/filmHoles.ts';
+import { cellTexelIndex } from '../../../src/gpuFilmDynamics/flowAtlas.ts';
+import { HOLE_TABLE, holeFrameTexel } from '../../../src/gpuFilmDynamics/flowLayouts.ts';
+import { EDGE_VELOCITY, FLOW_FILM, HOLE_ORIGIN, HOLE_RAY } from '../../../src/gpuFilmDynamics/flowTexels.ts';
+import type { GpuFilmSimulation } from '../../../src/gpuFilmDynamics/gpuFilmSimulation.ts';
 import type { FieldWidth, TexelRecord } from '../../../src/gpu/texelRecord.ts';
 
 /** A target's RGBA float texels, row-major. */

@@ -22,8 +22,8 @@ import {
 } from 'three';
 import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
-import { spectralIridescence, useSpectralIridescence } from '../../../src/material/spectralIridescence.ts';
-import { type SpectralIridescenceOptions } from '../../../src/material/spectralIridescenceOptions.ts';
+import { spectralIridescence, useSpectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
+import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
 import { type FilmCase, centre, disposeAll, draw, environment, filmMaterial, filmScene, renderer } from './materialScene.ts';
 import { threeJsUserPixels } from './materialThreeJsUser.ts';
 

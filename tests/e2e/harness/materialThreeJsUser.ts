@@ -6,8 +6,8 @@
  * events, `renderer.info`, the pixels.
  */
 import { MaterialLoader, type MeshPhysicalMaterial } from 'three';
-import { spectralIridescence } from '../../../src/material/spectralIridescence.ts';
-import { ThinFilmMaterial } from '../../../src/material/thinFilmMaterial.ts';
+import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
+import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
 import { type FilmCase, centre, disposeAll, draw, filmMaterial, filmScene, renderer } from './materialScene.ts';
 
 /**

@@ -4,7 +4,7 @@ import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/settings/fi
 import type { ParityGroup, ParityMode } from '../../../scripts/harness/parityCase.ts';
 import { FilmXyzProbe } from '../../../scripts/harness/filmXyzProbe.ts';
 import { renderThickness } from './thicknessFieldProbe.ts';
-import { GpuFilmSimulation } from '../../../src/flow/gpuFilmSimulation.ts';
+import { GpuFilmSimulation } from '../../../src/gpuFilmDynamics/gpuFilmSimulation.ts';
 import { readFilmState, readTexels } from './filmReadback.ts';
 import { surfactantResidual } from './surfactantResidual.ts';
 

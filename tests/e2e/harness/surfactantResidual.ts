@@ -8,17 +8,17 @@
  * ‖b − AΓ'‖/‖b − AΓ‖, for the step the simulation takes next (in its wind; a blow is not drawn).
  */
 import type { WebGLRenderer } from 'three';
-import { cubeSphereHalo } from '../../../src/physics/flow/cubeSphereSampler.ts';
-import { surfaceWind, windAngleRad } from '../../../src/physics/flow/windDirection.ts';
+import { cubeSphereHalo } from '../../../src/physics/filmDynamics/cubeSphereSampler.ts';
+import { surfaceWind, windAngleRad } from '../../../src/physics/filmDynamics/windDirection.ts';
 import { FullscreenPass } from '../../../src/gpu/fullscreenPass.ts';
-import { cellTexelIndex } from '../../../src/flow/flowAtlas.ts';
-import { flowGridTextures } from '../../../src/flow/flowGridTextures.ts';
-import { passMaterials } from '../../../src/flow/flowPasses.ts';
-import { allTargets, flowTargets } from '../../../src/flow/flowTargets.ts';
-import { SURFACTANT_SWEEP, SURFACTANT_SYSTEM, SURFACTANT_WEIGHTS } from '../../../src/flow/flowTexels.ts';
-import { type FlowUniformName, allFlowUniforms, flowUniformSets } from '../../../src/flow/flowUniforms.ts';
-import type { GpuFilmSimulation } from '../../../src/flow/gpuFilmSimulation.ts';
-import { type DrawPass, drawPredictionAndSolve } from '../../../src/flow/solvePasses.ts';
+import { cellTexelIndex } from '../../../src/gpuFilmDynamics/flowAtlas.ts';
+import { flowGridTextures } from '../../../src/gpuFilmDynamics/flowGridTextures.ts';
+import { passMaterials } from '../../../src/gpuFilmDynamics/flowPasses.ts';
+import { allTargets, flowTargets } from '../../../src/gpuFilmDynamics/flowTargets.ts';
+import { SURFACTANT_SWEEP, SURFACTANT_SYSTEM, SURFACTANT_WEIGHTS } from '../../../src/gpuFilmDynamics/flowTexels.ts';
+import { type FlowUniformName, allFlowUniforms, flowUniformSets } from '../../../src/gpuFilmDynamics/flowUniforms.ts';
+import type { GpuFilmSimulation } from '../../../src/gpuFilmDynamics/gpuFilmSimulation.ts';
+import { type DrawPass, drawPredictionAndSolve } from '../../../src/gpuFilmDynamics/solvePasses.ts';
 import { readTexels, texelFloat, texelVector } from './filmReadback.ts';
 
 /** The GPU solve's texels for the simulation's next step: its system, weights and solved increment, per texel of the cell atlas. */

@@ -11,8 +11,8 @@ import {
   drawnField,
   updateFieldUniforms,
 } from '../../../src/fields/fields.ts';
-import { createFieldState } from '../../../src/bubble/fieldStates.ts';
-import { thicknessFieldDefines, thicknessFieldSource, thicknessFieldUniforms } from '../../../src/bubble/thicknessFieldSource.ts';
+import { createFieldState } from '../../../src/bubbleMaterials/fieldStates.ts';
+import { thicknessFieldDefines, thicknessFieldSource, thicknessFieldUniforms } from '../../../src/bubbleMaterials/thicknessFieldSource.ts';
 import { floatRowTexture, renderFloatRow } from '../../../src/gpu/floatRow.ts';
 
 export type FieldSettings = ThicknessFieldSettings & { readonly field: FieldName };

@@ -3,8 +3,8 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { gridCost, flowCostMarkdown } from '../../../scripts/docs/flowCost.ts';
 import { withBlock } from '../../../scripts/docs/withBlock.ts';
-import { faceAtlasSize } from '../../../src/flow/flowAtlas.ts';
-import { HALO_TAP_TEXELS } from '../../../src/flow/flowGridTextures.ts';
+import { faceAtlasSize } from '../../../src/gpuFilmDynamics/flowAtlas.ts';
+import { HALO_TAP_TEXELS } from '../../../src/gpuFilmDynamics/flowGridTextures.ts';
 
 const flowDoc = readFileSync(new URL('../../../docs/flow.md', import.meta.url), 'utf8');
 

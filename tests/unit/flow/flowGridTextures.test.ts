@@ -1,10 +1,10 @@
 /** The GPU's view of the cube-sphere: the atlases hold every cell, padded cell and edge once, and the halo's taps reproduce the twin's ghosts. */
 import { describe, expect, it } from 'vitest';
-import { cubeSphereGrid } from '../../../src/physics/flow/cubeSphereGrid.ts';
-import { cubeSphereHalo, padField } from '../../../src/physics/flow/cubeSphereSampler.ts';
-import { cellTexelIndex, edgeAtlasSize, faceAtlasSize, paddedTexelIndex } from '../../../src/flow/flowAtlas.ts';
-import { HALO_TAP_TEXELS, flowGridTextures } from '../../../src/flow/flowGridTextures.ts';
-import { HALO_TAPS } from '../../../src/flow/flowTexels.ts';
+import { cubeSphereGrid } from '../../../src/physics/filmDynamics/cubeSphereGrid.ts';
+import { cubeSphereHalo, padField } from '../../../src/physics/filmDynamics/cubeSphereSampler.ts';
+import { cellTexelIndex, edgeAtlasSize, faceAtlasSize, paddedTexelIndex } from '../../../src/gpuFilmDynamics/flowAtlas.ts';
+import { HALO_TAP_TEXELS, flowGridTextures } from '../../../src/gpuFilmDynamics/flowGridTextures.ts';
+import { HALO_TAPS } from '../../../src/gpuFilmDynamics/flowTexels.ts';
 import { mulberry32 } from '../../seededRandom.ts';
 import { HALO_WEIGHT_SUM_TOL } from '../../tolerances.ts';
 

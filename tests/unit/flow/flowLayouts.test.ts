@@ -1,15 +1,15 @@
 /**
- * The flow's texture layouts by name: the GLSL of shaders/flow/ reads every layout define that
- * src/flow/flowLayouts.ts emits from its tables, reads no TFC_ name the passes are not given, and
+ * The flow's texture layouts by name: the GLSL of shaders/gpuFilmDynamics/ reads every layout define that
+ * src/gpuFilmDynamics/flowLayouts.ts emits from its tables, reads no TFC_ name the passes are not given, and
  * adds no bare number to a name (an offset into a layout); the tables place each part once.
  */
 import { readFileSync, readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { HOLE_RAYS } from '../../../src/physics/flow/filmHoles.ts';
-import { HOLE_FRAME, HOLE_TABLE, flowLayoutDefines, holeFrameTexel } from '../../../src/flow/flowLayouts.ts';
-import { flowPassDefines } from '../../../src/flow/flowPasses.ts';
+import { HOLE_RAYS } from '../../../src/physics/filmDynamics/filmHoles.ts';
+import { HOLE_FRAME, HOLE_TABLE, flowLayoutDefines, holeFrameTexel } from '../../../src/gpuFilmDynamics/flowLayouts.ts';
+import { flowPassDefines } from '../../../src/gpuFilmDynamics/flowPasses.ts';
 
-const flowDir = new URL('../../../shaders/flow/', import.meta.url);
+const flowDir = new URL('../../../shaders/gpuFilmDynamics/', import.meta.url);
 const flowGlsl = readdirSync(flowDir)
   .filter((f) => f.endsWith('.glsl'))
   .map((file) => ({ file, text: readFileSync(new URL(file, flowDir), 'utf8') }));
@@ -33,7 +33,7 @@ describe('flow layouts', () => {
   it('the GLSL reads every layout define, and no TFC_ name the passes are not given or it does not declare', () => {
     const read = new Set(flowGlsl.flatMap(({ text }) => namesIn(text)));
     expect(Object.keys(defines).filter((name) => !read.has(name))).toEqual([]);
-    // Constants of shaders/flow/, and the texel records' macros (shaders/gpu/texelRecord.glsl).
+    // Constants of shaders/gpuFilmDynamics/, and the texel records' macros (shaders/gpu/texelRecord.glsl).
     const declared = new Set([
       ...flowGlsl.flatMap(({ text }) => [...code(text).matchAll(/\bconst\s+\w+\s+(TFC_[A-Z0-9_]+)/g)].map((m) => m[1]!)),
       ...[...readFileSync(new URL('../gpu/texelRecord.glsl', flowDir), 'utf8').matchAll(/#define\s+(TFC_[A-Z0-9_]+)/g)].map((m) => m[1]!),

@@ -1,6 +1,6 @@
 /**
  * The flow's texels by name: every texture and target of the flow is a texel record of
- * src/flow/flowTexels.ts, one texel each, and the GLSL that reads them (shaders/flow/, and the
+ * src/gpuFilmDynamics/flowTexels.ts, one texel each, and the GLSL that reads them (shaders/gpuFilmDynamics/, and the
  * bubble's flow field that samples the padded film) reads no texel by position: no swizzle and no
  * constant index of a vec4, so a texel's fields are reached through the records' macros at their
  * defines only, and reordering a record's fields cannot change what is drawn.
@@ -8,8 +8,8 @@
 import { readFileSync, readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { packTexelRecord } from '../../../src/gpu/texelRecord.ts';
-import { FLOW_TEXELS, SURFACTANT_SWEEP, SWEEP_GUESS, SWEEP_PREVIOUS_GUESS, ZERO_GUESS } from '../../../src/flow/flowTexels.ts';
-import { flowPassDefines } from '../../../src/flow/flowPasses.ts';
+import { FLOW_TEXELS, SURFACTANT_SWEEP, SWEEP_GUESS, SWEEP_PREVIOUS_GUESS, ZERO_GUESS } from '../../../src/gpuFilmDynamics/flowTexels.ts';
+import { flowPassDefines } from '../../../src/gpuFilmDynamics/flowPasses.ts';
 
 const shaderDir = new URL('../../../shaders/', import.meta.url);
 /** The GLSL that reads the flow's texels. */

@@ -1,21 +1,21 @@
 /**
  * The flow's uniforms by name: every pass's material sets exactly the uniforms its assembled GLSL
  * declares, each set's factory exactly those its file declares, and each uniform is declared in one
- * file of shaders/flow/ only. Uniforms parsed from the GLSL are the independent side: a name the
+ * file of shaders/gpuFilmDynamics/ only. Uniforms parsed from the GLSL are the independent side: a name the
  * shader declares that no factory sets would read 0 on the GPU, silently.
  */
 import { readFileSync, readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { declaredUniforms } from '../gpu/glslUniforms.ts';
-import { cubeSphereGrid } from '../../../src/physics/flow/cubeSphereGrid.ts';
-import { cubeSphereHalo } from '../../../src/physics/flow/cubeSphereSampler.ts';
-import { flowNumbers } from '../../../src/physics/flow/flowNumbers.ts';
-import { validateFlowParameters } from '../../../src/physics/flow/flowParameters.ts';
-import { flowGridTextures } from '../../../src/flow/flowGridTextures.ts';
-import { PASSES, passMaterials } from '../../../src/flow/flowPasses.ts';
-import { FLOW_UNIFORM_SETS, type FlowUniformInputs, flowUniformSets } from '../../../src/flow/flowUniforms.ts';
+import { cubeSphereGrid } from '../../../src/physics/filmDynamics/cubeSphereGrid.ts';
+import { cubeSphereHalo } from '../../../src/physics/filmDynamics/cubeSphereSampler.ts';
+import { flowNumbers } from '../../../src/physics/filmDynamics/flowNumbers.ts';
+import { validateFlowParameters } from '../../../src/physics/filmDynamics/flowParameters.ts';
+import { flowGridTextures } from '../../../src/gpuFilmDynamics/flowGridTextures.ts';
+import { PASSES, passMaterials } from '../../../src/gpuFilmDynamics/flowPasses.ts';
+import { FLOW_UNIFORM_SETS, type FlowUniformInputs, flowUniformSets } from '../../../src/gpuFilmDynamics/flowUniforms.ts';
 
-const flowDir = new URL('../../../shaders/flow/', import.meta.url);
+const flowDir = new URL('../../../shaders/gpuFilmDynamics/', import.meta.url);
 const flowFiles = readdirSync(flowDir).filter((f) => f.endsWith('.glsl'));
 const ownText = (file: string): string => readFileSync(new URL(file, flowDir), 'utf8');
 
@@ -62,7 +62,7 @@ describe('flow uniforms', () => {
     }
   });
 
-  it('each uniform of shaders/flow/ is declared in one file, and every file that declares one is a set', () => {
+  it('each uniform of shaders/gpuFilmDynamics/ is declared in one file, and every file that declares one is a set', () => {
     const declaring = new Map<string, string[]>();
     for (const file of flowFiles)
       for (const name of declaredUniforms(ownText(file))) declaring.set(name, [...(declaring.get(name) ?? []), file]);

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { ProgramsInParallel } from '../../../src/scene/programsInParallel.ts';
+import { ProgramsInParallel } from '../../../src/view/programsInParallel.ts';
 
 /** A compile that resolves when told, counting how often it was started. */
 function deferredCompile() {

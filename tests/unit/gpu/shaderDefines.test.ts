@@ -5,7 +5,7 @@
 import { readFileSync, readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { POLARIZATIONS } from '../../../src/physics/filmReflectance.ts';
-import { bubbleDefines } from '../../../src/bubble/bubbleMaterial.ts';
+import { bubbleDefines } from '../../../src/bubbleMaterials/bubbleMaterial.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
 import { ENVIRONMENTS, FIELDS, FILM_METHODS, SIDES, SPACES } from '../../../src/settings/filmSettings.ts';
@@ -16,7 +16,7 @@ import { AIRY_ROW } from '../../../src/film/airySeriesRows.ts';
 import { DISPERSIVE_BIN } from '../../../src/film/dispersiveRows.ts';
 import { MEDIA_KNOT } from '../../../src/film/filmMedia.ts';
 import { FILM_LAYER } from '../../../src/film/filmStack.ts';
-import { FLOW_TEXELS } from '../../../src/flow/flowTexels.ts';
+import { FLOW_TEXELS } from '../../../src/gpuFilmDynamics/flowTexels.ts';
 import { type FieldWidth, texelRecordDefines } from '../../../src/gpu/texelRecord.ts';
 
 const PREFIX = /^TFC_[A-Z0-9_]+$/;

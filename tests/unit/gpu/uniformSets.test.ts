@@ -10,12 +10,12 @@
 import { readFileSync, readdirSync } from 'node:fs';
 import { MeshPhysicalMaterial, ShaderLib, type ShaderMaterial } from 'three';
 import { describe, expect, it } from 'vitest';
-import { createBubbleMaterial } from '../../../src/bubble/bubbleMaterial.ts';
-import { createBackgroundMaterial, environmentDefines } from '../../../src/bubble/environmentMaterial.ts';
+import { createBubbleMaterial } from '../../../src/bubbleMaterials/bubbleMaterial.ts';
+import { createBackgroundMaterial, environmentDefines } from '../../../src/bubbleMaterials/environmentMaterial.ts';
 import { ENVIRONMENTS } from '../../../src/environments/environments.ts';
 import { FIELDS } from '../../../src/fields/fields.ts';
 import { FILM_METHODS } from '../../../src/methods/methods.ts';
-import { spectralIridescence } from '../../../src/material/spectralIridescence.ts';
+import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
 import { MODES } from '../../../src/settings/filmSettings.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';

@@ -5,9 +5,9 @@
  */
 import { MeshPhysicalMaterial, ShaderLib } from 'three';
 import { describe, expect, it, vi } from 'vitest';
-import { spectralIridescence } from '../../../src/material/spectralIridescence.ts';
-import { isSpectralIridescence } from '../../../src/material/spectralFilm.ts';
-import { ThinFilmMaterial } from '../../../src/material/thinFilmMaterial.ts';
+import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
+import { isSpectralIridescence } from '../../../src/meshMaterial/spectralFilm.ts';
+import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
 import { parameterOf } from './parameterOf.ts';
 import { DEFAULT_FILM_QUALITY, filmQualityFrom } from '../../../src/settings/filmQuality.ts';
 

@@ -5,7 +5,7 @@
  */
 import { MaterialLoader, ShaderLib } from 'three';
 import { describe, expect, it, vi } from 'vitest';
-import { ThinFilmMaterial } from '../../../src/material/thinFilmMaterial.ts';
+import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
 import { parameterOf } from './parameterOf.ts';
 import { enumCode } from '../../../src/gpu/enumDefines.ts';
 import { FILM_METHODS } from '../../../src/methods/methods.ts';

@@ -17,10 +17,10 @@ import {
   type Texture,
 } from 'three';
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { spectralIridescence } from '../../../src/material/spectralIridescence.ts';
-import { isSpectralIridescence } from '../../../src/material/spectralFilm.ts';
-import { OPTION_NAMES, type SpectralIridescenceOptions } from '../../../src/material/spectralIridescenceOptions.ts';
-import { ThinFilmMaterial } from '../../../src/material/thinFilmMaterial.ts';
+import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
+import { isSpectralIridescence } from '../../../src/meshMaterial/spectralFilm.ts';
+import { OPTION_NAMES, type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
+import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
 import { ParameterError } from '../../../src/input/validate.ts';
 
 /** What three hands onBeforeCompile: the physical material's shaders, uniforms and defines. */

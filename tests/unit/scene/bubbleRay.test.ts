@@ -1,12 +1,12 @@
 /**
- * Where a point of the view meets the bubble (src/scene/bubbleRay.ts), shared by a press's blow and
+ * Where a point of the view meets the bubble (src/view/bubbleRay.ts), shared by a press's blow and
  * burst and by the probe's angle: checked against the geometry of a ray from a camera on +z at
  * distance D meeting the unit sphere, solved here by the quadratic and the law of sines.
  */
 import { PerspectiveCamera } from 'three';
 import { describe, expect, it } from 'vitest';
-import { bubbleHit } from '../../../src/scene/bubbleRay.ts';
-import { incidenceAngleDeg } from '../../../src/scene/probe.ts';
+import { bubbleHit } from '../../../src/view/bubbleRay.ts';
+import { incidenceAngleDeg } from '../../../src/view/probe.ts';
 
 const [FOV_DEG, ASPECT, D] = [35, 2, 4];
 const camera = new PerspectiveCamera(FOV_DEG, ASPECT, 0.1, 100);

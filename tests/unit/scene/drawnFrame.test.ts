@@ -1,12 +1,12 @@
 /**
- * The one place where what is asked becomes what is drawn (src/scene/drawnFrame.ts): each offer of
+ * The one place where what is asked becomes what is drawn (src/view/drawnFrame.ts): each offer of
  * the machine and the page, alone, and the frame and notices it must give. The expected values are
  * the rules' own (docs/architecture.md#what-is-asked-and-what-is-drawn), written out here.
  */
 import { describe, expect, it } from 'vitest';
 import { maxFieldThicknessNm } from '../../../src/fields/fields.ts';
 import { flowParametersOf } from '../../../src/fields/flowField.ts';
-import { type FrameOffers, resolveFrame } from '../../../src/scene/drawnFrame.ts';
+import { type FrameOffers, resolveFrame } from '../../../src/view/drawnFrame.ts';
 import { parseLayers } from '../../../src/physics/stackText.ts';
 import { DEFAULT_VIEW_SETTINGS, type ViewSettings, filmSettingsOf } from '../../../src/settings/viewParameters.ts';
 

@@ -6,7 +6,7 @@
  */
 import type { Camera, Object3D, Scene, WebGLRenderer } from 'three';
 import { describe, expect, it } from 'vitest';
-import { compileFramePrograms } from '../../../src/scene/framePrograms.ts';
+import { compileFramePrograms } from '../../../src/view/framePrograms.ts';
 
 const LINK_STATUS = 0x8b82;
 

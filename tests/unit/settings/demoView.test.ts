@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { DEMO_VIEW_CHANGES, DEMO_VIEW_SETTINGS } from '../../../src/settings/demoView.ts';
 import { parseSettings, settingsToQuery } from '../../../src/settings/settingsQuery.ts';
 import { DEFAULT_VIEW_SETTINGS, VIEW_PARAMETERS, type ViewSettings } from '../../../src/settings/viewParameters.ts';
-import { DEFAULT_FLOW_PARAMETERS } from '../../../src/physics/flow/flowParameters.ts';
+import { DEFAULT_FLOW_PARAMETERS } from '../../../src/physics/filmDynamics/flowParameters.ts';
 import { environmentKind } from '../../../src/environments/environments.ts';
 
 describe("the demo's default view", () => {

@@ -1,6 +1,6 @@
 /** The knobs a page may leave to its frame governor: `auto` by default, or a value given and kept exactly. */
 import { describe, expect, it } from 'vitest';
-import { FLOW_PARAMETERS } from '../../../src/physics/flow/flowParameters.ts';
+import { FLOW_PARAMETERS } from '../../../src/physics/filmDynamics/flowParameters.ts';
 import { parseSettings, settingsToQuery } from '../../../src/settings/settingsQuery.ts';
 import { DEFAULT_VIEW_SETTINGS, PIXEL_RATIO_DOMAIN, VIEW_PARAMETERS, filmSettingsOf } from '../../../src/settings/viewParameters.ts';
 

@@ -3,10 +3,10 @@ import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, mapToGamut } from '../../../
 import { SOAP_FILM_IN_AIR } from '../../../src/physics/filmReflectance.ts';
 import { filmXyz } from '../../../src/physics/spectralIntegration.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
-import type { EnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
+import type { EnvironmentPixels } from '../../../src/bubbleMaterials/environmentMaps.ts';
 import type { FilmSettings } from '../../../src/settings/filmSettings.ts';
-import { toneMap } from '../../../src/twins/toneMapping.ts';
-import { cpuBubbleImage } from '../../../src/twins/cpuBubbleImage.ts';
+import { toneMap } from '../../../src/bubbleTwins/toneMapping.ts';
+import { cpuBubbleImage } from '../../../src/bubbleTwins/cpuBubbleImage.ts';
 
 /** The image uses the shader's binned integral (ΔE00 ≤ 0.11 from the reference): one 8-bit code. */
 const MAX_CODE_DIFFERENCE = 1;

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { environmentRadiance, equirectUv } from '../../../src/twins/environment.ts';
-import type { EnvironmentPixels } from '../../../src/bubble/environmentMaps.ts';
+import { environmentRadiance, equirectUv } from '../../../src/bubbleTwins/environment.ts';
+import type { EnvironmentPixels } from '../../../src/bubbleMaterials/environmentMaps.ts';
 import { ALGEBRAIC_TOL, EQUIRECT_SEAM_TOL, ROUNDING_TOL } from '../../tolerances.ts';
 
 /** A small synthetic map whose texel (i, j) holds (i, j, i·j). */

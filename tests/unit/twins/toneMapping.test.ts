@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { Rgb } from '../../../src/physics/colorConversions.ts';
-import { toneMap } from '../../../src/twins/toneMapping.ts';
+import { toneMap } from '../../../src/bubbleTwins/toneMapping.ts';
 import { ALGEBRAIC_TOL, FEW_OPERATIONS_TOL } from '../../tolerances.ts';
 
 const greys = Array.from({ length: 60 }, (_, k) => 2 ** (k / 4 - 10)); // 2^-10 … 2^4.75

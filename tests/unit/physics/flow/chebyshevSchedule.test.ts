@@ -4,7 +4,7 @@
  * form, and the Chebyshev polynomial's bound 1/T_K((b + a)/(b − a)) = 1/cosh(K acosh(·)).
  */
 import { describe, expect, it } from 'vitest';
-import { chebyshevIterations, chebyshevSchedule } from '../../../../src/physics/flow/chebyshevSchedule.ts';
+import { chebyshevIterations, chebyshevSchedule } from '../../../../src/physics/filmDynamics/chebyshevSchedule.ts';
 import { CHEBYSHEV_DIRECT_TOL } from '../../../tolerances.ts';
 
 /**

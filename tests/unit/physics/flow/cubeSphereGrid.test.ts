@@ -5,8 +5,8 @@
  * second order in the spacing, across face edges and corners as well as inside faces.
  */
 import { describe, expect, it } from 'vitest';
-import { cubeSphereGrid } from '../../../../src/physics/flow/cubeSphereGrid.ts';
-import { cubeSphereHalo, padField, paddedSampler } from '../../../../src/physics/flow/cubeSphereSampler.ts';
+import { cubeSphereGrid } from '../../../../src/physics/filmDynamics/cubeSphereGrid.ts';
+import { cubeSphereHalo, padField, paddedSampler } from '../../../../src/physics/filmDynamics/cubeSphereSampler.ts';
 import { mulberry32 } from '../../../seededRandom.ts';
 import { ALGEBRAIC_TOL } from '../../../tolerances.ts';
 

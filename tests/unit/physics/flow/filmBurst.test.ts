@@ -6,9 +6,9 @@
  * elastic-wave step: at the flow's step the rim crosses the bubble in one or two steps.
  */
 import { describe, expect, it } from 'vitest';
-import { createFilmSimulation, filmSeconds, punctureFilm, stepFilm } from '../../../../src/physics/flow/filmSimulation.ts';
-import { nearestCell } from '../../../../src/physics/flow/cubeSphereSampler.ts';
-import { elasticWaveTimeStep } from '../../../../src/physics/flow/timeStep.ts';
+import { createFilmSimulation, filmSeconds, punctureFilm, stepFilm } from '../../../../src/physics/filmDynamics/filmSimulation.ts';
+import { nearestCell } from '../../../../src/physics/filmDynamics/cubeSphereSampler.ts';
+import { elasticWaveTimeStep } from '../../../../src/physics/filmDynamics/timeStep.ts';
 import { RIM_SPEED_REL_TOL } from '../../../tolerances.ts';
 
 const GRID_N = 24;

@@ -5,9 +5,9 @@
  * starting film and so the whole run.
  */
 import { beforeAll, describe, expect, it } from 'vitest';
-import { createFilmSimulation, filmSeconds, stepFilm } from '../../../../src/physics/flow/filmSimulation.ts';
-import { elasticWaveTimeStep, timeStep } from '../../../../src/physics/flow/timeStep.ts';
-import { meanThicknessNm, sphereIntegral } from '../../../../src/physics/flow/filmMeasures.ts';
+import { createFilmSimulation, filmSeconds, stepFilm } from '../../../../src/physics/filmDynamics/filmSimulation.ts';
+import { elasticWaveTimeStep, timeStep } from '../../../../src/physics/filmDynamics/timeStep.ts';
+import { meanThicknessNm, sphereIntegral } from '../../../../src/physics/filmDynamics/filmMeasures.ts';
 import { CONSERVATION_REL_TOL, EVAPORATION_REL_TOL, FLOAT_TOLERANCE } from '../../../tolerances.ts';
 
 /** At most 10⁴ steps, and at most 40 film seconds (the light wind thins the film to rupture within minutes), on 6 cells per face side. */

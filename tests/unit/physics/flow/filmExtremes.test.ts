@@ -3,7 +3,7 @@
  * surfactant over 10⁴ steps, whether the film settles, is blown thin or ruptures and bursts.
  */
 import { describe, expect, it } from 'vitest';
-import { createFilmSimulation, stepFilm } from '../../../../src/physics/flow/filmSimulation.ts';
+import { createFilmSimulation, stepFilm } from '../../../../src/physics/filmDynamics/filmSimulation.ts';
 
 const STEPS = 10_000;
 /** The coarsest grid (4 cells per face side) keeps 5 × 10⁴ steps to a few seconds; robustness does not need resolution. */

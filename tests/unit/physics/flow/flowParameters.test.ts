@@ -5,9 +5,9 @@
  * Γ0 = 6.67e-8 mol/m²: a ≈ 0.95, bottom/top ≈ 6.6).
  */
 import { describe, expect, it } from 'vitest';
-import { flowNumbers, surfaceTensionNM, taylorCulickSpeedMps } from '../../../../src/physics/flow/flowNumbers.ts';
-import { DEFAULT_FLOW_PARAMETERS, FLOW_PARAMETERS, validateFlowParameters } from '../../../../src/physics/flow/flowParameters.ts';
-import { createFilmSimulation } from '../../../../src/physics/flow/filmSimulation.ts';
+import { flowNumbers, surfaceTensionNM, taylorCulickSpeedMps } from '../../../../src/physics/filmDynamics/flowNumbers.ts';
+import { DEFAULT_FLOW_PARAMETERS, FLOW_PARAMETERS, validateFlowParameters } from '../../../../src/physics/filmDynamics/flowParameters.ts';
+import { createFilmSimulation } from '../../../../src/physics/filmDynamics/filmSimulation.ts';
 import { ParameterError } from '../../../../src/input/validate.ts';
 import { ALGEBRAIC_TOL, FEW_OPERATIONS_TOL, printedValueTol } from '../../../tolerances.ts';
 import { stationaryExponent } from './flowTestHelpers.ts';

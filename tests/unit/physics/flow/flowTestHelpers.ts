@@ -2,7 +2,7 @@
  * What the flow tests compare against, written from the model's published constants and not from
  * the code under test: the exponent of the stationary film and a weighted least-squares slope.
  */
-import type { FilmSimulation } from '../../../../src/physics/flow/filmSimulation.ts';
+import type { FilmSimulation } from '../../../../src/physics/filmDynamics/filmSimulation.ts';
 
 /** a = ρ G R η0/(Γ0 R̄T), η0 = h̄/2: ρ = 997 kg/m³, G = 9.8 m/s², R̄ = 8.3144598 J/(mol K), T = 298.15 K. */
 export const stationaryExponent = (radiusMm: number, thicknessNm: number, surfactantMolM2: number): number =>

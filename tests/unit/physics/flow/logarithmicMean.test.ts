@@ -1,6 +1,6 @@
 /** The logarithmic mean against its definition (a − b)/(ln a − ln b) and its limits L(a, a) = a, L(0, b) = 0. */
 import { describe, expect, it } from 'vitest';
-import { logarithmicMean } from '../../../../src/physics/flow/logarithmicMean.ts';
+import { logarithmicMean } from '../../../../src/physics/filmDynamics/logarithmicMean.ts';
 import { ALGEBRAIC_TOL } from '../../../tolerances.ts';
 
 describe('logarithmic mean', () => {

@@ -6,10 +6,10 @@
  * map the film onto itself to rounding, and it is axisymmetric to the grid's truncation error.
  */
 import { beforeAll, describe, expect, it } from 'vitest';
-import { type FilmSimulation, advanceFilm, createFilmSimulation } from '../../../../src/physics/flow/filmSimulation.ts';
-import { PROFILE_THETA_DEG, thicknessProfileNm, thicknessSampler } from '../../../../src/physics/flow/filmMeasures.ts';
-import { nearestCell } from '../../../../src/physics/flow/cubeSphereSampler.ts';
-import { elasticWaveTimeStep } from '../../../../src/physics/flow/timeStep.ts';
+import { type FilmSimulation, advanceFilm, createFilmSimulation } from '../../../../src/physics/filmDynamics/filmSimulation.ts';
+import { PROFILE_THETA_DEG, thicknessProfileNm, thicknessSampler } from '../../../../src/physics/filmDynamics/filmMeasures.ts';
+import { nearestCell } from '../../../../src/physics/filmDynamics/cubeSphereSampler.ts';
+import { elasticWaveTimeStep } from '../../../../src/physics/filmDynamics/timeStep.ts';
 import {
   AXISYMMETRY_REL_TOL,
   MIRROR_SYMMETRY_TOL,

@@ -5,15 +5,15 @@
  * guarantee, the exact solution taken from the same iteration run far past convergence.
  */
 import { describe, expect, it } from 'vitest';
-import { chebyshevSchedule } from '../../../../src/physics/flow/chebyshevSchedule.ts';
-import { type FilmSimulation, createFilmSimulation, stepFilm } from '../../../../src/physics/flow/filmSimulation.ts';
+import { chebyshevSchedule } from '../../../../src/physics/filmDynamics/chebyshevSchedule.ts';
+import { type FilmSimulation, createFilmSimulation, stepFilm } from '../../../../src/physics/filmDynamics/filmSimulation.ts';
 import {
   SURFACTANT_EIGEN_UPPER,
   SURFACTANT_SOLVE_REDUCTION,
   solveSurfactant,
   surfactantStiffness,
-} from '../../../../src/physics/flow/solveSurfactant.ts';
-import { type TimeStepRule, timeStep } from '../../../../src/physics/flow/timeStep.ts';
+} from '../../../../src/physics/filmDynamics/solveSurfactant.ts';
+import { type TimeStepRule, timeStep } from '../../../../src/physics/filmDynamics/timeStep.ts';
 
 /** Three times the flow's step: a wave Courant number near 30. */
 const tripled: TimeStepRule = (grid, numbers) => 3 * timeStep(grid, numbers);

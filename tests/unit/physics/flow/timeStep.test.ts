@@ -5,8 +5,8 @@
  * spacing/√M) in R/U, and the transport's sub-steps.
  */
 import { describe, expect, it } from 'vitest';
-import { createFilmSimulation } from '../../../../src/physics/flow/filmSimulation.ts';
-import { elasticWaveTimeStep } from '../../../../src/physics/flow/timeStep.ts';
+import { createFilmSimulation } from '../../../../src/physics/filmDynamics/filmSimulation.ts';
+import { elasticWaveTimeStep } from '../../../../src/physics/filmDynamics/timeStep.ts';
 import { FLOAT_TOLERANCE } from '../../../tolerances.ts';
 
 /** Cr, M and g of eq. (17) in U = 1 m/s, for R in mm, h̄ in nm and Γ0 in mol/m². */

@@ -7,9 +7,9 @@
  * steady wind along +x, bit for bit.
  */
 import { describe, expect, it } from 'vitest';
-import { type FilmSimulation, createFilmSimulation, stepFilm } from '../../../../src/physics/flow/filmSimulation.ts';
-import { nearestCell } from '../../../../src/physics/flow/cubeSphereSampler.ts';
-import { windAngleRad } from '../../../../src/physics/flow/windDirection.ts';
+import { type FilmSimulation, createFilmSimulation, stepFilm } from '../../../../src/physics/filmDynamics/filmSimulation.ts';
+import { nearestCell } from '../../../../src/physics/filmDynamics/cubeSphereSampler.ts';
+import { windAngleRad } from '../../../../src/physics/filmDynamics/windDirection.ts';
 import { SEAM_SYMMETRY_TOL } from '../../../tolerances.ts';
 
 const GRID_N = 10;
