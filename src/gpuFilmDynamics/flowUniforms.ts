@@ -34,7 +34,7 @@ const rimSpeed = (p: FlowParameters, n: FlowNumbers): number =>
 /**
  * The uniform sets of the flow's passes, each under the file of shaders/gpuFilmDynamics/ that declares it and
  * made by its one factory: a pass's material holds the sets of the files its shader is made of
- * (flowPasses.ts), and tests/unit/flow/flowUniforms.test.ts holds both to what the GLSL declares.
+ * (flowPasses.ts), and tests/unit/gpuFilmDynamics/flowUniforms.test.ts holds both to what the GLSL declares.
  */
 export const FLOW_UNIFORM_SETS = {
   'flowAtlas.glsl': ({ grid }: FlowUniformInputs) => ({ uFlowGridN: value(grid.n) }),

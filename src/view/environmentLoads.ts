@@ -1,7 +1,12 @@
 import type { DataTexture } from 'three';
 import type { Environment, HdrEnvironment } from '../environments/environments.ts';
 import { isHdrEnvironment } from '../environments/environments.ts';
-import { environmentLoaded, environmentTexture, loadEnvironmentPixels, releaseEnvironmentTexture } from '../bubbleMaterials/environmentMaps.ts';
+import {
+  environmentLoaded,
+  environmentTexture,
+  loadEnvironmentPixels,
+  releaseEnvironmentTexture,
+} from '../bubbleMaterials/environmentMaps.ts';
 
 /**
  * A view's HDR environments: which have arrived and which failed (what the view offers its app's

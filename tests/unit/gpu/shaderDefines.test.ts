@@ -29,7 +29,7 @@ const shaders = readdirSync(shaderDir, { recursive: true, encoding: 'utf8' }).fi
 /**
  * Every texel record TypeScript packs, with the texture (or uniform array) the shaders read it from;
  * the flow's, one texel each, are fetched whole and read through their GLSL's accessors
- * (tests/unit/flow/flowTexels.test.ts holds those to no read by position).
+ * (tests/unit/gpuFilmDynamics/flowTexels.test.ts holds those to no read by position).
  */
 const RECORDS = [
   { record: AIRY_ROW, texture: 'uAirySeriesRows' },

@@ -5,7 +5,7 @@
  * material sets no uniform that no configuration declares. And no uniform is declared in two
  * files of shaders/, apart from the alternative members of one registry (each field's or method's
  * own GLSL, of which a program holds one). The flow's passes and the table pass are held the same
- * way beside their own code (tests/unit/flow/flowUniforms.test.ts, tests/unit/film/tablePassPrograms.test.ts).
+ * way beside their own code (tests/unit/gpuFilmDynamics/flowUniforms.test.ts, tests/unit/film/tablePassPrograms.test.ts).
  */
 import { readFileSync, readdirSync } from 'node:fs';
 import { MeshPhysicalMaterial, ShaderLib, type ShaderMaterial } from 'three';

@@ -14,9 +14,9 @@ import { flowPassDefines } from '../../../src/gpuFilmDynamics/flowPasses.ts';
 const shaderDir = new URL('../../../shaders/', import.meta.url);
 /** The GLSL that reads the flow's texels. */
 const FILES = [
-  ...readdirSync(new URL('flow/', shaderDir))
+  ...readdirSync(new URL('gpuFilmDynamics/', shaderDir))
     .filter((f) => f.endsWith('.glsl'))
-    .map((f) => `flow/${f}`),
+    .map((f) => `gpuFilmDynamics/${f}`),
   'fields/flowField.glsl',
 ];
 const text = (file: string): string => readFileSync(new URL(file, shaderDir), 'utf8');
