@@ -2,7 +2,7 @@ import { settingApplies } from '../fields/fields.ts';
 import type { Medium } from '../physics/medium.ts';
 import { PANEL_FOLDERS, type PanelFolder } from '../settings/parameterRow.ts';
 import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
-import { fillReads } from '../methods/filmFills.ts';
+import { FILM_FILLS, filmFill } from '../methods/filmFills.ts';
 
 /** A medium's kinds in the panel's list besides the names: a constant (the slider), a Cauchy film (a text A,B[,C]), a complex constant (a text n,k). */
 export const CONSTANT_INDEX = 'constant';
@@ -38,14 +38,14 @@ const MEDIUM_ROWS = PANEL_ROWS.filter((row) => row.control!.kind === 'medium' ||
  * What of the panel applies to the settings `s`, and so is shown:
  * - a setting some thickness field reads, only under the fields that read it (fields.ts,
  *   `settingApplies`): the swirl's speed and range under the swirl, the flow folder under the flow;
- * - the film's own index only while no stack of films is set (a stack's films carry their own indices);
+ * - a medium's setting only where the film's fill reads it (filmFills.ts: a stack's films carry their own indices);
  * - a medium's Cauchy or complex text field only while its kind is the one chosen: `kinds` gives the
  *   kind chosen in each medium's list where the panel holds one (a text that is not taken leaves the
  *   setting as it was, and its field stays shown to be put right), else the setting's own kind.
  * What is hidden keeps its value: the settings, and so the URL, are the same whatever is shown.
  */
 export function shownControls(s: ViewSettings, kinds: Readonly<Partial<Record<PanelKey, string>>> = {}): ShownControls {
-  const unused = new Set<PanelKey>(fillReads(s, 'stack') ? ['nFilm'] : []);
+  const unused = new Set<PanelKey>(FILM_FILLS[filmFill(s)].unusedSettings);
   const rows = Object.fromEntries(PANEL_ROWS.map((row) => [row.key, settingApplies(row.key, s.field) && !unused.has(row.key)]));
   const folders = Object.fromEntries(
     PANEL_FOLDERS.map((folder) => [folder, PANEL_ROWS.some((row) => row.control!.folder === folder && rows[row.key])]),

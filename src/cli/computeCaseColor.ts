@@ -11,7 +11,7 @@ import {
 import type { IlluminantSpec } from '../physics/illuminants.ts';
 import { type IndexJson, type Medium, indexJson, mediumIndexAt } from '../physics/medium.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
-import { fillReads } from '../methods/filmFills.ts';
+import { FILM_FILLS, filmFill } from '../methods/filmFills.ts';
 import { filmStackOf, stackReflectance, stackXyz, withOptionFilms } from '../methods/filmStacks.ts';
 import type { ColorCase } from './colorCase.ts';
 
@@ -68,9 +68,7 @@ export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
     displayP3_8: to8Bit(applyMatrix3(XYZ_TO_LINEAR_DISPLAY_P3, xyz), xyz[1], gamut),
     reflectance: c.wavelengthsNm.map((lambdaNm) => stackReflectance(lambdaNm, stack, c.polarization)),
     // The report names the media as the case gives them: each film's where its option stacks films.
-    ...(fillReads(film, 'stack')
-      ? { nLayers: c.wavelengthsNm.map((lambdaNm) => stack.films.map((l) => indexJson(mediumIndexAt(l.n, lambdaNm)))) }
-      : { nFilm: indicesAt(c.stack.nFilm) }),
+    ...FILM_FILLS[filmFill(film)].caseIndices(film, c.wavelengthsNm),
     nInside: indicesAt(c.stack.nInside),
   };
 }

@@ -7,7 +7,8 @@ import type { FilmMethodInput } from '../methods/filmMethod.ts';
 import { FILM_METHOD_REGISTRY, FILM_METHODS, methodReads } from '../methods/methods.ts';
 import { withOptionFilms } from '../methods/filmStacks.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
-import { type FilmMedia, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from './filmMedia.ts';
+import { type FilmMedia, filmMediaUniforms, opaqueInsideDefines } from './filmMedia.ts';
+import { filmMediaDefines, filmSpectralBins, filmStackDefines, updateFilmMediaUniforms, updateFilmStackUniforms } from './filmFillGpu.ts';
 import { filmTableLayoutDefines } from './filmTableDefines.ts';
 import {
   airySeriesDefines,
@@ -17,7 +18,7 @@ import {
 } from './spectralTransformTexture.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture, spectralBinsUniforms } from './spectralBinsTexture.ts';
 import { filmTableGridUniforms } from './filmTableGrid.ts';
-import { type StackedSettings, filmSpectralBins, filmStackDefines, releaseFilmStackTexture, updateFilmStackUniforms } from './filmStack.ts';
+import { type StackedSettings, releaseFilmStackTexture } from './filmStack.ts';
 
 /**
  * The film's colour as shaders/film/filmColor.glsl computes it, from the TypeScript side: its
@@ -28,12 +29,6 @@ import { type StackedSettings, filmSpectralBins, filmStackDefines, releaseFilmSt
 export const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
 export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm' | 'nInside'> & StackedSettings;
-
-/** TFC_OPAQUE_INSIDE alone, which every method reads (an opaque inside sends no light from inside). */
-const opaqueInsideDefine = (s: FilmColorSettings): Record<string, number> => {
-  const { TFC_OPAQUE_INSIDE } = filmMediaDefines(s);
-  return TFC_OPAQUE_INSIDE === undefined ? {} : { TFC_OPAQUE_INSIDE };
-};
 
 /** The defines each input of a method (src/methods/filmMethod.ts) brings, sized by the quality. */
 const INPUT_DEFINES: Readonly<Record<FilmMethodInput, (s: FilmColorSettings, q: FilmQuality) => Record<string, number>>> = {
@@ -51,7 +46,7 @@ const INPUT_DEFINES: Readonly<Record<FilmMethodInput, (s: FilmColorSettings, q: 
  */
 export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
   const inputs = FILM_METHOD_REGISTRY[s.mode].reads.map((input: FilmMethodInput) => INPUT_DEFINES[input](s, q));
-  return Object.assign({}, enumDefines('TFC_FILM_MODE', FILM_METHODS, s.mode), opaqueInsideDefine(s), ...inputs) as Record<string, number>;
+  return Object.assign({}, enumDefines('TFC_FILM_MODE', FILM_METHODS, s.mode), opaqueInsideDefines(s), ...inputs) as Record<string, number>;
 }
 
 /**

@@ -3,8 +3,6 @@ import { asComplex } from '../physics/complex.ts';
 import { type Medium, absorbsInBand, isDispersiveMedium, mediumIndexAt } from '../physics/medium.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
-import type { StackedSettings } from './filmStack.ts';
-import { fillReads } from '../methods/filmFills.ts';
 
 /** The three media of the film: outside (a), the film (b), inside (c). */
 export type FilmMedia = Pick<FilmSettings, 'nOutside' | 'nFilm' | 'nInside'>;
@@ -23,27 +21,21 @@ export const MEDIA_KNOT = texelRecord('TFC_MEDIA_KNOT', { FILM: 2, INSIDE: 2 });
 export const SODIUM_D_NM = 589.29;
 
 /**
- * Whether the film's or the inside's index depends on λ: the shaders then take both per spectral bin.
- * A stack of films takes every medium per bin from its own texture (filmStack.ts): none of this.
+ * The defines of the media's knots: TFC_DISPERSIVE, for a film whose film or inside depends on λ
+ * (the shaders then take both per spectral bin). A stack of films takes every medium per bin from
+ * its own texture (filmStack.ts): none of this. filmFillGpu.ts says which fill takes them.
  */
-export const isDispersiveFilm = (s: StackedSettings): boolean => fillReads(s, 'media');
+export const MEDIA_KNOT_DEFINES: Readonly<Record<string, number>> = {
+  TFC_DISPERSIVE: 1,
+  TFC_MEDIA_KNOTS: KNOTS,
+  TFC_MEDIA_FIRST_NM: LAMBDA_MIN_NM,
+  TFC_MEDIA_STEP_NM: STEP_NM,
+  ...texelRecordDefines(MEDIA_KNOT),
+};
 
-/**
- * The defines of a film-colour shader for these media: TFC_DISPERSIVE and its knots where the film
- * or the inside depends on λ, TFC_OPAQUE_INSIDE where the inside absorbs (no light from inside).
- */
-export const filmMediaDefines = (s: StackedSettings): Record<string, number> => ({
-  ...(isDispersiveFilm(s)
-    ? {
-        TFC_DISPERSIVE: 1,
-        TFC_MEDIA_KNOTS: KNOTS,
-        TFC_MEDIA_FIRST_NM: LAMBDA_MIN_NM,
-        TFC_MEDIA_STEP_NM: STEP_NM,
-        ...texelRecordDefines(MEDIA_KNOT),
-      }
-    : {}),
-  ...(absorbsInBand(s.nInside) ? { TFC_OPAQUE_INSIDE: 1 } : {}),
-});
+/** TFC_OPAQUE_INSIDE where the inside absorbs (no light from inside), which every film-colour shader reads. */
+export const opaqueInsideDefines = (s: Pick<FilmMedia, 'nInside'>): Record<string, number> =>
+  absorbsInBand(s.nInside) ? { TFC_OPAQUE_INSIDE: 1 } : {};
 
 /**
  * The media's uniforms, declared once in GLSL by shaders/film/filmMedia.glsl (and the knots by
@@ -70,12 +62,15 @@ export function filmIndexMax(nFilm: Medium): number {
   return max;
 }
 
-/** Sets them to `s`: ñ_b and ñ_c at the D line where they vary, and every STEP_NM in the knots (mediumIndexAt in float64). */
-export function updateFilmMediaUniforms(u: Record<string, { value: unknown }>, s: FilmMedia & StackedSettings): void {
+/** Sets the three indices to `s`: ñ_b and ñ_c at the D line where they vary. */
+export function setFilmMediaIndices(u: Record<string, { value: unknown }>, s: FilmMedia): void {
   u.uNOutside!.value = s.nOutside;
   u.uNFilm!.value = nk(s.nFilm, SODIUM_D_NM);
   u.uNInside!.value = nk(s.nInside, SODIUM_D_NM);
-  if (!isDispersiveFilm(s)) return;
+}
+
+/** Sets the knots to the film's and the inside's ñ every STEP_NM (mediumIndexAt in float64). */
+export function setMediaKnots(u: Record<string, { value: unknown }>, s: Pick<FilmMedia, 'nFilm' | 'nInside'>): void {
   const knots = u.uMediaKnots!.value as Float32Array;
   for (let i = 0; i < KNOTS; i++) {
     const lambdaNm = LAMBDA_MIN_NM + i * STEP_NM;

@@ -5,8 +5,6 @@ import { binCenterNm } from '../physics/binnedIntegration.ts';
 import { asComplex } from '../physics/complex.ts';
 import { type FilmLayer, FIELD_THICKNESS, LAYERS_DOMAIN, followsField } from '../physics/stackFilms.ts';
 import { type Medium, mediumIndexAt } from '../physics/medium.ts';
-import { type FilmQuality, spectralBinsFor } from '../settings/filmQuality.ts';
-import { fillReads } from '../methods/filmFills.ts';
 import type { FilmMethodSettings } from '../methods/filmMethod.ts';
 import { optionFilmsOf } from '../methods/filmStacks.ts';
 
@@ -23,17 +21,12 @@ export type StackedSettings = FilmMethodSettings;
 /** The texel of a film (or the inside) at a bin, read by these names in transferMatrix.glsl. */
 export const FILM_LAYER = texelRecord('TFC_FILM_LAYER', { N: 2, THICKNESS_NM: 1, FOLLOWS_FIELD: 1 });
 
-/**
- * The spectral bins a film's integral takes. A stack has no closed-form mean over a bin's phase
- * window, so each bin is sampled at its centre, and the bins are the dispersive film's finer count
- * (docs/gpu.md#stacks-of-films gives the figures that chose it); a single film: spectralBinsFor.
- */
-export const filmSpectralBins = (s: StackedSettings, q: FilmQuality, constant: number): number =>
-  fillReads(s, 'stack') ? q.dispersiveSpectralBins : spectralBinsFor(s, q, constant);
-
-/** The defines of transferMatrix.glsl for a stack (none for a single film). */
-export const filmStackDefines = (s: StackedSettings): Record<string, number> =>
-  fillReads(s, 'stack') ? { TFC_FILM_LAYERS: 1, TFC_FILM_LAYERS_MAX: LAYERS_DOMAIN.count.max, ...texelRecordDefines(FILM_LAYER) } : {};
+/** The defines of transferMatrix.glsl for a stack. */
+export const FILM_STACK_DEFINES: Readonly<Record<string, number>> = {
+  TFC_FILM_LAYERS: 1,
+  TFC_FILM_LAYERS_MAX: LAYERS_DOMAIN.count.max,
+  ...texelRecordDefines(FILM_LAYER),
+};
 
 /** The uniforms transferMatrix.glsl declares: the stack's texture and its film count. */
 export const filmStackUniforms = () => ({
@@ -77,16 +70,17 @@ const shared = new SharedTextures((key) => {
 });
 
 /** Points transferMatrix.glsl's uniforms at the stack of `s` over `bins` bins, held for `holder` (shared by the holders of one stack). */
-export function updateFilmStackUniforms(u: Record<string, { value: unknown }>, s: StackedSettings, bins: number, holder: object): void {
-  if (!fillReads(s, 'stack')) {
-    releaseFilmStackTexture(holder);
-    u.uFilmLayers!.value = null;
-    u.uFilmLayerCount!.value = 0;
-    return;
-  }
+export function holdFilmStackTexture(u: Record<string, { value: unknown }>, s: StackedSettings, bins: number, holder: object): void {
   const films = optionFilmsOf(s);
   u.uFilmLayers!.value = shared.hold(JSON.stringify({ films, nInside: s.nInside, bins } satisfies StackKey), holder);
   u.uFilmLayerCount!.value = films.length;
+}
+
+/** Points transferMatrix.glsl's uniforms at no stack, and lets go of any `holder` held. */
+export function clearFilmStackUniforms(u: Record<string, { value: unknown }>, holder: object): void {
+  releaseFilmStackTexture(holder);
+  u.uFilmLayers!.value = null;
+  u.uFilmLayerCount!.value = 0;
 }
 
 /** `holder` needs no stack texture any more. */

@@ -8,11 +8,9 @@ import { type FilmTableLayout, filmTableWidth } from '../settings/filmTableLayou
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
 import { dispersiveRowsOf, dispersiveRowsReady } from './dispersiveRowsStore.ts';
-import { filmIndexMax, isDispersiveFilm, updateFilmMediaUniforms } from './filmMedia.ts';
+import { fillGpu, updateFilmMediaUniforms, updateFilmStackUniforms } from './filmFillGpu.ts';
 import { type FilmTableGrid, setFilmTableGridUniforms } from './filmTableGrid.ts';
-import { type StackedSettings, releaseFilmStackTexture, stackFieldIndex, updateFilmStackUniforms } from './filmStack.ts';
-import { fillReads } from '../methods/filmFills.ts';
-import { optionFilmsOf } from '../methods/filmStacks.ts';
+import { type StackedSettings, releaseFilmStackTexture } from './filmStack.ts';
 import { releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
 import { releaseSpectralTransformTexture, spectralTransformReady, spectralTransformTexture } from './spectralTransformTexture.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
@@ -64,7 +62,7 @@ export class FilmTablePass {
    */
   fullGrid(s: FilmSettings & StackedSettings, maxThicknessNm: number): FilmTableGrid {
     const layout = this.quality.table;
-    const index = fillReads(s, 'stack') ? stackFieldIndex(optionFilmsOf(s), this.programs.bins(s)) : filmIndexMax(s.nFilm);
+    const index = fillGpu(s).fieldIndex(s, this.programs.bins(s));
     const width = index === null ? 2 : filmTableWidth(layout, maxThicknessNm, index);
     return { width, rows: layout.rows, maxThicknessNm };
   }
@@ -77,7 +75,7 @@ export class FilmTablePass {
   /** Whether the light's transform and, for a dispersive film, the row terms of each grid are at hand (each asked of its worker at once). */
   inputsReady(s: FilmSettings, grids: readonly FilmTableGrid[]): boolean {
     const ready = [spectralTransformReady(s.illuminant, s.normalization)];
-    if (isDispersiveFilm(s)) ready.push(...grids.map((g) => dispersiveRowsReady(dispersiveRowsKey(s, this.rowLayout(s, g)))));
+    if (fillGpu(s).dispersiveRows) ready.push(...grids.map((g) => dispersiveRowsReady(dispersiveRowsKey(s, this.rowLayout(s, g)))));
     return ready.every(Boolean);
   }
 
@@ -139,7 +137,7 @@ export class FilmTablePass {
     const rowsFor = dispersiveRowsKey(s, rowLayout);
     if (rowsFor === this.rowsFor) return;
     this.rowsFor = rowsFor;
-    const dispersive = isDispersiveFilm(s);
+    const { dispersiveRows: dispersive } = fillGpu(s);
     if (this.rows.dispersive !== dispersive) {
       this.rows.texture.dispose();
       const texture = dispersive

@@ -5,8 +5,8 @@ import type { FilmSettings } from '../settings/filmSettings.ts';
 import type { ProbeReading } from '../view/probe.ts';
 import { type ColorName, colorName } from './colorName.ts';
 import { probeColor } from './probeColor.ts';
-import { fillReads } from '../methods/filmFills.ts';
-import { filmOptionAt, optionFilmsOf } from '../methods/filmStacks.ts';
+import { FILM_FILLS, filmFill } from '../methods/filmFills.ts';
+import { filmOptionAt } from '../methods/filmStacks.ts';
 
 /** A colour's name in a catalogue's language ("dark blue", "暗い青"). */
 export function colorNameText(name: ColorName, cat: Catalogue): string {
@@ -17,7 +17,7 @@ export function colorNameText(name: ColorName, cat: Catalogue): string {
 /**
  * One sentence on the film at the probe, for a screen reader: where the probe is (per cent of
  * the view), the film's thickness and θ_i, and its reference colour (eqs 15–19) in sRGB as a name
- * and a hex, and whether the film is a stack of films; or that the probe is off the bubble (a null reading).
+ * and a hex, and the notes its fill adds (a stack's: that it is one); or that the probe is off the bubble (a null reading).
  */
 export function probeDescription(s: FilmSettings, probe: readonly [number, number], reading: ProbeReading | null, cat: Catalogue): string {
   const [x, y] = probe.map((v) => Math.round(v * 100));
@@ -32,5 +32,6 @@ export function probeDescription(s: FilmSettings, probe: readonly [number, numbe
     colour: colorNameText(colorName(c.rgb8), cat),
     hex: c.hex,
   });
-  return fillReads(s, 'stack') ? `${sentence} ${message(cat, 'plots.stackNote', { count: optionFilmsOf(s).length })}` : sentence;
+  const notes = FILM_FILLS[filmFill(s)].probeNotes(s).map((note) => message(cat, note.key, note.values));
+  return [sentence, ...notes].join(' ');
 }

@@ -1,7 +1,8 @@
 /** The film's media: the uniforms TypeScript sets are exactly those the GLSL declares. */
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { MEDIA_KNOT, filmIndexMax, filmMediaDefines, filmMediaUniforms, updateFilmMediaUniforms } from '../../../src/film/filmMedia.ts';
+import { MEDIA_KNOT, filmIndexMax, filmMediaUniforms } from '../../../src/film/filmMedia.ts';
+import { filmMediaDefines, updateFilmMediaUniforms } from '../../../src/film/filmFillGpu.ts';
 import { filmIndexAt } from '../../../src/physics/filmIndex.ts';
 import type { Medium } from '../../../src/physics/medium.ts';
 import { FEW_OPERATIONS_TOL } from '../../tolerances.ts';
