@@ -121,8 +121,7 @@ export class BubbleApp {
     const { view } = this.parts;
     this.frame = resolveFrame(this.asked, { ...view.offers, choice: this.seat.choice, devicePixelRatio: globalThis.devicePixelRatio });
     view.show(this.frame);
-    const method = this.frame.notices.find((n) => n.setting === 'mode')?.message;
-    this.status.showMethodNotice(method ? message(this.cat, method.key, method.values) : null);
+    this.status.showNotices(this.frame.notices.flatMap(({ message: m }) => (m ? [message(this.cat, m.key, m.values)] : [])));
     this.status.showEnvironment(this.frame.environment);
     return this.frame;
   }

@@ -128,7 +128,7 @@ export class FilmAtProbe {
   }
 
   /** Shows the probe's reading for the frame when it is back, unless the settings were set again meanwhile. */
-  private read({ asked: s, film: drawn, field }: DrawnFrame, changed: boolean): void {
+  private read({ asked: s, film: drawn, field, displayP3 }: DrawnFrame, changed: boolean): void {
     const set = this.settingsSet;
     const { view, cat } = this.parts;
     view
@@ -138,7 +138,7 @@ export class FilmAtProbe {
           if (this.disposed || set !== this.settingsSet) return;
           // The film as drawn (its governed knobs as the frame has them), under the method asked for.
           const film = { ...drawn, mode: s.mode };
-          this.panel?.update(film, field.maxThicknessNm, s.probe, reading, view.displayIsP3);
+          this.panel?.update(film, field.maxThicknessNm, s.probe, reading, displayP3);
           // Said after the user's changes only, not on each animation step (a screen reader would never rest).
           const filmTime = this.parts.filmTime?.() ?? null;
           const said = probeDescription(film, s.probe, reading, cat);

@@ -3,13 +3,14 @@ import type { EnvironmentStatus } from '../view/drawnFrame.ts';
 import { environmentStatusText } from './environmentStatusText.ts';
 
 /**
- * The app's lines in the page's messages (role status; as text, never HTML): that the view draws
- * with another method than the one asked for (the frame's notice: src/view/drawnFrame.ts), and that the HDR environment
+ * The app's lines in the page's messages (role status; as text, never HTML): why the view draws
+ * something else than was asked (the frame's notices that say so: another method, sRGB for a wide
+ * space the canvas cannot show; src/view/drawnFrame.ts), and that the HDR environment
  * is loading or failed. A line is in the messages while it has something to say; without a
  * messages element none is shown.
  */
 export class StatusLines {
-  private readonly method: HTMLElement;
+  private readonly notices: HTMLElement;
   private readonly environment: HTMLElement;
 
   constructor(
@@ -17,13 +18,13 @@ export class StatusLines {
     private readonly messages: HTMLElement | undefined,
     private readonly cat: Catalogue,
   ) {
-    this.method = Object.assign(doc.createElement('p'), { className: 'method-notice' });
+    this.notices = Object.assign(doc.createElement('p'), { className: 'frame-notice' });
     this.environment = Object.assign(doc.createElement('p'), { className: 'environment-status' });
   }
 
-  /** Says why the view draws with another method (the frame's notice), or removes the line (null). */
-  showMethodNotice(notice: string | null): void {
-    this.show(this.method, notice);
+  /** Says why the view draws something else than was asked (the frame's notices that say so), or removes the line (none). */
+  showNotices(lines: readonly string[]): void {
+    this.show(this.notices, lines.length > 0 ? lines.join(' ') : null);
   }
 
   /** Says that the HDR environment is loading or failed (the line's `data-state`), or removes the line once it shows. */
@@ -37,7 +38,7 @@ export class StatusLines {
   }
 
   remove(): void {
-    this.method.remove();
+    this.notices.remove();
     this.environment.remove();
   }
 

@@ -55,7 +55,6 @@ function startLiveView(canvas: HTMLCanvasElement, plots: HTMLElement, messages: 
   if (drawer) drawer.open = !startsClosed(drawer, 'plots'); // a small view starts with the drawer closed (index.html's CSS)
   const view = new BubbleView(createBubbleRenderer(canvas));
   document.body.dataset.webgl2 = view.renderer.getContext() instanceof WebGL2RenderingContext ? 'yes' : 'no';
-  if (settings.space !== 'srgb' && !view.displayIsP3) say(cat['app.noDisplayP3']);
   // Whether a frame, and a frame in full, have been drawn: the User Timing marks of the first of each.
   let drawn = false;
   let drawnInFull = false;

@@ -16,6 +16,7 @@ import { EnvironmentLoads } from './environmentLoads.ts';
 import { type FramePace, type FrameReport, NOT_DRAWN, type ViewOffers } from './frameReport.ts';
 import { EvolvingFilm } from './evolvingFilm.ts';
 import { FrameCost } from './frameCost.ts';
+import { drawsDisplayP3 } from './displaySpace.ts';
 import { compilesInParallel } from './framePrograms.ts';
 import { FilmProbe, type ProbeReading } from './probe.ts';
 import { ViewPrograms } from './viewPrograms.ts';
@@ -87,6 +88,7 @@ export class BubbleView {
       environmentLoaded: (env) => this.environments.loaded(env),
       environmentFailure: (env) => this.environments.failure(env),
       compilesInParallel: compilesInParallel(this.renderer),
+      drawsDisplayP3: () => drawsDisplayP3(this.renderer),
       lightReady: (l) => spectralTransformReady(l.illuminant, l.normalization),
       lightShown: this.frame && { illuminant: this.settings.illuminant, normalization: this.settings.normalization },
       baseStepsPerFrame: this.quality.flowStepsPerFrame,
@@ -117,15 +119,15 @@ export class BubbleView {
   show(frame: DrawnFrame): void {
     this.frame = frame;
     if (frame.fetch) this.environments.fetch(frame.fetch);
-    this.draw(frame.film, frame.field);
+    this.draw(frame.film, frame);
   }
 
-  /** Sets the materials to the film drawn (its field as the frame draws it). */
-  private draw(s: FilmSettings, field: DrawnFrame['field']): void {
+  /** Sets the materials to the film drawn (its field and the canvas's space as the frame draws them). */
+  private draw(s: FilmSettings, { field, displayP3 }: DrawnFrame): void {
     this.settings = s;
     this.film.show(s.field);
     const map = this.environments.map(s.env);
-    if (this.output.take(this.renderer, s)) {
+    if (this.output.take(s, displayP3)) {
       // three keeps a program per tone mapping a material was drawn with, until the material is
       // disposed: dispose both (set up anew on their next draw), so switching holds one program each.
       this.bubble.material.dispose();
@@ -196,7 +198,7 @@ export class BubbleView {
     if (keeps) return (this.report = { ...NOT_DRAWN, film: this.film.reading });
     this.output.setSpace(r);
     // A frame that does not wait draws the light asked for, its transform computed here.
-    if (!paced && frame.lightPending) this.draw({ ...frame.film, ...frame.lightPending }, frame.field);
+    if (!paced && frame.lightPending) this.draw({ ...frame.film, ...frame.lightPending }, frame);
     this.syncTable(paced);
     const uniforms = this.bubble.material.uniforms;
     let cost: FrameReport['cost'] = null;

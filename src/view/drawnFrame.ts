@@ -39,13 +39,15 @@ export interface FrameOffers {
   readonly lightShown: FilmLight | null;
   /** The device's pixels per CSS pixel. */
   readonly devicePixelRatio: number;
+  /** Whether the canvas can show Display P3: asked only where a wide space is asked, as asking may reallocate the drawing buffer. */
+  readonly drawsDisplayP3: () => boolean;
   /** The flowing film's steps per app frame where the governor does not choose them (the view's quality). */
   readonly baseStepsPerFrame: number;
 }
 
 /** Something drawn in place of what was asked: the setting, both values, and the line the page shows for it (null: none). */
 export interface FrameNotice {
-  readonly setting: 'mode' | 'env' | 'illuminant' | 'gridN' | 'pixelRatio';
+  readonly setting: 'mode' | 'env' | 'illuminant' | 'space' | 'gridN' | 'pixelRatio';
   readonly asked: string | number;
   readonly drawn: string | number;
   readonly message: DrawnNotice | null;
@@ -64,6 +66,8 @@ export interface DrawnFrame {
   readonly field: DrawnField<FieldDerived>;
   /** The drawing buffer's pixels per CSS pixel. */
   readonly pixelRatio: number;
+  /** Whether the canvas shows Display P3: where a wide space (`display-p3`, `wide-gamut`) is asked and the canvas can; else sRGB. */
+  readonly displayP3: boolean;
   /** The most steps the flowing film takes in an app frame (Infinity: all the time asks for). */
   readonly stepsPerFrame: number;
   /** Whether an app frame keeps the frame shown while the next one's programs compile (else it compiles them, blocking). */
@@ -120,10 +124,21 @@ function governedOf(
   return { gridN, pixelRatio, stepsPerFrame, notices };
 }
 
+/** The canvas's space: Display P3 where a wide space is asked and the canvas can show it, else sRGB (with a notice where a wide one was asked). */
+function displayOf(film: FilmSettings, o: FrameOffers): { displayP3: boolean; notice: FrameNotice | null } {
+  if (film.space === 'srgb') return { displayP3: false, notice: null };
+  if (o.drawsDisplayP3()) return { displayP3: true, notice: null };
+  return {
+    displayP3: false,
+    notice: { setting: 'space', asked: film.space, drawn: 'srgb', message: { key: 'app.noDisplayP3', values: {} } },
+  };
+}
+
 /**
  * The one place where what is asked becomes what is drawn (docs/architecture.md#what-is-asked-and-what-is-drawn):
  * the method (drawnFilmMethod), the environment (the stand-in until its map arrives), the light
- * (the one shown until the new one's transform arrives), the flowing film's grid, steps and the
+ * (the one shown until the new one's transform arrives), the canvas's space (sRGB where it cannot
+ * show Display P3), the flowing film's grid, steps and the
  * pixel ratio (the governor's, or the device's within MAX_PIXEL_RATIO); and, derived once of the
  * film drawn, its field's values (the flow's parameters) and the table's range. A pure function of
  * the settings asked and the offers.
@@ -138,17 +153,19 @@ export function resolveFrame(asked: ViewSettings, offers: FrameOffers): DrawnFra
     ...light.light,
     env: environment.environment.state === 'shown' ? withMethod.env : STAND_IN_ENVIRONMENT,
   };
+  const display = displayOf(film, offers);
   const method: FrameNotice | null = methodNotice && { setting: 'mode', asked: asked.mode, drawn: film.mode, message: methodNotice };
   return Object.freeze({
     asked,
     film,
     field: Object.freeze(drawnField(film)),
     pixelRatio: governed.pixelRatio,
+    displayP3: display.displayP3,
     stepsPerFrame: governed.stepsPerFrame,
     keepsFrameWhileCompiling: offers.compilesInParallel,
     environment: environment.environment,
     fetch: environment.fetch,
     lightPending: light.pending,
-    notices: Object.freeze([method, environment.notice, light.notice, ...governed.notices].filter((n) => n !== null)),
+    notices: Object.freeze([method, environment.notice, light.notice, display.notice, ...governed.notices].filter((n) => n !== null)),
   });
 }

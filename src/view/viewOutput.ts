@@ -7,7 +7,7 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { type FilmSettings, type ToneMapping, toneMappingOf } from '../settings/filmSettings.ts';
-import { drawingBufferSpace, drawsDisplayP3 } from './displaySpace.ts';
+import { drawingBufferSpace } from './displaySpace.ts';
 
 const SIZE = new Vector2();
 const TONE_MAPPINGS: Record<ToneMapping, ThreeToneMapping> = { none: NoToneMapping, agx: AgXToneMapping, neutral: NeutralToneMapping };
@@ -22,11 +22,12 @@ export class ViewOutput {
   private toneMapping: ThreeToneMapping = NoToneMapping;
 
   /**
-   * Takes the film drawn (`auto` tone mapping follows the environment drawn); returns whether the
-   * tone mapping changed, which needs new programs.
+   * Takes the film drawn (`auto` tone mapping follows the environment drawn) and whether the canvas
+   * shows Display P3 (the frame's: drawnFrame.ts); returns whether the tone mapping changed, which
+   * needs new programs.
    */
-  take(renderer: WebGLRenderer, s: FilmSettings): boolean {
-    this.displayIsP3 = (s.space === 'display-p3' || s.space === 'wide-gamut') && drawsDisplayP3(renderer);
+  take(s: FilmSettings, displayP3: boolean): boolean {
+    this.displayIsP3 = displayP3;
     const toneMapping = TONE_MAPPINGS[toneMappingOf(s)];
     const changed = toneMapping !== this.toneMapping;
     this.toneMapping = toneMapping;

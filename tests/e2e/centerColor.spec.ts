@@ -108,7 +108,7 @@ test("a stack of films: the centre pixel is the transfer matrix's sRGB colour in
   // Exact mode runs the stack's recursion in each of 150 bins per fragment: a small view, as for the single film's.
   await page.setViewportSize({ width: 160, height: 120 });
   test.setTimeout(STACK_FIRST_FRAME_MS + 120_000);
-  const notice = page.locator('#messages .method-notice');
+  const notice = page.locator('#messages .frame-notice');
   for (const { name, layers, nInside, thicknessNm } of STACKS) {
     const expected = stackReference8({ nOutside: 1, films: resolveLayers(layers, thicknessNm), nInside, angleDeg: 0 });
     const query = `thickness=${thicknessNm}&nInside=${encodeURIComponent(mediumText(nInside))}&layers=${encodeURIComponent(layersText(layers))}`;

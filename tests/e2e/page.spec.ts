@@ -27,8 +27,8 @@ test('fourier with a dispersive film draws with the table and says why; the URL 
   const problems = watchProblems(page);
   await page.goto('/?nFilm=water&mode=fourier&field=uniform&animate=0&env=none');
   await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready', { timeout: DISPERSIVE_FIRST_FRAME_MS });
-  await expect(page.locator('#messages .method-notice')).toContainText('nFilm=water');
-  await expect(page.locator('#messages .method-notice')).toContainText('mode=table');
+  await expect(page.locator('#messages .frame-notice')).toContainText('nFilm=water');
+  await expect(page.locator('#messages .frame-notice')).toContainText('mode=table');
   const modes = () =>
     page.evaluate(() => {
       const w = window as unknown as {

@@ -20,6 +20,7 @@ const OFFERS: FrameOffers = {
   lightShown: null,
   devicePixelRatio: 1,
   baseStepsPerFrame: 8,
+  drawsDisplayP3: () => true,
 };
 /** A frozen swirl in the sky, in the table, at grid and speed left to the governor: what the default view asks. */
 const ASKED: ViewSettings = { ...DEFAULT_VIEW_SETTINGS, field: 'swirl', env: 'sky', mode: 'table', animate: false };
@@ -27,6 +28,22 @@ const FLOW: ViewSettings = { ...ASKED, field: 'flow', animate: true, seed: 7, th
 const D65_WHITE = { illuminant: 'D65', normalization: 'white' } as const;
 
 describe('what is drawn for what is asked', () => {
+  it('shows a wide space in Display P3 where the canvas can, else sRGB with a notice; sRGB asked never asks the canvas', () => {
+    for (const space of ['display-p3', 'wide-gamut'] as const) {
+      expect(resolveFrame({ ...ASKED, space }, OFFERS)).toMatchObject({ displayP3: true, notices: [] });
+      const srgb = resolveFrame({ ...ASKED, space }, { ...OFFERS, drawsDisplayP3: () => false });
+      expect(srgb.displayP3).toBe(false);
+      expect(srgb.notices).toEqual([{ setting: 'space', asked: space, drawn: 'srgb', message: { key: 'app.noDisplayP3', values: {} } }]);
+    }
+    const asking = () => {
+      throw new Error('the canvas was asked for Display P3 where sRGB was asked');
+    };
+    expect(resolveFrame({ ...ASKED, space: 'srgb' }, { ...OFFERS, drawsDisplayP3: asking })).toMatchObject({
+      displayP3: false,
+      notices: [],
+    });
+  });
+
   it('draws what is asked, without a notice, where the machine offers everything; the frame is frozen', () => {
     const frame = resolveFrame(ASKED, OFFERS);
     expect(frame.film.mode).toBe('table');
