@@ -35,7 +35,7 @@ describe('the packed library in a fresh project', () => {
       }[];
       const files = packed[0]!.files.map((f) => f.path);
       expect(files).toContain('dist-lib/material.js');
-      expect(files).toContain('dist-lib/types/lib/physics.d.ts');
+      expect(files).toContain('dist-lib/types/packageEntries/physics.d.ts');
       expect(files.filter((f) => !f.startsWith('dist-lib/') && !['package.json', 'README.md', 'LICENSE'].includes(f))).toEqual([]);
 
       const project = join(dir, 'project');
