@@ -88,12 +88,13 @@ const WINDOW_MS = 1000;
 async function countOneSecond(page: Page): Promise<FrameCounts> {
   return page.evaluate(async (ms) => {
     type Table = { readonly coarse: boolean; update(...args: unknown[]): boolean };
-    const view = (window as unknown as { bubbleView: { render(pace?: 'paced' | 'complete'): void; table: Table } }).bubbleView;
+    const view = (window as unknown as { bubbleView: { render(pace?: 'paced' | 'complete'): unknown; table: Table } }).bubbleView;
     let frames = 0;
     const render = view.render.bind(view);
+    // The frame's report goes back to the app, whose frame loop follows it.
     view.render = (pace?: 'paced' | 'complete') => {
       frames++;
-      render(pace);
+      return render(pace);
     };
     // A full table shown: an update that changed what the table binds and left no coarse one.
     let tableBuilds = 0;
