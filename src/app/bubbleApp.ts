@@ -3,7 +3,7 @@ import type { WebGLRenderer } from 'three';
 import { THICKNESS_FIELDS } from '../fields/fields.ts';
 import { type Catalogue, EN } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
-import { type DrawnFrame, resolveFrame } from '../view/drawnFrame.ts';
+import { type DrawnFrame, resolveFrame, retimed, sameFrame } from '../view/drawnFrame.ts';
 import type { FrameReport } from '../view/frameReport.ts';
 import type { ViewSettings } from '../settings/viewParameters.ts';
 import { addAccessStyles } from './accessStyles.ts';
@@ -12,6 +12,7 @@ import { createControlPanel } from './controlPanel.ts';
 import { FilmAtProbe } from './filmAtProbe.ts';
 import { FrameLoop } from './frameLoop.ts';
 import { GovernorSeat } from './governorSeat.ts';
+import { onPixelRatioChange } from './pixelRatioChange.ts';
 import { listenToProbeInput } from './probeInput.ts';
 import { startsClosed } from './startsClosed.ts';
 import { StatusLines } from './statusLines.ts';
@@ -20,8 +21,9 @@ export type { BubbleAppParts } from './bubbleAppParts.ts';
 
 /**
  * A bubble on a page: the settings asked for, the view that draws them, its controls and plots,
- * and when to draw. The app owns the settings; each frame it resolves them with what the machine
- * and the page offer into the frame the view draws (resolveFrame, src/view/drawnFrame.ts). Its
+ * and when to draw. The app owns the settings; it resolves them with what the machine and the page
+ * offer into the frame the view draws (resolveFrame, src/view/drawnFrame.ts) when either changes,
+ * and between changes only retimes that frame while the film animates. Its
  * rooms: FrameLoop (when frames are drawn), GovernorSeat (its place in the page's frame governor),
  * probeInput (the pointer and keys on the bubble), FilmAtProbe (the plots, the probe's ring and
  * the live description), StatusLines (the notices in the page's messages).
@@ -39,7 +41,7 @@ export class BubbleApp {
   private fitted = '';
   /** The settings asked for, and the frame drawn for them. */
   private asked: ViewSettings;
-  private frame: DrawnFrame;
+  private frame!: DrawnFrame; // set by the constructor's resolve
 
   constructor(
     private readonly parts: BubbleAppParts,
@@ -60,7 +62,7 @@ export class BubbleApp {
       filmTime: () => this.seat.filmTimeText(this.cat, 'governor.sentence'),
     });
     this.status = new StatusLines(surface.ownerDocument, parts.messages, this.cat);
-    this.frame = this.resolve();
+    this.resolve();
     this.loop = new FrameLoop(
       view,
       surface,
@@ -119,10 +121,30 @@ export class BubbleApp {
   /** Resolves the settings asked for with what the view, the governor and the device offer, and shows the frame (with its notices). */
   private resolve(): DrawnFrame {
     const { view } = this.parts;
-    this.frame = resolveFrame(this.asked, { ...view.offers, choice: this.seat.choice, devicePixelRatio: globalThis.devicePixelRatio });
-    view.show(this.frame);
+    const frame = resolveFrame(this.asked, { ...view.offers, choice: this.seat.choice, devicePixelRatio: globalThis.devicePixelRatio });
+    const shown: DrawnFrame | undefined = this.frame;
+    if (shown && sameFrame(frame, shown)) return shown;
+    this.frame = frame;
+    view.show(frame);
     this.status.showNotices(this.frame.notices.flatMap(({ message: m }) => (m ? [message(this.cat, m.key, m.values)] : [])));
     this.status.showEnvironment(this.frame.environment);
+    return this.frame;
+  }
+
+  /**
+   * The frame for an animation frame. The settings and the offers change by events, each of which
+   * resolves the frame again (set, the governor's choice, an environment arriving, the device's
+   * pixel ratio); between them, a light's transform arriving is the one offer a frame waits for,
+   * and the film's time the one setting that moves: the frame shown is kept, retimed.
+   */
+  private frameNow(): DrawnFrame {
+    const { view } = this.parts;
+    const pending = this.frame.lightPending;
+    if (pending && view.offers.lightReady(pending)) return this.resolve();
+    if (this.frame.asked.timeSeconds !== this.asked.timeSeconds) {
+      this.frame = retimed(this.frame, this.asked.timeSeconds);
+      view.showTime(this.frame);
+    }
     return this.frame;
   }
 
@@ -146,8 +168,13 @@ export class BubbleApp {
     glCanvas.addEventListener('webglcontextrestored', onRestored);
     const resize = new ResizeObserver(() => this.fit());
     resize.observe(surface);
+    const stopPixelRatio = onPixelRatioChange(() => {
+      this.resolve();
+      this.fit();
+    });
     return () => {
       stopInput();
+      stopPixelRatio();
       glCanvas.removeEventListener('webglcontextrestored', onRestored);
       resize.disconnect();
     };
@@ -160,7 +187,7 @@ export class BubbleApp {
    * complete; while the film animates, every frame shows its film time and is. The plots follow a complete frame.
    */
   private draw(now: number, follows: boolean): FrameReport {
-    const frame = this.resolve();
+    const frame = this.frameNow();
     const report = this.parts.view.render('paced');
     // A shared renderer's canvas holds another view's frame when this one did not draw.
     if (report.drawn) this.parts.present?.();

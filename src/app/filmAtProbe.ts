@@ -100,11 +100,10 @@ export class FilmAtProbe {
   /** Brings the plots up to date in a task of their own, after the complete frame shown. */
   private schedule(): void {
     if (this.timer) return;
-    const drawn = this.parts.frame().film;
     this.timer = window.setTimeout(() => {
       this.timer = 0;
-      // Settings changed since (an input event came first): their own complete frame will do it.
-      if (this.completeShown && this.parts.frame().film === drawn) this.update(performance.now());
+      // Settings set since and their complete frame not shown yet (an input event came first): that frame will do it.
+      if (this.completeShown) this.update(performance.now());
     });
   }
 

@@ -1,5 +1,5 @@
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
-import { type FieldInput, type FieldUniforms, numberSetting } from './thicknessField.ts';
+import { type FieldInput, type FieldUniforms, type TimelessInput, numberSetting } from './thicknessField.ts';
 
 /** GLSL's smoothstep. */
 const smoothstep = (e0: number, e1: number, x: number) => {
@@ -34,5 +34,5 @@ export function drainedThicknessNm(h: number, y: number, s: DrainedFilmSettings)
 }
 
 /** The thickest the drained film gets: the mean plus half the range, at the bottom. */
-export const drainedFilmMaxNm = (s: DrainedFilmSettings): number =>
+export const drainedFilmMaxNm = (s: TimelessInput<typeof DRAINED_FILM_SETTINGS>): number =>
   Math.min(FILM_STACK_DOMAIN.thicknessNm.max, Math.max(s.thicknessNm + 0.5 * s.thicknessRangeNm, 1));

@@ -5,7 +5,7 @@ import { cubeSphereHalo, padField, paddedSampler } from '../physics/filmDynamics
 import { flowNumbers } from '../physics/filmDynamics/flowNumbers.ts';
 import { FLOW_PARAMETERS, type FlowParameterKey, type FlowParameters } from '../physics/filmDynamics/flowParameters.ts';
 import { initialFilm } from '../physics/filmDynamics/initialFilm.ts';
-import { type FieldInput, type NumberSetting, type Vec3, flagSetting, numberSetting, thicknessField } from './thicknessField.ts';
+import { type NumberSetting, type TimelessInput, type Vec3, flagSetting, numberSetting, thicknessField } from './thicknessField.ts';
 
 /** The flow's mean thickness: the view's, at least the model's lowest (its numbers divide by η0). */
 const THICKNESS_MIN_NM = FLOW_PARAMETERS.find((r) => r.key === 'thicknessNm')!.domain.min;
@@ -43,10 +43,9 @@ const FLOW_SETTINGS = {
   }),
   renew: flagSetting('renew', true, 'flow'),
 };
-type FlowSettings = FieldInput<typeof FLOW_SETTINGS>;
 
 /** The flow parameters the settings give: every row of FLOW_PARAMETERS is a settings field of the same name. */
-export function flowParametersOf(s: FlowSettings): FlowParameters {
+export function flowParametersOf(s: TimelessInput<typeof FLOW_SETTINGS>): FlowParameters {
   const given: Partial<Record<FlowParameterKey, number>> = s;
   const values = Object.fromEntries(FLOW_PARAMETERS.map((r) => [r.key, given[r.key] ?? r.defaultValue]));
   return { ...(values as FlowParameters), thicknessNm: Math.max(THICKNESS_MIN_NM, s.thicknessNm) };

@@ -57,6 +57,8 @@ export interface SharedFieldSettings {
 
 /** What a field with its own settings `R` reads: the shared settings and its own. */
 export type FieldInput<R extends FieldSettingRows> = SharedFieldSettings & SettingValues<R>;
+/** The same without the time: what a field derives and the range it reaches do not move with the clock (a frame only retimed keeps them). */
+export type TimelessInput<R extends FieldSettingRows> = Omit<FieldInput<R>, 'timeSeconds'>;
 
 /** A uniform of a field's shader, as three.js holds it. */
 export type FieldUniforms = Record<string, { value: unknown }>;
@@ -92,15 +94,15 @@ export interface ThicknessField<R extends FieldSettingRows, E extends boolean, D
   readonly uniforms: () => FieldUniforms;
   /**
    * What it derives of the settings, once for a frame (its range, its uniforms and its simulation
-   * take it: the flowing film's parameters); none (null) if absent.
+   * take it: the flowing film's parameters); none (null) if absent. It does not read the time.
    */
-  readonly derive?: (s: FieldInput<R>) => D;
+  readonly derive?: (s: TimelessInput<R>) => D;
   /** Sets its uniforms to the settings as the frame draws the field (each frame). */
   readonly update: (u: FieldUniforms, s: FieldInput<R>, drawn: DrawnField<D>) => void;
   /** The thickness in nm at `p` (the twin of its GLSL `tfcThicknessAt`; an evolving field's film at its start). */
   readonly thicknessAt: (p: Vec3, s: FieldInput<R>) => number;
   /** The largest thickness it reaches, in nm, at least 1 (the field is clamped to the domain's 20 µm). */
-  readonly maxThicknessNm: (s: FieldInput<R>, derived: D) => number;
+  readonly maxThicknessNm: (s: TimelessInput<R>, derived: D) => number;
   /** Whether it changes with time (the view animates only such a field). */
   readonly animates: boolean;
   /**

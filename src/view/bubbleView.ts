@@ -1,6 +1,7 @@
 import { Mesh, PerspectiveCamera, Scene, ShaderMaterial, SphereGeometry, type WebGLRenderer } from 'three';
 import { createBubbleMaterial, updateBubbleUniforms } from '../bubbleMaterials/bubbleMaterial.ts';
 import { environmentKind } from '../environments/environments.ts';
+import { updateFieldUniforms } from '../fields/fields.ts';
 import { releaseFilmColorTextures } from '../film/filmColor.ts';
 import { createBackgroundMaterial, updateBackgroundMaterial } from '../bubbleMaterials/environmentMaterial.ts';
 import { spectralTransformReady } from '../film/spectralTransformTexture.ts';
@@ -120,6 +121,13 @@ export class BubbleView {
     this.frame = frame;
     if (frame.fetch) this.environments.fetch(frame.fetch);
     this.draw(frame.film, frame);
+  }
+
+  /** Takes a frame that differs from the one shown only in the film's time (retimed): only the field's uniforms follow. */
+  showTime(frame: DrawnFrame): void {
+    this.frame = frame;
+    this.settings = { ...this.settings, timeSeconds: frame.film.timeSeconds };
+    updateFieldUniforms(this.bubble.material.uniforms, this.settings, frame.field);
   }
 
   /** Sets the materials to the film drawn (its field and the canvas's space as the frame draws them). */

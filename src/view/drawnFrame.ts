@@ -169,3 +169,15 @@ export function resolveFrame(asked: ViewSettings, offers: FrameOffers): DrawnFra
     notices: Object.freeze([method, environment.notice, light.notice, display.notice, ...governed.notices].filter((n) => n !== null)),
   });
 }
+
+/**
+ * The frame at another time of the film: while the film animates, the time is all that moves from
+ * frame to frame, and nothing else the frame resolved depends on it (a field's derived values and
+ * range do not read it: TimelessInput), so the rest is kept as it is.
+ */
+export function retimed(frame: DrawnFrame, timeSeconds: number): DrawnFrame {
+  return Object.freeze({ ...frame, asked: { ...frame.asked, timeSeconds }, film: { ...frame.film, timeSeconds } });
+}
+
+/** Whether two frames draw the same (each a plain, JSON-like value): a frame resolved again the same is not shown again. */
+export const sameFrame = (a: DrawnFrame, b: DrawnFrame): boolean => a === b || JSON.stringify(a) === JSON.stringify(b);

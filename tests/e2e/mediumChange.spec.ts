@@ -17,7 +17,7 @@ import { TABLE_PASS_NAME } from '../../src/film/keptPasses.ts';
 const THICKNESS_NM = 450;
 const INSIDES = ['constant', 'Au'] as const;
 
-test('a change to a metal inside and back shows one medium or the other in every frame, and the way there again compiles no table pass', async ({
+test('a change to a metal inside and back shows one medium or the other in every frame, is shown the view once, and the way there again compiles no table pass', async ({
   page,
 }) => {
   await page.goto(`/?field=uniform&thickness=${THICKNESS_NM}&env=none&sides=front&exposure=1&animate=0`);
@@ -36,6 +36,19 @@ test('a change to a metal inside and back shows one medium or the other in every
       TABLE_PASS_NAME,
     );
 
+  // From here, how many frames the view is shown: a change is resolved into one frame, and the
+  // frames that complete its table draw that frame without setting the materials again.
+  await page.evaluate(() => {
+    const w = window as unknown as { bubbleView: import('../../src/view/bubbleView.ts').BubbleView; shown: number };
+    const show = w.bubbleView.show.bind(w.bubbleView);
+    w.shown = 0;
+    w.bubbleView.show = (frame) => {
+      w.shown++;
+      show(frame);
+    };
+  });
+  const framesShown = () => page.evaluate(() => (window as unknown as { shown: number }).shown);
+
   await openPanel(page);
   const inside = page.locator('.lil-controller', { hasText: /^inside medium/ }).locator('select');
   let programsThere: number[] = [];
@@ -44,12 +57,14 @@ test('a change to a metal inside and back shows one medium or the other in every
     [1, 0],
     [0, 1],
   ] as const) {
+    const shownBefore = await framesShown();
     await expectChangeShownCleanly(
       drawn,
       () => inside.selectOption(INSIDES[to]),
       [INSIDES[from], INSIDES[to]],
       [expected[from]!, expected[to]!],
     );
+    expect(await framesShown(), 'frames the view was shown for the change').toBe(shownBefore + 1);
     const ids = await programIds();
     expect(ids.length, 'the table pass has a program').toBeGreaterThan(0);
     if (programsThere.length === 0) programsThere = ids;

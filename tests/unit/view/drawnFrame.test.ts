@@ -4,9 +4,9 @@
  * the rules' own (docs/architecture.md#what-is-asked-and-what-is-drawn), written out here.
  */
 import { describe, expect, it } from 'vitest';
-import { maxFieldThicknessNm } from '../../../src/fields/fields.ts';
+import { FIELDS, maxFieldThicknessNm } from '../../../src/fields/fields.ts';
 import { flowParametersOf } from '../../../src/fields/flowField.ts';
-import { type FrameOffers, resolveFrame } from '../../../src/view/drawnFrame.ts';
+import { type FrameOffers, resolveFrame, retimed, sameFrame } from '../../../src/view/drawnFrame.ts';
 import { parseLayers } from '../../../src/physics/stackText.ts';
 import { DEFAULT_VIEW_SETTINGS, type ViewSettings, filmSettingsOf } from '../../../src/settings/viewParameters.ts';
 
@@ -163,5 +163,24 @@ describe("the field as drawn: what it derives, once, and the table's range", () 
     const swirl = resolveFrame(ASKED, { ...OFFERS, choice: { gridN: 48, pixelRatio: 1, stepsPerFrame: 5 } });
     expect(swirl.field.derived).toBeNull();
     expect(swirl.field.maxThicknessNm).toBe(maxFieldThicknessNm(swirl.film));
+  });
+
+  it('a frame retimed is the frame resolved at that time, for every field, governed or not (nothing else it resolves moves with the clock)', () => {
+    const choice = { gridN: 48, pixelRatio: 1, stepsPerFrame: 5 };
+    for (const field of FIELDS)
+      for (const offers of [OFFERS, { ...OFFERS, choice }]) {
+        const asked = { ...FLOW, field, timeSeconds: 1.5 };
+        const later = retimed(resolveFrame(asked, offers), 42.25);
+        expect(later).toEqual(resolveFrame({ ...asked, timeSeconds: 42.25 }, offers));
+        expect(Object.isFrozen(later)).toBe(true);
+      }
+  });
+
+  it('a frame resolved again from equal settings and offers is the same frame; any setting or offer that changes it makes another', () => {
+    const frame = resolveFrame(ASKED, OFFERS);
+    expect(sameFrame(frame, resolveFrame({ ...ASKED }, { ...OFFERS }))).toBe(true);
+    expect(sameFrame(frame, resolveFrame({ ...ASKED, nInside: 'Au' }, OFFERS))).toBe(false);
+    expect(sameFrame(frame, resolveFrame(ASKED, { ...OFFERS, devicePixelRatio: 1.5 }))).toBe(false);
+    expect(sameFrame(frame, retimed(frame, 3))).toBe(false);
   });
 });
