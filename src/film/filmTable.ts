@@ -1,6 +1,6 @@
 import type { ShaderMaterial, WebGLRenderTarget, WebGLRenderer } from 'three';
 import type { FilmQuality } from '../settings/filmQuality.ts';
-import type { FilmSettings } from '../settings/filmSettings.ts';
+import type { FilmOptics } from '../settings/filmSettings.ts';
 import { followsField } from '../physics/stackFilms.ts';
 import { filmLayersOf } from '../methods/filmStacks.ts';
 import type { StackedSettings } from './filmStack.ts';
@@ -13,7 +13,7 @@ import { ProgressiveTableBuild } from './progressiveTableBuild.ts';
  * anything else (the field's animation, exposure, space) leaves it alone: a stack of films in place
  * of nFilm, and the range only where the film follows the field.
  */
-export function tableKey(s: FilmSettings & StackedSettings, maxThicknessNm: number): string {
+export function tableKey(s: FilmOptics & StackedSettings, maxThicknessNm: number): string {
   const films = filmLayersOf(s);
   const range = followsField(films) ? maxThicknessNm : null;
   return JSON.stringify([s.nOutside, films, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
@@ -68,7 +68,7 @@ export class FilmTable {
    * field's range, as the frame draws it: fields.ts's drawnField): at once, or if `progressive` by one step
    * (a coarse table for new settings, else the next band of the full one); returns whether what `bind` binds changed.
    */
-  update(renderer: WebGLRenderer, s: FilmSettings, maxThicknessNm: number, progressive = false): boolean {
+  update(renderer: WebGLRenderer, s: FilmOptics, maxThicknessNm: number, progressive = false): boolean {
     const key = tableKey(s, maxThicknessNm);
     this.waiting = false;
     this.build.poll();
@@ -97,12 +97,12 @@ export class FilmTable {
    * Compiles the table pass without blocking where the GPU compiles in parallel, and meanwhile
    * makes the light's textures for `s` (FilmTablePass.prepare).
    */
-  prepare(renderer: WebGLRenderer, s: FilmSettings): Promise<void> {
+  prepare(renderer: WebGLRenderer, s: FilmOptics): Promise<void> {
     return this.pass.prepare(renderer, s, this.coarseTarget);
   }
 
   /** What picks the table pass's program for `s`: a change of it needs another program. */
-  passKey(s: FilmSettings): string {
+  passKey(s: FilmOptics): string {
     return this.pass.passKey(s);
   }
 

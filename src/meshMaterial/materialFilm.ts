@@ -1,12 +1,11 @@
 import { type MeshPhysicalMaterial } from 'three';
 import { type LinearRgb, artistMetalMedium } from '../physics/artistMetal.ts';
-import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
+import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { type Medium, absorbsInBand } from '../physics/medium.ts';
 import { type SampledIndex } from '../physics/sampledIndex.ts';
 import { type NumberDomain, assertInRange, expectedNumber, isInDomain } from '../input/validate.ts';
 import { filmColorDefines } from '../film/filmColor.ts';
-import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
-import { type FilmSettings } from '../settings/filmSettings.ts';
+import { type FilmOptics } from '../settings/filmSettings.ts';
 import { drawnFilmMethod } from '../settings/drawnFilm.ts';
 import { type CheckedOptions } from './spectralIridescenceOptions.ts';
 
@@ -32,25 +31,31 @@ export const clampWithWarning =
     return clamped;
   };
 
+/** The film a material draws: its optics, and the thickness its table reaches. */
+export type MaterialFilmSettings = FilmOptics & { readonly thicknessNm: number };
+
 /**
  * The film as the demo's settings describe it, from a physical material's glTF parameters: the
  * film (`film`, or iridescenceIOR) in air over the base (`base`, the metal of the base colour, or
  * ior), up to the thickness range's larger end. Each of three's parameters is held to the film
  * stack's domain by `limit`, which names three's property.
  */
-export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit: Limit): FilmSettings {
+export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit: Limit): MaterialFilmSettings {
   const d = FILM_STACK_DOMAIN;
   const nFilm = o.film ?? limit('iridescenceIOR', m.iridescenceIOR, d.nFilm);
   const nInside = baseOf(m, o) ?? limit('ior', m.ior, d.nInside);
   const minNm = limit('iridescenceThicknessMinimum', m.iridescenceThicknessMinimum, d.thicknessNm);
   const maxNm = limit('iridescenceThicknessMaximum', m.iridescenceThicknessMaximum, d.thicknessNm);
+  const { illuminant, polarization, normalization, layers } = o;
+  const nOutside = SOAP_FILM_IN_AIR.nOutside;
   return {
-    ...DEFAULT_SETTINGS,
-    ...o,
+    illuminant,
+    polarization,
+    normalization,
+    layers,
     mode: drawnModeOf(o),
-    field: 'uniform',
     thicknessNm: Math.max(minNm, maxNm),
-    nOutside: 1,
+    nOutside,
     nFilm,
     nInside,
   };
@@ -58,7 +63,7 @@ export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit
 
 /** The method drawn: the option's, or where it has no form for the film (a stack in `fourier`) the one drawn in its place (drawnFilmMethod). */
 const drawnModeOf = (o: CheckedOptions): CheckedOptions['mode'] =>
-  drawnFilmMethod({ ...o, nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: o.base ?? DEFAULT_SETTINGS.nInside }, 'material').film.mode;
+  drawnFilmMethod({ ...o, nFilm: o.film ?? SOAP_FILM_IN_AIR.nFilm, nInside: o.base ?? SOAP_FILM_IN_AIR.nInside }, 'material').film.mode;
 
 /** Each material's metal from its colours, and the colours it was made from. */
 const metals = new WeakMap<MeshPhysicalMaterial, { readonly key: string; readonly medium: SampledIndex }>();
@@ -89,7 +94,7 @@ const baseOf = (m: MeshPhysicalMaterial, o: CheckedOptions): Medium | null => o.
  */
 export const filmDefinesOf = (m: MeshPhysicalMaterial, o: CheckedOptions): Record<string, number> =>
   filmColorDefines(
-    { ...o, mode: drawnModeOf(o), nFilm: o.film ?? DEFAULT_SETTINGS.nFilm, nInside: baseOf(m, o) ?? DEFAULT_SETTINGS.nInside },
+    { ...o, mode: drawnModeOf(o), nFilm: o.film ?? SOAP_FILM_IN_AIR.nFilm, nInside: baseOf(m, o) ?? SOAP_FILM_IN_AIR.nInside },
     o.quality,
   );
 

@@ -3,7 +3,7 @@ import { filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } 
 import { filmStackUniforms } from '../film/filmStack.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { FilmTable, tableKey } from '../film/filmTable.ts';
-import { maxFieldThicknessNm } from '../fields/fields.ts';
+import { uniformField } from '../fields/uniformField.ts';
 import { methodReads } from '../methods/methods.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import {
@@ -38,7 +38,8 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
   );
   if (s.mode !== o.mode) warnOnce(film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
   if (methodReads(s.mode, 'table')) {
-    const maxThicknessNm = maxFieldThicknessNm(s);
+    // The film is the same over the surface and does not change with time: three's thickness (its map scales it).
+    const maxThicknessNm = uniformField.maxThicknessNm({ thicknessNm: s.thicknessNm, timeSeconds: 0 }, null);
     const table = tables.hold(JSON.stringify({ quality: o.quality, table: tableKey(s, maxThicknessNm) }), film);
     const restores = restoresOf(renderer);
     if (tableRestores.get(table) !== restores) table.invalidate();
