@@ -15,6 +15,7 @@ import {
 import { restoresOf } from './contextRestores.ts';
 import { chainHooks } from './materialHooks.ts';
 import { clampWithWarning, filmDefinesOf, filmKeyOf, filmSettingsOf, metalOf, metalStateOf, refuse } from './materialFilm.ts';
+import { NODE_RENDERER_MESSAGE, warnWhereDrawnAsNodes } from './nodeRendererWarning.ts';
 import { spectralFragmentShader } from './spectralFragmentShader.ts';
 import { type SpectralFilm, addFilm, copySpectralFilm, defineOptionProperties, filmOf, setOptions, warnOnce } from './spectralFilm.ts';
 import { spectralMaterialJson } from './spectralIridescenceJson.ts';
@@ -110,6 +111,7 @@ function patch<M extends MeshPhysicalMaterial>(m: M, options: CheckedOptions): M
   const film: SpectralFilm = { options, uniforms, table: null, warned: new Set(), drawnMetal: null };
   addFilm(m, film);
   hook(m, film);
+  warnWhereDrawnAsNodes(m, () => warnOnce(film, 'node renderer', NODE_RENDERER_MESSAGE));
   if (!(m as { isThinFilmMaterial?: boolean }).isThinFilmMaterial) addMaterialMethods(m);
   m.addEventListener('dispose', () => {
     releaseFilmColorTextures(film);

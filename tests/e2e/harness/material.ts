@@ -25,6 +25,7 @@ import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { spectralIridescence, useSpectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
 import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
 import { type FilmCase, centre, disposeAll, draw, environment, filmMaterial, filmScene, renderer } from './materialScene.ts';
+import { nodeRendererWarnings } from './materialNodeRenderer.ts';
 import { threeJsUserPixels } from './materialThreeJsUser.ts';
 
 /** The centre pixel of a film case through the spectral material. */
@@ -196,7 +197,15 @@ async function contextRestorePixels(c: FilmCase): Promise<{ before: number[]; af
   return { before, after };
 }
 
-window.materialHarness = { filmPixel, gltfPixel, againstPhysical, programCounts, threeJsUserPixels, contextRestorePixels };
+window.materialHarness = {
+  filmPixel,
+  gltfPixel,
+  againstPhysical,
+  programCounts,
+  threeJsUserPixels,
+  contextRestorePixels,
+  nodeRendererWarnings,
+};
 document.body.dataset.ready = 'yes';
 
 declare global {
@@ -208,6 +217,7 @@ declare global {
       programCounts: typeof programCounts;
       threeJsUserPixels: typeof threeJsUserPixels;
       contextRestorePixels: typeof contextRestorePixels;
+      nodeRendererWarnings: typeof nodeRendererWarnings;
     };
   }
 }
