@@ -19,14 +19,14 @@ export async function nodeRendererWarnings(c: FilmCase): Promise<{ spectral: str
   const warn = console.warn;
   console.warn = (...args: unknown[]) => void warned.push(args.map(String).join(' '));
   try {
-    const drawn = async (material: MeshPhysicalMaterial, times: number) => {
+    const drawn = (material: MeshPhysicalMaterial, times: number) => {
       const { scene, camera } = filmScene(c, material);
-      for (let i = 0; i < times; i++) await renderer.renderAsync(scene, camera);
+      for (let i = 0; i < times; i++) renderer.render(scene, camera);
       disposeAll(scene);
       return warned.splice(0);
     };
-    const spectral = await drawn(spectralIridescence(filmMaterial(c)), 2);
-    const threes = await drawn(filmMaterial(c), 1);
+    const spectral = drawn(spectralIridescence(filmMaterial(c)), 2);
+    const threes = drawn(filmMaterial(c), 1);
     return { spectral, threes };
   } finally {
     console.warn = warn;
