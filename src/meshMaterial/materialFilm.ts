@@ -1,35 +1,13 @@
 import { type MeshPhysicalMaterial } from 'three';
 import { type LinearRgb, artistMetalMedium } from '../physics/artistMetal.ts';
-import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
+import { SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { type Medium, absorbsInBand } from '../physics/medium.ts';
 import { type SampledIndex } from '../physics/sampledIndex.ts';
-import { type NumberDomain, assertInRange, expectedNumber, isInDomain } from '../input/validate.ts';
 import { filmColorDefines } from '../film/filmColor.ts';
 import { type FilmOptics } from '../settings/filmSettings.ts';
 import { drawnFilmMethod } from '../settings/drawnFilm.ts';
 import { type CheckedOptions } from './spectralIridescenceOptions.ts';
-
-/** A parameter's value within its domain: as given, or refused (a ParameterError), or clamped to it. */
-export type Limit = (name: string, value: number, d: NumberDomain) => number;
-
-/** Where a parameter is given (outside three's render): a value out of its domain is a ParameterError naming it. */
-export const refuse: Limit = (name, value, d) => {
-  assertInRange(name, value, d.min, d.max, d.unit);
-  return value;
-};
-
-/**
- * Where a parameter is drawn (inside three's render, which must not throw): a value out of its
- * domain is clamped to it (NaN to its lower end), and `warn` is told which parameter and why.
- */
-export const clampWithWarning =
-  (warn: (name: string, message: string) => void): Limit =>
-  (name, value, d) => {
-    if (isInDomain(value, d)) return value;
-    const clamped = Number.isNaN(value) ? d.min : Math.min(d.max, Math.max(d.min, value));
-    warn(name, `${name} ${String(value)} is not allowed; expected ${expectedNumber(d)}; drawn with ${clamped}`);
-    return clamped;
-  };
+import { type Limit, filmParametersOf, onColourMetal } from './materialParameters.ts';
 
 /** The film a material draws: its optics, and the thickness its table reaches. */
 export type MaterialFilmSettings = FilmOptics & { readonly thicknessNm: number };
@@ -41,11 +19,7 @@ export type MaterialFilmSettings = FilmOptics & { readonly thicknessNm: number }
  * stack's domain by `limit`, which names three's property.
  */
 export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit: Limit): MaterialFilmSettings {
-  const d = FILM_STACK_DOMAIN;
-  const nFilm = o.film ?? limit('iridescenceIOR', m.iridescenceIOR, d.nFilm);
-  const nInside = baseOf(m, o) ?? limit('ior', m.ior, d.nInside);
-  const minNm = limit('iridescenceThicknessMinimum', m.iridescenceThicknessMinimum, d.thicknessNm);
-  const maxNm = limit('iridescenceThicknessMaximum', m.iridescenceThicknessMaximum, d.thicknessNm);
+  const { nFilm, nInside, thicknessNm } = filmParametersOf(m, o, limit);
   const { illuminant, polarization, normalization, layers } = o;
   const nOutside = SOAP_FILM_IN_AIR.nOutside;
   return {
@@ -54,10 +28,10 @@ export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit
     normalization,
     layers,
     mode: drawnModeOf(o),
-    thicknessNm: Math.max(minNm, maxNm),
+    thicknessNm,
     nOutside,
     nFilm,
-    nInside,
+    nInside: nInside ?? metalOf(m, o)!,
   };
 }
 
@@ -73,7 +47,7 @@ const metals = new WeakMap<MeshPhysicalMaterial, { readonly key: string; readonl
  * colour (F0) and the edge tint (by default the base colour), per channel (artistMetal.ts).
  */
 export function metalOf(m: MeshPhysicalMaterial, o: CheckedOptions): SampledIndex | null {
-  if (o.base !== null || !(m.metalness > 0)) return null;
+  if (!onColourMetal(m, o)) return null;
   const color: LinearRgb = [m.color.r, m.color.g, m.color.b];
   const tint = o.edgeTint ?? color;
   // Asked for on every draw (the settings, the program key): made again only when a colour changes.

@@ -42,6 +42,12 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
   await page.goto('/tests/e2e/harness/material.html');
   await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
 
+  // The page's first spectral material: once whenSpectralReady is kept (the film's drawing loaded
+  // apart), the next frame shows the settled film, the reference's colour, as later frames do.
+  const ready = await page.evaluate((c) => window.materialHarness!.readyPixels(c), CASES[0]!);
+  expect(ready.next, `after ${ready.waited} frames waiting`).toEqual(ready.settled);
+  expect(worstCodeDifference(ready.next, referenceOf(CASES[0]!))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+
   // A uniform film on a box's face, lit by constant radiance (env=none's white), in every mode.
   for (const c of CASES) {
     const expected = referenceOf(c);
