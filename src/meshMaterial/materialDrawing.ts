@@ -24,8 +24,14 @@ const tables = new SharedTextures((key) => new FilmTable((JSON.parse(key) as { q
 /** The context restore each table was last drawn after (contextRestores.ts): a restore empties it. */
 const tableRestores = new WeakMap<FilmTable, number>();
 
-/** The film's uniforms (filmColor.glsl's and the stack's), made once per material. */
-const uniformsOf = (film: SpectralFilm) => (film.uniforms ??= { ...filmColorUniforms(), ...filmStackUniforms() });
+/**
+ * The film with its uniforms (filmColor.glsl's and the stack's), made once per material. The film
+ * itself holds the light's textures (filmColor.ts's holder), so that its release lets them go.
+ */
+const withUniforms = (film: SpectralFilm): SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> } => {
+  film.uniforms ??= { ...filmColorUniforms(), ...filmStackUniforms() };
+  return film as SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> };
+};
 
 /**
  * Brings the film's uniforms, light textures and table (built with `renderer` if it changed, or
@@ -53,7 +59,7 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
     tables.release(film);
     film.table = null;
   }
-  updateFilmColorUniforms({ uniforms: uniformsOf(film) }, s, o.quality, film.table);
+  updateFilmColorUniforms(withUniforms(film), s, o.quality, film.table);
 }
 
 /**
@@ -64,7 +70,7 @@ export function compileFilm(m: MeshPhysicalMaterial, film: SpectralFilm, shader:
   const fragment = spectralFragmentShader(shader.fragmentShader, metalOf(m, film.options) !== null);
   if (typeof fragment !== 'string') return warnOnce(film, fragment.missing, `no ${fragment.missing}; three's film is drawn`);
   shader.defines = { ...shader.defines, ...filmDefinesOf(m, film.options) };
-  Object.assign(shader.uniforms, uniformsOf(film));
+  Object.assign(shader.uniforms, withUniforms(film).uniforms);
   shader.fragmentShader = fragment;
 }
 
