@@ -40,6 +40,9 @@ new WebGLRenderer().render(scene, new PerspectiveCamera());
   },
 ];
 
+/** What a material entry may add to three's minimal app, gzipped: at start, and emitted in all. */
+export const ENTRY_BYTES_GOALS = { eager: 30 * 1024, emitted: 60 * 1024 } as const;
+
 /** A build's JavaScript and assets, gzipped. */
 export interface BuildBytes {
   /** the entry chunk and its static imports, transitively */
