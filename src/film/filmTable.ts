@@ -94,6 +94,15 @@ export class FilmTable {
   }
 
   /**
+   * A promise kept once what the full table for `s` over thicknesses up to `maxThicknessNm` is
+   * computed from (the light's transform, a dispersive film's row terms) is at hand, computed in
+   * Web Workers: an update then builds it without that work on this thread.
+   */
+  inputsWhenReady(s: FilmOptics, maxThicknessNm: number): Promise<void> {
+    return this.pass.inputsWhenReady(s, [this.pass.fullGrid(s, maxThicknessNm)]);
+  }
+
+  /**
    * Compiles the table pass without blocking where the GPU compiles in parallel, and meanwhile
    * makes the light's textures for `s` (FilmTablePass.prepare).
    */

@@ -7,12 +7,17 @@ import type { FilmOptics } from '../settings/filmSettings.ts';
 import { type FilmTableLayout, filmTableWidth } from '../settings/filmTableLayout.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
-import { dispersiveRowsOf, dispersiveRowsReady } from './dispersiveRowsStore.ts';
+import { dispersiveRowsOf, dispersiveRowsReady, dispersiveRowsWhenReady } from './dispersiveRowsStore.ts';
 import { fillGpu, updateFilmMediaUniforms, updateFilmStackUniforms } from './filmFillGpu.ts';
 import { type FilmTableGrid, setFilmTableGridUniforms } from './filmTableGrid.ts';
 import { type StackedSettings, releaseFilmStackTexture } from './filmStack.ts';
 import { releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
-import { releaseSpectralTransformTexture, spectralTransformReady, spectralTransformTexture } from './spectralTransformTexture.ts';
+import {
+  releaseSpectralTransformTexture,
+  spectralTransformReady,
+  spectralTransformTexture,
+  spectralTransformWhenReady,
+} from './spectralTransformTexture.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
 
 /** Columns [from, to) of a grid. */
@@ -77,6 +82,12 @@ export class FilmTablePass {
     const ready = [spectralTransformReady(s.illuminant, s.normalization)];
     if (fillGpu(s).dispersiveRows) ready.push(...grids.map((g) => dispersiveRowsReady(dispersiveRowsKey(s, this.rowLayout(s, g)))));
     return ready.every(Boolean);
+  }
+
+  /** A promise kept once what inputsReady asks for is at hand, computed in the workers (or here, where there are none). */
+  async inputsWhenReady(s: FilmOptics, grids: readonly FilmTableGrid[]): Promise<void> {
+    const rows = fillGpu(s).dispersiveRows ? grids.map((g) => dispersiveRowsWhenReady(dispersiveRowsKey(s, this.rowLayout(s, g)))) : [];
+    await Promise.all([spectralTransformWhenReady(s.illuminant, s.normalization), ...rows]);
   }
 
   /**

@@ -6,13 +6,14 @@
 import { type MeshPhysicalMaterial, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
 import { filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } from '../film/filmColor.ts';
 import { filmStackUniforms } from '../film/filmStack.ts';
+import { spectralTransformWhenReady } from '../film/spectralTransformTexture.ts';
 import { FilmTable, tableKey } from '../film/filmTable.ts';
 import { uniformField } from '../fields/uniformField.ts';
 import { methodReads } from '../methods/methods.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { restoresOf } from './contextRestores.ts';
-import { filmDefinesOf, filmKeyOf, filmSettingsOf, metalOf, metalStateOf } from './materialFilm.ts';
+import { type MaterialFilmSettings, filmDefinesOf, filmKeyOf, filmSettingsOf, metalOf, metalStateOf } from './materialFilm.ts';
 import { clampWithWarning } from './materialParameters.ts';
 import { spectralFragmentShader } from './spectralFragmentShader.ts';
 import { type SpectralFilm, warnOnce } from './spectralFilm.ts';
@@ -33,33 +34,59 @@ const withUniforms = (film: SpectralFilm): SpectralFilm & { uniforms: NonNullabl
   return film as SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> };
 };
 
+/** The film's settings as drawn: a parameter out of its domain clamped, with a warning (never thrown inside render). */
+const drawnSettings = (film: SpectralFilm, m: MeshPhysicalMaterial): MaterialFilmSettings =>
+  filmSettingsOf(
+    m,
+    film.options,
+    clampWithWarning((name, message) => warnOnce(film, name, message)),
+  );
+
+/**
+ * The table the film `s` is drawn from, held for `film` (shared with the materials of the same
+ * film and light), and the thickness it reaches; null, the film's share let go, where its method reads none.
+ */
+function holdTable(film: SpectralFilm, s: MaterialFilmSettings): { table: FilmTable; maxThicknessNm: number } | null {
+  if (!methodReads(s.mode, 'table')) {
+    if (film.table) tables.release(film);
+    return (film.table = null);
+  }
+  // The film is the same over the surface and does not change with time: three's thickness (its map scales it).
+  const maxThicknessNm = uniformField.maxThicknessNm({ thicknessNm: s.thicknessNm, timeSeconds: 0 }, null);
+  film.table = tables.hold(JSON.stringify({ quality: film.options.quality, table: tableKey(s, maxThicknessNm) }), film);
+  return { table: film.table, maxThicknessNm };
+}
+
 /**
  * Brings the film's uniforms, light textures and table (built with `renderer` if it changed, or
- * if the renderer's context was restored since) up to the material. Called inside three's render:
- * a parameter out of its domain is drawn clamped, with a warning, never thrown.
+ * if the renderer's context was restored since) up to the material. Called inside three's render.
  */
 function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRenderer): void {
   const o = film.options;
-  const s = filmSettingsOf(
-    m,
-    o,
-    clampWithWarning((name, message) => warnOnce(film, name, message)),
-  );
+  const s = drawnSettings(film, m);
   if (s.mode !== o.mode) warnOnce(film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
-  if (methodReads(s.mode, 'table')) {
-    // The film is the same over the surface and does not change with time: three's thickness (its map scales it).
-    const maxThicknessNm = uniformField.maxThicknessNm({ thicknessNm: s.thicknessNm, timeSeconds: 0 }, null);
-    const table = tables.hold(JSON.stringify({ quality: o.quality, table: tableKey(s, maxThicknessNm) }), film);
+  const held = holdTable(film, s);
+  if (held) {
     const restores = restoresOf(renderer);
-    if (tableRestores.get(table) !== restores) table.invalidate();
-    tableRestores.set(table, restores);
-    table.update(renderer, s, maxThicknessNm);
-    film.table = table;
-  } else if (film.table) {
-    tables.release(film);
-    film.table = null;
+    if (tableRestores.get(held.table) !== restores) held.table.invalidate();
+    tableRestores.set(held.table, restores);
+    held.table.update(renderer, s, held.maxThicknessNm);
   }
   updateFilmColorUniforms(withUniforms(film), s, o.quality, film.table);
+}
+
+/**
+ * A promise kept once what the film's next draw computes its table and the light's textures from
+ * (the light's spectral transform, a dispersive film's row terms) is at hand, computed in Web
+ * Workers: the draw then builds the table on the GPU and uploads the textures, with no long task
+ * on this thread. Asked when the drawing arrives and by whenSpectralReady.
+ */
+export async function prepareFilm(m: MeshPhysicalMaterial, film: SpectralFilm): Promise<void> {
+  if (!(m.iridescence > 0)) return;
+  const s = drawnSettings(film, m);
+  const held = holdTable(film, s);
+  if (held) await held.table.inputsWhenReady(s, held.maxThicknessNm);
+  if (methodReads(s.mode, 'spectralTransform')) await spectralTransformWhenReady(s.illuminant, s.normalization);
 }
 
 /**

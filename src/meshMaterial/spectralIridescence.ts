@@ -28,8 +28,9 @@ function hook(m: MeshPhysicalMaterial, film: SpectralFilm): void {
     onBeforeRender: (renderer) => loadedDrawing()?.drawFilm(m, film, renderer),
   });
   if (!loadedDrawing())
-    void loadDrawing().then(() => {
+    void loadDrawing().then((drawing) => {
       m.needsUpdate = true;
+      void drawing.prepareFilm(m, film);
     });
 }
 
@@ -111,14 +112,17 @@ export function useSpectralIridescence(root: Object3D, options: SpectralIridesce
 }
 
 /**
- * A promise kept once everything `material`'s film needs is loaded: the film's drawing and the
- * data it computes from (a chunk of its own, fetched the first time a material is made spectral).
- * From then on, each draw builds what the film needs (its table, the light's textures) before
- * drawing it: the next frame drawn shows the settled film, so a screenshot waits for this promise,
- * then draws. A ParameterError for a material that is not spectral.
+ * A promise kept once everything `material`'s film needs is loaded and computed: the film's
+ * drawing and the data it computes from (a chunk of its own, fetched the first time a material is
+ * made spectral), and what its table and the light's textures are computed from (the light's
+ * spectral transform, a dispersive film's row terms, in Web Workers). The next draw builds the
+ * table on the GPU before drawing the film: the next frame shows the settled film, so a screenshot
+ * waits for this promise, then draws. A ParameterError for a material that is not spectral.
  */
 export async function whenSpectralReady(material: Material): Promise<void> {
-  if (!filmOf(material))
+  const film = filmOf(material);
+  if (!film)
     throw new ParameterError('material', 'whenSpectralReady: the material is not spectral; expected one spectralIridescence upgraded');
-  await loadDrawing();
+  const drawing = await loadDrawing();
+  await drawing.prepareFilm(material as MeshPhysicalMaterial, film);
 }
