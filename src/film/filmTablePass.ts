@@ -4,6 +4,8 @@ import { enumCode } from '../gpu/enumDefines.ts';
 import { FullscreenPass } from '../gpu/fullscreenPass.ts';
 import type { FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmOptics } from '../settings/filmSettings.ts';
+import type { IlluminantSpec } from '../physics/illuminantSpec.ts';
+import type { Normalization } from '../physics/spectralConventions.ts';
 import { type FilmTableLayout, filmTableWidth } from '../settings/filmTableLayout.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
@@ -77,17 +79,25 @@ export class FilmTablePass {
     return { ...this.quality.table, rows: grid.rows, spectralBins: this.programs.bins(s) };
   }
 
+  /** What a build of `s` over `grids` is computed from, each asked by `light` (the light's transform) or `rows` (a dispersive film's row terms of a grid). */
+  private inputs<T>(
+    s: FilmOptics,
+    grids: readonly FilmTableGrid[],
+    light: (i: IlluminantSpec, n: Normalization) => T,
+    rows: (key: string) => T,
+  ): T[] {
+    const dispersive = fillGpu(s).dispersiveRows ? grids.map((g) => rows(dispersiveRowsKey(s, this.rowLayout(s, g)))) : [];
+    return [light(s.illuminant, s.normalization), ...dispersive];
+  }
+
   /** Whether the light's transform and, for a dispersive film, the row terms of each grid are at hand (each asked of its worker at once). */
   inputsReady(s: FilmOptics, grids: readonly FilmTableGrid[]): boolean {
-    const ready = [spectralTransformReady(s.illuminant, s.normalization)];
-    if (fillGpu(s).dispersiveRows) ready.push(...grids.map((g) => dispersiveRowsReady(dispersiveRowsKey(s, this.rowLayout(s, g)))));
-    return ready.every(Boolean);
+    return this.inputs(s, grids, spectralTransformReady, dispersiveRowsReady).every(Boolean);
   }
 
   /** A promise kept once what inputsReady asks for is at hand, computed in the workers (or here, where there are none). */
   async inputsWhenReady(s: FilmOptics, grids: readonly FilmTableGrid[]): Promise<void> {
-    const rows = fillGpu(s).dispersiveRows ? grids.map((g) => dispersiveRowsWhenReady(dispersiveRowsKey(s, this.rowLayout(s, g)))) : [];
-    await Promise.all([spectralTransformWhenReady(s.illuminant, s.normalization), ...rows]);
+    await Promise.all(this.inputs(s, grids, spectralTransformWhenReady, dispersiveRowsWhenReady));
   }
 
   /**
