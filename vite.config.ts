@@ -1,4 +1,5 @@
 import { defineConfig, type Plugin, type UserConfig } from 'vite';
+import { glslWithoutCommentsPlugin } from './scripts/build/glslWithoutComments.ts';
 
 /** Where pages (the teaching page in public/, embedding pages) load the element from. */
 const ELEMENT_URL = '/thin-film-bubble.js';
@@ -33,7 +34,7 @@ const elementInDevelopment = (): Plugin => ({
 
 /** The demo site: its pages (and, for the browser tests, theirs) into `outDir`. */
 const site = (pages: readonly string[], outDir: string): UserConfig => ({
-  plugins: [elementInDevelopment()],
+  plugins: [elementInDevelopment(), glslWithoutCommentsPlugin()],
   server: { port: 5173, strictPort: true },
   // The HDR environments' modules (plain ES modules of one string each) are served as they
   // are: pre-bundling them would only risk a reload when a page first imports one.
@@ -43,7 +44,7 @@ const site = (pages: readonly string[], outDir: string): UserConfig => ({
   build: { outDir, chunkSizeWarningLimit: 800, rolldownOptions: { input: [...pages] } },
 });
 
-// GLSL files are imported as text with Vite's `?raw` suffix; no plugin is needed.
+// GLSL files are imported as text with Vite's `?raw` suffix; every build ships them without comments.
 // `vite build` makes the demo site; `vite build --mode element` adds the standalone element
 // module (three.js included) to the same dist/ as thin-film-bubble.js (`--outDir` for another);
 // `vite build --mode lib` writes the library's ES modules to dist-lib/ (their types:
@@ -55,6 +56,7 @@ export default defineConfig(({ mode }): UserConfig => {
     return {
       publicDir: false,
       base: MODULE_RELATIVE,
+      plugins: [glslWithoutCommentsPlugin()],
       build: {
         outDir: 'dist-lib',
         emptyOutDir: false, // the types are written beside them
@@ -68,6 +70,7 @@ export default defineConfig(({ mode }): UserConfig => {
   return {
     publicDir: false,
     base: MODULE_RELATIVE,
+    plugins: [glslWithoutCommentsPlugin()],
     build: {
       emptyOutDir: false,
       chunkSizeWarningLimit: 800,

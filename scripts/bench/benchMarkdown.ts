@@ -1,6 +1,7 @@
 /** A run's results as the Markdown that `npm run bench` prints and docs/benchmarks.md holds. */
 import type { BenchResults } from './benchResults.ts';
 import { ELEMENT_BUNDLE } from './bundleSize.ts';
+import { ENTRY_BYTES_GOALS, type EntryBytes } from './entryBytes.ts';
 import { defaultViewMarkdown } from './defaultView.ts';
 import { LONG_TASK_MS, PANEL_CHANGES } from './panelChanges.ts';
 import { flowSpeedMarkdown } from './flowSpeed.ts';
@@ -40,13 +41,22 @@ function builtMarkdown(r: BenchResults): string {
   return lines.join('\n');
 }
 
+/** An entry's rows: what it adds to three's minimal app on its renderer, loaded at start and built in all. */
+const entryBytesMarkdown = (e: EntryBytes): string =>
+  (['eager', 'emitted'] as const)
+    .map((k) => {
+      const [three, spectral] = [e.three[`${k}GzipBytes`], e.spectral[`${k}GzipBytes`]];
+      return `| \`${e.entry}\`: three.js's minimal app (${e.renderer}, an iridescent MeshPhysicalMaterial), gzipped ${k === 'eager' ? 'JavaScript loaded at start (the entry chunk and its static imports)' : 'files the build emits'}: as it is / made spectral | ${kb(three)} / ${kb(spectral)} (+${kb(spectral - three)}; goal ≤ +${kb(ENTRY_BYTES_GOALS[k])}) |`;
+    })
+    .join('\n');
+
 function materialsMarkdown(r: BenchResults): string {
   const m = r.materials;
   if (!m) return '';
   return `| ${MATERIALS_ROW} | value |
 |---|---|
 | example scene (materials.html, ${m.width}×${m.height}), median of ${m.frames} frames: three.js iridescence / spectral (\`table\`) | ${m.frameMs['three.js'].toFixed(1)} / ${m.frameMs.spectral.toFixed(1)} ms (${(m.frameMs.spectral / m.frameMs['three.js']).toFixed(2)}×) |
-| minimal three.js app with an iridescent MeshPhysicalMaterial, gzipped: as it is / made spectral | ${kb(m.threeAppGzipBytes)} / ${kb(m.spectralAppGzipBytes)} (+${kb(m.spectralAppGzipBytes - m.threeAppGzipBytes)}) |
+${m.entryBytes.map(entryBytesMarkdown).join('\n')}
 ${Object.entries(m.gridErrors)
   .map(
     ([mode, [fixed, stress]]) =>

@@ -1,17 +1,14 @@
 /**
  * The spectral material's benchmark figures: the example page's frame time with the spectral
- * film against the same scene with three.js's iridescence, and the gzipped JavaScript the
- * material adds to a three.js app that imports only it.
+ * film against the same scene with three.js's iridescence, and the gzipped JavaScript each
+ * material entry adds to three's minimal app on its renderer (entryBytes.ts).
  */
-import { mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
-import { join, resolve } from 'node:path';
-import { gzipSync } from 'node:zlib';
 import type { Browser } from '@playwright/test';
-import { build } from 'vite';
 import type { View } from '../../src/pages/materialsScene.ts';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import type { BenchPlan } from './benchPlan.ts';
+import { type EntryBytes, materialEntryBytes } from './entryBytes.ts';
 import { type GridError, filmsGridError, gridError } from './errorGrids.ts';
 import { openPage } from './openPage.ts';
 
@@ -24,9 +21,8 @@ export interface MaterialFigures {
   /** median frame (ms) of the example scene drawn with each material on both sides */
   readonly frameMs: Record<'three.js' | 'spectral', number>;
   readonly frames: number;
-  /** gzipped JS of a minimal three.js app with MeshPhysicalMaterial's iridescence, and of the same app made spectral */
-  readonly threeAppGzipBytes: number;
-  readonly spectralAppGzipBytes: number;
+  /** per material entry, three's minimal app on its renderer and the same app made spectral: eager and emitted bytes, gzipped */
+  readonly entryBytes: readonly EntryBytes[];
   /**
    * per mode, the ΔE00 of the material's pixels over each error grid, and over its films thicker
    * than 0 (three turns the film off at 0 nm and draws its own base: Schlick's Fresnel)
@@ -86,38 +82,6 @@ async function frameTimes(browser: Browser, baseUrl: string, how: FrameTimesPlan
   }
 }
 
-/** A minimal three.js app: one iridescent MeshPhysicalMaterial drawn once; `spectral` adds the one call that makes it spectral. */
-const appSource = (spectral: boolean) => `
-import { Mesh, MeshPhysicalMaterial, PerspectiveCamera, Scene, TorusKnotGeometry, WebGLRenderer } from 'three';
-${spectral ? `import { spectralIridescence } from ${JSON.stringify(resolve('src/packageEntries/material.ts'))};` : ''}
-const material = new MeshPhysicalMaterial({ iridescence: 1, iridescenceIOR: 1.33 });
-${spectral ? 'spectralIridescence(material);' : ''}
-const scene = new Scene();
-scene.add(new Mesh(new TorusKnotGeometry(), material));
-new WebGLRenderer().render(scene, new PerspectiveCamera());
-`;
-
-async function appGzipBytes(spectral: boolean): Promise<number> {
-  const root = resolve('.scratch', `bench-material-app-${spectral ? 'spectral' : 'three'}`);
-  rmSync(root, { recursive: true, force: true });
-  mkdirSync(root, { recursive: true });
-  writeFileSync(join(root, 'main.js'), appSource(spectral));
-  const outDir = join(root, 'dist');
-  await build({
-    root,
-    configFile: false,
-    logLevel: 'silent',
-    build: { outDir, chunkSizeWarningLimit: 2000, rolldownOptions: { input: join(root, 'main.js') } },
-  });
-  const js = (dir: string): string[] =>
-    readdirSync(dir, { withFileTypes: true }).flatMap((e) =>
-      e.isDirectory() ? js(join(dir, e.name)) : e.name.endsWith('.js') ? [join(dir, e.name)] : [],
-    );
-  const bytes = js(outDir).reduce((sum, f) => sum + gzipSync(readFileSync(f), { level: 9 }).length, 0);
-  rmSync(root, { recursive: true, force: true });
-  return bytes;
-}
-
 export async function materialFigures(
   browser: Browser,
   baseUrl: string,
@@ -131,7 +95,6 @@ export async function materialFigures(
     height: how.height,
     frameMs: await frameTimes(browser, baseUrl, how),
     frames: how.frames,
-    threeAppGzipBytes: await appGzipBytes(false),
-    spectralAppGzipBytes: await appGzipBytes(true),
+    entryBytes: await materialEntryBytes(),
   };
 }

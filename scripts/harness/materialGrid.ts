@@ -23,7 +23,7 @@ import {
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3, invert3 } from '../../src/physics/colorConversions.ts';
 import type { Medium } from '../../src/physics/medium.ts';
 import type { ParityGroup, ParityMode } from './parityCase.ts';
-import { spectralIridescence } from '../../src/meshMaterial/spectralIridescence.ts';
+import { spectralIridescence, whenSpectralReady } from '../../src/meshMaterial/spectralIridescence.ts';
 
 /** The material's indices are three's iridescenceIOR and ior, numbers: the grids must be of constant real media. */
 function constantIndex(index: Medium): number {
@@ -44,7 +44,7 @@ function floatTexture(width: number, texel: (i: number) => readonly number[]): D
 }
 
 /** XYZ per input of the group (a soap film in air: the base's ior is the group's nInside). */
-function materialGridXyz(g: ParityGroup, mode: Exclude<ParityMode, 'three-iridescence'>): number[][] {
+async function materialGridXyz(g: ParityGroup, mode: Exclude<ParityMode, 'three-iridescence'>): Promise<number[][]> {
   const white = floatTexture(16, () => [1, 1, 1, 1]);
   white.mapping = EquirectangularReflectionMapping;
   const maxNm = Math.max(...g.inputs.map(([t]) => t), 1);
@@ -65,6 +65,7 @@ function materialGridXyz(g: ParityGroup, mode: Exclude<ParityMode, 'three-irides
     }),
     { mode, illuminant: g.illuminant, polarization: g.polarization, normalization: g.normalization },
   );
+  await whenSpectralReady(material);
   const plane = new Mesh(new PlaneGeometry(2, 4), material);
   const scene = new Scene();
   scene.environment = white;

@@ -17,3 +17,6 @@ export const dispersiveRowsOf = (key: string): Float32Array => store.of(key);
 
 /** Whether they are at hand; if not, the worker is asked for them (false until they arrive). Without a worker, computed here (true). */
 export const dispersiveRowsReady = (key: string): boolean => store.ready(key);
+
+/** A promise kept once they are at hand (asked of the worker, or computed here where there is none). */
+export const dispersiveRowsWhenReady = (key: string): Promise<void> => store.whenReady(key);

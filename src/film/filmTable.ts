@@ -1,23 +1,30 @@
 import type { ShaderMaterial, WebGLRenderTarget, WebGLRenderer } from 'three';
 import type { FilmQuality } from '../settings/filmQuality.ts';
-import type { FilmSettings } from '../settings/filmSettings.ts';
+import type { FilmOptics } from '../settings/filmSettings.ts';
 import { followsField } from '../physics/stackFilms.ts';
 import { filmLayersOf } from '../methods/filmStacks.ts';
 import type { StackedSettings } from './filmStack.ts';
 import { type FilmTableGrid, bindFilmTable } from './filmTableGrid.ts';
 import { FilmTablePass, tableTarget } from './filmTablePass.ts';
-import { ProgressiveTableBuild } from './progressiveTableBuild.ts';
+import type { ProgressiveTableBuild } from './progressiveTableBuild.ts';
 
 /**
  * What the table of `s` over thicknesses up to `maxThicknessNm` (the field's range) depends on;
  * anything else (the field's animation, exposure, space) leaves it alone: a stack of films in place
  * of nFilm, and the range only where the film follows the field.
  */
-export function tableKey(s: FilmSettings & StackedSettings, maxThicknessNm: number): string {
+export function tableKey(s: FilmOptics & StackedSettings, maxThicknessNm: number): string {
   const films = filmLayersOf(s);
   const range = followsField(films) ? maxThicknessNm : null;
   return JSON.stringify([s.nOutside, films, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
 }
+
+/**
+ * Makes a table's progressive build over its pass (`(pass) => new ProgressiveTableBuild(pass)`),
+ * given by the owner of a table updated progressively: a table only ever built at once (the
+ * material's) carries none of that code.
+ */
+export type ProgressiveBuilds = (pass: FilmTablePass) => ProgressiveTableBuild;
 
 /** Nothing shown yet: a grid of one texel. */
 const NO_GRID: FilmTableGrid = { width: 1, rows: 1, maxThicknessNm: 1 };
@@ -31,7 +38,8 @@ const NO_GRID: FilmTableGrid = { width: 1, rows: 1, maxThicknessNm: 1 };
  * texture of its own, and the progressive updates after it the full grid band by band
  * (ProgressiveTableBuild); the full one is shown once complete. A new light's spectral transform
  * is computed in a Web Worker: until it arrives, progressive updates keep the table shown (the previous
- * light's). Without `progressive` (tests, screenshots, the material) the full grid is built at once.
+ * light's). Without `progressive` (tests, screenshots, the material) the full grid is built at once; a progressive
+ * update needs the table made with its progressive builds (ProgressiveBuilds).
  */
 export class FilmTable {
   private target: WebGLRenderTarget;
@@ -41,11 +49,14 @@ export class FilmTable {
   /** Whether progressive updates wait for a new light's transform (the table shown is for other settings). */
   private waiting = false;
   private readonly pass: FilmTablePass;
-  private readonly build: ProgressiveTableBuild;
+  private readonly build: ProgressiveTableBuild | null;
 
-  constructor(private readonly quality: FilmQuality) {
+  constructor(
+    private readonly quality: FilmQuality,
+    progressive: ProgressiveBuilds | null = null,
+  ) {
     this.pass = new FilmTablePass(quality);
-    this.build = new ProgressiveTableBuild(this.pass);
+    this.build = progressive?.(this.pass) ?? null;
     this.target = tableTarget(2 * quality.table.rows);
     this.coarseTarget = tableTarget(2);
   }
@@ -68,12 +79,12 @@ export class FilmTable {
    * field's range, as the frame draws it: fields.ts's drawnField): at once, or if `progressive` by one step
    * (a coarse table for new settings, else the next band of the full one); returns whether what `bind` binds changed.
    */
-  update(renderer: WebGLRenderer, s: FilmSettings, maxThicknessNm: number, progressive = false): boolean {
+  update(renderer: WebGLRenderer, s: FilmOptics, maxThicknessNm: number, progressive = false): boolean {
     const key = tableKey(s, maxThicknessNm);
     this.waiting = false;
-    this.build.poll();
+    this.build?.poll();
     if (!progressive) {
-      this.build.stop();
+      this.build?.stop();
       if (key === this.shown.key && !this.shown.coarse) return false;
       const grid = this.pass.fullGrid(s, maxThicknessNm);
       this.pass.draw(renderer, s, this.target, grid, null);
@@ -81,6 +92,7 @@ export class FilmTable {
       this.shown = { key, coarse: false, grid };
       return true;
     }
+    if (!this.build) throw new Error('FilmTable: a progressive update of a table made without progressive builds');
     if (key !== this.shown.key) {
       // A table shown (the first is not waited for) stays until what it needs is at hand.
       const coarse = this.build.begin(renderer, s, maxThicknessNm, this.coarseTarget, this.shown.key !== '');
@@ -94,15 +106,24 @@ export class FilmTable {
   }
 
   /**
+   * A promise kept once what the full table for `s` over thicknesses up to `maxThicknessNm` is
+   * computed from (the light's transform, a dispersive film's row terms) is at hand, computed in
+   * Web Workers: an update then builds it without that work on this thread.
+   */
+  inputsWhenReady(s: FilmOptics, maxThicknessNm: number): Promise<void> {
+    return this.pass.inputsWhenReady(s, [this.pass.fullGrid(s, maxThicknessNm)]);
+  }
+
+  /**
    * Compiles the table pass without blocking where the GPU compiles in parallel, and meanwhile
    * makes the light's textures for `s` (FilmTablePass.prepare).
    */
-  prepare(renderer: WebGLRenderer, s: FilmSettings): Promise<void> {
+  prepare(renderer: WebGLRenderer, s: FilmOptics): Promise<void> {
     return this.pass.prepare(renderer, s, this.coarseTarget);
   }
 
   /** What picks the table pass's program for `s`: a change of it needs another program. */
-  passKey(s: FilmSettings): string {
+  passKey(s: FilmOptics): string {
     return this.pass.passKey(s);
   }
 
@@ -116,7 +137,7 @@ export class FilmTable {
     this.target = tableTarget(2 * this.quality.table.rows);
     this.coarseTarget = tableTarget(2);
     this.pass.invalidate();
-    this.build.invalidate();
+    this.build?.invalidate();
     this.shown = { key: '', coarse: false, grid: NO_GRID };
     this.waiting = false;
   }
@@ -125,6 +146,6 @@ export class FilmTable {
     this.target.dispose();
     this.coarseTarget.dispose();
     this.pass.dispose();
-    this.build.dispose();
+    this.build?.dispose();
   }
 }

@@ -3,16 +3,23 @@ import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { enumCode } from '../gpu/enumDefines.ts';
 import { FullscreenPass } from '../gpu/fullscreenPass.ts';
 import type { FilmQuality } from '../settings/filmQuality.ts';
-import type { FilmSettings } from '../settings/filmSettings.ts';
+import type { FilmOptics } from '../settings/filmSettings.ts';
+import type { IlluminantSpec } from '../physics/illuminantSpec.ts';
+import type { Normalization } from '../physics/spectralConventions.ts';
 import { type FilmTableLayout, filmTableWidth } from '../settings/filmTableLayout.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
-import { dispersiveRowsOf, dispersiveRowsReady } from './dispersiveRowsStore.ts';
+import { dispersiveRowsOf, dispersiveRowsReady, dispersiveRowsWhenReady } from './dispersiveRowsStore.ts';
 import { fillGpu, updateFilmMediaUniforms, updateFilmStackUniforms } from './filmFillGpu.ts';
 import { type FilmTableGrid, setFilmTableGridUniforms } from './filmTableGrid.ts';
 import { type StackedSettings, releaseFilmStackTexture } from './filmStack.ts';
 import { releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
-import { releaseSpectralTransformTexture, spectralTransformReady, spectralTransformTexture } from './spectralTransformTexture.ts';
+import {
+  releaseSpectralTransformTexture,
+  spectralTransformReady,
+  spectralTransformTexture,
+  spectralTransformWhenReady,
+} from './spectralTransformTexture.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
 
 /** Columns [from, to) of a grid. */
@@ -60,7 +67,7 @@ export class FilmTablePass {
    * range and the film's index (a stack's: the sum of its field-following films'). A stack that does
    * not follow the field is the same at every thickness: two equal columns, which any lookup reads alike.
    */
-  fullGrid(s: FilmSettings & StackedSettings, maxThicknessNm: number): FilmTableGrid {
+  fullGrid(s: FilmOptics & StackedSettings, maxThicknessNm: number): FilmTableGrid {
     const layout = this.quality.table;
     const index = fillGpu(s).fieldIndex(s, this.programs.bins(s));
     const width = index === null ? 2 : filmTableWidth(layout, maxThicknessNm, index);
@@ -68,15 +75,29 @@ export class FilmTablePass {
   }
 
   /** The layout of the row terms of `grid` for `s`: the table's, with the grid's rows and the settings' bins. */
-  private rowLayout(s: FilmSettings, grid: FilmTableGrid): FilmTableLayout {
+  private rowLayout(s: FilmOptics, grid: FilmTableGrid): FilmTableLayout {
     return { ...this.quality.table, rows: grid.rows, spectralBins: this.programs.bins(s) };
   }
 
+  /** What a build of `s` over `grids` is computed from, each asked by `light` (the light's transform) or `rows` (a dispersive film's row terms of a grid). */
+  private inputs<T>(
+    s: FilmOptics,
+    grids: readonly FilmTableGrid[],
+    light: (i: IlluminantSpec, n: Normalization) => T,
+    rows: (key: string) => T,
+  ): T[] {
+    const dispersive = fillGpu(s).dispersiveRows ? grids.map((g) => rows(dispersiveRowsKey(s, this.rowLayout(s, g)))) : [];
+    return [light(s.illuminant, s.normalization), ...dispersive];
+  }
+
   /** Whether the light's transform and, for a dispersive film, the row terms of each grid are at hand (each asked of its worker at once). */
-  inputsReady(s: FilmSettings, grids: readonly FilmTableGrid[]): boolean {
-    const ready = [spectralTransformReady(s.illuminant, s.normalization)];
-    if (fillGpu(s).dispersiveRows) ready.push(...grids.map((g) => dispersiveRowsReady(dispersiveRowsKey(s, this.rowLayout(s, g)))));
-    return ready.every(Boolean);
+  inputsReady(s: FilmOptics, grids: readonly FilmTableGrid[]): boolean {
+    return this.inputs(s, grids, spectralTransformReady, dispersiveRowsReady).every(Boolean);
+  }
+
+  /** A promise kept once what inputsReady asks for is at hand, computed in the workers (or here, where there are none). */
+  async inputsWhenReady(s: FilmOptics, grids: readonly FilmTableGrid[]): Promise<void> {
+    await Promise.all(this.inputs(s, grids, spectralTransformWhenReady, dispersiveRowsWhenReady));
   }
 
   /**
@@ -85,7 +106,7 @@ export class FilmTablePass {
    */
   draw(
     renderer: WebGLRenderer,
-    s: FilmSettings,
+    s: FilmOptics,
     target: WebGLRenderTarget,
     grid: FilmTableGrid,
     columns: readonly TableColumns[] | null,
@@ -132,7 +153,7 @@ export class FilmTablePass {
    * The per-row terms for `s` on `grid` (computed in float64 on the CPU: a dispersive film's in a
    * worker, dispersiveRowsStore.ts, or here if not at hand), unless the texture holds them already.
    */
-  private updateRows(s: FilmSettings, grid: FilmTableGrid): void {
+  private updateRows(s: FilmOptics, grid: FilmTableGrid): void {
     const rowLayout = this.rowLayout(s, grid);
     const rowsFor = dispersiveRowsKey(s, rowLayout);
     if (rowsFor === this.rowsFor) return;
@@ -156,7 +177,7 @@ export class FilmTablePass {
    * in parallel (KHR_parallel_shader_compile), and meanwhile makes the light's textures for `s` on
    * this thread (the series' transform is an FFT): before a first frame, the two overlap.
    */
-  async prepare(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget): Promise<void> {
+  async prepare(renderer: WebGLRenderer, s: FilmOptics, target: WebGLRenderTarget): Promise<void> {
     const previous = renderer.getRenderTarget();
     renderer.setRenderTarget(target); // three picks a program by its target (no tone mapping into a texture)
     const compiled = this.fullscreen.compileAsync(renderer, this.programs.material(s));
@@ -167,7 +188,7 @@ export class FilmTablePass {
   }
 
   /** What picks the pass's program for `s`: a change of it needs another program. */
-  passKey(s: FilmSettings): string {
+  passKey(s: FilmOptics): string {
     return this.programs.key(s);
   }
 

@@ -1,5 +1,5 @@
 import type { WebGLRenderTarget, WebGLRenderer } from 'three';
-import type { FilmSettings } from '../settings/filmSettings.ts';
+import type { FilmOptics } from '../settings/filmSettings.ts';
 import { filmFill } from '../methods/filmFills.ts';
 import type { FilmTableGrid } from './filmTableGrid.ts';
 import type { FilmTablePass, TableColumns } from './filmTablePass.ts';
@@ -7,7 +7,7 @@ import { TableDrawTiming } from './tableDrawTiming.ts';
 import { type PassKind, TableBandBudget } from './tableBandBudget.ts';
 
 /** Each fill's pass is timed apart: its cost per texel differs by orders of magnitude. */
-const passKind = (s: FilmSettings): PassKind => filmFill(s);
+const passKind = (s: FilmOptics): PassKind => filmFill(s);
 
 /**
  * The table built across the app's frames: for new settings a coarse grid (at most 1/16 of the
@@ -19,7 +19,7 @@ export class ProgressiveTableBuild {
   private readonly budget = new TableBandBudget();
   private readonly timing = new TableDrawTiming(this.budget);
   /** The full grid being built behind a coarse one: its settings and the columns done. */
-  private building: { readonly s: FilmSettings; readonly grid: FilmTableGrid; columns: number } | null = null;
+  private building: { readonly s: FilmOptics; readonly grid: FilmTableGrid; columns: number } | null = null;
 
   constructor(private readonly pass: FilmTablePass) {}
 
@@ -39,13 +39,7 @@ export class ProgressiveTableBuild {
    * what Web Workers compute for it (the light's transform, a dispersive film's row terms for both
    * grids) is not at hand yet, draws nothing and returns null.
    */
-  begin(
-    renderer: WebGLRenderer,
-    s: FilmSettings,
-    maxThicknessNm: number,
-    target: WebGLRenderTarget,
-    mayWait: boolean,
-  ): FilmTableGrid | null {
+  begin(renderer: WebGLRenderer, s: FilmOptics, maxThicknessNm: number, target: WebGLRenderTarget, mayWait: boolean): FilmTableGrid | null {
     const full = this.pass.fullGrid(s, maxThicknessNm);
     const divisor = this.budget.coarseDivisor(passKind(s), full.width * 2 * full.rows);
     const grid = {
@@ -77,7 +71,7 @@ export class ProgressiveTableBuild {
     return b.grid;
   }
 
-  private draw(renderer: WebGLRenderer, s: FilmSettings, target: WebGLRenderTarget, grid: FilmTableGrid, columns: TableColumns): void {
+  private draw(renderer: WebGLRenderer, s: FilmOptics, target: WebGLRenderTarget, grid: FilmTableGrid, columns: TableColumns): void {
     const texels = (columns[1] - columns[0]) * 2 * grid.rows;
     this.pass.draw(renderer, s, target, grid, [columns], this.timing.timed(renderer, passKind(s), texels, target, columns[0]));
   }

@@ -22,3 +22,6 @@ export const spectralTransformTexelsOf = (key: string): Float32Array => store.of
  * this thread at once (true).
  */
 export const spectralTransformTexelsReady = (key: string): boolean => store.ready(key);
+
+/** A promise kept once the texels of the light with this key are at hand (asked of the worker, or computed here where there is none). */
+export const spectralTransformTexelsWhenReady = (key: string): Promise<void> => store.whenReady(key);

@@ -5,7 +5,7 @@ import { SPECTRAL_TRANSFORM_CARRIER_PER_NM, SPECTRAL_TRANSFORM_COUNT, SPECTRAL_T
 import { AIRY_SERIES_MAX_ORDERS, AIRY_SERIES_TOLERANCE } from '../physics/airySeries.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { SPECTRAL_TRANSFORM_ROWS as ROWS, SPECTRAL_TRANSFORM_WIDTH as WIDTH, spectralLightKey } from './spectralTransformTexels.ts';
-import { spectralTransformTexelsOf, spectralTransformTexelsReady } from './spectralTransformStore.ts';
+import { spectralTransformTexelsOf, spectralTransformTexelsReady, spectralTransformTexelsWhenReady } from './spectralTransformStore.ts';
 
 const shared = new SharedTextures((key) => {
   const texture = new DataTexture(spectralTransformTexelsOf(key), WIDTH, 2 * ROWS, RGBAFormat, FloatType);
@@ -29,6 +29,12 @@ export const spectralTransformTexture = (illuminant: IlluminantSpec, normalizati
 export function spectralTransformReady(illuminant: IlluminantSpec, normalization: Normalization): boolean {
   const key = spectralLightKey({ illuminant, normalization });
   return shared.has(key) || spectralTransformTexelsReady(key);
+}
+
+/** A promise kept once `spectralTransformTexture` for the light would return at once: its texels computed in the Web Worker, or here where there is none. */
+export function spectralTransformWhenReady(illuminant: IlluminantSpec, normalization: Normalization): Promise<void> {
+  const key = spectralLightKey({ illuminant, normalization });
+  return shared.has(key) ? Promise.resolve() : spectralTransformTexelsWhenReady(key);
 }
 
 export const releaseSpectralTransformTexture = (holder: object): void => shared.release(holder);

@@ -3,11 +3,11 @@ import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { enumConstants } from '../gpu/enumDefines.ts';
 import { FULLSCREEN_VERTEX } from '../gpu/fullscreenPass.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
-import { shaderSource } from '../gpu/shaderSource.ts';
 import { texelRecordDefines } from '../gpu/texelRecord.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { AIRY_ROW } from './airySeriesRows.ts';
 import { DISPERSIVE_BIN } from './dispersiveRows.ts';
+import { filmShaderSource } from './filmShaderSource.ts';
 import { filmMediaDefines, filmSpectralBins, filmStackDefines } from './filmFillGpu.ts';
 import { type FilmMedia, filmMediaUniforms } from './filmMedia.ts';
 import { filmTableGridUniforms } from './filmTableGrid.ts';
@@ -42,7 +42,7 @@ const tablePass = (): ShaderMaterial =>
     name: TABLE_PASS_NAME,
     uniforms: filmTablePassUniforms(),
     vertexShader: FULLSCREEN_VERTEX,
-    fragmentShader: shaderSource('filmTable.glsl'),
+    fragmentShader: filmShaderSource('filmTable.glsl'),
   });
 
 /**

@@ -2,7 +2,7 @@ import { type Material, type MeshPhysicalMaterial } from 'three';
 import { type filmColorUniforms } from '../film/filmColor.ts';
 import { type filmStackUniforms } from '../film/filmStack.ts';
 import { type FilmTable } from '../film/filmTable.ts';
-import { filmKeyOf } from './materialFilm.ts';
+import { loadedDrawing } from './spectralDrawing.ts';
 import {
   type CheckedOptions,
   OPTION_NAMES,
@@ -14,7 +14,8 @@ import {
 /** What a material upgraded by `spectralIridescence` holds: its options, its uniforms, its table, its warnings. */
 export interface SpectralFilm {
   options: CheckedOptions;
-  readonly uniforms: ReturnType<typeof filmColorUniforms> & ReturnType<typeof filmStackUniforms>;
+  /** made by the drawing (materialDrawing.ts) when the program is first compiled with the film */
+  uniforms: (ReturnType<typeof filmColorUniforms> & ReturnType<typeof filmStackUniforms>) | null;
   table: FilmTable | null;
   /** the causes already warned about (once each) */
   readonly warned: Set<string>;
@@ -49,7 +50,9 @@ export function warnOnce(film: SpectralFilm, cause: string, message: string): vo
  * listeners it is gone while it is still in use.
  */
 export function setOptions(m: MeshPhysicalMaterial, film: SpectralFilm, options: CheckedOptions): void {
-  if (filmKeyOf(m, film.options) !== filmKeyOf(m, options)) m.needsUpdate = true;
+  const drawing = loadedDrawing();
+  // Before the drawing is loaded, the program holds three's film: the drawing's arrival moves the version anyway.
+  if (drawing && drawing.filmKeyOf(m, film.options) !== drawing.filmKeyOf(m, options)) m.needsUpdate = true;
   film.options = options;
 }
 

@@ -1,5 +1,10 @@
 import { ShaderChunk } from 'three';
-import { shaderSource } from '../gpu/shaderSource.ts';
+import { FILM_METHOD_GLSL, glslAssembler, glslFilesByName } from '../gpu/glslAssembly.ts';
+import { FILM_GLSL } from '../film/filmShaderSource.ts';
+
+/** The material's GLSL: the film's files and its own (shaders/meshMaterial/). */
+const OWN_FILES = import.meta.glob<string>('../../shaders/meshMaterial/*.glsl', { query: '?raw', import: 'default', eager: true });
+const shaderSource = glslAssembler(glslFilesByName(OWN_FILES, FILM_METHOD_GLSL, FILM_GLSL), FILM_METHOD_GLSL);
 
 /** The call in three's lights_fragment_begin chunk that gives the film over the dielectric base. */
 const DIELECTRIC_FILM = 'evalIridescence( 1.0, material.iridescenceIOR, dotNVi, material.iridescenceThickness, material.specularColor )';

@@ -1,82 +1,37 @@
-import { type Material, type MeshPhysicalMaterial, type Object3D, type WebGLRenderer } from 'three';
-import { filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } from '../film/filmColor.ts';
-import { filmStackUniforms } from '../film/filmStack.ts';
-import { type FilmQuality } from '../settings/filmQuality.ts';
-import { FilmTable, tableKey } from '../film/filmTable.ts';
-import { maxFieldThicknessNm } from '../fields/fields.ts';
-import { methodReads } from '../methods/methods.ts';
-import { SharedTextures } from '../gpu/sharedTextures.ts';
+import { type Material, type MeshPhysicalMaterial, type Object3D } from 'three';
+import { ParameterError } from '../input/validate.ts';
 import {
   type CheckedOptions,
   type SpectralIridescenceOptions,
   type SpectralIridescenceProperties,
   spectralIridescenceOptions,
 } from './spectralIridescenceOptions.ts';
-import { restoresOf } from './contextRestores.ts';
 import { chainHooks } from './materialHooks.ts';
-import { clampWithWarning, filmDefinesOf, filmKeyOf, filmSettingsOf, metalOf, metalStateOf, refuse } from './materialFilm.ts';
-import { spectralFragmentShader } from './spectralFragmentShader.ts';
+import { filmParametersOf, refuse } from './materialParameters.ts';
+import { NODE_RENDERER_MESSAGE, warnWhereDrawnAsNodes } from './nodeRendererWarning.ts';
+import { loadDrawing, loadedDrawing } from './spectralDrawing.ts';
 import { type SpectralFilm, addFilm, copySpectralFilm, defineOptionProperties, filmOf, setOptions, warnOnce } from './spectralFilm.ts';
 import { spectralMaterialJson } from './spectralIridescenceJson.ts';
 
-/** Film tables shared by the materials whose film, light and thickness range are the same. */
-const tables = new SharedTextures((key) => new FilmTable((JSON.parse(key) as { quality: FilmQuality }).quality));
-/** The context restore each table was last drawn after (contextRestores.ts): a restore empties it. */
-const tableRestores = new WeakMap<FilmTable, number>();
-
 /**
- * Brings the film's uniforms, light textures and table (built with `renderer` if it changed, or
- * if the renderer's context was restored since) up to the material. Called inside three's render:
- * a parameter out of its domain is drawn clamped, with a warning, never thrown.
- */
-function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRenderer): void {
-  const o = film.options;
-  const s = filmSettingsOf(
-    m,
-    o,
-    clampWithWarning((name, message) => warnOnce(film, name, message)),
-  );
-  if (s.mode !== o.mode) warnOnce(film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
-  if (methodReads(s.mode, 'table')) {
-    const maxThicknessNm = maxFieldThicknessNm(s);
-    const table = tables.hold(JSON.stringify({ quality: o.quality, table: tableKey(s, maxThicknessNm) }), film);
-    const restores = restoresOf(renderer);
-    if (tableRestores.get(table) !== restores) table.invalidate();
-    tableRestores.set(table, restores);
-    table.update(renderer, s, maxThicknessNm);
-    film.table = table;
-  } else if (film.table) {
-    tables.release(film);
-    film.table = null;
-  }
-  updateFilmColorUniforms(film, s, o.quality, film.table);
-}
-
-/**
- * The film in three's hooks (materialHooks.ts), after the user's: onBeforeCompile writes it into
- * three's shader, or where it cannot (a user's edit or a three.js release took a line it needs)
- * leaves three's film, with a warning, rather than throw inside render; the program key holds the
- * film's defines and the user's key; onBeforeRender brings the film up to date.
+ * The film in three's hooks (materialHooks.ts), after the user's, each the drawing's
+ * (materialDrawing.ts) once it is loaded: onBeforeCompile writes the film into three's shader, the
+ * program key holds the film's defines and the user's key, onBeforeRender brings the film up to
+ * date. Until the drawing is loaded (whenSpectralReady), the material draws three's own film, in a
+ * program keyed apart; the drawing's arrival moves the material's version, so the next draw compiles the film.
  */
 function hook(m: MeshPhysicalMaterial, film: SpectralFilm): void {
   chainHooks(m, {
-    onBeforeCompile: (shader) => {
-      const fragment = spectralFragmentShader(shader.fragmentShader, metalOf(m, film.options) !== null);
-      if (typeof fragment !== 'string') return warnOnce(film, fragment.missing, `no ${fragment.missing}; three's film is drawn`);
-      shader.defines = { ...shader.defines, ...filmDefinesOf(m, film.options) };
-      Object.assign(shader.uniforms, film.uniforms);
-      shader.fragmentShader = fragment;
-    },
+    onBeforeCompile: (shader) => loadedDrawing()?.compileFilm(m, film, shader),
     // One program per distinct film configuration and user edit (three would otherwise key it by onBeforeCompile's text alone).
-    customProgramCacheKey: (userKey) => `spectral-iridescence ${filmKeyOf(m, film.options)} ${userKey}`,
-    onBeforeRender: (renderer) => {
-      // metalness and color are uniforms to three: a metal's coming or going (or its k reaching 0) needs a new program three would not make.
-      const state = metalStateOf(m, film.options);
-      if (film.drawnMetal !== null && film.drawnMetal !== state) m.needsUpdate = true;
-      film.drawnMetal = state;
-      if (m.iridescence > 0) update(film, m, renderer);
-    },
+    customProgramCacheKey: (userKey) => `spectral-iridescence ${loadedDrawing()?.filmKeyOf(m, film.options) ?? 'loading'} ${userKey}`,
+    onBeforeRender: (renderer) => loadedDrawing()?.drawFilm(m, film, renderer),
   });
+  if (!loadedDrawing())
+    void loadDrawing().then((drawing) => {
+      m.needsUpdate = true;
+      void drawing.prepareFilm(m, film);
+    });
 }
 
 /**
@@ -105,16 +60,12 @@ function patch<M extends MeshPhysicalMaterial>(m: M, options: CheckedOptions): M
     setOptions(m, known, options);
     return m as M & SpectralIridescenceProperties;
   }
-  const uniforms = { ...filmColorUniforms(), ...filmStackUniforms() };
-  const film: SpectralFilm = { options, uniforms, table: null, warned: new Set(), drawnMetal: null };
+  const film: SpectralFilm = { options, uniforms: null, table: null, warned: new Set(), drawnMetal: null };
   addFilm(m, film);
   hook(m, film);
+  warnWhereDrawnAsNodes(m, () => warnOnce(film, 'node renderer', NODE_RENDERER_MESSAGE));
   if (!(m as { isThinFilmMaterial?: boolean }).isThinFilmMaterial) addMaterialMethods(m);
-  m.addEventListener('dispose', () => {
-    releaseFilmColorTextures(film);
-    tables.release(film);
-    film.table = null;
-  });
+  m.addEventListener('dispose', () => loadedDrawing()?.releaseFilm(film));
   return m as M & SpectralIridescenceProperties;
 }
 
@@ -139,7 +90,7 @@ export function spectralIridescence<M extends MeshPhysicalMaterial>(
   options: SpectralIridescenceOptions = {},
 ): M & SpectralIridescenceProperties {
   const checked = spectralIridescenceOptions(options);
-  filmSettingsOf(material, checked, refuse);
+  filmParametersOf(material, checked, refuse);
   return patch(material, checked);
 }
 
@@ -158,4 +109,20 @@ export function useSpectralIridescence(root: Object3D, options: SpectralIridesce
   });
   for (const m of found) spectralIridescence(m, options);
   return [...found];
+}
+
+/**
+ * A promise kept once everything `material`'s film needs is loaded and computed: the film's
+ * drawing and the data it computes from (a chunk of its own, fetched the first time a material is
+ * made spectral), and what its table and the light's textures are computed from (the light's
+ * spectral transform, a dispersive film's row terms, in Web Workers). The next draw builds the
+ * table on the GPU before drawing the film: the next frame shows the settled film, so a screenshot
+ * waits for this promise, then draws. A ParameterError for a material that is not spectral.
+ */
+export async function whenSpectralReady(material: Material): Promise<void> {
+  const film = filmOf(material);
+  if (!film)
+    throw new ParameterError('material', 'whenSpectralReady: the material is not spectral; expected one spectralIridescence upgraded');
+  const drawing = await loadDrawing();
+  await drawing.prepareFilm(material as MeshPhysicalMaterial, film);
 }

@@ -1,15 +1,15 @@
 import { Color } from 'three';
-import { type LinearRgb } from '../physics/artistMetal.ts';
+import type { LinearRgb } from '../physics/artistMetal.ts';
 import { POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
-import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
-import { NORMALIZATIONS, type Normalization } from '../physics/spectralWeights.ts';
+import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminantSpec.ts';
+import { NORMALIZATIONS, type Normalization } from '../physics/spectralConventions.ts';
 import { type Medium, assertMedium, mediumFromJson, parseMediumText } from '../physics/medium.ts';
 import type { FilmLayer } from '../physics/stackFilms.ts';
 import { layersText, parseLayers } from '../physics/stackText.ts';
 import { ParameterError, isInDomain, oneOf } from '../input/validate.ts';
-import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
+import { DEFAULT_LIGHT } from '../settings/filmLight.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions, filmQualityFrom } from '../settings/filmQuality.ts';
-import { MODES } from '../settings/filmSettings.ts';
+import { MODES } from '../methods/methodRegistry.ts';
 
 /** How the film is computed: `table` (one lookup in a table the GPU builds), `fourier` (the Airy series per fragment) or `exact` (binned integral). */
 export type FilmMode = (typeof MODES)[number];
@@ -122,9 +122,9 @@ export const MATERIAL_FILM_QUALITY: FilmQuality = { ...DEFAULT_FILM_QUALITY, tab
 export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): CheckedOptions {
   return {
     mode: oneOf('mode', o.mode ?? 'table', MODES),
-    illuminant: illuminantFromJson(o.illuminant ?? DEFAULT_SETTINGS.illuminant),
-    polarization: oneOf('polarization', o.polarization ?? DEFAULT_SETTINGS.polarization, POLARIZATIONS),
-    normalization: oneOf('normalization', o.normalization ?? DEFAULT_SETTINGS.normalization, NORMALIZATIONS),
+    illuminant: illuminantFromJson(o.illuminant ?? DEFAULT_LIGHT.illuminant),
+    polarization: oneOf('polarization', o.polarization ?? DEFAULT_LIGHT.polarization, POLARIZATIONS),
+    normalization: oneOf('normalization', o.normalization ?? DEFAULT_LIGHT.normalization, NORMALIZATIONS),
     base: mediumOf('base', o.base ?? null, 'inside'),
     film: mediumOf('film', o.film ?? null, 'film'),
     edgeTint: edgeTintOf(o.edgeTint ?? null),

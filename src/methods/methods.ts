@@ -1,29 +1,8 @@
-import { exactMethod } from './exactMethod.ts';
-import type { DrawnInstead, FilmMethod, FilmMethodInput, FilmMethodSettings } from './filmMethod.ts';
+import type { DrawnInstead, FilmMethodInput, FilmMethodSettings } from './filmMethod.ts';
 import { FILM_FILLS, type FilmFill, filmFill } from './filmFills.ts';
-import { fourierMethod } from './fourierMethod.ts';
-import { tableMethod } from './tableMethod.ts';
-import { threeIridescenceMethod } from './threeIridescenceMethod.ts';
+import { FILM_METHOD_REGISTRY, type FilmMethodName } from './methodRegistry.ts';
 
-/**
- * Every way to compute the film's colour, by its name in the URL (`mode=`): the one place a method
- * is registered. The schema's choices, the shader's TFC_FILM_MODE and what each program reads
- * (defines, textures, the table) all come from here.
- */
-export const FILM_METHOD_REGISTRY = {
-  exact: exactMethod,
-  table: tableMethod,
-  fourier: fourierMethod,
-  'three-iridescence': threeIridescenceMethod,
-} as const satisfies Record<string, FilmMethod>;
-
-export type FilmMethodName = keyof typeof FILM_METHOD_REGISTRY;
-/** What a film shader can compute: every method. */
-export const FILM_METHODS = Object.keys(FILM_METHOD_REGISTRY) as FilmMethodName[];
-
-type Offered = { [K in FilmMethodName]: (typeof FILM_METHOD_REGISTRY)[K] extends { readonly offered: true } ? K : never }[FilmMethodName];
-/** The methods a user may choose (`mode=`). */
-export const MODES = FILM_METHODS.filter((name): name is Offered => FILM_METHOD_REGISTRY[name].offered);
+export { FILM_METHOD_REGISTRY, FILM_METHODS, type FilmMethodName, MODES } from './methodRegistry.ts';
 
 /** Whether `method`'s shader reads `input` (filmMethod.ts names them). */
 export const methodReads = (method: FilmMethodName, input: FilmMethodInput): boolean =>

@@ -2,7 +2,7 @@
  * The library's material entry (`thin-film-color/material`): the spectral thin film for
  * three.js's MeshPhysicalMaterial (three.js is a peer dependency). How to use it: docs/material.md.
  */
-export { spectralIridescence, useSpectralIridescence } from '../meshMaterial/spectralIridescence.ts';
+export { spectralIridescence, useSpectralIridescence, whenSpectralReady } from '../meshMaterial/spectralIridescence.ts';
 export { isSpectralIridescence } from '../meshMaterial/spectralFilm.ts';
 export {
   type BaseInput,

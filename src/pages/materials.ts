@@ -7,7 +7,9 @@
  */
 import { arrowKeyStep } from '../app/arrowKeyStep.ts';
 import { shownPixelRatio } from '../settings/pixelRatio.ts';
-import { AgXToneMapping, EquirectangularReflectionMapping, type Mesh, Vector3, WebGLRenderer } from 'three';
+import { AgXToneMapping, EquirectangularReflectionMapping, type Material, type Mesh, Vector3, WebGLRenderer } from 'three';
+import { whenSpectralReady } from '../meshMaterial/spectralIridescence.ts';
+import { isSpectralIridescence } from '../meshMaterial/spectralFilm.ts';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { environmentTexture, loadEnvironmentPixels } from '../bubbleMaterials/environmentMaps.ts';
 import { TITANIUM_OXIDE_NM, VIEWS, type View, exampleScene } from './materialsScene.ts';
@@ -170,7 +172,16 @@ addEventListener('resize', () => {
 
 showStacks();
 resize();
-loadEnvironmentPixels('park').then(
+/** The spectral materials of the scene: the page first draws once their films are ready (whenSpectralReady). */
+const spectralMaterials = (): Material[] => {
+  const found = new Set<Material>();
+  example.scene.traverse((o) => {
+    const m = (o as { material?: Material }).material;
+    if (m && isSpectralIridescence(m)) found.add(m);
+  });
+  return [...found];
+};
+Promise.all([loadEnvironmentPixels('park'), ...spectralMaterials().map(whenSpectralReady)]).then(
   () => {
     const texture = environmentTexture('park', example)!;
     texture.mapping = EquirectangularReflectionMapping;

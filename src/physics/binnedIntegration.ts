@@ -10,7 +10,8 @@ import {
 } from './filmReflectance.ts';
 import { type Medium, isDispersiveMedium, mediumIndexAt, mediumStackAt, transparentIndexAt } from './medium.ts';
 import { cosDeg, refractedCos } from './snell.ts';
-import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type SpectralWeights, type Xyz } from './spectralWeights.ts';
+import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from './spectralConventions.ts';
+import type { SpectralWeights, Xyz } from './spectralWeights.ts';
 
 /**
  * The shader's integration (mirrored by `shaders/physics/binnedIntegration.glsl`): `count` equal

@@ -1,6 +1,6 @@
 import { FILM_STACK_DOMAIN } from './filmReflectance.ts';
 import { FILM_MATERIALS, type FilmMaterial, namedIndex } from './namedMedia.ts';
-import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from './spectralWeights.ts';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from './spectralConventions.ts';
 import { parseDecimal, quoted } from '../input/validate.ts';
 
 /**

@@ -1,18 +1,8 @@
 import { CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, CIE1931_XBAR, CIE1931_YBAR, CIE1931_ZBAR } from './data/cie1931Cmf2deg.ts';
 import { type IlluminantSpec, illuminantKey, illuminantSpd, interpolateTable } from './illuminants.ts';
+import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type Normalization } from './spectralConventions.ts';
 
-/** The integration range of eqs (16)–(18). */
-export const LAMBDA_MIN_NM = 380;
-export const LAMBDA_MAX_NM = 830;
-export const LAMBDA_SPAN_NM = LAMBDA_MAX_NM - LAMBDA_MIN_NM;
-
-/**
- * Normalisation of eqs (16)–(18):
- * - `white`: k = ∫ I_in ȳ dλ, so a perfect white reflector has Y = 1 (default);
- * - `paper`: the paper's k = ∫ ȳ dλ, with I_in scaled to 1 at 560 nm.
- */
-export const NORMALIZATIONS = ['white', 'paper'] as const;
-export type Normalization = (typeof NORMALIZATIONS)[number];
+export { LAMBDA_MAX_NM, LAMBDA_MIN_NM, LAMBDA_SPAN_NM, NORMALIZATIONS, type Normalization } from './spectralConventions.ts';
 
 export type Xyz = readonly [number, number, number];
 

@@ -3,6 +3,7 @@ import { FIELD_SETTINGS, type FieldSettings } from '../fields/fields.ts';
 import { FLOW_PARAMETERS, type FlowParameterKey } from '../physics/filmDynamics/flowParameters.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
 import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
+import { DEFAULT_LIGHT } from './filmLight.ts';
 import { layersRow } from './layersRow.ts';
 import { type ParameterRow, defaultsOf } from './parameterRow.ts';
 import { illuminantRow, mediumRow } from './textRows.ts';
@@ -43,9 +44,9 @@ export const FILM_PARAMETERS: readonly Row[] = [
   layersRow({ key: 'layers', url: 'layers' }, 'film'),
   numberRow({ key: 'nOutside', url: 'nOutside' }, FILM_STACK_DOMAIN.nOutside, SOAP_FILM_IN_AIR.nOutside, 'film', 0.01),
   mediumRow({ key: 'nInside', url: 'nInside' }, SOAP_FILM_IN_AIR.nInside, 'film', 'inside'),
-  illuminantRow({ key: 'illuminant', url: 'illuminant' }, 'D65', 'light and colour'),
-  choiceRow({ key: 'polarization', url: 'polarization' }, POLARIZATIONS, 'unpolarized', 'light and colour'),
-  choiceRow({ key: 'normalization', url: 'normalization' }, NORMALIZATIONS, 'white', 'light and colour'),
+  illuminantRow({ key: 'illuminant', url: 'illuminant' }, DEFAULT_LIGHT.illuminant, 'light and colour'),
+  choiceRow({ key: 'polarization', url: 'polarization' }, POLARIZATIONS, DEFAULT_LIGHT.polarization, 'light and colour'),
+  choiceRow({ key: 'normalization', url: 'normalization' }, NORMALIZATIONS, DEFAULT_LIGHT.normalization, 'light and colour'),
   choiceRow({ key: 'space', url: 'space' }, SPACES, 'srgb', 'light and colour'),
   numberRow({ key: 'exposure', url: 'exposure' }, { min: 0, max: 100, unit: '' }, 1, 'light and colour', 0.01),
   choiceRow({ key: 'tonemap', url: 'tonemap' }, TONE_MAPPINGS, 'auto', 'light and colour'),

@@ -1,7 +1,7 @@
 import { AIRY_SERIES_MAX_ORDERS } from '../physics/airySeries.ts';
 import { isDispersiveMedium } from '../physics/medium.ts';
 import type { FilmSettings } from './filmSettings.ts';
-import { LAMBDA_SPAN_NM } from '../physics/spectralWeights.ts';
+import { LAMBDA_SPAN_NM } from '../physics/spectralConventions.ts';
 import { type NumberDomain, expectedNumber, isInDomain, oneOf, rejectValue } from '../input/validate.ts';
 import { type FilmTableLayout, TABLE_FILLS } from './filmTableLayout.ts';
 

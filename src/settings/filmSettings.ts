@@ -53,3 +53,9 @@ export interface FilmSettings extends FieldSettings {
   readonly tonemap: (typeof TONE_MAPPINGS)[number];
   readonly exposure: number;
 }
+
+/** What a film's colour and its table depend on (src/film/): its media, its stack, its light and its method. */
+export type FilmOptics = Pick<
+  FilmSettings,
+  'nOutside' | 'nFilm' | 'nInside' | 'layers' | 'illuminant' | 'polarization' | 'normalization' | 'mode'
+>;

@@ -18,6 +18,8 @@ export interface TexelsReply {
  */
 export class WorkerTexels {
   private readonly kept = new Map<string, Float32Array>();
+  /** whenReady's promises, by key, kept when its texels arrive */
+  private readonly waiting = new Map<string, (() => void)[]>();
   private readonly requests: WorkerRequests<TexelsReply>;
 
   constructor(
@@ -26,8 +28,13 @@ export class WorkerTexels {
     private readonly compute: (key: string) => Float32Array,
     private readonly keep: number,
   ) {
-    // The keys asked of a worker that failed are computed on this thread when next asked for.
-    this.requests = new WorkerRequests<TexelsReply>(make, (reply) => this.hold(reply.key, reply.texels));
+    // The keys asked of a worker that failed are computed on this thread when next asked for, or
+    // at once where a promise waits for them.
+    this.requests = new WorkerRequests<TexelsReply>(
+      make,
+      (reply) => this.hold(reply.key, reply.texels),
+      (keys) => keys.filter((key) => this.waiting.has(key)).forEach((key) => this.of(key)),
+    );
   }
 
   /** The texels of `key`, computed on this thread unless at hand. */
@@ -50,10 +57,18 @@ export class WorkerTexels {
     return true;
   }
 
+  /** A promise kept once the texels of `key` are at hand: asked of the worker (once), or where there is none computed here at once. */
+  whenReady(key: string): Promise<void> {
+    if (this.ready(key)) return Promise.resolve();
+    return new Promise((resolve) => this.waiting.set(key, [...(this.waiting.get(key) ?? []), resolve]));
+  }
+
   private hold(key: string, texels: Float32Array): void {
     this.kept.delete(key);
     this.kept.set(key, texels);
     for (const old of this.kept.keys()) if (this.kept.size > this.keep) this.kept.delete(old);
+    for (const resolve of this.waiting.get(key) ?? []) resolve();
+    this.waiting.delete(key);
   }
 }
 

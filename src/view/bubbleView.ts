@@ -9,6 +9,7 @@ import { methodReads } from '../methods/methods.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../settings/filmQuality.ts';
 import { FilmTable } from '../film/filmTable.ts';
+import { ProgressiveTableBuild } from '../film/progressiveTableBuild.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import { blowOnBubble } from './blowOnBubble.ts';
 import { bubbleHit } from './bubbleRay.ts';
@@ -58,7 +59,7 @@ export class BubbleView {
     readonly renderer: WebGLRenderer,
     readonly quality: FilmQuality = DEFAULT_FILM_QUALITY,
   ) {
-    this.table = new FilmTable(quality);
+    this.table = new FilmTable(quality, (pass) => new ProgressiveTableBuild(pass));
     this.film = new EvolvingFilm(renderer);
     this.cost = new FrameCost(renderer);
     this.camera.position.set(0, 0, CAMERA_DISTANCE);

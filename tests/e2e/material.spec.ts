@@ -7,6 +7,7 @@ import { FILM_STACK_DOMAIN } from '../../src/physics/filmReflectance.ts';
 import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
 import { srgbDecode } from '../../src/physics/colorConversions.ts';
 import { type Medium } from '../../src/physics/medium.ts';
+import { WEBGPU_ENTRY } from '../../src/meshMaterial/nodeRendererWarning.ts';
 
 /**
  * The spectral iridescence (src/meshMaterial/spectralIridescence.ts) in three.js scenes, one harness
@@ -40,6 +41,12 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
   const problems = watchProblems(page);
   await page.goto('/tests/e2e/harness/material.html');
   await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
+
+  // The page's first spectral material: once whenSpectralReady is kept (the film's drawing loaded
+  // apart), the next frame shows the settled film, the reference's colour, as later frames do.
+  const ready = await page.evaluate((c) => window.materialHarness!.readyPixels(c), CASES[0]!);
+  expect(ready.next, `after ${ready.waited} frames waiting`).toEqual(ready.settled);
+  expect(worstCodeDifference(ready.next, referenceOf(CASES[0]!))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
 
   // A uniform film on a box's face, lit by constant radiance (env=none's white), in every mode.
   for (const c of CASES) {
@@ -93,6 +100,13 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
   const clampWarning = (p: string) => p.startsWith('warning: spectralIridescence: iridescenceIOR 5 ');
   expect(problems.filter(clampWarning)).toHaveLength(1);
   problems.splice(0, problems.length, ...problems.filter((p) => !clampWarning(p)));
+
+  // Drawn by three's WebGPURenderer (its WebGL2 backend here), which calls none of the material's
+  // hooks: the material says so once, naming the WebGPU entry; three's own material says nothing.
+  const node = await page.evaluate((c) => window.materialHarness!.nodeRendererWarnings(c), CASES[0]!);
+  expect(node.spectral).toHaveLength(1);
+  expect(node.spectral[0]).toContain(WEBGPU_ENTRY);
+  expect(node.threes).toEqual([]);
 
   // After a lost and restored context, a table-mode material draws its film again (its table
   // rebuilt; left empty it would draw black), with no change to the film.

@@ -10,7 +10,7 @@ import type { ParityGroup } from '../../scripts/harness/parityCase.ts';
  * from a float target (scripts/harness/materialGrid.ts), against the float64 reference.
  */
 
-type GridPage = Window & { materialGridXyz: (g: ParityGroup, mode: 'table' | 'fourier') => number[][] };
+type GridPage = Window & { materialGridXyz: (g: ParityGroup, mode: 'table' | 'fourier') => Promise<number[][]> };
 
 // `table` mode, whose figures lie nearest the bounds (`fourier`'s are the benchmark's: docs/benchmarks.md).
 for (const mode of ['table'] as const)

@@ -22,12 +22,40 @@ import {
 } from 'three';
 import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
-import { spectralIridescence, useSpectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
+import { spectralIridescence, useSpectralIridescence, whenSpectralReady } from '../../../src/meshMaterial/spectralIridescence.ts';
 import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
 import { type FilmCase, centre, disposeAll, draw, environment, filmMaterial, filmScene, renderer } from './materialScene.ts';
+import { nodeRendererWarnings } from './materialNodeRenderer.ts';
 import { threeJsUserPixels } from './materialThreeJsUser.ts';
 
-/** The centre pixel of a film case through the spectral material. */
+/** A task later: the page's other work (a chunk's arrival) runs between two frames. */
+const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
+
+/**
+ * The film case through a material made spectral before the film's drawing is loaded (the page's
+ * first): frames drawn while whenSpectralReady is pending, then the first frame after it is kept
+ * and one drawn later (more frames and time apart), which should both show the settled film.
+ */
+async function readyPixels(c: FilmCase): Promise<{ waited: number; next: number[]; settled: number[] }> {
+  const material = spectralIridescence(filmMaterial(c));
+  const { scene, camera } = filmScene(c, material);
+  let ready = false;
+  const kept = whenSpectralReady(material).then(() => (ready = true));
+  let waited = 0;
+  for (; !ready; waited++) {
+    draw(scene, camera);
+    await nextTask();
+  }
+  await kept;
+  const next = centre(draw(scene, camera));
+  for (let i = 0; i < 5; i++) draw(scene, camera);
+  await new Promise((resolve) => setTimeout(resolve, 100));
+  const settled = centre(draw(scene, camera));
+  disposeAll(scene);
+  return { waited, next, settled };
+}
+
+/** The centre pixel of a film case through the spectral material (the film's drawing loaded: readyPixels first). */
 function filmPixel(c: FilmCase, options: SpectralIridescenceOptions): number[] {
   const { scene, camera } = filmScene(c, spectralIridescence(filmMaterial(c), options));
   const pixel = centre(draw(scene, camera));
@@ -196,18 +224,29 @@ async function contextRestorePixels(c: FilmCase): Promise<{ before: number[]; af
   return { before, after };
 }
 
-window.materialHarness = { filmPixel, gltfPixel, againstPhysical, programCounts, threeJsUserPixels, contextRestorePixels };
+window.materialHarness = {
+  readyPixels,
+  filmPixel,
+  gltfPixel,
+  againstPhysical,
+  programCounts,
+  threeJsUserPixels,
+  contextRestorePixels,
+  nodeRendererWarnings,
+};
 document.body.dataset.ready = 'yes';
 
 declare global {
   interface Window {
     materialHarness?: {
+      readyPixels: typeof readyPixels;
       filmPixel: typeof filmPixel;
       gltfPixel: typeof gltfPixel;
       againstPhysical: typeof againstPhysical;
       programCounts: typeof programCounts;
       threeJsUserPixels: typeof threeJsUserPixels;
       contextRestorePixels: typeof contextRestorePixels;
+      nodeRendererWarnings: typeof nodeRendererWarnings;
     };
   }
 }

@@ -53,6 +53,30 @@ describe('the spectral transform off the main thread', () => {
     expect(store.spectralTransformTexelsOf(KEY)).toStrictEqual(inlineTexels());
   });
 
+  it("the store's promise is kept when the worker's answer arrives, not before", async () => {
+    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest, SpectralTransformReply>(WORKER);
+    vi.stubGlobal('Worker', FakeWorker);
+    const store = await import('../../../src/film/spectralTransformStore.ts');
+    let kept = false;
+    const ready = store.spectralTransformTexelsWhenReady(KEY).then(() => (kept = true));
+    await Promise.resolve();
+    expect(kept).toBe(false);
+    expect(FakeWorker.made[0]!.requests).toEqual([{ key: KEY }]);
+    await ready;
+    expect(store.spectralTransformTexelsReady(KEY)).toBe(true);
+    expect(store.spectralTransformTexelsOf(KEY)).toStrictEqual(inlineTexels());
+    await expect(store.spectralTransformTexelsWhenReady(KEY)).resolves.toBeUndefined();
+    expect(FakeWorker.made[0]!.requests).toHaveLength(1);
+  });
+
+  it("after its worker fails, the store's promise is kept with the texels computed here", async () => {
+    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest, SpectralTransformReply>(WORKER, true);
+    vi.stubGlobal('Worker', FakeWorker);
+    const store = await import('../../../src/film/spectralTransformStore.ts');
+    await store.spectralTransformTexelsWhenReady(KEY);
+    expect(store.spectralTransformTexelsOf(KEY)).toStrictEqual(inlineTexels());
+  });
+
   it('without Workers (Node, here), the store computes the texels at once', async () => {
     expect(typeof Worker).toBe('undefined');
     const store = await import('../../../src/film/spectralTransformStore.ts');

@@ -4,12 +4,16 @@
  * clone and copy, options as properties, the one-object constructor, and the quality's checks.
  */
 import { MeshPhysicalMaterial, ShaderLib } from 'three';
-import { describe, expect, it, vi } from 'vitest';
+import { beforeAll, describe, expect, it, vi } from 'vitest';
+import { loadDrawing } from '../../../src/meshMaterial/spectralDrawing.ts';
 import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
 import { isSpectralIridescence } from '../../../src/meshMaterial/spectralFilm.ts';
 import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
 import { parameterOf } from './parameterOf.ts';
 import { DEFAULT_FILM_QUALITY, filmQualityFrom } from '../../../src/settings/filmQuality.ts';
+
+// The film's drawing is loaded apart (spectralDrawing.ts): these tests compile and draw with it.
+beforeAll(() => loadDrawing());
 
 /** What three hands onBeforeCompile: the physical material's shaders, uniforms and defines. */
 const shaderObject = () => ({ fragmentShader: ShaderLib.physical.fragmentShader, vertexShader: '', uniforms: {}, defines: {} });

@@ -4,11 +4,15 @@
  * base, a method with none for a stack (`fourier`) gives way to the table.
  */
 import { MaterialLoader, ShaderLib } from 'three';
-import { describe, expect, it, vi } from 'vitest';
+import { beforeAll, describe, expect, it, vi } from 'vitest';
+import { loadDrawing } from '../../../src/meshMaterial/spectralDrawing.ts';
 import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
 import { parameterOf } from './parameterOf.ts';
 import { enumCode } from '../../../src/gpu/enumDefines.ts';
 import { FILM_METHODS } from '../../../src/methods/methods.ts';
+
+// The film's drawing is loaded apart (spectralDrawing.ts): these tests compile and draw with it.
+beforeAll(() => loadDrawing());
 
 const shaderObject = () => ({ fragmentShader: ShaderLib.physical.fragmentShader, vertexShader: '', uniforms: {}, defines: {} });
 const BRAGG = '(2.35:56.6/1.46:91.1)*8';

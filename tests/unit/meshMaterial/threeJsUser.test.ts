@@ -16,12 +16,16 @@ import {
   ShaderLib,
   type Texture,
 } from 'three';
-import { afterEach, describe, expect, it, vi } from 'vitest';
+import { afterEach, beforeAll, describe, expect, it, vi } from 'vitest';
+import { loadDrawing } from '../../../src/meshMaterial/spectralDrawing.ts';
 import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
 import { isSpectralIridescence } from '../../../src/meshMaterial/spectralFilm.ts';
 import { OPTION_NAMES, type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
 import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
 import { ParameterError } from '../../../src/input/validate.ts';
+
+// The film's drawing is loaded apart (spectralDrawing.ts): these tests compile and draw with it.
+beforeAll(() => loadDrawing());
 
 /** What three hands onBeforeCompile: the physical material's shaders, uniforms and defines. */
 const shaderObject = () => ({
