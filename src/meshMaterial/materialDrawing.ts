@@ -51,8 +51,8 @@ function holdTable(film: SpectralFilm, s: MaterialFilmSettings): { table: FilmTa
     if (film.table) tables.release(film);
     return (film.table = null);
   }
-  // The film is the same over the surface and does not change with time: three's thickness (its map scales it).
-  const maxThicknessNm = uniformField.maxThicknessNm({ thicknessNm: s.thicknessNm, timeSeconds: 0 }, null);
+  // The film is the same over the surface: three's thickness (its map scales it).
+  const maxThicknessNm = uniformField.maxThicknessNm({ thicknessNm: s.thicknessNm }, null);
   film.table = tables.hold(JSON.stringify({ quality: film.options.quality, table: tableKey(s, maxThicknessNm) }), film);
   return { table: film.table, maxThicknessNm };
 }
