@@ -312,3 +312,10 @@ export const GOVERNOR_NOISE = 0.3;
  * measures the same ratio in a browser.
  */
 export const GOVERNED_FRAME_RATIO = 1.3;
+
+/**
+ * A lamp's white point against CIE 15's: the published x, y are rounded to 4 decimals (5e-5) and
+ * were summed from the 5 nm table over 380–780 nm, where the reference integrates the table
+ * interpolated to 1 nm over 380–830 nm (held past 780 nm): 2.7e-4 the most measured (LED-V1's x).
+ */
+export const LAMP_WHITE_POINT_TOL = 3e-4;

@@ -10,7 +10,7 @@ import {
 } from './filmReflectance.ts';
 import { type Medium, isDispersiveMedium, mediumIndexAt, mediumStackAt, transparentIndexAt } from './medium.ts';
 import { cosDeg, refractedCos } from './snell.ts';
-import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type SpectralWeights, type Xyz } from './spectralWeights.ts';
+import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type SpectralWeights, type WeightedLine, type Xyz } from './spectralWeights.ts';
 
 /**
  * The shader's integration (mirrored by `shaders/physics/binnedIntegration.glsl`): `count` equal
@@ -26,6 +26,8 @@ export interface SpectralBins {
   /** The bins integrated: first ≤ b < end (all of them unless `significantBins` trimmed the tails). */
   readonly first: number;
   readonly end: number;
+  /** A line source's lines (spectralWeights): integrated as bins of no width, R at each line; the weights above are then 0. */
+  readonly lines?: readonly WeightedLine[];
 }
 
 /** The centre in nm of bin `b` of `count` equal bins over the band. */
@@ -43,7 +45,7 @@ export function spectralBins(w: SpectralWeights, count: number): SpectralBins {
       });
     }
   }
-  return { count, weights, first: 0, end: count };
+  return { count, weights, first: 0, end: count, ...(w.lines && { lines: w.lines }) };
 }
 
 /**
@@ -111,18 +113,26 @@ export function binReflectance(optics: FilmOptics, centerNm: number, phaseCenter
   return r / optics.channels.length;
 }
 
-/** X = Σ W_bin R̄_bin (binReflectance), each bin's phase window widened in quadrature by its extra half-width. */
+/**
+ * X = Σ W_bin R̄_bin (binReflectance), each bin's phase window widened in quadrature by its extra
+ * half-width. A line source's lines are bins of no width [λ_l, λ_l]: R at the line, averaged over
+ * the extra half-width only (docs/physics.md#lights).
+ */
 function binsXyz(bins: SpectralBins, binFilm: (l1: number, l2: number) => BinFilm): Xyz {
   const width = LAMBDA_SPAN_NM / bins.count;
+  const lines = bins.lines;
   const xyz = [0, 0, 0];
-  for (let b = bins.first; b < bins.end; b++) {
-    const l1 = LAMBDA_MIN_NM + b * width;
-    const l2 = l1 + width;
+  for (let i = 0, n = lines ? lines.length : bins.end - bins.first; i < n; i++) {
+    const line = lines?.[i];
+    const b = bins.first + i;
+    const l1 = line ? line.nm : LAMBDA_MIN_NM + b * width;
+    const l2 = line ? line.nm : l1 + width;
+    const weights = line ? [line.x, line.y, line.z] : [0, 1, 2].map((k) => bins.weights[3 * b + k] as number);
     const { optics, pathLowNm, pathHighNm, extraHalfWidth } = binFilm(l1, l2);
     const center = Math.PI * (pathLowNm / l1 + pathHighNm / l2);
     const binHalf = Math.PI * (pathLowNm / l1 - pathHighNm / l2);
     const r = binReflectance(optics, (l1 + l2) / 2, center, Math.hypot(binHalf, extraHalfWidth));
-    for (let k = 0; k < 3; k++) xyz[k] = (xyz[k] as number) + r * (bins.weights[3 * b + k] as number);
+    for (let k = 0; k < 3; k++) xyz[k] = (xyz[k] as number) + r * (weights[k] as number);
   }
   return [xyz[0] as number, xyz[1] as number, xyz[2] as number];
 }
