@@ -37,8 +37,26 @@ export type IlluminantSpec = NamedIlluminant | { readonly daylightCct: number } 
 export const DAYLIGHT_CCT_MIN_K = 4000;
 export const DAYLIGHT_CCT_MAX_K = 25000;
 export const DAYLIGHT_CCT_DOMAIN_K: NumberDomain = { min: DAYLIGHT_CCT_MIN_K, max: DAYLIGHT_CCT_MAX_K, unit: 'K' };
+/**
+ * Names as a message lists them: a run of three or more that differ only by a number counting up
+ * by one (FL1, FL2, …, FL12) as its first and last, `FL1–FL12`.
+ */
+export function listedNames(names: readonly string[]): string {
+  const parts = names.map((name) => /^(.*?)(\d+)$/.exec(name));
+  const listed: string[] = [];
+  for (let i = 0; i < names.length;) {
+    let j = i;
+    const [, prefix, n] = parts[i] ?? [];
+    while (prefix !== undefined && parts[j + 1]?.[1] === prefix && Number(parts[j + 1]![2]) === Number(n) + j + 1 - i) j++;
+    listed.push(j - i >= 2 ? `${names[i]}–${names[j]}` : names[i]!);
+    if (j - i < 2) j = i;
+    i = j + 1;
+  }
+  return listed.join(', ');
+}
+
 /** What an illuminant may be, as every message (URL, element, CLI, this module) states it. */
-export const ILLUMINANT_EXPECTED = `one of ${NAMED_ILLUMINANTS.join(', ')}, ${LINE_EXPECTED}, or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`;
+export const ILLUMINANT_EXPECTED = `one of ${listedNames(NAMED_ILLUMINANTS)}, ${LINE_EXPECTED}, or a daylight CCT in [${DAYLIGHT_CCT_MIN_K}, ${DAYLIGHT_CCT_MAX_K}] K`;
 
 const isNamed = (text: unknown): text is NamedIlluminant => (NAMED_ILLUMINANTS as readonly unknown[]).includes(text);
 

@@ -1,7 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { xyzToXy } from '../../../src/physics/colorConversions.ts';
 import { filmOptics } from '../../../src/physics/filmReflectance.ts';
-import { ILLUMINANT_EXPECTED, illuminantFromJson, illuminantSpd, parseIlluminant } from '../../../src/physics/illuminants.ts';
+import {
+  ILLUMINANT_EXPECTED,
+  NAMED_ILLUMINANTS,
+  illuminantFromJson,
+  illuminantSpd,
+  listedNames,
+  parseIlluminant,
+} from '../../../src/physics/illuminants.ts';
 import { filmXyz, whiteXyz } from '../../../src/physics/spectralIntegration.ts';
 import { spectralBins } from '../../../src/physics/binnedIntegration.ts';
 import { spectralTransform } from '../../../src/physics/spectralTransform.ts';
@@ -140,6 +147,12 @@ describe('bad lights: named with the allowed range, nothing computed', () => {
     expect(ILLUMINANT_EXPECTED).toContain('LED-V2');
     expect(ILLUMINANT_EXPECTED).toContain('Na');
     expect(ILLUMINANT_EXPECTED).toContain('line:NM with NM in [380, 780] nm');
+  });
+
+  it('lists the lights with runs of numbered names shortened', () => {
+    expect(listedNames(NAMED_ILLUMINANTS)).toBe(
+      'D55, D65, D93, E, D65-table, FL1–FL12, LED-B1–LED-B5, LED-BH1, LED-RGB1, LED-V1, LED-V2, Na',
+    );
   });
 
   it('reads the edges of the line range and writes a line back as it reads it', () => {

@@ -192,8 +192,8 @@ describe('URL parameters', () => {
     expect(errors).toHaveLength(1);
     expect(errors[0]!.startsWith(`${name}=`)).toBe(true);
     expect(errors[0]).toContain(range);
-    // A long value is cut short: the message stays one readable line (a medium's row lists eleven names).
-    expect(errors[0]!.length).toBeLessThan(MAX_ECHOED_CHARS + 240);
+    // A long value is cut short: the message stays one readable line (a medium's row lists eleven names, the illuminant's its lights, runs shortened).
+    expect(errors[0]!.length).toBeLessThan(MAX_ECHOED_CHARS + 260);
   });
 
   it('keeps the last good value of a repeated parameter, and reports each bad one', () => {
