@@ -15,8 +15,9 @@ export type LampName = keyof typeof CIE_LAMPS;
 const LAMP_NAMES = Object.keys(CIE_LAMPS) as LampName[];
 
 /**
- * Incident spectra I_in(λ) for eq (15), by name: the registry every interface's list of lights
- * derives from (the panel, the catalogues' labels, the URL's and the colour tool's messages).
+ * Incident spectra I_in(λ) for eq (15), by name, each with what it is (the colour tool's help lists
+ * it): the registry every interface's list of lights derives from (the panel, the catalogues'
+ * labels, the URL's and the colour tool's messages).
  * - `D55`, `D65`, `D93`: CIE daylight from the S0/S1/S2 basis (CIE 015:2018 §4.1) at the paper's
  *   nominal 5500, 6500 and 9300 K. **CCT convention**: CIE's D65 is 6504 K because the nominal
  *   temperatures predate the 1968 change of the radiation constant c2 from 1.4380e-2 to
@@ -30,8 +31,20 @@ const LAMP_NAMES = Object.keys(CIE_LAMPS) as LampName[];
  * - `Na`: low-pressure sodium's D doublet, a line source (lightLines.ts); `{ lineNm }` (text
  *   `line:NM`) is one line at NM nm.
  */
-export const NAMED_ILLUMINANTS = ['D55', 'D65', 'D93', 'E', 'D65-table', ...LAMP_NAMES, 'Na'] as const;
-export type NamedIlluminant = 'D55' | 'D65' | 'D93' | 'E' | 'D65-table' | LampName | 'Na';
+export const NAMED_LIGHTS = {
+  D55: 'CIE daylight at 5503 K (the nominal 5500 K on the current c2)',
+  D65: 'CIE daylight at 6504 K (the nominal 6500 K on the current c2)',
+  D93: 'CIE daylight at 9305 K (the nominal 9300 K on the current c2)',
+  E: 'equal energy',
+  'D65-table': "the CIE's tabulated D65 (ISO 11664-2)",
+  ...(Object.fromEntries(
+    LAMP_NAMES.map((name) => [name, name.startsWith('FL') ? 'CIE fluorescent lamp, CIE 15:2004 tables' : 'CIE LED, CIE 15:2018 tables']),
+  ) as Record<LampName, string>),
+  Na: 'low-pressure sodium, its D lines at 588.995 and 589.592 nm, powers 2 : 1',
+} as const satisfies Readonly<Record<string, string>>;
+export type NamedIlluminant = keyof typeof NAMED_LIGHTS;
+/** The lights by name, in the registry's order. */
+export const NAMED_ILLUMINANTS = Object.keys(NAMED_LIGHTS) as readonly NamedIlluminant[];
 export type IlluminantSpec = NamedIlluminant | { readonly daylightCct: number } | { readonly lineNm: number };
 
 export const DAYLIGHT_CCT_MIN_K = 4000;
