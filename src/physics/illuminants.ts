@@ -14,6 +14,17 @@ import { type NumberDomain, ParameterError, assertInRange, isInDomain, parseDeci
 export type LampName = keyof typeof CIE_LAMPS;
 const LAMP_NAMES = Object.keys(CIE_LAMPS) as LampName[];
 
+/** What a lamp is, by its name's family (data/cieLamps.ts). */
+function lampAbout(name: LampName): string {
+  const fl = /^FL(\d+)$/.exec(name);
+  if (fl) {
+    const n = Number(fl[1]);
+    return `CIE fluorescent lamp, ${n <= 6 ? 'standard' : n <= 9 ? 'broadband' : 'three-band'} (CIE 15:2004 tables)`;
+  }
+  const kind = { B: 'phosphor on blue', BH: 'phosphor on blue with red', RGB: 'red, green and blue chips', V: 'phosphor on violet' };
+  return `CIE LED, ${kind[/^LED-([A-Z]+)/.exec(name)![1] as keyof typeof kind]} (CIE 015:2018 tables)`;
+}
+
 /**
  * Incident spectra I_in(λ) for eq (15), by name, each with what it is (the colour tool's help lists
  * it): the registry every interface's list of lights derives from (the panel, the catalogues'
@@ -37,9 +48,7 @@ export const NAMED_LIGHTS = {
   D93: 'CIE daylight at 9305 K (the nominal 9300 K on the current c2)',
   E: 'equal energy',
   'D65-table': "the CIE's tabulated D65 (ISO 11664-2)",
-  ...(Object.fromEntries(
-    LAMP_NAMES.map((name) => [name, name.startsWith('FL') ? 'CIE fluorescent lamp, CIE 15:2004 tables' : 'CIE LED, CIE 15:2018 tables']),
-  ) as Record<LampName, string>),
+  ...(Object.fromEntries(LAMP_NAMES.map((name) => [name, lampAbout(name)])) as Record<LampName, string>),
   Na: 'low-pressure sodium, its D lines at 588.995 and 589.592 nm, powers 2 : 1',
 } as const satisfies Readonly<Record<string, string>>;
 export type NamedIlluminant = keyof typeof NAMED_LIGHTS;

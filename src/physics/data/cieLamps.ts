@@ -2,10 +2,10 @@
  * CIE lamps: relative spectral power distributions, 380 nm to 780 nm at 5 nm (81 rows each).
  *
  * - FL1–FL12, the CIE's typical fluorescent lamps (FL1–FL6 standard, FL7–FL9 broadband, FL10–FL12
- *   three-band): CIE 15:2004 tables, "CIE 15:2004 Tables Data" (also CIE 015:2018 Table 10).
- * - LED-B1–LED-B5 (phosphor-type), LED-BH1 (hybrid), LED-RGB1 (three chips), LED-V1, LED-V2
- *   (violet-pumped): the CIE 15:2018 tables (CIE 015:2018 Colorimetry, 4th edition, Table 11 and
- *   its data, DOI 10.25039/TR.015.2018).
+ *   three-band): CIE 15:2004 tables, the CIE's "CIE 15:2004 Tables Data".
+ * - LED-B1–LED-B5 (phosphor on blue), LED-BH1 (hybrid), LED-RGB1 (three chips), LED-V1, LED-V2
+ *   (phosphor on violet): the CIE 15:2018 tables (CIE 015:2018 Colorimetry, 4th edition,
+ *   DOI 10.25039/TR.015.2018, and its data).
  *
  * Transcribed (numbers only, by a script) from the Python package colour-science 0.4.7, which
  * carries both tables with those sources: colour/colorimetry/datasets/illuminants/sds.py

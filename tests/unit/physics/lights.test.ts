@@ -28,7 +28,10 @@ const CMF_1931: Readonly<Record<number, readonly [number, number, number]>> = {
   600: [1.0622, 0.631, 0.0008],
 };
 
-/** CIE 15's published white points (x, y) of the lamps: FL1–FL12 CIE 15:2004 Table T.8.1, the LEDs CIE 015:2018 Table 11. */
+/**
+ * CIE 15's published white points (x, y), CIE 1931 2°, of the lamps: FL1–FL12 from CIE 15:2004, the
+ * LEDs from CIE 015:2018, as colour-science's chromaticity_coordinates.py carries them (to 4 decimals).
+ */
 const PUBLISHED_XY: Readonly<Record<string, readonly [number, number]>> = {
   FL1: [0.3131, 0.3371],
   FL2: [0.3721, 0.3751],
