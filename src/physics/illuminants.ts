@@ -14,6 +14,14 @@ import { type NumberDomain, ParameterError, assertInRange, isInDomain, parseDeci
 export type LampName = keyof typeof CIE_LAMPS;
 const LAMP_NAMES = Object.keys(CIE_LAMPS) as LampName[];
 
+/** The c2 correction between the nominal and the current temperature scale. */
+export const C2_CORRECTION = 1.4388 / 1.438;
+const NOMINAL_CCT: Record<'D55' | 'D65' | 'D93', number> = { D55: 5500, D65: 6500, D93: 9300 };
+
+/** What a named daylight is: its CCT on the current scale and its nominal one. */
+const daylightAbout = (name: keyof typeof NOMINAL_CCT): string =>
+  `CIE daylight at ${Math.round(NOMINAL_CCT[name] * C2_CORRECTION)} K (the nominal ${NOMINAL_CCT[name]} K on the current c2)`;
+
 /** What a lamp is, by its name's family (data/cieLamps.ts). */
 function lampAbout(name: LampName): string {
   const fl = /^FL(\d+)$/.exec(name);
@@ -43,13 +51,13 @@ function lampAbout(name: LampName): string {
  *   `line:NM`) is one line at NM nm.
  */
 export const NAMED_LIGHTS = {
-  D55: 'CIE daylight at 5503 K (the nominal 5500 K on the current c2)',
-  D65: 'CIE daylight at 6504 K (the nominal 6500 K on the current c2)',
-  D93: 'CIE daylight at 9305 K (the nominal 9300 K on the current c2)',
+  D55: daylightAbout('D55'),
+  D65: daylightAbout('D65'),
+  D93: daylightAbout('D93'),
   E: 'equal energy',
   'D65-table': "the CIE's tabulated D65 (ISO 11664-2)",
   ...(Object.fromEntries(LAMP_NAMES.map((name) => [name, lampAbout(name)])) as Record<LampName, string>),
-  Na: 'low-pressure sodium, its D lines at 588.995 and 589.592 nm, powers 2 : 1',
+  Na: `low-pressure sodium, its D lines at ${SODIUM_D_LINES.map((l) => l.nm).join(' and ')} nm, powers ${SODIUM_D_LINES.map((l) => l.power).join(' : ')}`,
 } as const satisfies Readonly<Record<string, string>>;
 export type NamedIlluminant = keyof typeof NAMED_LIGHTS;
 /** The lights by name, in the registry's order. */
@@ -64,15 +72,18 @@ export const DAYLIGHT_CCT_DOMAIN_K: NumberDomain = { min: DAYLIGHT_CCT_MIN_K, ma
  * by one (FL1, FL2, …, FL12) as its first and last, `FL1–FL12`.
  */
 export function listedNames(names: readonly string[]): string {
-  const parts = names.map((name) => /^(.*?)(\d+)$/.exec(name));
+  const numbered = names.map((name) => /^(.*?)(\d+)$/.exec(name));
+  const follows = (k: number): boolean => {
+    const [before, after] = [numbered[k - 1], numbered[k]];
+    return !!before && !!after && before[1] === after[1] && Number(after[2]) === Number(before[2]) + 1;
+  };
   const listed: string[] = [];
   for (let i = 0; i < names.length;) {
     let j = i;
-    const [, prefix, n] = parts[i] ?? [];
-    while (prefix !== undefined && parts[j + 1]?.[1] === prefix && Number(parts[j + 1]![2]) === Number(n) + j + 1 - i) j++;
-    listed.push(j - i >= 2 ? `${names[i]}–${names[j]}` : names[i]!);
-    if (j - i < 2) j = i;
-    i = j + 1;
+    while (j + 1 < names.length && follows(j + 1)) j++;
+    const run = j - i >= 2;
+    listed.push(run ? `${names[i]}–${names[j]}` : names[i]!);
+    i = run ? j + 1 : i + 1;
   }
   return listed.join(', ');
 }
@@ -121,10 +132,6 @@ export function illuminantLines(spec: IlluminantSpec): readonly SpectralLine[] |
   if (spec === 'Na') return SODIUM_D_LINES;
   return typeof spec === 'object' && 'lineNm' in spec ? [{ nm: spec.lineNm, power: 1 }] : null;
 }
-
-/** The c2 correction between the nominal and the current temperature scale. */
-export const C2_CORRECTION = 1.4388 / 1.438;
-const NOMINAL_CCT: Record<'D55' | 'D65' | 'D93', number> = { D55: 5500, D65: 6500, D93: 9300 };
 
 /** The CCT (current scale) behind a daylight illuminant, or null for the others. */
 export function daylightCctOf(spec: IlluminantSpec): number | null {
