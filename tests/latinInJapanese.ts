@@ -12,6 +12,7 @@ export const LATIN_IN_JAPANESE: ReadonlySet<string> = new Set([
   'RGB',
   'XYZ',
   'CIE',
+  'LED', // a light-emitting diode, and the CIE's LED lights by name
   'AgX', // three.js's tone mapping, by its name
   'HDR',
   'CPU',
@@ -21,6 +22,7 @@ export const LATIN_IN_JAPANESE: ReadonlySet<string> = new Set([
   'Shift', // the key's label
   'cauchy', // the URL's and attribute's keyword for a Cauchy film
   'complex', // the URL's and attribute's keyword for a complex index n,k
+  'line', // the URL's and attribute's keyword for a single spectral line, line:NM
   'TiO', // TiO₂, titanium dioxide's formula
   'SiO', // SiO₂, silica's formula
 ]);

@@ -3,7 +3,8 @@
 // (media swapped: the far wall of the bubble). Its grid: filmTableGrid.glsl; texel positions: filmTableLayout.glsl.
 // Filled by TFC_TABLE_FILL: 0 the binned integral, each texel averaged over its thickness cell so
 // fringes finer than a cell do not alias; 1 the Airy series (airySeries.glsl) at the texel's film,
-// or the bins where the series has no real path or needs too many terms. The series' C0, B, q
+// or the bins where the series has no real path or needs too many terms, and for a line source,
+// whose lines the bins sum directly (binnedIntegration.glsl), each averaged over the texel's cell. The series' C0, B, q
 // depend on the row only: uAirySeriesRows holds them per row (src/film/airySeriesRows.ts,
 // computed in float64), so a texel only sums the series.
 // A dispersive film (TFC_DISPERSIVE) is filled from the dispersive bins at the texel's film, not
@@ -68,7 +69,7 @@ void main() {
   AirySeriesTerms terms[TFC_FILM_CHANNELS];
   float pathPerNm;
   // At thickness 0 filmOptics decides (the bare interface, or the paper mode's eq 13), as in the reference.
-  if (thicknessNm > 0.0 && tfcRowSeries(texel.y, terms, pathPerNm) && tfcAirySeriesConvergesAt(terms, pathPerNm * thicknessNm)) {
+  if (uLightLineCount == 0 && thicknessNm > 0.0 && tfcRowSeries(texel.y, terms, pathPerNm) && tfcAirySeriesConvergesAt(terms, pathPerNm * thicknessNm)) {
     gl_FragColor = vec4(tfcAirySeriesSum(terms, pathPerNm * thicknessNm), 1.0);
     return;
   }

@@ -1,7 +1,9 @@
 // XYZ of the reflected light, eqs (15)-(18), by TFC_SPECTRAL_BINS equal wavelength bins over
 // TFC_LAMBDA_MIN_NM-TFC_LAMBDA_MAX_NM (LAMBDA_MIN_NM, LAMBDA_MAX_NM of the TypeScript, set by spectralBinDefines): X = sum over bins of W_bin * mean R over the bin's phase window.
-// uSpectralBins (TFC_SPECTRAL_BINS x 1, RGBA float) holds each bin's integral of I_in x̄, ȳ, z̄ / k,
-// computed once in TypeScript. Mirrors binnedXyz in src/physics/binnedIntegration.ts.
+// uSpectralBins (TFC_SPECTRAL_BINS x 2, RGBA float) holds in row 0 each bin's integral of I_in x̄, ȳ, z̄ / k,
+// in row 1 its light's mean σ = 1/λ less the bin's middle σ and the half-width √3 sd in σ of the
+// box with its variance (SpectralBins.windows): a film's phase 2π Re Δ σ is linear in σ, so that box
+// is the bin's phase window. Computed once in TypeScript. Mirrors binnedXyz in src/physics/binnedIntegration.ts.
 #ifndef THIN_FILM_SPECTRAL
 #define THIN_FILM_SPECTRAL
 #include "filmReflectance.glsl"
@@ -19,6 +21,16 @@
 #endif
 
 uniform sampler2D uSpectralBins;
+
+// A line source (src/physics/lightLines.ts): uLightLineCount lines (0: the light has a spectrum and
+// the bins integrate it), each uLightLines[i] = (p x̄, ȳ, z̄(λ)/k, λ in nm). The lines are bins of no
+// width [λ, λ] (binsXyz in the TypeScript): R at each line, its phase window only the extra
+// half-width, times its weight; the bins' weights are then 0 and not read.
+#ifndef TFC_LIGHT_LINES_MAX
+#define TFC_LIGHT_LINES_MAX 2
+#endif
+uniform vec4 uLightLines[TFC_LIGHT_LINES_MAX];
+uniform int uLightLineCount;
 
 // R of one bin (binReflectance in the TypeScript): the closed-form mean over its phase window
 // [phase - halfWidth, phase + halfWidth] of the real phase, an absorbing film's attenuation
@@ -39,16 +51,25 @@ float tfcBinReflectance(FilmOptics o, float centerNm, float phase, float halfWid
 // extraHalfWidthPerInvNm widens each bin's phase window (in quadrature) by that × (nm / λ):
 // the table pass averages over a cell's thickness range with it.
 vec3 tfcBinnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
+  if (uLightLineCount > 0) {
+    vec3 lines = vec3(0.0);
+    for (int i = 0; i < TFC_LIGHT_LINES_MAX && i < uLightLineCount; i++) {
+      float l = uLightLines[i].w;
+      lines += tfcBinReflectance(o, l, 6.283185307179586 * o.opticalPathNm.x / l, extraHalfWidthPerInvNm / l) * uLightLines[i].xyz;
+    }
+    return lines;
+  }
   const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
-  vec2 path = o.opticalPathNm;
+  float path = o.opticalPathNm.x;
   vec3 xyz = vec3(0.0);
   for (int b = TFC_SPECTRAL_BIN_FIRST; b < TFC_SPECTRAL_BIN_END; b++) {
     float l1 = float(TFC_LAMBDA_MIN_NM) + float(b) * width;
     float l2 = l1 + width;
-    float center = 3.141592653589793 * path.x * (1.0 / l1 + 1.0 / l2);
-    float binHalf = 3.141592653589793 * path.x * (1.0 / l1 - 1.0 / l2);
-    float extra = 2.0 * extraHalfWidthPerInvNm / (l1 + l2);
-    xyz += tfcBinReflectance(o, 0.5 * (l1 + l2), center, length(vec2(binHalf, extra))) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
+    vec2 spread = texelFetch(uSpectralBins, ivec2(b, 1), 0).xy;
+    float sigma = 0.5 * (1.0 / l1 + 1.0 / l2) + spread.x;
+    float center = 6.283185307179586 * path * sigma;
+    float binHalf = 6.283185307179586 * path * spread.y;
+    xyz += tfcBinReflectance(o, 1.0 / sigma, center, length(vec2(binHalf, extraHalfWidthPerInvNm * sigma))) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
   }
   return xyz;
 }
@@ -122,12 +143,19 @@ DispersiveBin tfcDispersiveBin(int y, int b, float thicknessNm, bool fromInside,
 #endif
 
 // The bins of a film whose media depend on λ (mirrors dispersiveBinnedXyz in
-// src/physics/binnedIntegration.ts): each bin's Fresnel terms at ñ of its centre, its phase window
-// from the optical path at its two ends, [2π Re Δ(λ2)/λ2, 2π Re Δ(λ1)/λ1]. `row`: the table row of
+// src/physics/binnedIntegration.ts): each bin's Fresnel terms at ñ of its centre, its phase 2π Re Δ(λ)/λ
+// from the optical path at its two ends, linear in σ between them. `row`: the table row of
 // TFC_DISPERSIVE_ROWS (unused per fragment).
 vec3 tfcDispersiveBinnedXyz(bool fromInside, float thicknessNm, float cosIncidence, int row) {
   const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
   vec3 xyz = vec3(0.0);
+  // A line source's lines: the media at each line's λ from their knots (the rows hold bins only).
+  for (int i = 0; i < TFC_LIGHT_LINES_MAX && i < uLightLineCount; i++) {
+    float l = uLightLines[i].w;
+    float path = tfcBinPathPerNm(l, fromInside, cosIncidence) * thicknessNm;
+    xyz += tfcBinReflectance(tfcBinOptics(l, thicknessNm, fromInside, cosIncidence), l, 6.283185307179586 * path / l, 0.0) * uLightLines[i].xyz;
+  }
+  if (uLightLineCount > 0) return xyz;
   for (int b = TFC_SPECTRAL_BIN_FIRST; b < TFC_SPECTRAL_BIN_END; b++) {
     float l1 = float(TFC_LAMBDA_MIN_NM) + float(b) * width;
     float l2 = l1 + width;
@@ -135,7 +163,10 @@ vec3 tfcDispersiveBinnedXyz(bool fromInside, float thicknessNm, float cosInciden
     DispersiveBin d = tfcDispersiveBin(row, b, thicknessNm, fromInside, cosIncidence);
     float low = d.pathPerNmLow * thicknessNm / l1;
     float high = d.pathPerNmHigh * thicknessNm / l2;
-    xyz += tfcBinReflectance(d.optics, center, 3.141592653589793 * (low + high), 3.141592653589793 * (low - high)) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
+    // φ at the two ends, linear in σ between them, over the light's window in σ (tfcBinnedXyz's).
+    float slope = 6.283185307179586 * (low - high) / (1.0 / l1 - 1.0 / l2);
+    vec2 spread = texelFetch(uSpectralBins, ivec2(b, 1), 0).xy;
+    xyz += tfcBinReflectance(d.optics, center, 3.141592653589793 * (low + high) + slope * spread.x, abs(slope) * spread.y) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
   }
   return xyz;
 }

@@ -8,15 +8,20 @@ import { CAUCHY_INDEX, COMPLEX_INDEX, CONSTANT_INDEX, TEXT_KINDS, mediumKind, sh
 import { type Medium, type MediumRole, mediumExpected, mediumText, readMedium } from '../physics/medium.ts';
 import { NAMED_MEDIA } from '../physics/namedMedia.ts';
 import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
-import { DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS, daylightCctOf } from '../physics/illuminants.ts';
+import { DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS, daylightCctOf, illuminantLines } from '../physics/illuminants.ts';
+import { LINE_DOMAIN_NM, SODIUM_D_LINES } from '../physics/lightLines.ts';
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
 import { AUTO, type Auto, PANEL_FOLDERS, type PanelFolder, type ParameterRow, choiceKey, labelKey } from '../settings/parameterRow.ts';
 import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
 
 /** The panel's choice for an illuminant given by its CCT. */
 const DAYLIGHT_CCT = 'daylight';
+/** The panel's choice for a single line given by its wavelength. */
+const SINGLE_LINE = 'line';
 /** The CCT slider's step. */
 const CCT_STEP_K = 10;
+/** The line slider's step. */
+const LINE_STEP_NM = 0.1;
 const INDEX_STEP = 0.01;
 /** The Cauchy text a constant or a material starts with: a glass-like film (n 1.49 at 400 nm, 1.46 at 700 nm). */
 const CAUCHY_START = '1.45,6000';
@@ -122,14 +127,24 @@ function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<
       return {};
     case 'illuminant': {
       const spec = state[row.key] as IlluminantSpec;
+      const lineNm = illuminantLines(spec)?.[0]?.nm;
       const pair = {
-        name: typeof spec === 'object' ? DAYLIGHT_CCT : spec,
-        // A named daylight starts the slider at its own CCT; E and the D65 table at D65's.
+        name: typeof spec !== 'object' ? spec : 'lineNm' in spec ? SINGLE_LINE : DAYLIGHT_CCT,
+        // A named daylight starts the slider at its own CCT; the other lights at D65's.
         cct: Math.round(daylightCctOf(spec) ?? daylightCctOf('D65')!),
+        // A line source starts the line's slider at its (first) line; the other lights at sodium's D2.
+        lineNm: lineNm ?? SODIUM_D_LINES[0]!.nm,
       };
-      folder.add(pair, 'name', options(cat, row.key, [...NAMED_ILLUMINANTS, DAYLIGHT_CCT])).name(label);
+      folder.add(pair, 'name', options(cat, row.key, [...NAMED_ILLUMINANTS, DAYLIGHT_CCT, SINGLE_LINE])).name(label);
       folder.add(pair, 'cct', DAYLIGHT_CCT_DOMAIN_K.min, DAYLIGHT_CCT_DOMAIN_K.max, CCT_STEP_K).name(cat['panel.daylightCct']);
-      return { join: () => ({ [row.key]: pair.name === DAYLIGHT_CCT ? { daylightCct: pair.cct } : (pair.name as IlluminantSpec) }) };
+      folder.add(pair, 'lineNm', LINE_DOMAIN_NM.min, LINE_DOMAIN_NM.max, LINE_STEP_NM).name(cat['panel.lineNm']);
+      const chosen = (): IlluminantSpec =>
+        pair.name === DAYLIGHT_CCT
+          ? { daylightCct: pair.cct }
+          : pair.name === SINGLE_LINE
+            ? { lineNm: pair.lineNm }
+            : (pair.name as IlluminantSpec);
+      return { join: () => ({ [row.key]: chosen() }) };
     }
     case 'filmIndex':
       return addMediumControls(folder, row, state[row.key] as Medium, cat, FILM_INDEX_KINDS, 'film');

@@ -1,10 +1,20 @@
 import { GAMUT_MAPPINGS } from '../physics/colorConversions.ts';
+import { DAYLIGHT_CCT_DOMAIN_K, LIGHT_ABOUT, NAMED_ILLUMINANTS } from '../physics/illuminants.ts';
+import { LINE_DOMAIN_NM, LINE_PREFIX } from '../physics/lightLines.ts';
 import { MEDIUM_NAMES, namedRangeNm, namedSource } from '../physics/namedMedia.ts';
 import { CASE_FIELDS, CASE_FLAGS, MAX_WAVELENGTHS } from './colorCase.ts';
 import { CELL_HEIGHT_2D_PX, MAX_CHART_COLUMNS, MAX_CHART_PIXELS, STRIP_HEIGHT_PX } from './chartLayout.ts';
 import { MAX_CASES, MAX_CASES_NESTING_DEPTH } from './parseJsonArray.ts';
 import { DESCRIPTION_COLUMN, optionLines } from './optionLines.ts';
 import { MAX_TABLE_ROWS } from './tableValues.ts';
+
+/** One line per named light and one for `line:NM`: its name and what it is. */
+const lightLines = (): string =>
+  [
+    ...NAMED_ILLUMINANTS.map((name) => `  ${name}`.padEnd(DESCRIPTION_COLUMN) + LIGHT_ABOUT[name]),
+    `  ${LINE_PREFIX}NM`.padEnd(DESCRIPTION_COLUMN) + `one line at NM nm, in [${LINE_DOMAIN_NM.min}, ${LINE_DOMAIN_NM.max}]`,
+    `  K`.padEnd(DESCRIPTION_COLUMN) + `CIE daylight at a CCT of K kelvin, in [${DAYLIGHT_CCT_DOMAIN_K.min}, ${DAYLIGHT_CCT_DOMAIN_K.max}]`,
+  ].join('\n');
 
 /** One line per named medium: its name, what it is and whose values, and where the source gives them. */
 const mediaLines = (): string =>
@@ -24,13 +34,16 @@ ${optionLines(CASE_FLAGS)}
                         thickness in a table)
   --gamut G             ${GAMUT_MAPPINGS.join(' | ')}: how out-of-gamut colours become 8-bit codes (clip)
 
+Lights (for --illuminant; a line source's colour is summed over its lines):
+${lightLines()}
+
 Named media (for --n-film, --n-inside and a layer's index; --wavelengths within each one's range):
 ${mediaLines()}
 
 Many cases:
   --cases FILE.json     a JSON array (at most ${MAX_CASES}) of objects with any of the fields
                         ${CASE_FIELDS.join(', ')};
-                        illuminant is a name or { "daylightCct": K }; wavelengthsNm an array
+                        illuminant is a name, "line:NM" or { "daylightCct": K }; wavelengthsNm an array
                         (at most ${MAX_WAVELENGTHS}); layers [{ "n", "thicknessNm" }, …] outside in,
                         in place of nFilm and thicknessNm, each n as nFilm, each thicknessNm a
                         number; id defaults to the case's index.

@@ -16,7 +16,7 @@ import {
   spectralTransformTexture,
   spectralTransformUniforms,
 } from './spectralTransformTexture.ts';
-import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture, spectralBinsUniforms } from './spectralBinsTexture.ts';
+import { bindSpectralBins, releaseSpectralBinsTexture, spectralBinDefines, spectralBinsUniforms } from './spectralBinsTexture.ts';
 import { filmTableGridUniforms } from './filmTableGrid.ts';
 import { type StackedSettings, releaseFilmStackTexture } from './filmStack.ts';
 
@@ -61,7 +61,7 @@ function updateFilmColorTextures(
 ): void {
   const u = m.uniforms;
   const bins = filmSpectralBins(s, q, q.exactSpectralBins);
-  if (methodReads(s.mode, 'spectralBins')) u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, bins, m);
+  if (methodReads(s.mode, 'spectralBins')) bindSpectralBins(u, s.illuminant, s.normalization, bins, m);
   else {
     releaseSpectralBinsTexture(m);
     u.uSpectralBins!.value = null;

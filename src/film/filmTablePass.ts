@@ -13,7 +13,7 @@ import { dispersiveRowsOf, dispersiveRowsReady, dispersiveRowsWhenReady } from '
 import { fillGpu, updateFilmMediaUniforms, updateFilmStackUniforms } from './filmFillGpu.ts';
 import { type FilmTableGrid, setFilmTableGridUniforms } from './filmTableGrid.ts';
 import { type StackedSettings, releaseFilmStackTexture } from './filmStack.ts';
-import { releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
+import { bindSpectralBins, releaseSpectralBinsTexture, spectralBinsTexture } from './spectralBinsTexture.ts';
 import {
   releaseSpectralTransformTexture,
   spectralTransformReady,
@@ -120,7 +120,7 @@ export class FilmTablePass {
     if (target.width !== grid.width || target.height !== 2 * grid.rows) target.setSize(grid.width, 2 * grid.rows);
     const material = this.programs.material(s);
     const u = material.uniforms;
-    u.uSpectralBins!.value = spectralBinsTexture(s.illuminant, s.normalization, this.programs.bins(s), this);
+    bindSpectralBins(u, s.illuminant, s.normalization, this.programs.bins(s), this);
     u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
     // A stack of films is filled by its recursion per bin; a dispersive film is filled from the bins, with their terms per row (shaders/film/filmTable.glsl).
     this.updateRows(s, grid);

@@ -1,5 +1,6 @@
-import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
+import { DataTexture, FloatType, NearestFilter, RGBAFormat, type ShaderMaterial, Vector4 } from 'three';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
+import { MAX_LIGHT_LINES } from '../physics/lightLines.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { significantBins, spectralBins } from '../physics/binnedIntegration.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type Normalization, spectralWeights } from '../physics/spectralWeights.ts';
@@ -10,24 +11,50 @@ const shared = new SharedTextures((key) => {
     normalization: Normalization;
     count: number;
   };
-  const { weights } = spectralBins(spectralWeights(illuminant, normalization), count);
-  const data = new Float32Array(4 * count);
-  for (let b = 0; b < count; b++) data.set([weights[3 * b]!, weights[3 * b + 1]!, weights[3 * b + 2]!, 1], 4 * b);
-  const texture = new DataTexture(data, count, 1, RGBAFormat, FloatType);
+  const { weights, windows } = spectralBins(spectralWeights(illuminant, normalization), count);
+  // Row 0: each bin's weights; row 1: its light's σ̄ less the bin's middle σ, and half-width in σ.
+  const data = new Float32Array(4 * count * 2);
+  for (let b = 0; b < count; b++) {
+    data.set([weights[3 * b]!, weights[3 * b + 1]!, weights[3 * b + 2]!, 1], 4 * b);
+    data.set([windows[2 * b]!, windows[2 * b + 1]!, 0, 0], 4 * (count + b));
+  }
+  const texture = new DataTexture(data, count, 2, RGBAFormat, FloatType);
   texture.minFilter = texture.magFilter = NearestFilter;
   texture.needsUpdate = true;
   return texture;
 });
 
 /**
- * The bin weights ∫_bin I_in x̄, ȳ, z̄ dλ / k as a `count` × 1 float texture, from the reference
+ * The bin weights ∫_bin I_in x̄, ȳ, z̄ dλ / k and each bin's window (SpectralBins.windows) as a
+ * `count` × 2 float texture, from the reference
  * (one source of truth), for `holder`; shared by the holders of the same weights (SharedTextures).
  */
 export const spectralBinsTexture = (illuminant: IlluminantSpec, normalization: Normalization, count: number, holder: object): DataTexture =>
   shared.hold(JSON.stringify({ illuminant, normalization, count }), holder);
 
-/** The uniform shaders/physics/binnedIntegration.glsl declares for the bin weights. */
-export const spectralBinsUniforms = () => ({ uSpectralBins: { value: null as DataTexture | null } });
+/** The uniforms shaders/physics/binnedIntegration.glsl declares for the bin weights and a line source's lines. */
+export const spectralBinsUniforms = () => ({
+  uSpectralBins: { value: null as DataTexture | null },
+  uLightLines: { value: Array.from({ length: MAX_LIGHT_LINES }, () => new Vector4()) },
+  uLightLineCount: { value: 0 },
+});
+
+/**
+ * Points `u` (spectralBinsUniforms) at the light's bin weights, held for `holder`, and at its lines
+ * (none for a light with a spectrum): each line's weights p x̄, ȳ, z̄(λ)/k and λ, from the reference.
+ */
+export function bindSpectralBins(
+  u: ShaderMaterial['uniforms'],
+  illuminant: IlluminantSpec,
+  normalization: Normalization,
+  count: number,
+  holder: object,
+): void {
+  u.uSpectralBins!.value = spectralBinsTexture(illuminant, normalization, count, holder);
+  const lines = spectralWeights(illuminant, normalization).lines ?? [];
+  lines.forEach((l, i) => (u.uLightLines!.value as Vector4[])[i]!.set(l.x, l.y, l.z, l.nm));
+  u.uLightLineCount!.value = lines.length;
+}
 
 /** `holder` needs no spectral bins texture any more. */
 export const releaseSpectralBinsTexture = (holder: object): void => shared.release(holder);
@@ -54,6 +81,7 @@ export function spectralBinDefines(count: number, tailTolerance: number): Record
     TFC_LAMBDA_MAX_NM: LAMBDA_MAX_NM,
     TFC_SPECTRAL_BIN_FIRST: Math.min(...ranges.map((r) => r.first)),
     TFC_SPECTRAL_BIN_END: Math.max(...ranges.map((r) => r.end)),
+    TFC_LIGHT_LINES_MAX: MAX_LIGHT_LINES,
   };
   definesCache.set(key, defines);
   return defines;

@@ -136,7 +136,8 @@ export function seriesXyz(terms: readonly AirySeriesTerms[], x: number, t: Spect
 /**
  * The `fourier` method (shaders/film/filmColor.glsl, mode 2): the series where it has a real optical
  * path and converges within AIRY_SERIES_MAX_ORDERS terms, else the binned integral (evanescent
- * films; high-finesse thin films near grazing incidence).
+ * films; high-finesse thin films near grazing incidence). A line source's transform never decays,
+ * so the series has no end there: its lines are summed directly (the bins' lines).
  */
 export const fourierXyz = (optics: FilmOptics, t: SpectralTransform, bins: SpectralBins): Xyz =>
-  optics.opticalPathNm.im === 0 && airySeriesConverges(optics, t) ? airySeriesXyz(optics, t) : binnedXyz(optics, bins);
+  !bins.lines && optics.opticalPathNm.im === 0 && airySeriesConverges(optics, t) ? airySeriesXyz(optics, t) : binnedXyz(optics, bins);

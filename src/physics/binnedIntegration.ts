@@ -11,7 +11,7 @@ import {
 import { type Medium, isDispersiveMedium, mediumIndexAt, mediumStackAt, transparentIndexAt } from './medium.ts';
 import { cosDeg, refractedCos } from './snell.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM } from './spectralConventions.ts';
-import type { SpectralWeights, Xyz } from './spectralWeights.ts';
+import type { SpectralWeights, WeightedLine, Xyz } from './spectralWeights.ts';
 
 /**
  * The shader's integration (mirrored by `shaders/physics/binnedIntegration.glsl`): `count` equal
@@ -19,6 +19,12 @@ import type { SpectralWeights, Xyz } from './spectralWeights.ts';
  * piecewise-linear 1 nm weights), so X = Σ_bins W_bin · R̄_bin with R̄_bin the closed-form mean of
  * R over the bin's phase window (`meanChannelReflectance`). Fringes narrower than a bin average
  * out instead of aliasing. `count` must divide 450 so bins end on 1 nm knots.
+ *
+ * The phase φ = 2πΔσ is linear in the wavenumber σ = 1/λ, so a film of constant path sees, over a
+ * bin, the light's distribution of σ there. Each bin's window is the box with that distribution's
+ * mean σ̄ and variance (half-width √3 sd): a lamp's table puts most of a bin's light at one edge
+ * (a mercury line tabulated in one 5 nm row), where a window over the whole bin would weigh every
+ * phase alike (docs/physics.md#lights).
  */
 export interface SpectralBins {
   readonly count: number;
@@ -27,6 +33,14 @@ export interface SpectralBins {
   /** The bins integrated: first ≤ b < end (all of them unless `significantBins` trimmed the tails). */
   readonly first: number;
   readonly end: number;
+  /**
+   * Bin i's distribution of σ = 1/λ under the light (I_in (x̄ + ȳ + z̄) / k): at 2i its mean σ̄ less
+   * the bin's middle σ, (1/λ1 + 1/λ2)/2, and at 2i + 1 the half-width √3 sd of the box with its
+   * variance (that of a flat distribution in σ over the bin where the bin has no light).
+   */
+  readonly windows: Float64Array;
+  /** A line source's lines (spectralWeights): integrated as bins of no width, R at each line; the weights above are then 0. */
+  readonly lines?: readonly WeightedLine[];
 }
 
 /** The centre in nm of bin `b` of `count` equal bins over the band. */
@@ -44,7 +58,32 @@ export function spectralBins(w: SpectralWeights, count: number): SpectralBins {
       });
     }
   }
-  return { count, weights, first: 0, end: count };
+  return { count, weights, first: 0, end: count, windows: binWindows(w, count), ...(w.lines && { lines: w.lines }) };
+}
+
+/** Sub-steps per nm of the moments' midpoint rule: w is linear and 1/λ smooth within each 1 nm, so the rule is exact to ~1e-10. */
+const MOMENT_STEPS_PER_NM = 8;
+
+/** SpectralBins.windows: each bin's σ̄ − σ_middle and √3 sd of σ, by the midpoint rule on the 1 nm weights. */
+function binWindows(w: SpectralWeights, count: number): Float64Array {
+  const perBin = LAMBDA_SPAN_NM / count;
+  const windows = new Float64Array(2 * count);
+  for (let b = 0; b < count; b++) {
+    const [l1, l2] = [LAMBDA_MIN_NM + b * perBin, LAMBDA_MIN_NM + (b + 1) * perBin];
+    const middle = (1 / l1 + 1 / l2) / 2;
+    let [m0, m1, m2] = [0, 0, 0];
+    for (let j = 0; j < perBin * MOMENT_STEPS_PER_NM; j++) {
+      const u = b * perBin + (j + 0.5) / MOMENT_STEPS_PER_NM;
+      const [i, f] = [Math.floor(u), u - Math.floor(u)];
+      const v = [w.x, w.y, w.z].reduce((sum, t) => sum + (t[i] as number) * (1 - f) + (t[i + 1] as number) * f, 0);
+      const offset = 1 / (LAMBDA_MIN_NM + u) - middle;
+      [m0, m1, m2] = [m0 + v, m1 + v * offset, m2 + v * offset * offset];
+    }
+    const mean = m0 > 0 ? m1 / m0 : 0;
+    windows[2 * b] = mean;
+    windows[2 * b + 1] = m0 > 0 ? Math.sqrt(3 * Math.max(0, m2 / m0 - mean * mean)) : (1 / l1 - 1 / l2) / 2;
+  }
+  return windows;
 }
 
 /**
@@ -81,13 +120,20 @@ export function significantBins(bins: SpectralBins, tolerance: number): Spectral
   return { ...bins, first, end };
 }
 
-/** What one bin needs: the optics at its centre, and the real optical path at its two ends. */
-interface BinFilm {
+/** One bin as a film's window sees it: its ends in nm, and its light's σ̄ and half-width √3 sd in σ (SpectralBins.windows). */
+interface BinSpan {
+  readonly l1: number;
+  readonly l2: number;
+  readonly sigma: number;
+  readonly sigmaHalf: number;
+}
+
+/** What one bin needs: the optics and λ its absorption is taken at, and its phase window [center − half, center + half]. */
+interface BinWindow {
   readonly optics: FilmOptics;
-  readonly pathLowNm: number;
-  readonly pathHighNm: number;
-  /** The extra phase half-width at the bin's centre (a table cell's thickness range), radians. */
-  readonly extraHalfWidth: number;
+  readonly centerNm: number;
+  readonly phaseCenter: number;
+  readonly halfWidth: number;
 }
 
 /**
@@ -112,34 +158,46 @@ export function binReflectance(optics: FilmOptics, centerNm: number, phaseCenter
   return r / optics.channels.length;
 }
 
-/** X = Σ W_bin R̄_bin (binReflectance), each bin's phase window widened in quadrature by its extra half-width. */
-function binsXyz(bins: SpectralBins, binFilm: (l1: number, l2: number) => BinFilm): Xyz {
+/**
+ * X = Σ W_bin R̄_bin (binReflectance) over each bin's window. A line source's lines are bins of no
+ * width [λ_l, λ_l], σ̄ = 1/λ_l and no spread: R at the line (docs/physics.md#lights).
+ */
+function binsXyz(bins: SpectralBins, windowOf: (span: BinSpan) => BinWindow): Xyz {
   const width = LAMBDA_SPAN_NM / bins.count;
+  const lines = bins.lines;
   const xyz = [0, 0, 0];
-  for (let b = bins.first; b < bins.end; b++) {
-    const l1 = LAMBDA_MIN_NM + b * width;
-    const l2 = l1 + width;
-    const { optics, pathLowNm, pathHighNm, extraHalfWidth } = binFilm(l1, l2);
-    const center = Math.PI * (pathLowNm / l1 + pathHighNm / l2);
-    const binHalf = Math.PI * (pathLowNm / l1 - pathHighNm / l2);
-    const r = binReflectance(optics, (l1 + l2) / 2, center, Math.hypot(binHalf, extraHalfWidth));
-    for (let k = 0; k < 3; k++) xyz[k] = (xyz[k] as number) + r * (bins.weights[3 * b + k] as number);
+  for (let i = 0, n = lines ? lines.length : bins.end - bins.first; i < n; i++) {
+    const line = lines?.[i];
+    const b = bins.first + i;
+    const l1 = line ? line.nm : LAMBDA_MIN_NM + b * width;
+    const l2 = line ? line.nm : l1 + width;
+    const sigma = (1 / l1 + 1 / l2) / 2 + (line ? 0 : (bins.windows[2 * b] as number));
+    const weights = line ? [line.x, line.y, line.z] : [0, 1, 2].map((k) => bins.weights[3 * b + k] as number);
+    const { optics, centerNm, phaseCenter, halfWidth } = windowOf({
+      l1,
+      l2,
+      sigma,
+      sigmaHalf: line ? 0 : (bins.windows[2 * b + 1] as number),
+    });
+    const r = binReflectance(optics, centerNm, phaseCenter, halfWidth);
+    for (let k = 0; k < 3; k++) xyz[k] = (xyz[k] as number) + r * (weights[k] as number);
   }
   return [xyz[0] as number, xyz[1] as number, xyz[2] as number];
 }
 
 /**
- * XYZ by bins, as the shader computes it. `extraHalfWidthPerInvNm` widens every bin's phase
- * window by that many radians × (nm/λ), in quadrature (variances of box filters add): the table
- * pass uses it to average over a table cell's thickness range, 2π · 2 n_b cos θ_r · (δd/2) / λ.
+ * XYZ by bins, as the shader computes it: each bin's window φ = 2π Re Δ σ over its light's σ̄ ± √3 sd.
+ * `extraHalfWidthPerInvNm` widens every window by that many radians × (nm/λ) at σ̄, in quadrature
+ * (variances of box filters add): the table pass uses it to average over a table cell's thickness
+ * range, 2π · 2 n_b cos θ_r · (δd/2) / λ.
  */
 export function binnedXyz(optics: FilmOptics, bins: SpectralBins, extraHalfWidthPerInvNm = 0): Xyz {
   const path = optics.opticalPathNm.re;
-  return binsXyz(bins, (l1, l2) => ({
+  return binsXyz(bins, ({ sigma, sigmaHalf }) => ({
     optics,
-    pathLowNm: path,
-    pathHighNm: path,
-    extraHalfWidth: (2 * extraHalfWidthPerInvNm) / (l1 + l2),
+    centerNm: 1 / sigma,
+    phaseCenter: 2 * Math.PI * path * sigma,
+    halfWidth: Math.hypot(2 * Math.PI * path * sigmaHalf, extraHalfWidthPerInvNm * sigma),
   }));
 }
 
@@ -152,16 +210,22 @@ export function pathPerNmAt(stack: Omit<FilmStack<Medium>, 'thicknessNm'>, lambd
 
 /**
  * XYZ by bins of a film whose media depend on λ (shaders/physics/binnedIntegration.glsl, dispersiveBinnedXyz):
- * each bin's Fresnel terms at ñ of its centre, its phase window from the optical path at its two
- * ends, 2π Re Δ(λ)/λ with Δ(λ) = 2 ñ_b(λ) d cos θ_r(λ), the film's absorption as binReflectance folds it.
+ * each bin's Fresnel terms at ñ of its centre, its phase 2π Re Δ(λ)/λ with Δ(λ) = 2 ñ_b(λ) d cos θ_r(λ)
+ * taken at its two ends and as linear in σ between them, over its light's window in σ (as
+ * binnedXyz's), the film's absorption as binReflectance folds it.
  */
 export function dispersiveBinnedXyz(stack: FilmStack<Medium>, polarization: Polarization, bins: SpectralBins): Xyz {
-  return binsXyz(bins, (l1, l2) => ({
-    optics: filmOptics(mediumStackAt(stack, (l1 + l2) / 2), polarization),
-    pathLowNm: pathPerNmAt(stack, l1) * stack.thicknessNm,
-    pathHighNm: pathPerNmAt(stack, l2) * stack.thicknessNm,
-    extraHalfWidth: 0,
-  }));
+  return binsXyz(bins, ({ l1, l2, sigma, sigmaHalf }) => {
+    // φ = 2π Re Δ(λ) σ at the two ends, taken as linear in σ between them.
+    const [low, high] = [(pathPerNmAt(stack, l1) * stack.thicknessNm) / l1, (pathPerNmAt(stack, l2) * stack.thicknessNm) / l2];
+    const slope = l1 === l2 ? 0 : (2 * Math.PI * (low - high)) / (1 / l1 - 1 / l2);
+    return {
+      optics: filmOptics(mediumStackAt(stack, (l1 + l2) / 2), polarization),
+      centerNm: (l1 + l2) / 2,
+      phaseCenter: Math.PI * (low + high) + slope * (sigma - (1 / l1 + 1 / l2) / 2),
+      halfWidth: Math.abs(slope) * sigmaHalf,
+    };
+  });
 }
 
 /** Whether a stack's bins need ñ per bin (a medium that depends on λ), not one set of optics. */

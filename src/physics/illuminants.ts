@@ -6,21 +6,42 @@ import {
   CIE_DAYLIGHT_START_NM,
   CIE_DAYLIGHT_STEP_NM,
 } from './data/cieDaylightComponents.ts';
+import { CIE_LAMPS, CIE_LAMPS_START_NM, CIE_LAMPS_STEP_NM } from './data/cieLamps.ts';
+import { SODIUM_D_LINES } from './lightLines.ts';
 import { ParameterError, assertInRange } from '../input/validate.ts';
-import { DAYLIGHT_CCT_MAX_K, DAYLIGHT_CCT_MIN_K, ILLUMINANT_EXPECTED, type IlluminantSpec } from './illuminantSpec.ts';
+import {
+  DAYLIGHT_CCT_MAX_K,
+  DAYLIGHT_CCT_MIN_K,
+  type IlluminantSpec,
+  LAMP_NAMES,
+  type LampName,
+  type NamedIlluminant,
+  illuminantLines,
+} from './illuminantSpec.ts';
 
-/** Incident spectra I_in(λ) for eq (15), of the illuminants illuminantSpec.ts names and checks. */
+/**
+ * Incident spectra I_in(λ) for eq (15), of the lights illuminantSpec.ts names and checks.
+ * **CCT convention** of the daylights: CIE's D65 is 6504 K because the nominal temperatures
+ * predate the 1968 change of the radiation constant c2 from 1.4380e-2 to 1.4388e-2 m·K; the same
+ * factor 1.4388/1.4380 applies to every nominal temperature (5500 → 5503 K, 6500 → 6504 K,
+ * 9300 → 9305 K). The lamps are the CIE's tables every 5 nm over 380–780 nm (data/cieLamps.ts),
+ * linear between rows and held at the end rows' values outside them.
+ */
 export {
   DAYLIGHT_CCT_DOMAIN_K,
   DAYLIGHT_CCT_MAX_K,
   DAYLIGHT_CCT_MIN_K,
   ILLUMINANT_EXPECTED,
   type IlluminantSpec,
+  LAMP_NAMES,
+  type LampName,
   NAMED_ILLUMINANTS,
   type NamedIlluminant,
   illuminantFromJson,
   illuminantKey,
+  illuminantLines,
   illuminantText,
+  listedNames,
   parseIlluminant,
 } from './illuminantSpec.ts';
 
@@ -28,9 +49,34 @@ export {
 export const C2_CORRECTION = 1.4388 / 1.438;
 const NOMINAL_CCT: Record<'D55' | 'D65' | 'D93', number> = { D55: 5500, D65: 6500, D93: 9300 };
 
-/** The CCT (current scale) behind a daylight illuminant, or null for E and the D65 table. */
+/** What a named daylight is: its CCT on the current scale and its nominal one. */
+const daylightAbout = (name: keyof typeof NOMINAL_CCT): string =>
+  `CIE daylight at ${Math.round(NOMINAL_CCT[name] * C2_CORRECTION)} K (the nominal ${NOMINAL_CCT[name]} K on the current c2)`;
+
+/** What a lamp is, by its name's family (data/cieLamps.ts). */
+function lampAbout(name: LampName): string {
+  const fl = /^FL(\d+)$/.exec(name);
+  if (fl) {
+    const n = Number(fl[1]);
+    return `CIE fluorescent lamp, ${n <= 6 ? 'standard' : n <= 9 ? 'broadband' : 'three-band'} (CIE 15:2004 tables)`;
+  }
+  const kind = { B: 'phosphor on blue', BH: 'phosphor on blue with red', RGB: 'red, green and blue chips', V: 'phosphor on violet' };
+  return `CIE LED, ${kind[/^LED-([A-Z]+)/.exec(name)![1] as keyof typeof kind]} (CIE 015:2018 tables)`;
+}
+
+/** What each light is, by name (the colour tool's help lists it); its names are illuminantSpec.ts's. */
+export const LIGHT_ABOUT = {
+  D55: daylightAbout('D55'),
+  D65: daylightAbout('D65'),
+  D93: daylightAbout('D93'),
+  E: 'equal energy',
+  'D65-table': "the CIE's tabulated D65 (ISO 11664-2)",
+  ...(Object.fromEntries(LAMP_NAMES.map((name) => [name, lampAbout(name)])) as Record<LampName, string>),
+  Na: `low-pressure sodium, its D lines at ${SODIUM_D_LINES.map((l) => l.nm).join(' and ')} nm, powers ${SODIUM_D_LINES.map((l) => l.power).join(' : ')}`,
+} as const satisfies Readonly<Record<NamedIlluminant, string>>;
+/** The CCT (current scale) behind a daylight illuminant, or null for the others. */
 export function daylightCctOf(spec: IlluminantSpec): number | null {
-  if (typeof spec === 'object') return spec.daylightCct;
+  if (typeof spec === 'object') return 'daylightCct' in spec ? spec.daylightCct : null;
   return spec in NOMINAL_CCT ? NOMINAL_CCT[spec as keyof typeof NOMINAL_CCT] * C2_CORRECTION : null;
 }
 
@@ -64,15 +110,40 @@ export function interpolateTable(table: ArrayLike<number>, startNm: number, step
   return (table[i] as number) * (1 - f) + (table[i + 1] as number) * f;
 }
 
-/** I_in(λ) for an illuminant, in the CIE's relative units (100 at 560 nm for daylight). Domain 300–830 nm. */
+/** A table every `stepNm` from `startNm`, linear between rows and held at its end rows' values outside them. */
+function heldTable(table: readonly number[], startNm: number, stepNm: number): (lambdaNm: number) => number {
+  const endNm = startNm + (table.length - 1) * stepNm;
+  return (l) => interpolateTable(table, startNm, stepNm, Math.min(Math.max(l, startNm), endNm));
+}
+
+const isLamp = (spec: IlluminantSpec): spec is LampName => typeof spec === 'string' && Object.hasOwn(CIE_LAMPS, spec);
+
+/**
+ * I_in(λ) for an illuminant with a spectrum, in the CIE's relative units (100 at 560 nm for
+ * daylight). Domain 300–830 nm. A line source has no spectrum (illuminantLines): a ParameterError.
+ */
 export function illuminantSpd(spec: IlluminantSpec): (lambdaNm: number) => number {
   if (spec === 'E') return () => 1;
   if (spec === 'D65-table') return (l) => interpolateTable(CIE_D65, CIE_D65_START_NM, CIE_D65_STEP_NM, l);
+  if (isLamp(spec)) return heldTable(CIE_LAMPS[spec], CIE_LAMPS_START_NM, CIE_LAMPS_STEP_NM);
   const cct = daylightCctOf(spec);
   if (cct === null) {
-    throw new ParameterError('illuminant', `illuminant: ${JSON.stringify(spec)} is not allowed; expected ${ILLUMINANT_EXPECTED}`);
+    throw new ParameterError(
+      'illuminant',
+      `illuminant: ${JSON.stringify(spec)} has no spectrum; expected a light other than a line source`,
+    );
   }
   const { m1, m2 } = daylightWeights(cct);
   const at = (t: readonly number[], l: number) => interpolateTable(t, CIE_DAYLIGHT_START_NM, CIE_DAYLIGHT_STEP_NM, l);
   return (l) => at(CIE_DAYLIGHT_S0, l) + m1 * at(CIE_DAYLIGHT_S1, l) + m2 * at(CIE_DAYLIGHT_S2, l);
+}
+
+/**
+ * The light as a plot draws it on a 1 nm grid: its spectrum, or each line as a triangle 1 nm wide
+ * on each side whose height is its power (its share of each grid point, by linear interpolation).
+ */
+export function illuminantDrawn(spec: IlluminantSpec): (lambdaNm: number) => number {
+  const lines = illuminantLines(spec);
+  if (lines === null) return illuminantSpd(spec);
+  return (l) => lines.reduce((sum, line) => sum + line.power * Math.max(0, 1 - Math.abs(l - line.nm)), 0);
 }

@@ -1,14 +1,33 @@
 import { type FilmOptics, type FilmStack, type Polarization, filmOptics, reflectanceAt } from './filmReflectance.ts';
 import { type IlluminantSpec } from './illuminants.ts';
 import { type Medium, assertMedium, isDispersiveMedium, mediumStackAt } from './medium.ts';
-import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type Normalization, type SpectralWeights, type Xyz, spectralWeights } from './spectralWeights.ts';
+import {
+  LAMBDA_MIN_NM,
+  LAMBDA_SPAN_NM,
+  type Normalization,
+  type SpectralWeights,
+  type WeightedLine,
+  type Xyz,
+  spectralWeights,
+} from './spectralWeights.ts';
+
+/** A line source's colour: Σ R(λ_l) · weight over its lines (docs/physics.md#lights). */
+export const linesXyz = (reflectance: (lambdaNm: number) => number, lines: readonly WeightedLine[]): Xyz =>
+  lines.reduce<Xyz>(
+    (xyz, l) => {
+      const r = reflectance(l.nm);
+      return [xyz[0] + r * l.x, xyz[1] + r * l.y, xyz[2] + r * l.z];
+    },
+    [0, 0, 0],
+  );
 
 /**
- * ∫ R(λ) W(λ) dλ over 380–830 nm for the three weight tables, by the trapezoid rule with
+ * ∫ R(λ) W(λ) dλ over 380–830 nm (a line source's weights: the sum over its lines instead) for the three weight tables, by the trapezoid rule with
  * `stepsPerNm` equal sub-steps in every 1 nm interval. The 1 nm knots of W are nodes, so W is
  * exactly linear between nodes and the only error is R's variation between samples.
  */
 export function integrateXyz(reflectance: (lambdaNm: number) => number, w: SpectralWeights, stepsPerNm: number): Xyz {
+  if (w.lines) return linesXyz(reflectance, w.lines);
   const h = 1 / stepsPerNm;
   let X = 0;
   let Y = 0;

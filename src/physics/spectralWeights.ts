@@ -1,5 +1,6 @@
 import { CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, CIE1931_XBAR, CIE1931_YBAR, CIE1931_ZBAR } from './data/cie1931Cmf2deg.ts';
-import { type IlluminantSpec, illuminantKey, illuminantSpd, interpolateTable } from './illuminants.ts';
+import { type IlluminantSpec, illuminantKey, illuminantLines, illuminantSpd, interpolateTable } from './illuminants.ts';
+import { type SpectralLine } from './lightLines.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type Normalization } from './spectralConventions.ts';
 
 export { LAMBDA_MAX_NM, LAMBDA_MIN_NM, LAMBDA_SPAN_NM, NORMALIZATIONS, type Normalization } from './spectralConventions.ts';
@@ -14,6 +15,42 @@ export interface SpectralWeights {
   readonly x: Float64Array;
   readonly y: Float64Array;
   readonly z: Float64Array;
+  /**
+   * A line source's lines (lightLines.ts), each with p x̄, ȳ, z̄(λ_l) / k: the colour is the sum
+   * Σ R(λ_l) · weight over them, and the tables above are 0. Absent for a light with a spectrum.
+   */
+  readonly lines?: readonly WeightedLine[];
+}
+
+/** A line at `nm` and its weights p x̄, ȳ, z̄(λ) / k. */
+export interface WeightedLine {
+  readonly nm: number;
+  readonly x: number;
+  readonly y: number;
+  readonly z: number;
+}
+
+const cmf = (t: readonly number[], l: number) => interpolateTable(t, CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, l);
+
+/**
+ * The weights of a line source: p x̄, ȳ, z̄(λ_l) / k with the CMFs linear between their 1 nm knots.
+ * `white`: k = Σ p ȳ(λ_l), so a perfect reflector has Y = 1. `paper`: the powers scaled to sum to 1
+ * (a line has no value at 560 nm to scale by) and the paper's k = ∫ ȳ dλ.
+ */
+function lineWeights(lines: readonly SpectralLine[], normalization: Normalization): SpectralWeights {
+  const total = lines.reduce((sum, l) => sum + l.power, 0);
+  const k =
+    normalization === 'paper'
+      ? total * trapezoid1nm((l) => cmf(CIE1931_YBAR, l))
+      : lines.reduce((sum, l) => sum + l.power * cmf(CIE1931_YBAR, l.nm), 0);
+  const weighted = lines.map((l) => ({
+    nm: l.nm,
+    x: (l.power * cmf(CIE1931_XBAR, l.nm)) / k,
+    y: (l.power * cmf(CIE1931_YBAR, l.nm)) / k,
+    z: (l.power * cmf(CIE1931_ZBAR, l.nm)) / k,
+  }));
+  const n = LAMBDA_SPAN_NM + 1;
+  return { x: new Float64Array(n), y: new Float64Array(n), z: new Float64Array(n), lines: weighted };
 }
 
 const weightsCache = new Map<string, SpectralWeights>();
@@ -29,9 +66,17 @@ export function spectralWeights(illuminant: IlluminantSpec, normalization: Norma
     weightsCache.set(key, cached);
     return cached;
   }
+  const lines = illuminantLines(illuminant);
+  const w = lines === null ? spectrumWeights(illuminant, normalization) : lineWeights(lines, normalization);
+  weightsCache.set(key, w);
+  if (weightsCache.size > MAX_CACHED_WEIGHTS) weightsCache.delete(weightsCache.keys().next().value!);
+  return w;
+}
+
+/** The weights of a light with a spectrum, I_in x̄, ȳ, z̄ / k at its 1 nm knots. */
+function spectrumWeights(illuminant: IlluminantSpec, normalization: Normalization): SpectralWeights {
   const spd = illuminantSpd(illuminant);
   const n = LAMBDA_SPAN_NM + 1;
-  const cmf = (t: readonly number[], l: number) => interpolateTable(t, CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, l);
   const x = new Float64Array(n);
   const y = new Float64Array(n);
   const z = new Float64Array(n);
@@ -46,10 +91,7 @@ export function spectralWeights(illuminant: IlluminantSpec, normalization: Norma
   // k by the same trapezoid rule as the colour integral, so a perfect reflector gives Y = 1 exactly.
   const k = normalization === 'paper' ? trapezoid1nm((l) => cmf(CIE1931_YBAR, l)) : trapezoid1nm((_, i) => y[i] as number);
   for (const t of [x, y, z]) for (let i = 0; i < n; i++) t[i] = (t[i] as number) / k;
-  const w = { x, y, z };
-  weightsCache.set(key, w);
-  if (weightsCache.size > MAX_CACHED_WEIGHTS) weightsCache.delete(weightsCache.keys().next().value!);
-  return w;
+  return { x, y, z };
 }
 
 /** ∫ f dλ over the integration range by the trapezoid rule on its 1 nm knots. */

@@ -1,4 +1,4 @@
-import { type IlluminantSpec, illuminantText } from '../physics/illuminants.ts';
+import { type IlluminantSpec, illuminantKey } from '../physics/illuminants.ts';
 
 /** What a download is named after: the probed film and its light. */
 export interface ProbedView {
@@ -9,10 +9,11 @@ export interface ProbedView {
 
 /**
  * A download's file name, after the view: `film-550nm-D65-30deg-spectrum.png` (thickness and
- * angle rounded to whole nm and degrees; a daylight CCT written `6500K`). Only digits, letters,
+ * angle rounded to whole nm and degrees; a daylight CCT written `6500K`, a line `line-632.8nm`). Only digits, letters,
  * `-` and `.`: every part is a number or a schema-checked name.
  */
 export function downloadName(view: ProbedView, what: string, extension: string): string {
-  const light = typeof view.illuminant === 'object' ? `${illuminantText(view.illuminant)}K` : illuminantText(view.illuminant);
+  const i = view.illuminant;
+  const light = typeof i === 'object' && 'daylightCct' in i ? `${i.daylightCct}K` : illuminantKey(i);
   return `film-${Math.round(view.thicknessNm)}nm-${light}-${Math.round(view.angleDeg)}deg-${what}.${extension}`;
 }

@@ -1,6 +1,6 @@
 import { asComplex } from '../physics/complex.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
-import { type IlluminantSpec, illuminantSpd } from '../physics/illuminants.ts';
+import { type IlluminantSpec, illuminantDrawn } from '../physics/illuminants.ts';
 import { isDispersiveMedium, mediumIndexAt } from '../physics/medium.ts';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
 import { type FilmOption, filmStackOf, optionFilmsOf, singleFilmOf, stackReflectanceSpectrum } from '../methods/filmStacks.ts';
@@ -10,7 +10,7 @@ export interface FilmSpectrum {
   readonly lambdasNm: Float64Array;
   /** R(λ), eqs (11)–(14), in [0, 1]. */
   readonly reflectance: Float64Array;
-  /** I_in(λ), scaled so its largest value in the range is 1. */
+  /** I_in(λ), scaled so its largest value in the range is 1 (a line source's lines as illuminantDrawn draws them). */
   readonly incident: Float64Array;
   /** I_out(λ) = R(λ)·I_in(λ), on the same scale as `incident`. */
   readonly reflected: Float64Array;
@@ -31,8 +31,7 @@ export function filmSpectrum(film: FilmOption, illuminant: IlluminantSpec, polar
   const reflectance = Float64Array.from(stackReflectanceSpectrum(stack, Array.from(lambdasNm), polarization));
   const single = singleFilmOf(stack);
   const filmIndex = single && isDispersiveMedium(single.nFilm) ? lambdasNm.map((l) => asComplex(mediumIndexAt(single.nFilm, l)).re) : null;
-  const spd = illuminantSpd(illuminant);
-  const incident = lambdasNm.map(spd);
+  const incident = lambdasNm.map(illuminantDrawn(illuminant));
   const peak = Math.max(...incident);
   const reflected = new Float64Array(count);
   for (let i = 0; i < count; i++) {

@@ -4,8 +4,10 @@ import {
   type IlluminantSpec,
   NAMED_ILLUMINANTS,
   illuminantText,
+  listedNames,
   parseIlluminant,
 } from '../physics/illuminants.ts';
+import { LINE_DOMAIN_NM } from '../physics/lightLines.ts';
 import {
   DISPERSION_CHECK_NM,
   FILM_INDEX_EXPECTED,
@@ -61,7 +63,7 @@ export function textRow<S, K extends keyof S & string, V>(
   };
 }
 
-/** An illuminant: a name, or a number read as a daylight CCT in kelvin. */
+/** An illuminant: a name, `line:NM`, or a number read as a daylight CCT in kelvin. */
 export const illuminantRow = <S, K extends keyof S & string>(
   n: RowNames<S, K>,
   defaultValue: S[K] & IlluminantSpec,
@@ -71,7 +73,13 @@ export const illuminantRow = <S, K extends keyof S & string>(
     expected: ILLUMINANT_EXPECTED,
     expects: {
       key: 'expected.illuminant',
-      values: { names: NAMED_ILLUMINANTS.join(', '), min: DAYLIGHT_CCT_DOMAIN_K.min, max: DAYLIGHT_CCT_DOMAIN_K.max },
+      values: {
+        names: listedNames(NAMED_ILLUMINANTS),
+        lineMin: LINE_DOMAIN_NM.min,
+        lineMax: LINE_DOMAIN_NM.max,
+        min: DAYLIGHT_CCT_DOMAIN_K.min,
+        max: DAYLIGHT_CCT_DOMAIN_K.max,
+      },
     },
     parse: (raw) => {
       const value = parseIlluminant(raw);

@@ -62,6 +62,24 @@ test('exact mode: the centre pixel is the reference sRGB colour', async ({ demoP
   expectClose(rgb, expected, '450 nm under D65, exact');
 });
 
+test('under lamps and lines the centre pixel is the reference: a fluorescent tube in the table, sodium by exact in place of the table, a laser line in fourier', async ({
+  demoPage: page,
+}) => {
+  const cases = [
+    ['FL11', 'table', 450],
+    ['Na', 'table', 3000],
+    ['line:632.8', 'fourier', 12000],
+  ] as const;
+  for (const [light, mode, thicknessNm] of cases) {
+    const { rgb } = await centre(page, `thickness=${thicknessNm}&illuminant=${light}&mode=${mode}`);
+    const expected = reference8({ thicknessNm }, parseSettings(`illuminant=${light}`).settings.illuminant);
+    console.log(`centre ${mode} ${light} ${thicknessNm} nm: page ${rgb} reference ${expected}`);
+    expect.soft(() => expectClose(rgb, expected, `${thicknessNm} nm under ${light}, ${mode}`)).not.toThrow();
+    // A table under a line source is drawn by exact, and the page says so.
+    if (light === 'Na') await expect(page.getByText('mode=table under a line source (Na)')).toBeVisible();
+  }
+});
+
 // The table mode only: `exact` with a dispersive film (150 bins, Fresnel per bin, per pixel of the whole view) takes minutes on
 // a busy CPU rasteriser; the parity spec holds its numbers to the reference.
 test('a dispersive film (nFilm=water, a Cauchy film) shows the dispersive reference colour', async ({ demoPage: page }) => {

@@ -395,12 +395,14 @@ describe('color CLI, the table of bad values', () => {
     ...Object.entries(NAMED_FLAGS).flatMap(([flag, allowed]) =>
       notNames(allowed).map((v): Row => [[flag, v], flag, v, allowed.join(', ')]),
     ),
-    ...[...NOT_NUMBERS, ...outsideRange(4000, 25000), ...notNames(['D65', 'E'])].map((v): Row => [
-      ['--illuminant', v],
-      '--illuminant',
-      v,
-      'D55, D65, D93, E, D65-table or a daylight CCT in [4000, 25000] K',
-    ]),
+    ...[...NOT_NUMBERS, ...outsideRange(4000, 25000), ...notNames(['D65', 'E']), 'FL13', 'line:379.9', 'line:780.1', 'line:'].map(
+      (v): Row => [
+        ['--illuminant', v],
+        '--illuminant',
+        v,
+        'FL1–FL12, LED-B1–LED-B5, LED-BH1, LED-RGB1, LED-V1, LED-V2, Na, line:NM with NM in [380, 780] nm, or a daylight CCT in [4000, 25000] K',
+      ],
+    ),
     ...notNames(['json', 'csv']).map((v): Row => [['--angles', '0:10:5', '--format', v], '--format', v, 'json, csv']),
     ...(['--from', '--to'] as const).flatMap((flag) =>
       [...NOT_NUMBERS, ...outsideRange(0, 20000)].map((v): Row => {

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { significantBins, spectralBins } from '../../../src/physics/binnedIntegration.ts';
+import { NAMED_ILLUMINANTS, illuminantLines } from '../../../src/physics/illuminants.ts';
 import { NORMALIZATIONS, spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 import { spectralBinDefines } from '../../../src/film/spectralBinsTexture.ts';
@@ -8,15 +9,12 @@ describe('the bins a shader visits do not depend on the light', () => {
   const { exactSpectralBins: count, spectralTailTolerance: tolerance } = DEFAULT_FILM_QUALITY;
   const d = spectralBinDefines(count, tolerance);
 
-  it('cover the significant bins of every offered illuminant (named, and daylight every 100 K), both normalisations', () => {
+  it('cover the significant bins of every offered light with a spectrum (named: daylight, the lamps; daylight every 100 K), both normalisations', () => {
     const illuminants = [
-      'D55',
-      'D65',
-      'D93',
-      'E',
-      'D65-table',
+      ...NAMED_ILLUMINANTS.filter((name) => illuminantLines(name) === null),
       ...Array.from({ length: 211 }, (_, i) => ({ daylightCct: 4000 + 100 * i })),
-    ] as const;
+    ];
+    expect(illuminants).toContain('LED-V1');
     for (const illuminant of illuminants) {
       for (const normalization of NORMALIZATIONS) {
         const kept = significantBins(spectralBins(spectralWeights(illuminant, normalization), count), tolerance);

@@ -15,6 +15,21 @@ describe('plot downloads', () => {
     expect(downloadName({ thicknessNm: 0, angleDeg: 89.5, illuminant: { daylightCct: 7500 } }, 'spectrum', 'csv')).toBe(
       'film-0nm-7500K-90deg-spectrum.csv',
     );
+    expect(downloadName({ thicknessNm: 600, angleDeg: 0, illuminant: { lineNm: 632.8 } }, 'spectrum', 'png')).toBe(
+      'film-600nm-line-632.8nm-0deg-spectrum.png',
+    );
+    expect(downloadName({ thicknessNm: 600, angleDeg: 0, illuminant: 'LED-B1' }, 'xy', 'png')).toBe('film-600nm-LED-B1-0deg-xy.png');
+  });
+
+  it("draws a line source's lines in the spectrum: each line's power shared by the 1 nm samples beside it", () => {
+    const s = filmSpectrum({ ...SOAP_FILM_IN_AIR, thicknessNm: 450, angleDeg: 0 }, 'Na', 'unpolarized');
+    const at = (nm: number) => s.incident[nm - 380]!;
+    // D2 (power 2) at 588.995 nm, D1 (power 1) at 589.592 nm, scaled so the largest sample is 1.
+    const raw = { 588: 2 * 0.005, 589: 2 * 0.995 + 0.408, 590: 0.592 };
+    expect(at(589)).toBe(1);
+    expect(Math.abs(at(588) - raw[588] / raw[589])).toBeLessThan(1e-12);
+    expect(Math.abs(at(590) - raw[590] / raw[589])).toBeLessThan(1e-12);
+    expect(s.incident.filter((v) => v > 0)).toHaveLength(3);
   });
 
   it('the spectrum CSV holds every sample at full precision', () => {

@@ -145,6 +145,11 @@ describe('URL parameters', () => {
     ...[...NOT_NUMBERS.filter((v) => v !== ''), ...outsideRange(4000, 25000), ...notNames(['D65', 'E'])].map(
       (v): [string, string, string] => ['illuminant', v, '[4000, 25000] K'],
     ),
+    ...['FL13', 'LED-B6', 'line:379.9', 'line:780.1', 'line:', 'line:abc'].map((v): [string, string, string] => [
+      'illuminant',
+      v,
+      'line:NM with NM in [380, 780] nm',
+    ]),
     ...['animate', 'renew'].flatMap((name) =>
       ['', 'yes', 'true', '2', '-1', ABSURDLY_LONG].map((v): [string, string, string] => [name, v, '0 or 1']),
     ),
@@ -192,8 +197,8 @@ describe('URL parameters', () => {
     expect(errors).toHaveLength(1);
     expect(errors[0]!.startsWith(`${name}=`)).toBe(true);
     expect(errors[0]).toContain(range);
-    // A long value is cut short: the message stays one readable line (a medium's row lists eleven names).
-    expect(errors[0]!.length).toBeLessThan(MAX_ECHOED_CHARS + 240);
+    // A long value is cut short: the message stays one readable line (a medium's row lists eleven names, the illuminant's its lights, runs shortened).
+    expect(errors[0]!.length).toBeLessThan(MAX_ECHOED_CHARS + 260);
   });
 
   it('keeps the last good value of a repeated parameter, and reports each bad one', () => {
