@@ -2,7 +2,7 @@ import { expect, test } from '@playwright/test';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 import { PHYSICAL_MATERIAL_CODES } from '../tolerances.ts';
 import { watchProblems } from './pageWatch.ts';
-import type { FilmCase } from './harness/materialScene.ts';
+import type { FilmCase } from './harness/filmCaseScene.ts';
 import { FILM_STACK_DOMAIN } from '../../src/physics/filmReflectance.ts';
 import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
 import { srgbDecode } from '../../src/physics/colorConversions.ts';

@@ -1,0 +1,80 @@
+/**
+ * The WebGPU entry's harness (tests/e2e/webgpu*.spec.ts): a film case drawn by WebGPURenderer (its
+ * WebGPU backend, or with `forceWebGL` its WebGL2 one) into a float target and read back, with
+ * three's node iridescence or the entry's film, on a MeshPhysicalNodeMaterial or a classic
+ * MeshPhysicalMaterial; and, where the browser has WebGL2, the WebGL entry's film on WebGLRenderer
+ * in the same scene.
+ */
+import { FloatType, type Material, MeshPhysicalMaterial, NoToneMapping, RenderTarget, WebGLRenderTarget } from 'three';
+import { MeshPhysicalNodeMaterial, WebGPURenderer } from 'three/webgpu';
+import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
+import { spectralIridescence } from '../../../src/nodeMaterial/spectralNodeMaterial.ts';
+import { encode8 } from '../../../src/physics/colorConversions.ts';
+import { type FilmCase, disposeAll, filmMaterial, filmScene } from './filmCaseScene.ts';
+
+const SIZE = 64;
+/** 8-bit sRGB codes of linear RGB, clipped as a canvas clips. */
+const codes = (linear: ArrayLike<number>): number[] => [0, 1, 2].map((i) => encode8(Math.min(1, Math.max(0, linear[i]!))));
+
+let renderer: WebGPURenderer | null = null;
+
+/** Starts WebGPURenderer on `backend`; the backend it runs on (a browser without a WebGPU adapter falls back to WebGL2). */
+async function start(backend: 'webgpu' | 'webgl'): Promise<'webgpu' | 'webgl'> {
+  void renderer?.dispose();
+  renderer = new WebGPURenderer({ forceWebGL: backend === 'webgl' });
+  renderer.toneMapping = NoToneMapping;
+  await renderer.init();
+  return (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend ? 'webgpu' : 'webgl';
+}
+
+/** Which material: three's node iridescence, or the entry's film on a node or a classic material. */
+export type Kind = 'three' | 'node' | 'classic';
+
+/** The centre pixel of film case `c` on WebGPURenderer: linear RGB read back, and as 8-bit sRGB. */
+async function nodePixel(
+  c: FilmCase,
+  kind: Kind,
+  options: SpectralIridescenceOptions = {},
+): Promise<{ linear: number[]; codes: number[] }> {
+  const r = renderer!;
+  const material: Material =
+    kind === 'classic'
+      ? spectralIridescence(filmMaterial(c), options)
+      : kind === 'node'
+        ? spectralIridescence(filmMaterial(c, MeshPhysicalNodeMaterial), options)
+        : filmMaterial(c, MeshPhysicalNodeMaterial);
+  const { scene, camera } = filmScene(c, material);
+  const target = new RenderTarget(SIZE, SIZE, { type: FloatType });
+  r.setRenderTarget(target);
+  r.render(scene, camera);
+  r.setRenderTarget(null);
+  const texels = (await r.readRenderTargetPixelsAsync(target, SIZE / 2, SIZE / 2, 1, 1)) as Float32Array;
+  target.dispose();
+  disposeAll(scene);
+  return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
+}
+
+/** The centre pixel of film case `c` with the WebGL entry on WebGLRenderer, into a float target (linear), as 8-bit sRGB. */
+async function webglPixel(c: FilmCase, options: SpectralIridescenceOptions = {}): Promise<{ linear: number[]; codes: number[] }> {
+  const { renderer: gl } = await import('./materialScene.ts');
+  const { spectralIridescence: webglEntry } = await import('../../../src/meshMaterial/spectralIridescence.ts');
+  const { scene, camera } = filmScene(c, webglEntry(filmMaterial(c, MeshPhysicalMaterial), options));
+  const target = new WebGLRenderTarget(SIZE, SIZE, { type: FloatType });
+  gl.setRenderTarget(target);
+  gl.render(scene, camera);
+  gl.setRenderTarget(null);
+  const texels = new Float32Array(4);
+  gl.readRenderTargetPixels(target, SIZE / 2, SIZE / 2, 1, 1, texels);
+  target.dispose();
+  disposeAll(scene);
+  return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
+}
+
+window.webgpuHarness = { start, nodePixel, webglPixel };
+document.body.dataset.ready = 'yes';
+
+declare global {
+  interface Window {
+    webgpuHarness?: { start: typeof start; nodePixel: typeof nodePixel; webglPixel: typeof webglPixel };
+  }
+}
