@@ -21,6 +21,12 @@ export function cDiv(a: ComplexNode, b: ComplexNode): ComplexNode {
   return select(abs(b.x).greaterThanEqual(abs(b.y)), byX, byY);
 }
 
+/** Whether a = b, both parts exactly (GLSL's `==` on vectors; TSL's `equal` is per component). */
+export const cEqual = (a: ComplexNode, b: ComplexNode): Node<'bool'> => a.x.equal(b.x).and(a.y.equal(b.y));
+
+/** Whether z is exactly 0. */
+export const cIsZero = (z: ComplexNode): Node<'bool'> => z.x.equal(0).and(z.y.equal(0));
+
 export const cAbs2 = (a: ComplexNode): FloatNode => a.dot(a);
 
 /** e^{i z} = e^{−Im z} (cos Re z + i sin Re z) */
@@ -34,5 +40,5 @@ export function cSqrt(z: ComplexNode): ComplexNode {
     vec2(m, z.y.div(m.mul(2))),
     vec2(abs(z.y).div(m.mul(2)), select(z.y.greaterThanEqual(0), m, m.negate())),
   );
-  return select(length(z).equal(0), vec2(0, 0), root);
+  return select(cIsZero(z), vec2(0, 0), root);
 }

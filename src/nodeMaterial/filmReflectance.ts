@@ -3,9 +3,9 @@
  * window. The node twin of shaders/physics/filmReflectance.glsl (src/physics/filmReflectance.ts);
  * the polarisation is the program's, so its channels are unrolled here.
  */
-import { If, abs, all, atan, atanh, clamp, cos, equal, exp, float, min, select, sin, sqrt, vec2 } from 'three/tsl';
+import { If, abs, atan, atanh, clamp, cos, exp, float, min, select, sin, sqrt, vec2 } from 'three/tsl';
 import { type Polarization } from '../physics/filmReflectance.ts';
-import { type ComplexNode, type FloatNode, cAbs2, cDiv, cExpI, cMul } from './complex.ts';
+import { type ComplexNode, type FloatNode, cAbs2, cDiv, cExpI, cIsZero, cMul } from './complex.ts';
 import { type InterfaceCoefficients, fresnelCoefficients } from './fresnel.ts';
 import { refractedCos } from './snell.ts';
 
@@ -34,8 +34,6 @@ export function channelOf(c: InterfaceCoefficients, kind: ChannelKind): { readon
   if (kind === 1) return { r: c.rp, t: c.tp };
   return { r: c.rs.add(c.rp).mul(0.5), t: c.ts.add(c.tp).mul(0.5) };
 }
-
-const isZero = (z: ComplexNode) => all(equal(z, vec2(0, 0)));
 
 /** Re Δ per nm of thickness for light from n_a: Re(2 ñ_b cos θ_r) (eq 12 reduced), 0 for an evanescent film. */
 export const filmPathPerNm = (nFilm: ComplexNode, nOutside: FloatNode, cosIncidence: FloatNode): FloatNode =>
@@ -80,7 +78,7 @@ export function filmOptics(
 /** One channel's R, eq (13) squared, at the round-trip phase factor z = e^{iφ}. */
 export function channelReflectance(c: AiryTerms, z: ComplexNode): FloatNode {
   const series = cDiv(cMul(c.multiple, z), vec2(1, 0).sub(cMul(c.roundTrip, z)));
-  return cAbs2(c.rab.add(select(isZero(c.multiple), vec2(0, 0), series)));
+  return cAbs2(c.rab.add(select(cIsZero(c.multiple), vec2(0, 0), series)));
 }
 
 /** R at one wavelength, eqs (11), (13), (14), averaged over the channels. */
@@ -105,7 +103,7 @@ export function meanChannelReflectance(c: AiryTerms, phaseCenter: FloatNode, hal
   const w = halfWidth;
   const sinc = select(w.equal(0), float(1), sin(w).div(w)).toVar();
   const mean = float(0).toVar();
-  If(isZero(c.multiple), () => {
+  If(cIsZero(c.multiple), () => {
     mean.assign(cAbs2(alpha));
   })
     .ElseIf(rho2.equal(0), () => {

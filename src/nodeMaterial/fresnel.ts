@@ -3,8 +3,8 @@
  * eq (5), r^p eq (6), t^s eq (9), t^p eq (10); complex indices vec2(n, k) unchanged. Equal indices
  * are no interface. The node twin of shaders/physics/fresnel.glsl (src/physics/fresnel.ts).
  */
-import { all, equal, select, vec2 } from 'three/tsl';
-import { type ComplexNode, cDiv, cMul } from './complex.ts';
+import { select, vec2 } from 'three/tsl';
+import { type ComplexNode, cDiv, cEqual, cMul } from './complex.ts';
 
 export interface InterfaceCoefficients {
   readonly rs: ComplexNode;
@@ -20,7 +20,7 @@ export function interfaceBothWays(
   n2: ComplexNode,
   cos2: ComplexNode,
 ): { readonly forward: InterfaceCoefficients; readonly backward: InterfaceCoefficients } {
-  const same = all(equal(n1, n2));
+  const same = cEqual(n1, n2);
   const n1c1 = cMul(n1, cos1);
   const n2c2 = cMul(n2, cos2);
   const n2c1 = cMul(n2, cos1);

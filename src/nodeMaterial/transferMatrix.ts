@@ -9,10 +9,10 @@
  * inside, a column per spectral bin, each texel a FILM_LAYER record. The node twin of
  * shaders/physics/transferMatrix.glsl, for light from outside.
  */
-import { Break, If, Loop, all, equal, float, int, ivec2, min, select, textureLoad, vec2 } from 'three/tsl';
+import { Break, If, Loop, float, int, ivec2, min, select, textureLoad, vec2 } from 'three/tsl';
 import { type Node, type TextureNode } from 'three/webgpu';
 import { FILM_LAYER } from '../film/filmStack.ts';
-import { type ComplexNode, type FloatNode, cAbs2, cDiv, cExpI, cMul } from './complex.ts';
+import { type ComplexNode, type FloatNode, cAbs2, cDiv, cExpI, cIsZero, cMul } from './complex.ts';
 import { type ChannelKind, channelOf } from './filmReflectance.ts';
 import { fresnelCoefficients, interfaceBothWays } from './fresnel.ts';
 import { refractedCos } from './snell.ts';
@@ -46,7 +46,7 @@ function rouardStep(
   const echo = cMul(gammaInner, z).toVar();
   const multiple = cMul(cMul(forward.t, backward.t), echo);
   const step = forward.r.add(cDiv(multiple, vec2(1, 0).sub(cMul(backward.r, echo))));
-  return select(all(equal(multiple, vec2(0, 0))), forward.r, step);
+  return select(cIsZero(multiple), forward.r, step);
 }
 
 /** R of the stack at bin `bin` (centre λ), light from the outside n_a, averaged over the channels. */
