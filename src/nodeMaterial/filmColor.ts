@@ -4,7 +4,7 @@
  * depend on λ (their knots), or a stack of films, taken to three's working space (linear sRGB,
  * eq 19).
  */
-import { float, vec3 } from 'three/tsl';
+import { float, select, vec3 } from 'three/tsl';
 import { type Node, type TextureNode } from 'three/webgpu';
 import { type FilmFill } from '../methods/filmFills.ts';
 import { XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
@@ -46,6 +46,19 @@ export function filmXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: Floa
     return binSum(f.bins, ({ index, center }) => layersReflectance(f.stack, f.kinds, index, center, N_OUTSIDE, thicknessNm, cosIncidence));
   if (f.fill === 'dispersive') return dispersiveXyz(f, thicknessNm, cosIncidence);
   return binnedXyz(f.bins, filmOptics(f.kinds, N_OUTSIDE, f.nFilm, f.nInside, thicknessNm, cosIncidence));
+}
+
+/**
+ * The film's XYZ as the table pass fills a texel (shaders/film/filmTable.glsl's binned fill): a
+ * film of constant media averaged over the texel's thickness cell (`cellNm`) so fringes finer
+ * than a cell do not alias, its phase half-width at λ 2π · Re(Δ per nm) · cell / (2λ); a dispersive
+ * film or a stack at the texel's film.
+ */
+export function tableTexelXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: FloatNode, cellNm: FloatNode): Node<'vec3'> {
+  if (f.fill !== 'constant') return filmXyz(f, thicknessNm, cosIncidence);
+  const o = filmOptics(f.kinds, N_OUTSIDE, f.nFilm, f.nInside, thicknessNm, cosIncidence);
+  const perNmPath = select(thicknessNm.greaterThan(0), o.opticalPathNm.x.div(thicknessNm), filmPathPerNm(f.nFilm, N_OUTSIDE, cosIncidence));
+  return binnedXyz(f.bins, o, perNmPath.mul(cellNm).mul(Math.PI));
 }
 
 /** XYZ → linear sRGB, three's working space (eq 19), row by row. */

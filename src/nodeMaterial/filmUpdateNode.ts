@@ -1,14 +1,14 @@
 /**
- * A node that passes its input through and calls `refresh` before each render that draws it: the
- * film's per-frame work (its uniforms, textures and table brought up to the material), which
- * WebGPURenderer runs as a node's updateBefore (it calls no material's onBeforeRender).
+ * A node that passes its input through and calls `refresh` with the renderer before each render
+ * that draws it: the film's per-frame work (its uniforms, textures and table brought up to the
+ * material), which WebGPURenderer runs as a node's updateBefore (it calls no material's onBeforeRender).
  */
-import { Node, NodeUpdateType } from 'three/webgpu';
+import { Node, type NodeFrame, NodeUpdateType, type Renderer } from 'three/webgpu';
 
 export class FilmUpdateNode extends Node {
   constructor(
     private readonly input: Node,
-    private readonly refresh: () => void,
+    private readonly refresh: (renderer: Renderer) => void,
   ) {
     super('vec3');
     this.updateBeforeType = NodeUpdateType.RENDER;
@@ -18,8 +18,8 @@ export class FilmUpdateNode extends Node {
     return this.input;
   }
 
-  override updateBefore(): boolean {
-    this.refresh();
+  override updateBefore(frame: NodeFrame): boolean {
+    if (frame.renderer) this.refresh(frame.renderer);
     return true;
   }
 }

@@ -1,95 +1,33 @@
 /**
  * The spectral film for three.js's WebGPURenderer (`thin-film-color/webgpu`): a
  * MeshPhysicalNodeMaterial, or a classic MeshPhysicalMaterial that WebGPURenderer draws through
- * its node copy, with the film's lighting model (spectralLightingModel.ts) in place of three's.
+ * its node copy, with the film's lighting model (nodeFilm.ts) in place of three's.
  */
 import { type Material, type MeshPhysicalMaterial, type Object3D } from 'three';
-import { clamp, ior, iridescenceIOR, vec2 } from 'three/tsl';
-import { MeshPhysicalNodeMaterial, type NodeBuilder, type PhysicalLightingModel } from 'three/webgpu';
-import { filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } from '../film/filmColor.ts';
-import { filmSpectralBins } from '../film/filmFillGpu.ts';
+import { type MeshPhysicalNodeMaterial } from 'three/webgpu';
+import { filmColorUniforms, releaseFilmColorTextures } from '../film/filmColor.ts';
 import { filmStackUniforms } from '../film/filmStack.ts';
-import { spectralBinDefines } from '../film/spectralBinsTexture.ts';
-import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
-import { LAYERS_DOMAIN } from '../physics/stackFilms.ts';
-import { filmFill } from '../methods/filmFills.ts';
-import { clampWithWarning, filmKeyOf, filmSettingsOf, metalOf, metalStateOf, refuse } from '../meshMaterial/materialFilm.ts';
-import { type SpectralFilm, addFilm, defineOptionProperties, filmOf, setOptions, warnOnce } from '../meshMaterial/spectralFilm.ts';
+import { filmKeyOf, filmSettingsOf, refuse } from '../meshMaterial/materialFilm.ts';
+import { type SpectralFilm, addFilm, defineOptionProperties, filmOf, setOptions } from '../meshMaterial/spectralFilm.ts';
 import {
   type CheckedOptions,
   type SpectralIridescenceOptions,
   type SpectralIridescenceProperties,
   spectralIridescenceOptions,
 } from '../meshMaterial/spectralIridescenceOptions.ts';
-import { type FloatNode } from './complex.ts';
-import { type FilmInputs, filmInputs, setFilmInputs } from './filmInputs.ts';
-import { CHANNEL_KINDS } from './filmReflectance.ts';
-import { type FilmNodes, filmXyz, xyzToLinearWorking } from './filmColor.ts';
-import { FilmUpdateNode } from './filmUpdateNode.ts';
-import { SpectralLightingModel } from './spectralLightingModel.ts';
+import { filmInputs } from './filmInputs.ts';
+import {
+  type NodeFilm,
+  type PhysicalMaterial,
+  addNodeFilm,
+  drawsTable,
+  nodeFilmOf,
+  physical,
+  setupLightingModel,
+  updateNodeFilm,
+} from './nodeFilm.ts';
 
-/** A material the entry makes spectral: a node material, or a classic one WebGPURenderer draws through its node copy. */
-export type PhysicalMaterial = MeshPhysicalNodeMaterial | MeshPhysicalMaterial;
-
-/** A physical material as the shared film code reads it (the glTF parameters both kinds hold). */
-const physical = (m: PhysicalMaterial) => m as MeshPhysicalMaterial;
-
-const inputsOf = new WeakMap<Material, FilmInputs>();
-
-/** Brings the film's uniforms and the node inputs up to the material; clamps (with a warning) what is out of its domain. */
-function update(film: SpectralFilm, m: PhysicalMaterial, inputs: FilmInputs): void {
-  const o = film.options;
-  const s = filmSettingsOf(
-    physical(m),
-    o,
-    clampWithWarning((name, message) => warnOnce(film, name, message)),
-  );
-  if (s.mode !== o.mode) warnOnce(film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
-  const state = metalStateOf(physical(m), o);
-  if (film.drawnMetal !== null && film.drawnMetal !== state) m.needsUpdate = true;
-  film.drawnMetal = state;
-  updateFilmColorUniforms(film, { ...s, mode: 'exact' }, o.quality, null);
-  setFilmInputs(inputs, film.uniforms);
-}
-
-/** The film's nodes for the material's options: its fill and channels, its bins, its media (three's iridescenceIOR and ior unless named). */
-function filmNodes(m: PhysicalMaterial, o: CheckedOptions, inputs: FilmInputs): FilmNodes {
-  const s = filmSettingsOf(
-    physical(m),
-    o,
-    clampWithWarning(() => {}),
-  );
-  const q = o.quality;
-  const bins = spectralBinDefines(filmSpectralBins(s, q, q.exactSpectralBins), q.spectralTailTolerance);
-  const d = FILM_STACK_DOMAIN;
-  const three = (n: FloatNode, domain: { min: number; max: number }) => vec2(clamp(n, domain.min, domain.max), 0);
-  return {
-    fill: filmFill(s),
-    kinds: CHANNEL_KINDS[o.polarization],
-    bins: { count: bins.TFC_SPECTRAL_BINS!, first: bins.TFC_SPECTRAL_BIN_FIRST!, end: bins.TFC_SPECTRAL_BIN_END!, weights: inputs.weights },
-    nFilm: o.film === null ? three(iridescenceIOR, d.nFilm) : inputs.nFilm,
-    nInside: o.base === null && metalOf(physical(m), o) === null ? three(ior, d.nInside) : inputs.nInside,
-    knots: inputs.knots,
-    stack: { layers: inputs.layers, count: inputs.layerCount, maxCount: LAYERS_DOMAIN.count.max },
-  };
-}
-
-/**
- * three's lighting model for the material, or where it draws iridescence the film's: `this` is
- * the node material built (a classic material's node copy), `builder.material` the material made
- * spectral.
- */
-function setupLightingModel(this: MeshPhysicalNodeMaterial, builder: NodeBuilder): PhysicalLightingModel {
-  const three: PhysicalLightingModel = MeshPhysicalNodeMaterial.prototype.setupLightingModel.call(this);
-  const m = builder.material as PhysicalMaterial;
-  const film = filmOf(m);
-  const inputs = inputsOf.get(m);
-  if (!film || !inputs || !three.iridescence) return three;
-  const nodes = filmNodes(m, film.options, inputs);
-  const filmRgb = (thicknessNm: FloatNode, cosIncidence: FloatNode) =>
-    new FilmUpdateNode(xyzToLinearWorking(filmXyz(nodes, thicknessNm, cosIncidence)), () => update(film, m, inputs)) as never;
-  return new SpectralLightingModel(three, filmRgb, metalOf(physical(m), film.options) !== null);
-}
+export type { PhysicalMaterial } from './nodeFilm.ts';
 
 /** The film's hooks on `m`: its lighting model (enumerable, so a classic material's node copy takes it), its part of the program key. */
 function hook(m: PhysicalMaterial): void {
@@ -119,14 +57,18 @@ function patch<M extends PhysicalMaterial>(m: M, options: CheckedOptions): M & S
     warned: new Set(),
     drawnMetal: null,
   };
-  const inputs = filmInputs();
+  const f: NodeFilm = { film, inputs: filmInputs(), table: null };
   addFilm(physical(m), film);
-  inputsOf.set(m, inputs);
+  addNodeFilm(m, f);
   hook(m);
   defineOptionProperties(m);
-  update(film, m, inputs);
+  updateNodeFilm(f, m, null);
   m.needsUpdate = true;
-  m.addEventListener('dispose', () => releaseFilmColorTextures(film));
+  m.addEventListener('dispose', () => {
+    releaseFilmColorTextures(film);
+    f.table?.dispose();
+    f.table = null;
+  });
   return m as M & SpectralIridescenceProperties;
 }
 
@@ -164,6 +106,24 @@ export function useSpectralIridescence(root: Object3D, options: SpectralIridesce
   return [...found];
 }
 
-/** A promise that resolves once every table and datum the material's film needs is built (so a screenshot can wait for it). */
-export const whenSpectralReady = (material: Material): Promise<void> =>
-  filmOf(material) ? Promise.resolve() : Promise.reject(new Error('whenSpectralReady: the material is not spectral (spectralIridescence)'));
+/** How often whenSpectralReady looks whether the material's table is drawn. */
+const READY_POLL_MS = 16;
+
+/**
+ * A promise that resolves once every table and datum the material's film needs is built (its
+ * table is drawn by the first render that draws the material), so a screenshot can wait for it.
+ */
+export function whenSpectralReady(material: Material): Promise<void> {
+  const m = material as PhysicalMaterial;
+  const f = nodeFilmOf(m);
+  if (!f)
+    return Promise.reject(new Error('whenSpectralReady: the material is not spectral (spectralIridescence of thin-film-color/webgpu)'));
+  const ready = () => {
+    const s = filmSettingsOf(physical(m), f.film.options, (_, value) => value);
+    return !drawsTable(m, s) || f.table?.holds(s) === true;
+  };
+  return new Promise((resolve) => {
+    const poll = () => (ready() ? resolve() : setTimeout(poll, READY_POLL_MS));
+    poll();
+  });
+}

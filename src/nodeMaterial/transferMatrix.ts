@@ -9,7 +9,7 @@
  * inside, a column per spectral bin, each texel a FILM_LAYER record. The node twin of
  * shaders/physics/transferMatrix.glsl, for light from outside.
  */
-import { Break, If, Loop, float, int, ivec2, min, select, textureLoad, vec2 } from 'three/tsl';
+import { Loop, float, int, ivec2, min, select, textureLoad, vec2 } from 'three/tsl';
 import { type Node, type TextureNode } from 'three/webgpu';
 import { FILM_LAYER } from '../film/filmStack.ts';
 import { type ComplexNode, type FloatNode, cAbs2, cDiv, cExpI, cIsZero, cMul } from './complex.ts';
@@ -22,8 +22,6 @@ import { texelFloat, texelVec2 } from './texelRecords.ts';
 export interface StackNodes {
   readonly layers: TextureNode;
   readonly count: Node<'int'>;
-  /** the most films a stack holds (LAYERS_DOMAIN) */
-  readonly maxCount: number;
 }
 
 /** Row `row` of the stack at bin `bin`: its ñ and its thickness (a FOLLOWS_FIELD film takes the field's). */
@@ -67,9 +65,8 @@ export function layersReflectance(
   const cosOut = refractedCos(nOut, nOutside, cosIncidence).toVar();
   const c = fresnelCoefficients(nOut, cosOut, inside.n, refractedCos(inside.n, nOutside, cosIncidence));
   const gamma = kinds.map((kind) => channelOf(c, kind).r.toVar());
-  Loop({ start: int(1), end: int(stack.maxCount), type: 'int', condition: '<=' }, ({ i }: { i: Node<'int'> }) => {
+  Loop({ start: int(1), end: count, type: 'int', condition: '<=' }, ({ i }: { i: Node<'int'> }) => {
     const j = count.sub(i);
-    If(j.lessThan(0), () => Break());
     const nIn = nOut.toVar();
     const cosIn = cosOut.toVar();
     const dIn = dOut.toVar();
