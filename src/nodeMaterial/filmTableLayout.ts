@@ -4,7 +4,7 @@
  *   d = max · u^thicknessPower,   cos θ_i = v^cosPower
  * (src/settings/filmTableLayout.ts's powers: texels spent on thin films and grazing light).
  */
-import { clamp, float, max, pow, vec2 } from 'three/tsl';
+import { clamp, float, pow, vec2 } from 'three/tsl';
 import { type Node } from 'three/webgpu';
 import { type FilmTableLayout } from '../settings/filmTableLayout.ts';
 import { type FloatNode } from './complex.ts';
@@ -13,10 +13,6 @@ export type TablePowers = Pick<FilmTableLayout, 'thicknessPower' | 'cosPower'>;
 
 export const tableThicknessNm = (l: TablePowers, u: FloatNode, maxThicknessNm: FloatNode): FloatNode =>
   maxThicknessNm.mul(pow(u, float(l.thicknessPower)));
-
-/** d d / d u: a texel's thickness cell is this × 1 / (width − 1) of a grid `width` texels wide. */
-export const tableThicknessSlopeNm = (l: TablePowers, u: FloatNode, maxThicknessNm: FloatNode): FloatNode =>
-  maxThicknessNm.mul(l.thicknessPower).mul(pow(max(u, 1e-6), float(l.thicknessPower - 1)));
 
 export const tableCosIncidence = (l: TablePowers, v: FloatNode): FloatNode => pow(v, float(l.cosPower));
 

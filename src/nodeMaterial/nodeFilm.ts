@@ -4,7 +4,7 @@
  * before each render; and the lighting model that draws its film.
  */
 import { type MeshPhysicalMaterial } from 'three';
-import { clamp, ior, iridescenceIOR, vec2 } from 'three/tsl';
+import { clamp, float, ior, iridescenceIOR, vec2 } from 'three/tsl';
 import { MeshPhysicalNodeMaterial, type NodeBuilder, type PhysicalLightingModel, type Renderer } from 'three/webgpu';
 import { updateFilmColorUniforms } from '../film/filmColor.ts';
 import { filmSpectralBins } from '../film/filmFillGpu.ts';
@@ -56,6 +56,8 @@ export function drawsTable(m: PhysicalMaterial, s: FilmSettings): boolean {
 /** The film's nodes that the pass and the material share: its fill, channels, the media's inputs. */
 const sharedNodes = (f: NodeFilm, s: FilmSettings): Omit<FilmNodes, 'bins' | 'nFilm' | 'nInside'> => ({
   fill: filmFill(s),
+  // three's film lies in air
+  nOutside: float(1),
   kinds: CHANNEL_KINDS[s.polarization],
   knots: f.inputs.knots,
   stack: { layers: f.inputs.layers, count: f.inputs.layerCount },

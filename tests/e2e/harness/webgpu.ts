@@ -3,14 +3,17 @@
  * WebGPU backend, or with `forceWebGL` its WebGL2 one) into a float target and read back, with
  * three's node iridescence or the entry's film, on a MeshPhysicalNodeMaterial or a classic
  * MeshPhysicalMaterial; and, where the browser has WebGL2, the WebGL entry's film on WebGLRenderer
- * in the same scene.
+ * in the same scene; and the node film's XYZ of the parity cases (nodeFilmProbe.ts).
  */
 import { FloatType, type Material, MeshPhysicalMaterial, NoToneMapping, RenderTarget, WebGLRenderTarget } from 'three';
 import { MeshPhysicalNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
 import { spectralIridescence } from '../../../src/nodeMaterial/spectralNodeMaterial.ts';
 import { encode8 } from '../../../src/physics/colorConversions.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/settings/filmQuality.ts';
+import type { ParityGroup } from '../../../scripts/harness/parityCase.ts';
 import { type FilmCase, disposeAll, filmMaterial, filmScene } from './filmCaseScene.ts';
+import { type NodeParityMode, renderNodeFilmXyz } from './nodeFilmProbe.ts';
 
 const SIZE = 64;
 /** 8-bit sRGB codes of linear RGB, clipped as a canvas clips. */
@@ -70,11 +73,15 @@ async function webglPixel(c: FilmCase, options: SpectralIridescenceOptions = {})
   return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
 }
 
-window.webgpuHarness = { start, nodePixel, webglPixel };
+/** XYZ per case of every group through the node film (nodeFilmProbe.ts). */
+const nodeFilmXyz = (groups: readonly ParityGroup[], mode: NodeParityMode, quality: FilmQuality = DEFAULT_FILM_QUALITY) =>
+  renderNodeFilmXyz(renderer!, groups, mode, quality);
+
+window.webgpuHarness = { start, nodePixel, webglPixel, nodeFilmXyz };
 document.body.dataset.ready = 'yes';
 
 declare global {
   interface Window {
-    webgpuHarness?: { start: typeof start; nodePixel: typeof nodePixel; webglPixel: typeof webglPixel };
+    webgpuHarness?: { start: typeof start; nodePixel: typeof nodePixel; webglPixel: typeof webglPixel; nodeFilmXyz: typeof nodeFilmXyz };
   }
 }

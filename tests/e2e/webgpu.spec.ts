@@ -1,0 +1,42 @@
+import { expect, test } from '@playwright/test';
+import { watchProblems } from './pageWatch.ts';
+import {
+  MAX_CODE_DIFFERENCE,
+  MAX_RENDERER_CODES,
+  PIXEL_CASES,
+  caseReference8,
+  nodeParity,
+  nodePixels,
+  openHarness,
+  worstCodeDifference,
+} from './webgpuChecks.ts';
+
+/**
+ * The WebGPU entry (src/nodeMaterial/) on WebGPURenderer's WebGL2 backend, beside the WebGL entry
+ * on WebGLRenderer in the same page: the same scene's centre pixel, and the node film against the
+ * float64 reference on the parity grids. Its WebGPU backend: webgpuBackend.spec.ts.
+ */
+test("the WebGPU entry on WebGPURenderer's WebGL2 backend draws the WebGL entry's pixels and holds the parity bounds", async ({ page }) => {
+  // Each method's programs for every fill and polarisation, and the tables of both grids, on a CPU rasteriser.
+  test.setTimeout(600_000);
+  const problems = watchProblems(page);
+  await openHarness(page, 'webgl');
+  const node = await nodePixels(page);
+  const webgl = await page.evaluate(async (cases) => {
+    const out = [];
+    for (const [c, o] of cases) out.push((await window.webgpuHarness!.webglPixel(c, o)).codes);
+    return out;
+  }, PIXEL_CASES);
+  PIXEL_CASES.forEach((c, i) => {
+    const label = JSON.stringify(c);
+    const { table, exact, classic } = node[i]!;
+    for (const [name, pixel] of Object.entries({ table, exact, classic }))
+      expect(worstCodeDifference(pixel, webgl[i]!), `${name} ${label}: ${pixel} vs the WebGL entry's ${webgl[i]}`).toBeLessThanOrEqual(
+        MAX_RENDERER_CODES,
+      );
+    expect(worstCodeDifference(exact, caseReference8(c)), `${label}: ${exact}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  });
+  await nodeParity(page, 'exact');
+  await nodeParity(page, 'table');
+  expect(problems).toEqual([]);
+});
