@@ -13,7 +13,7 @@ import { HalfFloatType, LinearFilter, RenderTarget } from 'three';
 import { Fn, texture, uniform, uv, vec2, vec4 } from 'three/tsl';
 import { type Node, NodeMaterial, QuadMesh, type Renderer, type UniformNode } from 'three/webgpu';
 import { fillGpu, filmSpectralBins } from '../film/filmFillGpu.ts';
-import { tableKey } from '../film/filmTable.ts';
+import { tableKey } from '../film/filmTableKey.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from '../film/spectralBinsTexture.ts';
 import { uniformField } from '../fields/uniformField.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';

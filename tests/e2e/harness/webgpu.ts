@@ -57,11 +57,15 @@ async function nodePixel(
   return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
 }
 
-/** The centre pixel of film case `c` with the WebGL entry on WebGLRenderer, into a float target (linear), as 8-bit sRGB. */
-async function webglPixel(c: FilmCase, options: SpectralIridescenceOptions = {}): Promise<{ linear: number[]; codes: number[] }> {
+/**
+ * The centre pixel of film case `c` on WebGLRenderer, into a float target (linear), as 8-bit sRGB:
+ * with the WebGL entry's film (`options`), or three's own iridescence (null).
+ */
+async function webglPixel(c: FilmCase, options: SpectralIridescenceOptions | null = {}): Promise<{ linear: number[]; codes: number[] }> {
   const { renderer: gl } = await import('./materialScene.ts');
   const { spectralIridescence: webglEntry } = await import('../../../src/meshMaterial/spectralIridescence.ts');
-  const { scene, camera } = filmScene(c, webglEntry(filmMaterial(c, MeshPhysicalMaterial), options));
+  const material = filmMaterial(c, MeshPhysicalMaterial);
+  const { scene, camera } = filmScene(c, options ? webglEntry(material, options) : material);
   const target = new WebGLRenderTarget(SIZE, SIZE, { type: FloatType });
   gl.setRenderTarget(target);
   gl.render(scene, camera);
