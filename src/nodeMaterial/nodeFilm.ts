@@ -11,6 +11,7 @@ import { filmSpectralBins } from '../film/filmFillGpu.ts';
 import { spectralBinDefines } from '../film/spectralBinsTexture.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { filmFill } from '../methods/filmFills.ts';
+import { methodReads } from '../methods/methods.ts';
 import { type FilmSettings } from '../settings/filmSettings.ts';
 import { clampWithWarning, filmSettingsOf, metalOf, metalStateOf } from '../meshMaterial/materialFilm.ts';
 import { type SpectralFilm, filmOf, warnOnce } from '../meshMaterial/spectralFilm.ts';
@@ -44,13 +45,14 @@ const drawnSettings = (f: NodeFilm, m: PhysicalMaterial): FilmSettings =>
   );
 
 /**
- * Whether the film is drawn from the table: `table`, and `fourier` in its place (its series per
- * fragment is not ported: drawn from the table, with a notice); a per-pixel iridescenceIORNode is
- * drawn by `exact` (the table is made for one index).
+ * Whether the film is drawn from the table: every method that does not integrate the bins per
+ * fragment, `table`, and `fourier` in its place (its series per fragment is not ported: drawn from
+ * the table, with a notice); a per-pixel iridescenceIORNode is drawn by `exact` (the table is made
+ * for one index).
  */
 export function drawsTable(m: PhysicalMaterial, s: FilmSettings): boolean {
   const node = (m as Partial<MeshPhysicalNodeMaterial>).iridescenceIORNode;
-  return s.mode !== 'exact' && !node;
+  return !methodReads(s.mode, 'spectralBins') && !node;
 }
 
 /** The film's nodes that the pass and the material share: its fill, channels, the media's inputs. */
@@ -68,7 +70,8 @@ export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Rende
   const o = f.film.options;
   const s = drawnSettings(f, m);
   if (s.mode !== o.mode) warnOnce(f.film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
-  if (s.mode === 'fourier') warnOnce(f.film, 'fourier', 'mode fourier is drawn from the table on WebGPURenderer');
+  if (methodReads(s.mode, 'spectralTransform'))
+    warnOnce(f.film, 'series', `mode ${s.mode} is drawn from the table on WebGPURenderer (its series per fragment is WebGLRenderer's)`);
   const state = metalStateOf(physical(m), o);
   if (f.film.drawnMetal !== null && f.film.drawnMetal !== state) m.needsUpdate = true;
   f.film.drawnMetal = state;

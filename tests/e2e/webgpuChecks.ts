@@ -4,6 +4,7 @@
  * where the WebGL entry draws beside it; webgpuBackend.spec.ts on its WebGPU backend, in the
  * launch that has WebGPU and no WebGL2 (docs/testing.md#webgpu).
  */
+import { methodReads } from '../../src/methods/methods.ts';
 import { type Page, expect } from '@playwright/test';
 import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
 import { XYZ_TO_LINEAR_SRGB, srgbDecode } from '../../src/physics/colorConversions.ts';
@@ -88,8 +89,8 @@ export async function nodeParity(page: Page, mode: 'exact' | 'table') {
     const rendered = await page.evaluate(([g, m]) => window.webgpuHarness!.nodeFilmXyz(g, m), [groups.map(toParity), mode] as const);
     return compare(groups, rendered);
   };
-  const fixed = await grid(mode === 'table' ? perTable(fixedDomain()) : fixedDomain());
-  const stress = await grid(mode === 'table' ? perTable(stressDomain()) : stressDomain());
+  const fixed = await grid(methodReads(mode, 'table') ? perTable(fixedDomain()) : fixedDomain());
+  const stress = await grid(methodReads(mode, 'table') ? perTable(stressDomain()) : stressDomain());
   console.log(`node parity ${mode}: ${JSON.stringify({ fixed: fixed.figures, stress: stress.figures })}`);
   expect([...fixed.nonFinite, ...stress.nonFinite]).toEqual([]);
   expect(fixed.figures.max, fixed.figures.worst).toBeLessThanOrEqual(MAX_DELTA_E00_FIXED);

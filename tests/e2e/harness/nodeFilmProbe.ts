@@ -5,6 +5,7 @@
  * looks it up in the node material's own table (NodeFilmTable), built over the group's largest
  * thickness. The twin of scripts/harness/filmXyzProbe.ts for the GLSL.
  */
+import { methodReads } from '../../../src/methods/methods.ts';
 import { FloatType, RenderTarget } from 'three';
 import { Fn, float, int, ivec2, textureLoad, uniform, uniformTexture, uv, vec4 } from 'three/tsl';
 import { NodeMaterial, QuadMesh, type WebGPURenderer } from 'three/webgpu';
@@ -52,7 +53,7 @@ function passFor(s: FilmSettings, mode: NodeParityMode, q: FilmQuality, film: Om
   const material = new NodeMaterial();
   material.fragmentNode = Fn(() => {
     const c = textureLoad(cases, ivec2(int(uv().x.mul(caseCount)), int(0)));
-    const xyz = mode === 'table' ? tableFor(q).lookup(c.x, c.y) : filmXyz(nodes, c.x, c.y);
+    const xyz = methodReads(mode, 'table') ? tableFor(q).lookup(c.x, c.y) : filmXyz(nodes, c.x, c.y);
     return vec4(xyz, float(1));
   })();
   const pass = { quad: new QuadMesh(material), material };
@@ -80,7 +81,7 @@ async function renderGroup(renderer: WebGPURenderer, g: ParityGroup, mode: NodeP
     knots: inputs.knots,
     stack: { layers: inputs.layers, count: inputs.layerCount },
   };
-  if (mode === 'table') tableFor(q).update(renderer, s, film);
+  if (methodReads(mode, 'table')) tableFor(q).update(renderer, s, film);
   const target = new RenderTarget(count, 1, { type: FloatType, depthBuffer: false });
   renderer.setRenderTarget(target);
   passFor(s, mode, q, film).render(renderer);
