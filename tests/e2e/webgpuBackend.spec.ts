@@ -33,3 +33,19 @@ test("the WebGPU entry on WebGPURenderer's WebGPU backend draws the reference's 
   await nodeParity(page, 'table');
   expect(problems).toEqual([]);
 });
+
+test('the materials page on WebGPURenderer (?renderer=webgpu) draws both materials and says which renderer draws them', async ({
+  page,
+}) => {
+  // Every material's program and the environment's PMREM compiled on SwiftShader's Vulkan.
+  test.setTimeout(300_000);
+  const problems = watchProblems(page);
+  for (let attempt = 0; attempt < 3; attempt++) {
+    await page.goto('/materials.html?renderer=webgpu');
+    await expect(page.locator('#readout')).toHaveText(/WebGPURenderer \((WebGPU|WebGL2)\)/);
+    if ((await page.locator('#readout').textContent())!.includes('(WebGPU)')) break;
+  }
+  await expect(page.locator('#readout')).toHaveText('WebGPURenderer (WebGPU): the probe reads pixels on WebGLRenderer only.');
+  await expect(page.locator('body')).toHaveAttribute('data-frames', /[3-9]|\d\d/);
+  expect(problems.filter((p) => !p.includes('WebGPU is not available'))).toEqual([]);
+});
