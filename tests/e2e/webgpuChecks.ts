@@ -68,7 +68,10 @@ export async function openHarness(page: Page, backend: 'webgpu' | 'webgl'): Prom
   throw new Error(`WebGPURenderer found no ${backend} backend`);
 }
 
-/** Each pixel case in `table` (the default) and `exact`, on a node and a classic material: 8-bit codes. */
+/**
+ * Each pixel case in `table` (the default) and `exact`, on a node and a classic material, and in
+ * `exact` with its thickness a node (iridescenceThicknessNode): 8-bit codes.
+ */
 export async function nodePixels(page: Page) {
   return page.evaluate(async (cases) => {
     const h = window.webgpuHarness!;
@@ -77,7 +80,8 @@ export async function nodePixels(page: Page) {
       const table = await h.nodePixel(c, 'node', o);
       const exact = await h.nodePixel(c, 'node', { ...o, mode: 'exact' });
       const classic = await h.nodePixel(c, 'classic', o);
-      out.push({ table: table.codes, exact: exact.codes, classic: classic.codes });
+      const thicknessNode = await h.nodePixel(c, 'thicknessNode', { ...o, mode: 'exact' });
+      out.push({ table: table.codes, exact: exact.codes, classic: classic.codes, thicknessNode: thicknessNode.codes });
     }
     return out;
   }, PIXEL_CASES);

@@ -6,6 +6,7 @@
  * in the same scene; and the node film's XYZ of the parity cases (nodeFilmProbe.ts).
  */
 import { FloatType, type Material, MeshPhysicalMaterial, NoToneMapping, RenderTarget, WebGLRenderTarget } from 'three';
+import { float } from 'three/tsl';
 import { MeshPhysicalNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
 import { spectralIridescence } from '../../../src/nodeMaterial/spectralNodeMaterial.ts';
@@ -30,8 +31,22 @@ async function start(backend: 'webgpu' | 'webgl'): Promise<'webgpu' | 'webgl'> {
   return (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend ? 'webgpu' : 'webgl';
 }
 
-/** Which material: three's node iridescence, or the entry's film on a node or a classic material. */
-export type Kind = 'three' | 'node' | 'classic';
+/**
+ * Which material: three's node iridescence, or the entry's film on a node or a classic material,
+ * or on a node material whose thickness is a node (iridescenceThicknessNode: the case's thickness,
+ * its thickness range's maximum a tenth of it).
+ */
+export type Kind = 'three' | 'node' | 'classic' | 'thicknessNode';
+
+/** The material of film case `c` of kind `kind`. */
+function materialOf(c: FilmCase, kind: Kind, options: SpectralIridescenceOptions): Material {
+  if (kind === 'three') return filmMaterial(c, MeshPhysicalNodeMaterial);
+  if (kind === 'classic') return spectralIridescence(filmMaterial(c), options);
+  if (kind === 'node') return spectralIridescence(filmMaterial(c, MeshPhysicalNodeMaterial), options);
+  const m = filmMaterial({ ...c, thicknessNm: c.thicknessNm / 10 }, MeshPhysicalNodeMaterial);
+  m.iridescenceThicknessNode = float(c.thicknessNm);
+  return spectralIridescence(m, options);
+}
 
 /** The centre pixel of film case `c` on WebGPURenderer: linear RGB read back, and as 8-bit sRGB. */
 async function nodePixel(
@@ -40,12 +55,7 @@ async function nodePixel(
   options: SpectralIridescenceOptions = {},
 ): Promise<{ linear: number[]; codes: number[] }> {
   const r = renderer!;
-  const material: Material =
-    kind === 'classic'
-      ? spectralIridescence(filmMaterial(c), options)
-      : kind === 'node'
-        ? spectralIridescence(filmMaterial(c, MeshPhysicalNodeMaterial), options)
-        : filmMaterial(c, MeshPhysicalNodeMaterial);
+  const material = materialOf(c, kind, options);
   const { scene, camera } = filmScene(c, material);
   const target = new RenderTarget(SIZE, SIZE, { type: FloatType });
   r.setRenderTarget(target);
