@@ -5,7 +5,7 @@
  */
 import { Group, Mesh, MeshPhysicalMaterial, MeshStandardMaterial, BoxGeometry } from 'three';
 import { MeshPhysicalNodeMaterial } from 'three/webgpu';
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { ParameterError } from '../../../src/input/validate.ts';
 import { isSpectralIridescence } from '../../../src/meshMaterial/spectralFilm.ts';
 import { spectralIridescence, useSpectralIridescence, whenSpectralReady } from '../../../src/nodeMaterial/spectralNodeMaterial.ts';
@@ -56,6 +56,14 @@ describe('the WebGPU entry', () => {
     const copy: Record<string, unknown> = {};
     for (const k in classic) copy[k] = (classic as unknown as Record<string, unknown>)[k];
     expect(typeof copy.setupLightingModel).toBe('function');
+  });
+
+  it('draws `fourier` from the table, saying so', () => {
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
+    const m = spectralIridescence(film(), { mode: 'fourier' });
+    m.illuminant = 'D93';
+    expect(warn.mock.calls.map((c) => String(c[0])).filter((t) => t.includes('mode fourier is drawn from the table'))).toHaveLength(1);
+    warn.mockRestore();
   });
 
   it('whenSpectralReady resolves for `exact` at once and refuses a material that is not spectral', async () => {
