@@ -6,6 +6,7 @@ import {
   PIXEL_CASES,
   caseReference8,
   nodeParity,
+  optionChanges,
   nodePixels,
   openHarness,
   worstCodeDifference,
@@ -41,6 +42,7 @@ test("the WebGPU entry on WebGPURenderer's WebGL2 backend draws the WebGL entry'
       );
     expect(worstCodeDifference(node[i]!.exact, caseReference8(c)), `${label}: ${node[i]!.exact}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
   });
+  await optionChanges(page);
   await nodeParity(page, 'exact');
   await nodeParity(page, 'table');
   expect(problems).toEqual([]);

@@ -5,6 +5,7 @@ import {
   PIXEL_CASES,
   caseReference8,
   nodeParity,
+  optionChanges,
   nodePixels,
   openHarness,
   worstCodeDifference,
@@ -29,6 +30,7 @@ test("the WebGPU entry on WebGPURenderer's WebGPU backend draws the reference's 
         MAX_CODE_DIFFERENCE,
       );
   });
+  await optionChanges(page);
   await nodeParity(page, 'exact');
   await nodeParity(page, 'table');
   expect(problems).toEqual([]);

@@ -87,6 +87,29 @@ export async function nodePixels(page: Page) {
   }, PIXEL_CASES);
 }
 
+/**
+ * One material's options changed between frames (a light, a method, a polarisation): each frame
+ * draws what a material made with those options draws.
+ */
+export async function optionChanges(page: Page): Promise<void> {
+  const [c] = PIXEL_CASES[1]!;
+  const changes = [{ illuminant: 'D93' }, { mode: 'exact' }, { polarization: 's' }, { mode: 'table' }] as const;
+  const { changed, fresh } = await page.evaluate(
+    async ([c, changes]) => {
+      const h = window.webgpuHarness!;
+      const fresh = [];
+      let options = {};
+      for (const change of changes) {
+        options = { ...options, ...change };
+        fresh.push((await h.nodePixel(c, 'node', options)).codes);
+      }
+      return { changed: (await h.changedPixels(c, changes)).slice(1), fresh };
+    },
+    [c, changes] as const,
+  );
+  expect(changed).toEqual(fresh);
+}
+
 /** The node film against the float64 reference on the parity harness's fixed and stress grids, in `mode`. */
 export async function nodeParity(page: Page, mode: 'exact' | 'table') {
   const grid = async (groups: Group[]) => {

@@ -5,7 +5,16 @@
  * MeshPhysicalMaterial; and, where the browser has WebGL2, the WebGL entry's film on WebGLRenderer
  * in the same scene; and the node film's XYZ of the parity cases (nodeFilmProbe.ts).
  */
-import { FloatType, type Material, MeshPhysicalMaterial, NoToneMapping, RenderTarget, WebGLRenderTarget } from 'three';
+import {
+  type Camera,
+  FloatType,
+  type Material,
+  MeshPhysicalMaterial,
+  NoToneMapping,
+  RenderTarget,
+  type Scene,
+  WebGLRenderTarget,
+} from 'three';
 import { float } from 'three/tsl';
 import { MeshPhysicalNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
@@ -48,23 +57,41 @@ function materialOf(c: FilmCase, kind: Kind, options: SpectralIridescenceOptions
   return spectralIridescence(m, options);
 }
 
-/** The centre pixel of film case `c` on WebGPURenderer: linear RGB read back, and as 8-bit sRGB. */
-async function nodePixel(
-  c: FilmCase,
-  kind: Kind,
-  options: SpectralIridescenceOptions = {},
-): Promise<{ linear: number[]; codes: number[] }> {
+/** The centre pixel of `scene` drawn by WebGPURenderer into a float target: linear RGB, and as 8-bit sRGB. */
+async function drawCentre(scene: Scene, camera: Camera): Promise<{ linear: number[]; codes: number[] }> {
   const r = renderer!;
-  const material = materialOf(c, kind, options);
-  const { scene, camera } = filmScene(c, material);
   const target = new RenderTarget(SIZE, SIZE, { type: FloatType });
   r.setRenderTarget(target);
   r.render(scene, camera);
   r.setRenderTarget(null);
   const texels = (await r.readRenderTargetPixelsAsync(target, SIZE / 2, SIZE / 2, 1, 1)) as Float32Array;
   target.dispose();
-  disposeAll(scene);
   return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
+}
+
+/** The centre pixel of film case `c` on WebGPURenderer: linear RGB read back, and as 8-bit sRGB. */
+async function nodePixel(
+  c: FilmCase,
+  kind: Kind,
+  options: SpectralIridescenceOptions = {},
+): Promise<{ linear: number[]; codes: number[] }> {
+  const { scene, camera } = filmScene(c, materialOf(c, kind, options));
+  const pixel = await drawCentre(scene, camera);
+  disposeAll(scene);
+  return pixel;
+}
+
+/** The centre pixels of one node material of film case `c`, drawn as made and after each change of its options in turn: 8-bit codes. */
+async function changedPixels(c: FilmCase, changes: readonly SpectralIridescenceOptions[]): Promise<number[][]> {
+  const material = materialOf(c, 'node', {});
+  const { scene, camera } = filmScene(c, material);
+  const out = [(await drawCentre(scene, camera)).codes];
+  for (const change of changes) {
+    Object.assign(material, change);
+    out.push((await drawCentre(scene, camera)).codes);
+  }
+  disposeAll(scene);
+  return out;
 }
 
 /**
@@ -91,11 +118,17 @@ async function webglPixel(c: FilmCase, options: SpectralIridescenceOptions | nul
 const nodeFilmXyz = (groups: readonly ParityGroup[], mode: NodeParityMode, quality: FilmQuality = DEFAULT_FILM_QUALITY) =>
   renderNodeFilmXyz(renderer!, groups, mode, quality);
 
-window.webgpuHarness = { start, nodePixel, webglPixel, nodeFilmXyz };
+window.webgpuHarness = { start, nodePixel, changedPixels, webglPixel, nodeFilmXyz };
 document.body.dataset.ready = 'yes';
 
 declare global {
   interface Window {
-    webgpuHarness?: { start: typeof start; nodePixel: typeof nodePixel; webglPixel: typeof webglPixel; nodeFilmXyz: typeof nodeFilmXyz };
+    webgpuHarness?: {
+      start: typeof start;
+      nodePixel: typeof nodePixel;
+      changedPixels: typeof changedPixels;
+      webglPixel: typeof webglPixel;
+      nodeFilmXyz: typeof nodeFilmXyz;
+    };
   }
 }
