@@ -1,5 +1,5 @@
 import { defineConfig } from '@playwright/test';
-import { chromiumLaunchOptions, glBackendName } from './scripts/chromium.ts';
+import { chromiumLaunchOptions, glBackendName, webgpuLaunchOptions } from './scripts/chromium.ts';
 
 import { BUILT_PORT, BUILT_URL } from './tests/e2e/servers.ts';
 
@@ -23,6 +23,11 @@ export default defineConfig({
     viewport: { width: 640, height: 480 },
     launchOptions: chromiumLaunchOptions(),
   },
+  // WebGPU runs in a launch of its own, which has no WebGL2 (docs/testing.md#webgpu): its specs alone there.
+  projects: [
+    { name: 'webgl', testIgnore: /webgpuBackend\.spec\.ts/ },
+    { name: 'webgpu', testMatch: /webgpuBackend\.spec\.ts/, use: { launchOptions: webgpuLaunchOptions() } },
+  ],
   webServer: {
     // One build (~5 s), then static files: no dependency optimisation or on-the-fly transforms per
     // page, as a user's browser gets the site. The element is built into the same folder.

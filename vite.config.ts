@@ -7,13 +7,23 @@ const ELEMENT_ENTRY = 'src/element/index.ts';
 /** The site's pages (public/ is copied as it is): the demo, and the example page of the material for any three.js scene. */
 const SITE_PAGES = ['index.html', 'materials.html'];
 /** The browser tests' own pages, built only into the tests' site (`--mode e2e`, dist-e2e/). */
-const TEST_PAGES = ['tests/e2e/harness/parity.html', 'tests/e2e/harness/material.html', 'scripts/harness/materialGrid.html'];
+const TEST_PAGES = [
+  'tests/e2e/harness/parity.html',
+  'tests/e2e/harness/material.html',
+  'tests/e2e/harness/webgpu.html',
+  'scripts/harness/materialGrid.html',
+];
 
 /**
  * The library's entries (package.json `exports`): the float64 physics, the spectral material for
- * three.js scenes, and the element; three.js stays outside (a peer dependency).
+ * three.js scenes (WebGLRenderer's, and WebGPURenderer's), and the element; three.js stays outside (a peer dependency).
  */
-const LIBRARY_ENTRIES = { physics: 'src/packageEntries/physics.ts', material: 'src/packageEntries/material.ts', element: ELEMENT_ENTRY };
+const LIBRARY_ENTRIES = {
+  physics: 'src/packageEntries/physics.ts',
+  material: 'src/packageEntries/material.ts',
+  webgpu: 'src/packageEntries/webgpu.ts',
+  element: ELEMENT_ENTRY,
+};
 
 /**
  * The library's and the element's files (the light's Web Worker, the HDR environments) are found

@@ -70,6 +70,16 @@ export function findChromium(): ChromiumSearch {
   return missing('no Chromium found.');
 }
 
+/**
+ * WebGPU in headless Chromium on a CPU (docs/testing.md#webgpu): SwiftShader's Vulkan adapter, which
+ * needs a system Vulkan driver (Debian's mesa-vulkan-drivers) and these features; this launch has no
+ * WebGL2, and `--ignore-gpu-blocklist` loses its WebGPU context.
+ */
+export const WEBGPU_ARGS = ['--enable-unsafe-webgpu', '--enable-features=Vulkan,VulkanFromANGLE,DefaultANGLEVulkan', '--use-angle=vulkan'];
+
+/** Launch options for the WebGPU tests: the Chromium found, with WEBGPU_ARGS for flags. */
+export const webgpuLaunchOptions = (): ChromiumLaunchOptions => ({ ...chromiumLaunchOptions(), args: [...WEBGPU_ARGS] });
+
 /** Launch options for the tests and the benchmark: with no Chromium, the run stops (exit 1) with the line saying how to get one. */
 export function chromiumLaunchOptions(): ChromiumLaunchOptions {
   const search = findChromium();

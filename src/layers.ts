@@ -12,6 +12,7 @@ export const SOURCE_LAYERS: readonly (readonly string[])[] = [
   ['film', 'gpuFilmDynamics'], // the film's colour on the GPU; the flowing film's dynamics on the GPU (physics/filmDynamics/ is its float64 twin)
   ['bubbleMaterials'], // the bubble's and the environment's materials
   ['meshMaterial', 'bubbleTwins'], // the material for any three.js mesh; the CPU twins of the bubble's shaders
+  ['nodeMaterial'], // the material for three.js's WebGPURenderer: the film in TSL, its lighting model
   ['view'], // what is drawn for what is asked (the frame), and the bubble's view that draws it: renderer, probe
   ['plots'], // the plots of the film at the probe
   ['app', 'diagram'], // the demo's app: panel, settings in the URL, messages; the SVG diagram of the reflected beams

@@ -1,23 +1,12 @@
 import type { ShaderMaterial, WebGLRenderTarget, WebGLRenderer } from 'three';
 import type { FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmOptics } from '../settings/filmSettings.ts';
-import { followsField } from '../physics/stackFilms.ts';
-import { filmLayersOf } from '../methods/filmStacks.ts';
-import type { StackedSettings } from './filmStack.ts';
+import { tableKey } from './filmTableKey.ts';
 import { type FilmTableGrid, bindFilmTable } from './filmTableGrid.ts';
 import { FilmTablePass, tableTarget } from './filmTablePass.ts';
 import type { ProgressiveTableBuild } from './progressiveTableBuild.ts';
 
-/**
- * What the table of `s` over thicknesses up to `maxThicknessNm` (the field's range) depends on;
- * anything else (the field's animation, exposure, space) leaves it alone: a stack of films in place
- * of nFilm, and the range only where the film follows the field.
- */
-export function tableKey(s: FilmOptics & StackedSettings, maxThicknessNm: number): string {
-  const films = filmLayersOf(s);
-  const range = followsField(films) ? maxThicknessNm : null;
-  return JSON.stringify([s.nOutside, films, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
-}
+export { tableKey };
 
 /**
  * Makes a table's progressive build over its pass (`(pass) => new ProgressiveTableBuild(pass)`),

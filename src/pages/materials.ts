@@ -7,13 +7,13 @@
  */
 import { arrowKeyStep } from '../app/arrowKeyStep.ts';
 import { shownPixelRatio } from '../settings/pixelRatio.ts';
-import { AgXToneMapping, EquirectangularReflectionMapping, type Material, type Mesh, Vector3, WebGLRenderer } from 'three';
-import { whenSpectralReady } from '../meshMaterial/spectralIridescence.ts';
+import { AgXToneMapping, EquirectangularReflectionMapping, type Material, type Mesh, Vector3 } from 'three';
 import { isSpectralIridescence } from '../meshMaterial/spectralFilm.ts';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { environmentTexture, loadEnvironmentPixels } from '../bubbleMaterials/environmentMaps.ts';
 import { TITANIUM_OXIDE_NM, VIEWS, type View, exampleScene } from './materialsScene.ts';
 import { anodizingText } from './anodizingVoltage.ts';
+import { type PageRenderer, pageRenderer } from './materialsRenderer.ts';
 import { pixelDeltaE00 } from '../physics/pixelDeltaE.ts';
 import { catalogueFor, message } from '../i18n/messages.ts';
 import { SWATCH_ANGLES_DEG, SWATCH_STACKS, coatedLensPercent, stackSwatchRgb8 } from './stackSwatches.ts';
@@ -31,11 +31,12 @@ const titanium = element<HTMLInputElement>('#titanium');
 const titaniumValue = element<HTMLOutputElement>('#titanium-value');
 const stacks = element<HTMLDivElement>('#stacks');
 
-const renderer = new WebGLRenderer({ canvas, antialias: true });
+const page: PageRenderer = await pageRenderer(canvas);
+const renderer = page.renderer;
 renderer.setPixelRatio(shownPixelRatio());
 renderer.toneMapping = AgXToneMapping;
 renderer.toneMappingExposure = 1.6;
-const example = exampleScene(innerWidth / innerHeight);
+const example = exampleScene(innerWidth / innerHeight, page.upgrade);
 const controls = new OrbitControls(example.camera, canvas);
 let view: View = 'side by side';
 /** The probe in CSS pixels from the canvas's top left (null: the right torus knot's first vertex, once drawn). */
@@ -93,13 +94,10 @@ function draw(v: View = view): number[] {
   return readPixel(p.x, p.y);
 }
 
-/** The 8-bit pixel drawn at (x, y) CSS pixels from the canvas's top left, read at once. */
+/** The 8-bit pixel drawn at (x, y) CSS pixels from the canvas's top left, read at once (none on WebGPU). */
 function readPixel(x: number, y: number): number[] {
   const r = renderer.getPixelRatio();
-  const gl = renderer.getContext();
-  const out = new Uint8Array(4);
-  gl.readPixels(Math.round(x * r), gl.drawingBufferHeight - 1 - Math.round(y * r), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
-  return [out[0]!, out[1]!, out[2]!];
+  return page.readPixel(Math.round(x * r), canvas.height - 1 - Math.round(y * r)) ?? [];
 }
 
 const hex = (p: readonly number[]) => `#${p.map((v) => v.toString(16).padStart(2, '0')).join('')}`;
@@ -124,6 +122,7 @@ function update(): void {
   draw();
   mark.style.left = `${probe.x}px`;
   mark.style.top = `${probe.y}px`;
+  if (threes.length === 0) return void (readout.textContent = `${page.name}: the probe reads pixels on WebGLRenderer only.`);
   readout.replaceChildren(
     `At the probe: three.js `,
     swatch(threes),
@@ -181,7 +180,7 @@ const spectralMaterials = (): Material[] => {
   });
   return [...found];
 };
-Promise.all([loadEnvironmentPixels('park'), ...spectralMaterials().map(whenSpectralReady)]).then(
+Promise.all([loadEnvironmentPixels('park'), ...spectralMaterials().map(page.whenReady)]).then(
   () => {
     const texture = environmentTexture('park', example)!;
     texture.mapping = EquirectangularReflectionMapping;
@@ -205,6 +204,6 @@ window.materialsPage = { renderer, draw: (v: View) => draw(v), pixelOf };
 
 declare global {
   interface Window {
-    materialsPage?: { renderer: WebGLRenderer; draw(view: View): number[]; pixelOf(name: string): number[] };
+    materialsPage?: { renderer: PageRenderer['renderer']; draw(view: View): number[]; pixelOf(name: string): number[] };
   }
 }

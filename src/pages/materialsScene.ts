@@ -16,6 +16,7 @@ import {
   Vector2,
 } from 'three';
 import { spectralIridescence } from '../meshMaterial/spectralIridescence.ts';
+import { type SpectralIridescenceOptions } from '../meshMaterial/spectralIridescenceOptions.ts';
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3 } from '../physics/colorConversions.ts';
 import { type NamedMedium } from '../physics/namedMedia.ts';
 import { transparentIndexAt } from '../physics/medium.ts';
@@ -23,6 +24,9 @@ import { filmXyz } from '../physics/spectralIntegration.ts';
 import { STACK_PRESETS } from '../physics/stackPresets.ts';
 import { SODIUM_D_NM } from '../film/filmMedia.ts';
 import { SWATCH_STACKS } from './stackSwatches.ts';
+
+/** What makes a physical material spectral: the WebGL entry's spectralIridescence, or the WebGPU entry's (materials.html?renderer=webgpu). */
+export type Upgrade = (m: MeshPhysicalMaterial, options?: SpectralIridescenceOptions) => MeshPhysicalMaterial;
 
 /** Which iridescence each side shows: three.js's on the left and ours on the right, or one of them on both. */
 export const VIEWS = ['side by side', 'three.js', 'spectral'] as const;
@@ -109,7 +113,7 @@ function minimumThicknessMap(): DataTexture {
 }
 
 /** Each metal twice: three.js's film over a metal of the bare metal's colour, and the spectral film on the named metal. */
-function metalMaterials(map: DataTexture, fixed: DataTexture) {
+function metalMaterials(map: DataTexture, fixed: DataTexture, upgrade: Upgrade) {
   return METALS.map((m) => {
     const range = m.thicknessNm ?? { min: TITANIUM_OXIDE_NM.initial, max: TITANIUM_OXIDE_NM.max };
     const film: MeshPhysicalMaterialParameters = {
@@ -126,7 +130,7 @@ function metalMaterials(map: DataTexture, fixed: DataTexture) {
       iridescenceIOR: transparentIndexAt(m.film, SODIUM_D_NM),
     });
     // The metal is opaque: black and non-metal, the film over it is all the coin reflects.
-    const ours = spectralIridescence(new MeshPhysicalMaterial({ ...film, color: 0x000000, metalness: 0 }), { film: m.film, base: m.base });
+    const ours = upgrade(new MeshPhysicalMaterial({ ...film, color: 0x000000, metalness: 0 }), { film: m.film, base: m.base });
     return { threes, ours };
   });
 }
@@ -154,12 +158,12 @@ const STACK_OBJECTS: Readonly<
 };
 
 /** Each stack's object: a black glossy surface whose reflection is all the stack's. */
-function stackMeshes(): Mesh<SphereGeometry, MeshPhysicalMaterial>[] {
+function stackMeshes(upgrade: Upgrade): Mesh<SphereGeometry, MeshPhysicalMaterial>[] {
   return SWATCH_STACKS.map((preset) => {
     const { films, nInside } = STACK_PRESETS[preset];
     const o = STACK_OBJECTS[preset];
     const surface = new MeshPhysicalMaterial({ color: 0x000000, roughness: 0.08, metalness: 0, iridescence: 1, side: DoubleSide });
-    const mesh = new Mesh(o.shape(), spectralIridescence(surface, { layers: films, base: nInside }));
+    const mesh = new Mesh(o.shape(), upgrade(surface, { layers: films, base: nInside }));
     mesh.name = o.name;
     mesh.position.set(0, o.y, 0.5);
     mesh.rotation.set(...o.rotation);
@@ -181,12 +185,12 @@ export interface ExampleScene {
 /**
  * The example scene: the three shapes twice, left and right of the centre, one material each
  * for three.js's iridescence and for the spectral film, with the same parameters; between them
- * the films on metals (METALS) and the stacks of films (STACK_OBJECTS).
+ * the films on metals (METALS) and the stacks of films (STACK_OBJECTS), made spectral by `upgrade`.
  */
-export function exampleScene(aspect: number): ExampleScene {
+export function exampleScene(aspect: number, upgrade: Upgrade = spectralIridescence): ExampleScene {
   const map = thicknessMap();
   const threes = new MeshPhysicalMaterial({ ...FILM, iridescenceThicknessMap: map });
-  const ours = spectralIridescence(new MeshPhysicalMaterial({ ...FILM, iridescenceThicknessMap: map }));
+  const ours = upgrade(new MeshPhysicalMaterial({ ...FILM, iridescenceThicknessMap: map }));
   const scene = new Scene();
   const sides = [-1.15, 1.15].map((x) => {
     const side = new Group();
@@ -205,7 +209,7 @@ export function exampleScene(aspect: number): ExampleScene {
   sides[0]!.rotation.set(0.35, 0.4, 0);
   sides[1]!.rotation.set(0.35, 0.4, 0);
   const fixed = minimumThicknessMap();
-  const metals = metalMaterials(map, fixed);
+  const metals = metalMaterials(map, fixed, upgrade);
   const coin = new CylinderGeometry(0.17, 0.17, 0.035, 64);
   const coins = METALS.map((m, i) => {
     const mesh = new Mesh<CylinderGeometry, MeshPhysicalMaterial>(coin, metals[i]!.ours);
@@ -215,7 +219,7 @@ export function exampleScene(aspect: number): ExampleScene {
     scene.add(mesh);
     return mesh;
   });
-  const stacks = stackMeshes();
+  const stacks = stackMeshes(upgrade);
   scene.add(...stacks);
   const camera = new PerspectiveCamera(38, aspect, 0.1, 50);
   camera.position.set(0, 0.25, 5.2);

@@ -1,8 +1,9 @@
 import { expect, test } from '@playwright/test';
+import type { WebGLInfo } from 'three';
 import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
 import { PHYSICAL_MATERIAL_CODES } from '../tolerances.ts';
 import { watchProblems } from './pageWatch.ts';
-import type { FilmCase } from './harness/materialScene.ts';
+import type { FilmCase } from './harness/filmCaseScene.ts';
 import { FILM_STACK_DOMAIN } from '../../src/physics/filmReflectance.ts';
 import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
 import { srgbDecode } from '../../src/physics/colorConversions.ts';
@@ -131,7 +132,8 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
       return ['coated lens', 'nacre shell'].map((name) => materials.pixelOf(name));
     };
     const [threes, ours] = [pixels('three.js'), pixels('spectral')];
-    const passes = materials.renderer.info.programs!.filter((p) => p.cacheKey.includes('TFC_FILM_LAYERS'));
+    // The page's default renderer: WebGLRenderer.
+    const passes = (materials.renderer.info as WebGLInfo).programs!.filter((p) => p.cacheKey.includes('TFC_FILM_LAYERS'));
     return { threes, ours, passes: passes.map((p) => (p as { diagnostics?: unknown }).diagnostics ?? null) };
   });
   expect(stacks.threes).toEqual(stacks.ours);

@@ -9,7 +9,7 @@ import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import type { LayerStack } from '../../src/physics/transferMatrix.ts';
 
 /** XYZ as 8-bit codes: XYZ → linear RGB (eq 19 for sRGB, the CLI's srgb8) → clip → encode → round. */
-const xyzTo8 = (xyz: Xyz, toLinear: Matrix3): number[] => mapToGamut(applyMatrix3(toLinear, xyz), xyz[1]).map(encode8);
+export const xyzTo8 = (xyz: Xyz, toLinear: Matrix3): number[] => mapToGamut(applyMatrix3(toLinear, xyz), xyz[1]).map(encode8);
 
 /** The reference's 8-bit colour of a film (a soap film in air seen head-on unless `stack` says otherwise). */
 export function reference8(

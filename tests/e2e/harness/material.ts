@@ -24,7 +24,8 @@ import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { spectralIridescence, useSpectralIridescence, whenSpectralReady } from '../../../src/meshMaterial/spectralIridescence.ts';
 import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
-import { type FilmCase, centre, disposeAll, draw, environment, filmMaterial, filmScene, renderer } from './materialScene.ts';
+import { type FilmCase, disposeAll, environment, filmMaterial, filmScene } from './filmCaseScene.ts';
+import { centre, draw, renderer } from './materialScene.ts';
 import { nodeRendererWarnings } from './materialNodeRenderer.ts';
 import { threeJsUserPixels } from './materialThreeJsUser.ts';
 

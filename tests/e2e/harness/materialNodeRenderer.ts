@@ -5,7 +5,7 @@
 import { MeshPhysicalMaterial } from 'three';
 import { WebGPURenderer } from 'three/webgpu';
 import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
-import { type FilmCase, disposeAll, filmMaterial, filmScene } from './materialScene.ts';
+import { type FilmCase, disposeAll, filmMaterial, filmScene } from './filmCaseScene.ts';
 
 /**
  * The console's warnings while a WebGPURenderer draws the film case twice with the spectral

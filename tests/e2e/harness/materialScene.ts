@@ -1,44 +1,15 @@
 /**
- * The spectral material's harness pages' scene (tests/e2e/harness/material.html): one renderer on
- * the page's canvas, a film case on a box's face under constant white light, drawn and read back
+ * The spectral material's harness pages' renderer (tests/e2e/harness/material.html): one
+ * WebGLRenderer on the page's canvas, a film case's scene (filmCaseScene.ts) drawn and read back
  * as 8-bit pixels.
  */
-import {
-  BoxGeometry,
-  type BufferGeometry,
-  DataTexture,
-  EquirectangularReflectionMapping,
-  FloatType,
-  Mesh,
-  MeshPhysicalMaterial,
-  NoToneMapping,
-  OrthographicCamera,
-  type PerspectiveCamera,
-  RGBAFormat,
-  Scene,
-  WebGLRenderer,
-  type Material,
-  type Object3D,
-} from 'three';
+import { NoToneMapping, type OrthographicCamera, type PerspectiveCamera, type Scene, WebGLRenderer } from 'three';
 
 const canvas = document.querySelector<HTMLCanvasElement>('#gl');
 if (!canvas) throw new Error('material.html must hold #gl');
 export const renderer = new WebGLRenderer({ canvas });
 renderer.toneMapping = NoToneMapping;
 const SIZE = canvas.width;
-
-/** An equirectangular float environment of `size` texels, each `texel(u, v)` (linear RGB). */
-export function environment(texel: (u: number, v: number) => readonly [number, number, number], w = 32, h = 16): DataTexture {
-  const data = new Float32Array(4 * w * h);
-  for (let y = 0; y < h; y++) for (let x = 0; x < w; x++) data.set([...texel(x / w, y / h), 1], 4 * (y * w + x));
-  const t = new DataTexture(data, w, h, RGBAFormat, FloatType);
-  t.mapping = EquirectangularReflectionMapping;
-  t.needsUpdate = true;
-  return t;
-}
-
-/** Constant radiance 1 (the light's white from every direction): the demo's env=none lighting of the film. */
-const white = environment(() => [1, 1, 1]);
 
 /** The canvas's pixels (RGBA, bottom row first) right after drawing `scene`. */
 export function draw(scene: Scene, camera: OrthographicCamera | PerspectiveCamera): Uint8Array {
@@ -53,53 +24,3 @@ export const centre = (pixels: Uint8Array): number[] => {
   const i = 4 * ((SIZE / 2) * SIZE + SIZE / 2);
   return [pixels[i]!, pixels[i + 1]!, pixels[i + 2]!];
 };
-
-/**
- * A film on a box's face, mirror-smooth: black and non-metal, so only the film reflects, or a metal
- * of `metalColor` (sRGB hex, metalness 1: the film over the metal from its colour).
- */
-export interface FilmCase {
-  readonly thicknessNm: number;
-  readonly angleDeg: number;
-  readonly nFilm: number;
-  readonly ior: number;
-  readonly metalColor?: number;
-}
-
-export const filmMaterial = (c: FilmCase) =>
-  new MeshPhysicalMaterial({
-    color: c.metalColor ?? 0x000000,
-    roughness: 0,
-    metalness: c.metalColor === undefined ? 0 : 1,
-    ior: c.ior,
-    iridescence: 1,
-    iridescenceIOR: c.nFilm,
-    iridescenceThicknessMinimum: 0,
-    iridescenceThicknessMaximum: c.thicknessNm,
-  });
-
-/**
- * A 4-unit box turned by angleDeg about the vertical, its front face through the origin, seen
- * by an orthographic camera along −z: the centre pixel sees that face at θ_i = angleDeg.
- */
-export function filmScene(c: FilmCase, material: Material): { scene: Scene; camera: OrthographicCamera; box: Mesh } {
-  const scene = new Scene();
-  scene.environment = white;
-  const box = new Mesh(new BoxGeometry(4, 4, 4), material);
-  const a = (c.angleDeg * Math.PI) / 180;
-  box.rotation.y = a;
-  box.position.set(-2 * Math.sin(a), 0, -2 * Math.cos(a));
-  scene.add(box);
-  const camera = new OrthographicCamera(-1, 1, 1, -1, 0.1, 20);
-  camera.position.set(0, 0, 10);
-  return { scene, camera, box };
-}
-
-export const disposeAll = (root: Object3D) =>
-  root.traverse((o) => {
-    if (o instanceof Mesh) {
-      const mesh = o as Mesh<BufferGeometry, Material | Material[]>;
-      mesh.geometry.dispose();
-      for (const m of [mesh.material].flat()) m.dispose();
-    }
-  });

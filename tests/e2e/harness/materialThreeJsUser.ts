@@ -8,7 +8,8 @@
 import { MaterialLoader, type MeshPhysicalMaterial } from 'three';
 import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
 import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
-import { type FilmCase, centre, disposeAll, draw, filmMaterial, filmScene, renderer } from './materialScene.ts';
+import { type FilmCase, disposeAll, filmMaterial, filmScene } from './filmCaseScene.ts';
+import { centre, draw, renderer } from './materialScene.ts';
 
 /**
  * The pixels and what was seen of film case `c` in table mode; `ior.given` is set out of the

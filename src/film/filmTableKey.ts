@@ -1,0 +1,16 @@
+import type { FilmOptics } from '../settings/filmSettings.ts';
+import { followsField } from '../physics/stackFilms.ts';
+import { filmLayersOf } from '../methods/filmStacks.ts';
+import type { StackedSettings } from './filmStack.ts';
+
+/**
+ * What the table of `s` over thicknesses up to `maxThicknessNm` (the field's range) depends on;
+ * anything else (the field's animation, exposure, space) leaves it alone: a stack of films in place
+ * of nFilm, and the range only where the film follows the field. Apart from filmTable.ts, so that
+ * the node material's table (src/nodeMaterial/filmTable.ts) keys its table alike without the GLSL passes.
+ */
+export function tableKey(s: FilmOptics & StackedSettings, maxThicknessNm: number): string {
+  const films = filmLayersOf(s);
+  const range = followsField(films) ? maxThicknessNm : null;
+  return JSON.stringify([s.nOutside, films, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
+}

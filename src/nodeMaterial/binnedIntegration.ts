@@ -1,0 +1,73 @@
+/**
+ * XYZ of the reflected light in TSL, eqs (15)–(18), by equal wavelength bins over
+ * LAMBDA_MIN_NM–LAMBDA_MAX_NM: X = Σ over bins of W_bin × mean R over the bin's phase window. The
+ * node twin of shaders/physics/binnedIntegration.glsl (src/physics/binnedIntegration.ts); the bin
+ * weights (∫_bin I_in x̄, ȳ, z̄ / k) are src/film/spectralBinsTexture.ts's texture.
+ */
+import { Loop, float, int, ivec2, length, select, textureLoad, vec2, vec3 } from 'three/tsl';
+import { type Node, type TextureNode } from 'three/webgpu';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
+import { type FloatNode } from './complex.ts';
+import { type AiryTerms, type FilmOptics, meanChannelReflectance, reflectanceAt, roundTripAttenuation } from './filmReflectance.ts';
+
+/** The bins as the program holds them (spectralBinDefines): their count, the ones visited (first ≤ b < end), their weights. */
+export interface SpectralBinNodes {
+  readonly count: number;
+  readonly first: number;
+  readonly end: number;
+  readonly weights: TextureNode;
+}
+
+/** One bin's wavelengths: its ends and centre, and its weight. */
+export interface Bin {
+  readonly index: Node<'int'>;
+  readonly low: FloatNode;
+  readonly high: FloatNode;
+  readonly center: FloatNode;
+}
+
+/** Σ over the visited bins of `reflectance(bin)` × the bin's weight. */
+export function binSum(bins: SpectralBinNodes, reflectance: (bin: Bin) => FloatNode): Node<'vec3'> {
+  const width = (LAMBDA_MAX_NM - LAMBDA_MIN_NM) / bins.count;
+  const xyz = vec3(0, 0, 0).toVar();
+  Loop({ start: int(bins.first), end: int(bins.end), type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
+    const low = float(i).mul(width).add(LAMBDA_MIN_NM).toVar();
+    const high = low.add(width);
+    const bin = { index: i, low, high, center: low.add(width / 2) };
+    xyz.addAssign(textureLoad(bins.weights, ivec2(i, int(0))).xyz.mul(reflectance(bin)));
+  });
+  return xyz;
+}
+
+/**
+ * R of one bin: the closed-form mean over its phase window [phase − halfWidth, phase + halfWidth],
+ * an absorbing film's attenuation at the bin's centre folded into t_ab t_ba r_bc and r_ba r_bc; R at
+ * its centre for an evanescent film (Re Δ = 0: no fringes to average).
+ */
+export function binReflectance(o: FilmOptics, centerNm: FloatNode, phase: FloatNode, halfWidth: FloatNode): FloatNode {
+  const path = o.opticalPathNm;
+  const a = roundTripAttenuation(path, centerNm).toVar();
+  const attenuated = (c: AiryTerms): AiryTerms => ({ rab: c.rab, multiple: c.multiple.mul(a), roundTrip: c.roundTrip.mul(a) });
+  const mean = o.channels
+    .map((c) => meanChannelReflectance(attenuated(c), phase, halfWidth))
+    .reduce((x, y) => x.add(y))
+    .div(o.channels.length);
+  return select(path.x.equal(0).and(path.y.notEqual(0)), reflectanceAt(o, centerNm), mean);
+}
+
+/**
+ * The bins of a film whose media are the same at every λ: each bin's phase window from the optical
+ * path at its ends, widened (in quadrature) by extraHalfWidthPerInvNm × (nm / λ), which the table
+ * pass uses to average over a cell's thickness range.
+ */
+export function binnedXyz(bins: SpectralBinNodes, o: FilmOptics, extraHalfWidthPerInvNm: FloatNode = float(0)): Node<'vec3'> {
+  const path = o.opticalPathNm;
+  return binSum(bins, ({ low, high, center }) => {
+    const inverseLow = float(1).div(low);
+    const inverseHigh = float(1).div(high);
+    const phase = path.x.mul(Math.PI).mul(inverseLow.add(inverseHigh));
+    const binHalf = path.x.mul(Math.PI).mul(inverseLow.sub(inverseHigh));
+    const extra = extraHalfWidthPerInvNm.mul(2).div(low.add(high));
+    return binReflectance(o, center, phase, length(vec2(binHalf, extra)));
+  });
+}

@@ -1,0 +1,55 @@
+/**
+ * The film's colour in TSL, as shaders/film/filmColor.glsl computes it for `exact`: the film's XYZ
+ * by the binned integral (eqs 15–18 over eqs 1–14), for a film of constant media, of media that
+ * depend on λ (their knots), or a stack of films, taken to three's working space (linear sRGB,
+ * eq 19).
+ */
+import { vec3 } from 'three/tsl';
+import { type Node, type TextureNode } from 'three/webgpu';
+import { type FilmFill } from '../methods/filmFills.ts';
+import { XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
+import { type SpectralBinNodes, binReflectance, binSum, binnedXyz } from './binnedIntegration.ts';
+import { type ComplexNode, type FloatNode } from './complex.ts';
+import { type ChannelKind, filmOptics, filmPathPerNm } from './filmReflectance.ts';
+import { mediaAt } from './medium.ts';
+import { type StackNodes, layersReflectance } from './transferMatrix.ts';
+
+/** What the film's nodes read: its channels, its bins, its media (at the D line, their knots, or the stack). */
+export interface FilmNodes {
+  readonly fill: FilmFill;
+  /** n_a, real: the light comes from a transparent medium */
+  readonly nOutside: FloatNode;
+  readonly kinds: readonly ChannelKind[];
+  readonly bins: SpectralBinNodes;
+  readonly nFilm: ComplexNode;
+  readonly nInside: ComplexNode;
+  readonly knots: TextureNode;
+  readonly stack: StackNodes;
+}
+
+/** Each bin's Fresnel terms at ñ of its centre, its phase window from the optical path at its two ends (dispersiveBinnedXyz). */
+function dispersiveXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: FloatNode): Node<'vec3'> {
+  const pathPerNm = (lambdaNm: FloatNode) => filmPathPerNm(mediaAt(f.knots, lambdaNm).film, f.nOutside, cosIncidence);
+  return binSum(f.bins, ({ low, high, center }) => {
+    const media = mediaAt(f.knots, center);
+    const optics = filmOptics(f.kinds, f.nOutside, media.film, media.inside, thicknessNm, cosIncidence);
+    const lowPhase = pathPerNm(low).mul(thicknessNm).div(low).toVar();
+    const highPhase = pathPerNm(high).mul(thicknessNm).div(high).toVar();
+    return binReflectance(optics, center, lowPhase.add(highPhase).mul(Math.PI), lowPhase.sub(highPhase).mul(Math.PI));
+  });
+}
+
+/** The film's XYZ at a thickness and cos θ_i, light from outside. */
+export function filmXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: FloatNode): Node<'vec3'> {
+  if (f.fill === 'stack')
+    return binSum(f.bins, ({ index, center }) => layersReflectance(f.stack, f.kinds, index, center, f.nOutside, thicknessNm, cosIncidence));
+  if (f.fill === 'dispersive') return dispersiveXyz(f, thicknessNm, cosIncidence);
+  return binnedXyz(f.bins, filmOptics(f.kinds, f.nOutside, f.nFilm, f.nInside, thicknessNm, cosIncidence));
+}
+
+/** XYZ → linear sRGB, three's working space (eq 19), row by row. */
+export function xyzToLinearWorking(xyz: Node<'vec3'>): Node<'vec3'> {
+  const m = XYZ_TO_LINEAR_SRGB;
+  const row = (r: number) => xyz.dot(vec3(m[3 * r], m[3 * r + 1], m[3 * r + 2]));
+  return vec3(row(0), row(1), row(2));
+}

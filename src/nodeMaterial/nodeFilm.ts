@@ -1,0 +1,143 @@
+/**
+ * What a material made spectral by the WebGPU entry holds beside the shared film record
+ * (src/meshMaterial/spectralFilm.ts): its TSL inputs and its table, brought up to the material
+ * before each render; and the lighting model that draws its film.
+ */
+import { type MeshPhysicalMaterial } from 'three';
+import { clamp, float, ior, iridescenceIOR, vec2 } from 'three/tsl';
+import { MeshPhysicalNodeMaterial, type NodeBuilder, type PhysicalLightingModel, type Renderer } from 'three/webgpu';
+import { updateFilmColorUniforms } from '../film/filmColor.ts';
+import { filmSpectralBins } from '../film/filmFillGpu.ts';
+import { spectralBinDefines } from '../film/spectralBinsTexture.ts';
+import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
+import { filmFill } from '../methods/filmFills.ts';
+import { methodReads } from '../methods/methods.ts';
+import { type MaterialFilmSettings, filmSettingsOf, metalOf, metalStateOf } from '../meshMaterial/materialFilm.ts';
+import { clampWithWarning } from '../meshMaterial/materialParameters.ts';
+import { type SpectralFilm, filmOf, warnOnce } from '../meshMaterial/spectralFilm.ts';
+import { type FloatNode } from './complex.ts';
+import { type FilmInputs, setFilmInputs } from './filmInputs.ts';
+import { CHANNEL_KINDS } from './filmReflectance.ts';
+import { type FilmNodes, filmXyz, xyzToLinearWorking } from './filmColor.ts';
+import { NodeFilmTable } from './filmTable.ts';
+import { FilmUpdateNode } from './filmUpdateNode.ts';
+import { SpectralLightingModel } from './spectralLightingModel.ts';
+
+/** A material the entry makes spectral: a node material, or a classic one WebGPURenderer draws through its node copy. */
+export type PhysicalMaterial = MeshPhysicalNodeMaterial | MeshPhysicalMaterial;
+
+/** A physical material as the shared film code reads it (the glTF parameters both kinds hold). */
+export const physical = (m: PhysicalMaterial) => m as MeshPhysicalMaterial;
+
+/** A spectral node film: the shared record, its TSL inputs, its table (null until `table` is drawn). */
+export interface NodeFilm {
+  readonly film: SpectralFilm;
+  readonly inputs: FilmInputs;
+  table: NodeFilmTable | null;
+}
+
+/** The film as drawn now: its settings, clamped to their domains with a warning. */
+const drawnSettings = (f: NodeFilm, m: PhysicalMaterial): MaterialFilmSettings =>
+  filmSettingsOf(
+    physical(m),
+    f.film.options,
+    clampWithWarning((name, message) => warnOnce(f.film, name, message)),
+  );
+
+/**
+ * Whether the film is drawn from the table: every method that does not integrate the bins per
+ * fragment, `table`, and `fourier` in its place (its series per fragment is not ported: drawn from
+ * the table, with a notice); a per-pixel iridescenceIORNode is drawn by `exact` (the table is made
+ * for one index).
+ */
+export function drawsTable(m: PhysicalMaterial, s: MaterialFilmSettings): boolean {
+  const node = (m as Partial<MeshPhysicalNodeMaterial>).iridescenceIORNode;
+  return !methodReads(s.mode, 'spectralBins') && !node;
+}
+
+/** The film's nodes that the pass and the material share: its fill, channels, the media's inputs. */
+const sharedNodes = (f: NodeFilm, s: MaterialFilmSettings): Omit<FilmNodes, 'bins' | 'nFilm' | 'nInside'> => ({
+  fill: filmFill(s),
+  // three's film lies in air
+  nOutside: float(1),
+  kinds: CHANNEL_KINDS[s.polarization],
+  knots: f.inputs.knots,
+  stack: { layers: f.inputs.layers, count: f.inputs.layerCount },
+});
+
+/** Brings the film's uniforms, inputs and table up to the material, the table drawn with `renderer`. */
+export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Renderer | null): void {
+  const o = f.film.options;
+  const s = drawnSettings(f, m);
+  if (s.mode !== o.mode) warnOnce(f.film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
+  if (methodReads(s.mode, 'spectralTransform'))
+    warnOnce(f.film, 'series', `mode ${s.mode} is drawn from the table on WebGPURenderer (its series per fragment is WebGLRenderer's)`);
+  const state = metalStateOf(physical(m), o);
+  if (f.film.drawnMetal !== null && f.film.drawnMetal !== state) m.needsUpdate = true;
+  f.film.drawnMetal = state;
+  // The entry makes the film's uniforms with the film (spectralNodeMaterial.ts).
+  const film = f.film as SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> };
+  updateFilmColorUniforms(film, { ...s, mode: 'exact' }, o.quality, null);
+  setFilmInputs(f.inputs, film.uniforms);
+  if (renderer && f.table && drawsTable(m, s))
+    f.table.update(renderer, s, { ...sharedNodes(f, s), nFilm: f.inputs.nFilm, nInside: f.inputs.nInside });
+}
+
+/** The film's XYZ by `exact` on the material: three's iridescenceIOR and ior (clamped to the film's domain) unless the options name the media. */
+function exactXyz(f: NodeFilm, m: PhysicalMaterial, s: MaterialFilmSettings, thicknessNm: FloatNode, cosIncidence: FloatNode) {
+  const o = f.film.options;
+  const q = o.quality;
+  const bins = spectralBinDefines(filmSpectralBins(s, q, q.exactSpectralBins), q.spectralTailTolerance);
+  const d = FILM_STACK_DOMAIN;
+  const three = (n: FloatNode, domain: { min: number; max: number }) => vec2(clamp(n, domain.min, domain.max), 0);
+  return filmXyz(
+    {
+      ...sharedNodes(f, s),
+      bins: {
+        count: bins.TFC_SPECTRAL_BINS!,
+        first: bins.TFC_SPECTRAL_BIN_FIRST!,
+        end: bins.TFC_SPECTRAL_BIN_END!,
+        weights: f.inputs.weights,
+      },
+      nFilm: o.film === null ? three(iridescenceIOR, d.nFilm) : f.inputs.nFilm,
+      nInside: o.base === null && metalOf(physical(m), o) === null ? three(ior, d.nInside) : f.inputs.nInside,
+    },
+    thicknessNm,
+    cosIncidence,
+  );
+}
+
+/** The film's table for its quality, made again when the quality changes. */
+function tableOf(f: NodeFilm): NodeFilmTable {
+  const quality = f.film.options.quality;
+  if (f.table && JSON.stringify(f.table.quality) === JSON.stringify(quality)) return f.table;
+  f.table?.dispose();
+  return (f.table = new NodeFilmTable(quality));
+}
+
+const nodeFilms = new WeakMap<object, NodeFilm>();
+
+/** Makes `m` hold `f`. */
+export const addNodeFilm = (m: PhysicalMaterial, f: NodeFilm): void => void nodeFilms.set(m, f);
+
+/** The node film of a material made spectral by this entry. */
+export const nodeFilmOf = (m: object): NodeFilm | undefined => nodeFilms.get(m);
+
+/**
+ * three's lighting model for the material, or where it draws iridescence the film's: `this` is
+ * the node material built (a classic material's node copy), `builder.material` the material made
+ * spectral.
+ */
+export function setupLightingModel(this: MeshPhysicalNodeMaterial, builder: NodeBuilder): PhysicalLightingModel {
+  const three: PhysicalLightingModel = MeshPhysicalNodeMaterial.prototype.setupLightingModel.call(this);
+  const m = builder.material as PhysicalMaterial;
+  const f = nodeFilms.get(m);
+  if (!f || !filmOf(m) || !three.iridescence) return three;
+  const s = drawnSettings(f, m);
+  const table = drawsTable(m, s) ? tableOf(f) : null;
+  const filmRgb = (thicknessNm: FloatNode, cosIncidence: FloatNode) => {
+    const xyz = table ? table.lookup(thicknessNm, cosIncidence) : exactXyz(f, m, s, thicknessNm, cosIncidence);
+    return new FilmUpdateNode(xyzToLinearWorking(xyz), (renderer) => updateNodeFilm(f, m, renderer)) as never;
+  };
+  return new SpectralLightingModel(three, filmRgb, metalOf(physical(m), f.film.options) !== null);
+}

@@ -1,0 +1,134 @@
+/**
+ * The WebGPU entry's harness (tests/e2e/webgpu*.spec.ts): a film case drawn by WebGPURenderer (its
+ * WebGPU backend, or with `forceWebGL` its WebGL2 one) into a float target and read back, with
+ * three's node iridescence or the entry's film, on a MeshPhysicalNodeMaterial or a classic
+ * MeshPhysicalMaterial; and, where the browser has WebGL2, the WebGL entry's film on WebGLRenderer
+ * in the same scene; and the node film's XYZ of the parity cases (nodeFilmProbe.ts).
+ */
+import {
+  type Camera,
+  FloatType,
+  type Material,
+  MeshPhysicalMaterial,
+  NoToneMapping,
+  RenderTarget,
+  type Scene,
+  WebGLRenderTarget,
+} from 'three';
+import { float } from 'three/tsl';
+import { MeshPhysicalNodeMaterial, WebGPURenderer } from 'three/webgpu';
+import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
+import { spectralIridescence } from '../../../src/nodeMaterial/spectralNodeMaterial.ts';
+import { encode8 } from '../../../src/physics/colorConversions.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/settings/filmQuality.ts';
+import type { ParityGroup } from '../../../scripts/harness/parityCase.ts';
+import { type FilmCase, disposeAll, filmMaterial, filmScene } from './filmCaseScene.ts';
+import { type NodeParityMode, renderNodeFilmXyz } from './nodeFilmProbe.ts';
+
+const SIZE = 64;
+/** 8-bit sRGB codes of linear RGB, clipped as a canvas clips. */
+const codes = (linear: ArrayLike<number>): number[] => [0, 1, 2].map((i) => encode8(Math.min(1, Math.max(0, linear[i]!))));
+
+let renderer: WebGPURenderer | null = null;
+
+/** Starts WebGPURenderer on `backend`; the backend it runs on (a browser without a WebGPU adapter falls back to WebGL2). */
+async function start(backend: 'webgpu' | 'webgl'): Promise<'webgpu' | 'webgl'> {
+  void renderer?.dispose();
+  renderer = new WebGPURenderer({ forceWebGL: backend === 'webgl' });
+  renderer.toneMapping = NoToneMapping;
+  await renderer.init();
+  return (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend ? 'webgpu' : 'webgl';
+}
+
+/**
+ * Which material: three's node iridescence, or the entry's film on a node or a classic material,
+ * or on a node material whose thickness is a node (iridescenceThicknessNode: the case's thickness,
+ * its thickness range's maximum a tenth of it).
+ */
+export type Kind = 'three' | 'node' | 'classic' | 'thicknessNode';
+
+/** The material of film case `c` of kind `kind`. */
+function materialOf(c: FilmCase, kind: Kind, options: SpectralIridescenceOptions): Material {
+  if (kind === 'three') return filmMaterial(c, MeshPhysicalNodeMaterial);
+  if (kind === 'classic') return spectralIridescence(filmMaterial(c), options);
+  if (kind === 'node') return spectralIridescence(filmMaterial(c, MeshPhysicalNodeMaterial), options);
+  const m = filmMaterial({ ...c, thicknessNm: c.thicknessNm / 10 }, MeshPhysicalNodeMaterial);
+  m.iridescenceThicknessNode = float(c.thicknessNm);
+  return spectralIridescence(m, options);
+}
+
+/** The centre pixel of `scene` drawn by WebGPURenderer into a float target: linear RGB, and as 8-bit sRGB. */
+async function drawCentre(scene: Scene, camera: Camera): Promise<{ linear: number[]; codes: number[] }> {
+  const r = renderer!;
+  const target = new RenderTarget(SIZE, SIZE, { type: FloatType });
+  r.setRenderTarget(target);
+  r.render(scene, camera);
+  r.setRenderTarget(null);
+  const texels = (await r.readRenderTargetPixelsAsync(target, SIZE / 2, SIZE / 2, 1, 1)) as Float32Array;
+  target.dispose();
+  return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
+}
+
+/** The centre pixel of film case `c` on WebGPURenderer: linear RGB read back, and as 8-bit sRGB. */
+async function nodePixel(
+  c: FilmCase,
+  kind: Kind,
+  options: SpectralIridescenceOptions = {},
+): Promise<{ linear: number[]; codes: number[] }> {
+  const { scene, camera } = filmScene(c, materialOf(c, kind, options));
+  const pixel = await drawCentre(scene, camera);
+  disposeAll(scene);
+  return pixel;
+}
+
+/** The centre pixels of one node material of film case `c`, drawn as made and after each change of its options in turn: 8-bit codes. */
+async function changedPixels(c: FilmCase, changes: readonly SpectralIridescenceOptions[]): Promise<number[][]> {
+  const material = materialOf(c, 'node', {});
+  const { scene, camera } = filmScene(c, material);
+  const out = [(await drawCentre(scene, camera)).codes];
+  for (const change of changes) {
+    Object.assign(material, change);
+    out.push((await drawCentre(scene, camera)).codes);
+  }
+  disposeAll(scene);
+  return out;
+}
+
+/**
+ * The centre pixel of film case `c` on WebGLRenderer, into a float target (linear), as 8-bit sRGB:
+ * with the WebGL entry's film (`options`), or three's own iridescence (null).
+ */
+async function webglPixel(c: FilmCase, options: SpectralIridescenceOptions | null = {}): Promise<{ linear: number[]; codes: number[] }> {
+  const { renderer: gl } = await import('./materialScene.ts');
+  const { spectralIridescence: webglEntry } = await import('../../../src/meshMaterial/spectralIridescence.ts');
+  const material = filmMaterial(c, MeshPhysicalMaterial);
+  const { scene, camera } = filmScene(c, options ? webglEntry(material, options) : material);
+  const target = new WebGLRenderTarget(SIZE, SIZE, { type: FloatType });
+  gl.setRenderTarget(target);
+  gl.render(scene, camera);
+  gl.setRenderTarget(null);
+  const texels = new Float32Array(4);
+  gl.readRenderTargetPixels(target, SIZE / 2, SIZE / 2, 1, 1, texels);
+  target.dispose();
+  disposeAll(scene);
+  return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
+}
+
+/** XYZ per case of every group through the node film (nodeFilmProbe.ts). */
+const nodeFilmXyz = (groups: readonly ParityGroup[], mode: NodeParityMode, quality: FilmQuality = DEFAULT_FILM_QUALITY) =>
+  renderNodeFilmXyz(renderer!, groups, mode, quality);
+
+window.webgpuHarness = { start, nodePixel, changedPixels, webglPixel, nodeFilmXyz };
+document.body.dataset.ready = 'yes';
+
+declare global {
+  interface Window {
+    webgpuHarness?: {
+      start: typeof start;
+      nodePixel: typeof nodePixel;
+      changedPixels: typeof changedPixels;
+      webglPixel: typeof webglPixel;
+      nodeFilmXyz: typeof nodeFilmXyz;
+    };
+  }
+}

@@ -1,0 +1,127 @@
+/**
+ * The WebGPU entry's checks (src/nodeMaterial/, through tests/e2e/harness/webgpu.ts), shared by its
+ * two specs: webgpu.spec.ts runs them on WebGPURenderer's WebGL2 backend in the ordinary launch,
+ * where the WebGL entry draws beside it; webgpuBackend.spec.ts on its WebGPU backend, in the
+ * launch that has WebGPU and no WebGL2 (docs/testing.md#webgpu).
+ */
+import { methodReads } from '../../src/methods/methods.ts';
+import { type Page, expect } from '@playwright/test';
+import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
+import { XYZ_TO_LINEAR_SRGB, srgbDecode } from '../../src/physics/colorConversions.ts';
+import { type Medium } from '../../src/physics/medium.ts';
+import { parseLayers } from '../../src/physics/stackText.ts';
+import { type ResolvedLayer } from '../../src/physics/stackFilms.ts';
+import { layersXyz } from '../../src/physics/stackColor.ts';
+import { filmXyz } from '../../src/physics/spectralIntegration.ts';
+import { type SpectralIridescenceOptions } from '../../src/meshMaterial/spectralIridescenceOptions.ts';
+import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS } from '../tolerances.ts';
+import { type FilmCase } from './harness/filmCaseScene.ts';
+import { type Group, compare, fixedDomain, perTable, stressDomain, toParity } from './parityGrids.ts';
+import { MAX_CODE_DIFFERENCE, worstCodeDifference, xyzTo8 } from './referenceColor.ts';
+
+/** The same scene with the WebGL entry on WebGLRenderer and the WebGPU entry on WebGPURenderer: its centre pixel agrees to this. */
+export const MAX_RENDERER_CODES = 3;
+
+const SOAP: FilmCase = { thicknessNm: 450, angleDeg: 20, nFilm: 1.33, ior: 1.5 };
+const HIGH: FilmCase = { thicknessNm: 280, angleDeg: 50, nFilm: 1.8, ior: 1.4 };
+const MIRROR = '(2.35:56.6/1.46:91.1)*8';
+
+/** Single films in each polarisation and under several lights, films on metals (from a colour, named), a stack, no film. */
+export const PIXEL_CASES: readonly (readonly [FilmCase, SpectralIridescenceOptions])[] = [
+  [SOAP, {}],
+  [HIGH, { polarization: 's', illuminant: 'D93' }],
+  [HIGH, { polarization: 'p', illuminant: 'E' }],
+  [HIGH, { polarization: 'paper', illuminant: { daylightCct: 4000 } }],
+  [{ thicknessNm: 300, angleDeg: 30, nFilm: 1.5, ior: 1.5, metalColor: 0xffc356 }, {}],
+  [
+    { thicknessNm: 120, angleDeg: 10, nFilm: 1.33, ior: 1.5 },
+    { base: 'Ti', film: 'TiO2', illuminant: 'D55' },
+  ],
+  [SOAP, { layers: MIRROR }],
+  [{ ...SOAP, thicknessNm: 0 }, {}],
+];
+
+/** The float64 reference's 8-bit colour of a pixel case (the film over the metal of its colour, or the stack's). */
+export function caseReference8([c, o]: readonly [FilmCase, SpectralIridescenceOptions]): number[] {
+  const illuminant = o.illuminant ?? 'D65';
+  const metal = (hex: number): Medium => {
+    const rgb = [16, 8, 0].map((shift) => srgbDecode(((hex >> shift) & 0xff) / 255)) as unknown as LinearRgb;
+    return artistMetalMedium(rgb, rgb);
+  };
+  const nInside: Medium = (o.base as Medium | undefined) ?? (c.metalColor === undefined ? c.ior : metal(c.metalColor));
+  const nFilm: Medium = (o.film as Medium | undefined) ?? c.nFilm;
+  const color = { illuminant, polarization: o.polarization ?? 'unpolarized' } as const;
+  if (typeof o.layers === 'string') {
+    const films = parseLayers('layers', o.layers) as readonly ResolvedLayer[];
+    return xyzTo8(layersXyz({ nOutside: 1, films, nInside, angleDeg: c.angleDeg }, color), XYZ_TO_LINEAR_SRGB);
+  }
+  return xyzTo8(filmXyz({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm, nInside }, color), XYZ_TO_LINEAR_SRGB);
+}
+
+/** Opens the harness on WebGPURenderer's `backend`; a fresh browser's first WebGPU page may find no adapter, so it is loaded again then. */
+export async function openHarness(page: Page, backend: 'webgpu' | 'webgl'): Promise<void> {
+  for (let attempt = 0; attempt < 3; attempt++) {
+    await page.goto('/tests/e2e/harness/webgpu.html');
+    await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
+    if ((await page.evaluate((b) => window.webgpuHarness!.start(b), backend)) === backend) return;
+  }
+  throw new Error(`WebGPURenderer found no ${backend} backend`);
+}
+
+/**
+ * Each pixel case in `table` (the default) and `exact`, on a node and a classic material, and in
+ * `exact` with its thickness a node (iridescenceThicknessNode): 8-bit codes.
+ */
+export async function nodePixels(page: Page) {
+  return page.evaluate(async (cases) => {
+    const h = window.webgpuHarness!;
+    const out = [];
+    for (const [c, o] of cases) {
+      const table = await h.nodePixel(c, 'node', o);
+      const exact = await h.nodePixel(c, 'node', { ...o, mode: 'exact' });
+      const classic = await h.nodePixel(c, 'classic', o);
+      const thicknessNode = await h.nodePixel(c, 'thicknessNode', { ...o, mode: 'exact' });
+      out.push({ table: table.codes, exact: exact.codes, classic: classic.codes, thicknessNode: thicknessNode.codes });
+    }
+    return out;
+  }, PIXEL_CASES);
+}
+
+/**
+ * One material's options changed between frames (a light, a method, a polarisation): each frame
+ * draws what a material made with those options draws.
+ */
+export async function optionChanges(page: Page): Promise<void> {
+  const [c] = PIXEL_CASES[1]!;
+  const changes = [{ illuminant: 'D93' }, { mode: 'exact' }, { polarization: 's' }, { mode: 'table' }] as const;
+  const { changed, fresh } = await page.evaluate(
+    async ([c, changes]) => {
+      const h = window.webgpuHarness!;
+      const fresh = [];
+      let options = {};
+      for (const change of changes) {
+        options = { ...options, ...change };
+        fresh.push((await h.nodePixel(c, 'node', options)).codes);
+      }
+      return { changed: (await h.changedPixels(c, changes)).slice(1), fresh };
+    },
+    [c, changes] as const,
+  );
+  expect(changed).toEqual(fresh);
+}
+
+/** The node film against the float64 reference on the parity harness's fixed and stress grids, in `mode`. */
+export async function nodeParity(page: Page, mode: 'exact' | 'table') {
+  const grid = async (groups: Group[]) => {
+    const rendered = await page.evaluate(([g, m]) => window.webgpuHarness!.nodeFilmXyz(g, m), [groups.map(toParity), mode] as const);
+    return compare(groups, rendered);
+  };
+  const fixed = await grid(methodReads(mode, 'table') ? perTable(fixedDomain()) : fixedDomain());
+  const stress = await grid(methodReads(mode, 'table') ? perTable(stressDomain()) : stressDomain());
+  console.log(`node parity ${mode}: ${JSON.stringify({ fixed: fixed.figures, stress: stress.figures })}`);
+  expect([...fixed.nonFinite, ...stress.nonFinite]).toEqual([]);
+  expect(fixed.figures.max, fixed.figures.worst).toBeLessThanOrEqual(MAX_DELTA_E00_FIXED);
+  expect(stress.figures.max, stress.figures.worst).toBeLessThan(MAX_DELTA_E00_STRESS);
+}
+
+export { MAX_CODE_DIFFERENCE, worstCodeDifference };
