@@ -21,6 +21,8 @@ export interface SpectralFilm {
   readonly warned: Set<string>;
   /** metalStateOf at the last draw: a change three cannot see (metalness, the base colour) may need a new program */
   drawnMetal: string | null;
+  /** The film's part of the program key where its entry holds it at once (the WebGPU entry's); else the drawing's, once loaded. */
+  readonly programKey?: (m: MeshPhysicalMaterial, o: CheckedOptions) => string;
 }
 
 const films = new WeakMap<Material, SpectralFilm>();
@@ -50,9 +52,9 @@ export function warnOnce(film: SpectralFilm, cause: string, message: string): vo
  * listeners it is gone while it is still in use.
  */
 export function setOptions(m: MeshPhysicalMaterial, film: SpectralFilm, options: CheckedOptions): void {
-  const drawing = loadedDrawing();
-  // Before the drawing is loaded, the program holds three's film: the drawing's arrival moves the version anyway.
-  if (drawing && drawing.filmKeyOf(m, film.options) !== drawing.filmKeyOf(m, options)) m.needsUpdate = true;
+  // Before the WebGL entry's drawing is loaded, the program holds three's film: the drawing's arrival moves the version anyway.
+  const keyOf = film.programKey ?? loadedDrawing()?.filmKeyOf;
+  if (keyOf && keyOf(m, film.options) !== keyOf(m, options)) m.needsUpdate = true;
   film.options = options;
 }
 

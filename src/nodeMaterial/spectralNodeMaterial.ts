@@ -57,6 +57,7 @@ function patch<M extends PhysicalMaterial>(m: M, options: CheckedOptions): M & S
     table: null,
     warned: new Set(),
     drawnMetal: null,
+    programKey: filmKeyOf,
   };
   const f: NodeFilm = { film, inputs: filmInputs(), table: null };
   addFilm(physical(m), film);
