@@ -16,8 +16,9 @@ export interface MaterialEntryApp {
   readonly entry: string;
   /** its module in the library's build (vite.config.ts's LIBRARY_ENTRIES) */
   readonly libraryFile: string;
-  /** the renderer the app draws with */
+  /** the renderer the app draws with, and its one iridescent material */
   readonly renderer: string;
+  readonly material: string;
   /** the app's source: three's own where `spectral` is null, else made spectral through the entry's module at that path */
   readonly app: (spectral: string | null) => string;
 }
@@ -28,6 +29,7 @@ export const MATERIAL_ENTRY_APPS: readonly MaterialEntryApp[] = [
     entry: 'thin-film-color/material',
     libraryFile: 'material.js',
     renderer: 'WebGLRenderer',
+    material: 'MeshPhysicalMaterial',
     app: (spectral) => `
 import { Mesh, MeshPhysicalMaterial, PerspectiveCamera, Scene, TorusKnotGeometry, WebGLRenderer } from 'three';
 ${spectral ? `import { spectralIridescence } from ${JSON.stringify(spectral)};` : ''}
@@ -36,6 +38,23 @@ ${spectral ? 'spectralIridescence(material);' : ''}
 const scene = new Scene();
 scene.add(new Mesh(new TorusKnotGeometry(), material));
 new WebGLRenderer().render(scene, new PerspectiveCamera());
+`,
+  },
+  {
+    entry: 'thin-film-color/webgpu',
+    libraryFile: 'webgpu.js',
+    renderer: 'WebGPURenderer',
+    material: 'MeshPhysicalNodeMaterial',
+    app: (spectral) => `
+import { Mesh, MeshPhysicalNodeMaterial, PerspectiveCamera, Scene, TorusKnotGeometry, WebGPURenderer } from 'three/webgpu';
+${spectral ? `import { spectralIridescence } from ${JSON.stringify(spectral)};` : ''}
+const material = new MeshPhysicalNodeMaterial({ iridescence: 1, iridescenceIOR: 1.33 });
+${spectral ? 'spectralIridescence(material);' : ''}
+const scene = new Scene();
+scene.add(new Mesh(new TorusKnotGeometry(), material));
+const renderer = new WebGPURenderer();
+await renderer.init();
+renderer.render(scene, new PerspectiveCamera());
 `,
   },
 ];
@@ -54,6 +73,7 @@ export interface BuildBytes {
 export interface EntryBytes {
   readonly entry: string;
   readonly renderer: string;
+  readonly material: string;
   readonly three: BuildBytes;
   readonly spectral: BuildBytes;
 }
@@ -100,6 +120,7 @@ export async function materialEntryBytes(): Promise<EntryBytes[]> {
     measured.push({
       entry: e.entry,
       renderer: e.renderer,
+      material: e.material,
       three: await appBytes(e.app(null), join(root, `three-${i}`)),
       spectral: await appBytes(e.app(join(library, e.libraryFile)), join(root, `spectral-${i}`)),
     });
