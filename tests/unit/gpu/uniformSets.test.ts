@@ -16,6 +16,7 @@ import { ENVIRONMENTS } from '../../../src/environments/environments.ts';
 import { FIELDS } from '../../../src/fields/fields.ts';
 import { FILM_METHODS } from '../../../src/methods/methods.ts';
 import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
+import { loadDrawing } from '../../../src/meshMaterial/spectralDrawing.ts';
 import { MODES } from '../../../src/settings/filmSettings.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
@@ -97,7 +98,9 @@ describe('uniform sets', () => {
     expectDeclaredAreSet(declaredByConfiguration(materials), Object.keys(materials[0]!.uniforms));
   });
 
-  it("the spectral iridescence adds to three's shader the uniforms it declares there, for every mode, kind of medium and stack", () => {
+  it("the spectral iridescence adds to three's shader the uniforms it declares there, for every mode, kind of medium and stack", async () => {
+    // The film's drawing is a chunk of its own: loaded here, the materials' programs hold the film (else three's).
+    await loadDrawing();
     const threes = declaredUniforms(ShaderLib.physical.fragmentShader);
     const declared: string[][] = [];
     let set: string[] = [];
@@ -117,6 +120,7 @@ describe('uniform sets', () => {
         declared.push(declaredUniforms(preprocessed(shader.fragmentShader, defines)).filter((n) => !threes.includes(n)));
         set = Object.keys(shader.uniforms);
       }
+    expect(declared.every((names) => names.length > 0)).toBe(true);
     expectDeclaredAreSet(declared, set);
   });
 
