@@ -100,9 +100,11 @@ async function changedPixels(c: FilmCase, changes: readonly SpectralIridescenceO
  */
 async function webglPixel(c: FilmCase, options: SpectralIridescenceOptions | null = {}): Promise<{ linear: number[]; codes: number[] }> {
   const { renderer: gl } = await import('./materialScene.ts');
-  const { spectralIridescence: webglEntry } = await import('../../../src/meshMaterial/spectralIridescence.ts');
+  const { spectralIridescence: webglEntry, whenSpectralReady } = await import('../../../src/meshMaterial/spectralIridescence.ts');
   const material = filmMaterial(c, MeshPhysicalMaterial);
   const { scene, camera } = filmScene(c, options ? webglEntry(material, options) : material);
+  // The WebGL entry's film is drawn once its drawing and its workers' answers are at hand (else three's, or the light before).
+  if (options) await whenSpectralReady(material);
   const target = new WebGLRenderTarget(SIZE, SIZE, { type: FloatType });
   gl.setRenderTarget(target);
   gl.render(scene, camera);
