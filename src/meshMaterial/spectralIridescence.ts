@@ -12,6 +12,7 @@ import { NODE_RENDERER_MESSAGE, warnWhereDrawnAsNodes } from './nodeRendererWarn
 import { loadDrawing, loadedDrawing } from './spectralDrawing.ts';
 import { type SpectralFilm, addFilm, copySpectralFilm, defineOptionProperties, filmOf, setOptions, warnOnce } from './spectralFilm.ts';
 import { spectralMaterialJson } from './spectralIridescenceJson.ts';
+import { materialsUnder } from './materialsUnder.ts';
 
 /**
  * The film in three's hooks (materialHooks.ts), after the user's, each the drawing's
@@ -99,17 +100,15 @@ export function spectralIridescence<M extends MeshPhysicalMaterial>(
  * spectral film (`spectralIridescence`, with the same options); returns the materials upgraded.
  */
 export function useSpectralIridescence(root: Object3D, options: SpectralIridescenceOptions = {}): MeshPhysicalMaterial[] {
-  const found = new Set<MeshPhysicalMaterial>();
-  root.traverse((o) => {
-    const m = (o as { material?: unknown }).material;
-    for (const material of Array.isArray(m) ? m : [m]) {
-      const p = material as MeshPhysicalMaterial | undefined;
-      if (p?.isMeshPhysicalMaterial && p.iridescence > 0) found.add(p);
-    }
-  });
+  const found = materialsUnder(root, hasIridescence);
   for (const m of found) spectralIridescence(m, options);
-  return [...found];
+  return found;
 }
+
+const hasIridescence = (m: unknown): m is MeshPhysicalMaterial => {
+  const p = m as MeshPhysicalMaterial | undefined;
+  return p?.isMeshPhysicalMaterial === true && p.iridescence > 0;
+};
 
 /**
  * A promise kept once everything `material`'s film needs is loaded and computed: the film's

@@ -9,6 +9,7 @@ import { filmColorUniforms, releaseFilmColorTextures } from '../film/filmColor.t
 import { filmStackUniforms } from '../film/filmStack.ts';
 import { filmKeyOf, filmSettingsOf } from '../meshMaterial/materialFilm.ts';
 import { refuse } from '../meshMaterial/materialParameters.ts';
+import { materialsUnder } from '../meshMaterial/materialsUnder.ts';
 import { type SpectralFilm, addFilm, defineOptionProperties, filmOf, setOptions } from '../meshMaterial/spectralFilm.ts';
 import {
   type CheckedOptions,
@@ -99,13 +100,9 @@ const hasIridescence = (m: unknown): m is PhysicalMaterial => {
 
 /** Upgrades every physical material with iridescence under `root` (a glTF's scene, say); returns the materials upgraded. */
 export function useSpectralIridescence(root: Object3D, options: SpectralIridescenceOptions = {}): PhysicalMaterial[] {
-  const found = new Set<PhysicalMaterial>();
-  root.traverse((o) => {
-    const m = (o as { material?: unknown }).material;
-    for (const material of Array.isArray(m) ? m : [m]) if (hasIridescence(material)) found.add(material);
-  });
+  const found = materialsUnder(root, hasIridescence);
   for (const m of found) spectralIridescence(m, options);
-  return [...found];
+  return found;
 }
 
 /** How often whenSpectralReady looks whether the material's table is drawn. */

@@ -7,8 +7,9 @@
  */
 import { arrowKeyStep } from '../app/arrowKeyStep.ts';
 import { shownPixelRatio } from '../settings/pixelRatio.ts';
-import { AgXToneMapping, EquirectangularReflectionMapping, type Material, type Mesh, Vector3 } from 'three';
+import { AgXToneMapping, EquirectangularReflectionMapping, type Mesh, Vector3 } from 'three';
 import { isSpectralIridescence } from '../meshMaterial/spectralFilm.ts';
+import { materialsUnder } from '../meshMaterial/materialsUnder.ts';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { environmentTexture, loadEnvironmentPixels } from '../bubbleMaterials/environmentMaps.ts';
 import { TITANIUM_OXIDE_NM, VIEWS, type View, exampleScene } from './materialsScene.ts';
@@ -171,16 +172,7 @@ addEventListener('resize', () => {
 
 showStacks();
 resize();
-/** The spectral materials of the scene: the page first draws once their films are ready (whenSpectralReady). */
-const spectralMaterials = (): Material[] => {
-  const found = new Set<Material>();
-  example.scene.traverse((o) => {
-    const m = (o as { material?: Material }).material;
-    if (m && isSpectralIridescence(m)) found.add(m);
-  });
-  return [...found];
-};
-Promise.all([loadEnvironmentPixels('park'), ...spectralMaterials().map(page.whenReady)]).then(
+Promise.all([loadEnvironmentPixels('park'), ...materialsUnder(example.scene, isSpectralIridescence).map(page.whenReady)]).then(
   () => {
     const texture = environmentTexture('park', example)!;
     texture.mapping = EquirectangularReflectionMapping;
