@@ -8,6 +8,7 @@ import { dispersiveRowsOfKey } from './dispersiveRows.ts';
  */
 const store = new WorkerTexels(
   () => new Worker(new URL('./dispersiveRowsWorker.ts', import.meta.url), { type: 'module' }),
+  (key) => key,
   dispersiveRowsOfKey,
   4,
 );

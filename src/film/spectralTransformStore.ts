@@ -1,4 +1,5 @@
 import { WorkerTexels } from '../threads/workerTexels.ts';
+import { spectralWeights } from '../physics/spectralWeights.ts';
 import { type SpectralLight, spectralTransformTexels } from './spectralTransformTexels.ts';
 
 /**
@@ -9,7 +10,11 @@ import { type SpectralLight, spectralTransformTexels } from './spectralTransform
  */
 const store = new WorkerTexels(
   () => new Worker(new URL('./spectralTransformWorker.ts', import.meta.url), { type: 'module' }),
-  (key) => spectralTransformTexels(JSON.parse(key) as SpectralLight),
+  (key) => {
+    const light = JSON.parse(key) as SpectralLight;
+    return spectralWeights(light.illuminant, light.normalization);
+  },
+  spectralTransformTexels,
   1,
 );
 

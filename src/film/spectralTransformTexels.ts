@@ -1,5 +1,5 @@
 import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { type Normalization, spectralWeights } from '../physics/spectralWeights.ts';
+import { type Normalization, type SpectralWeights } from '../physics/spectralWeights.ts';
 import { SPECTRAL_TRANSFORM_COUNT, spectralTransform } from '../physics/spectralTransform.ts';
 
 /** Entries per texture row (WebGL2 guarantees 2048; 4096 is common, SwiftShader has 8192). */
@@ -17,13 +17,14 @@ export const spectralLightKey = (light: SpectralLight): string =>
   JSON.stringify({ illuminant: light.illuminant, normalization: light.normalization });
 
 /**
- * The light's spectral transform (src/physics/spectralTransform.ts, an FFT) as the RGBA float
+ * The spectral transform (src/physics/spectralTransform.ts, an FFT) of a light's weights
+ * (spectralWeights of its illuminant and normalisation) as the RGBA float
  * texels of a SPECTRAL_TRANSFORM_WIDTH × 2 SPECTRAL_TRANSFORM_ROWS texture: rows 0 .. ROWS-1 hold
  * Re H (x, y, z), rows ROWS .. 2 ROWS-1 Im H, entry i at (i mod WIDTH, i div WIDTH). No DOM, no
  * three.js: the main thread and the worker (spectralTransformWorker.ts) compute it alike.
  */
-export function spectralTransformTexels(light: SpectralLight): Float32Array {
-  const { values, count } = spectralTransform(spectralWeights(light.illuminant, light.normalization));
+export function spectralTransformTexels(weights: SpectralWeights): Float32Array {
+  const { values, count } = spectralTransform(weights);
   const imaginary = 4 * SPECTRAL_TRANSFORM_WIDTH * SPECTRAL_TRANSFORM_ROWS;
   const data = new Float32Array(2 * imaginary);
   for (let i = 0; i < count; i++) {

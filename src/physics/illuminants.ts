@@ -8,6 +8,7 @@ import {
 } from './data/cieDaylightComponents.ts';
 import { CIE_LAMPS, CIE_LAMPS_START_NM, CIE_LAMPS_STEP_NM } from './data/cieLamps.ts';
 import { SODIUM_D_LINES } from './lightLines.ts';
+import { interpolateTable } from './tableInterpolation.ts';
 import { ParameterError, assertInRange } from '../input/validate.ts';
 import {
   DAYLIGHT_CCT_MAX_K,
@@ -100,14 +101,6 @@ export function daylightWeights(cctK: number): { m1: number; m2: number } {
   const m = 0.0241 + 0.2562 * x - 0.7341 * y;
   const round3 = (v: number) => Math.round(v * 1000) / 1000;
   return { m1: round3((-1.3515 - 1.7703 * x + 5.9114 * y) / m), m2: round3((0.03 - 31.4424 * x + 30.0717 * y) / m) };
-}
-
-/** Linear interpolation in a table sampled every `stepNm` from `startNm` (CIE's rule for daylight). */
-export function interpolateTable(table: ArrayLike<number>, startNm: number, stepNm: number, lambdaNm: number): number {
-  const u = (lambdaNm - startNm) / stepNm;
-  const i = Math.min(Math.max(Math.floor(u), 0), table.length - 2);
-  const f = u - i;
-  return (table[i] as number) * (1 - f) + (table[i + 1] as number) * f;
 }
 
 /** A table every `stepNm` from `startNm`, linear between rows and held at its end rows' values outside them. */

@@ -1,6 +1,7 @@
 import FFT from 'fft.js';
-import { interpolateTable } from './illuminants.ts';
-import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type SpectralWeights } from './spectralWeights.ts';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from './spectralConventions.ts';
+import { type SpectralWeights } from './spectralWeights.ts';
+import { interpolateTable } from './tableInterpolation.ts';
 
 /**
  * The light's spectral transform (docs/physics.md, "The Airy sum as a Fourier series"):

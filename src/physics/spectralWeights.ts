@@ -1,6 +1,7 @@
 import { CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, CIE1931_XBAR, CIE1931_YBAR, CIE1931_ZBAR } from './data/cie1931Cmf2deg.ts';
-import { type IlluminantSpec, illuminantKey, illuminantLines, illuminantSpd, interpolateTable } from './illuminants.ts';
+import { type IlluminantSpec, illuminantKey, illuminantLines, illuminantSpd } from './illuminants.ts';
 import { type SpectralLine } from './lightLines.ts';
+import { interpolateTable } from './tableInterpolation.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type Normalization } from './spectralConventions.ts';
 
 export { LAMBDA_MAX_NM, LAMBDA_MIN_NM, LAMBDA_SPAN_NM, NORMALIZATIONS, type Normalization } from './spectralConventions.ts';

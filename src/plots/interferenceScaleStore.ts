@@ -28,7 +28,7 @@ export function interferenceScaleFor(request: ScaleRequest, onReady: (colors: Sc
   const key = JSON.stringify(request);
   const w = waiting.get(key) ?? { request, callbacks: [] };
   waiting.set(key, w);
-  if (!requests.ask(key, { ...request, key })) {
+  if (!requests.ask(key, () => ({ ...request, key }))) {
     waiting.delete(key);
     return interferenceScaleOf(request);
   }

@@ -16,13 +16,16 @@ export class WorkerRequests<Reply extends { readonly key: string }> {
     private readonly onFail: (pendingKeys: readonly string[]) => void = () => {},
   ) {}
 
-  /** Whether the worker has the request `key` (asked now, or already pending); false: there is no worker, compute it here. */
-  ask(key: string, request: unknown): boolean {
+  /**
+   * Whether the worker has the request `key` (asked now, or already pending); false: there is no
+   * worker, compute it here. `request` makes the message, only when it is sent.
+   */
+  ask(key: string, request: () => unknown): boolean {
     const w = this.theWorker();
     if (!w) return false;
     if (!this.pending.has(key)) {
       this.pending.add(key);
-      w.postMessage(request);
+      w.postMessage(request());
     }
     return true;
   }

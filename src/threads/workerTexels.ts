@@ -1,8 +1,9 @@
 import { WorkerRequests } from './workerRequests.ts';
 
-/** What a texels worker is asked: the key its texels follow from. */
-export interface TexelsRequest {
+/** What a texels worker is asked: the key, and the input its texels are computed from. */
+export interface TexelsRequest<Input> {
   readonly key: string;
+  readonly input: Input;
 }
 
 /** … and what it answers: the key and its texels (transferred, not copied). */
@@ -13,10 +14,12 @@ export interface TexelsReply {
 
 /**
  * Float texels that follow from a key (a light's spectral transform, a dispersive film's row terms),
- * computed in a module Web Worker that `serveTexels` runs, or on the caller's thread where there is
- * none or it fails; the last `keep` keys' texels are kept, so the same key is not computed again.
+ * computed from the key's input in a module Web Worker that `serveTexels` runs, or on the caller's
+ * thread where there is none or it fails; the last `keep` keys' texels are kept, so the same key
+ * is not computed again. The input is made on the caller's thread, so that the worker's code needs
+ * only what computes the texels from it (a light's weights, not the lights' data).
  */
-export class WorkerTexels {
+export class WorkerTexels<Input> {
   private readonly kept = new Map<string, Float32Array>();
   /** whenReady's promises, by key, kept when its texels arrive */
   private readonly waiting = new Map<string, (() => void)[]>();
@@ -25,7 +28,9 @@ export class WorkerTexels {
   constructor(
     /** Makes the worker: `new Worker(new URL('./file.ts', import.meta.url), { type: 'module' })` in the module that owns it. */
     make: () => Worker,
-    private readonly compute: (key: string) => Float32Array,
+    /** The input of a key's texels, made on this thread (structured-cloned to the worker). */
+    private readonly inputOf: (key: string) => Input,
+    private readonly compute: (input: Input) => Float32Array,
     private readonly keep: number,
   ) {
     // The keys asked of a worker that failed are computed on this thread when next asked for, or
@@ -41,7 +46,7 @@ export class WorkerTexels {
   of(key: string): Float32Array {
     const kept = this.kept.get(key);
     if (kept) return kept;
-    const texels = this.compute(key);
+    const texels = this.compute(this.inputOf(key));
     this.hold(key, texels);
     return texels;
   }
@@ -52,7 +57,7 @@ export class WorkerTexels {
    */
   ready(key: string): boolean {
     if (this.kept.has(key)) return true;
-    if (this.requests.ask(key, { key } satisfies TexelsRequest)) return false;
+    if (this.requests.ask(key, () => ({ key, input: this.inputOf(key) }) satisfies TexelsRequest<Input>)) return false;
     this.of(key);
     return true;
   }
@@ -72,11 +77,11 @@ export class WorkerTexels {
   }
 }
 
-/** In a worker module: answers each TexelsRequest with its key and `compute(key)`, transferred. */
-export function serveTexels(compute: (key: string) => Float32Array): void {
-  addEventListener('message', (e: MessageEvent<TexelsRequest>) => {
-    const { key } = e.data;
-    const texels = compute(key);
+/** In a worker module: answers each TexelsRequest with its key and `compute(input)`, transferred. */
+export function serveTexels<Input>(compute: (input: Input) => Float32Array): void {
+  addEventListener('message', (e: MessageEvent<TexelsRequest<Input>>) => {
+    const { key, input } = e.data;
+    const texels = compute(input);
     postMessage({ key, texels } satisfies TexelsReply, { transfer: [texels.buffer] });
   });
 }

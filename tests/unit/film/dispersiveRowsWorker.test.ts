@@ -32,7 +32,7 @@ describe("a dispersive film's row terms off the main thread", () => {
   it("the worker's answer is the main thread's terms, bit for bit, and fills every float", async () => {
     const { handler, posted } = await loadWorkerScope<TexelsReply>(WORKER);
     expect(handler, 'the worker listens for messages').not.toBeNull();
-    handler!(new MessageEvent('message', { data: { key: KEY } }));
+    handler!(new MessageEvent('message', { data: { key: KEY, input: KEY } }));
     expect(posted).toHaveLength(1);
     expect(posted[0]!.key).toBe(KEY);
     const inline = inlineRows();
@@ -49,7 +49,7 @@ describe("a dispersive film's row terms off the main thread", () => {
     expect(store.dispersiveRowsReady(KEY)).toBe(false);
     expect(FakeWorker.made).toHaveLength(1);
     expect(FakeWorker.made[0]!.url.pathname.endsWith('/dispersiveRowsWorker.ts')).toBe(true);
-    expect(FakeWorker.made[0]!.requests).toEqual([{ key: KEY }]);
+    expect(FakeWorker.made[0]!.requests).toEqual([{ key: KEY, input: KEY }]);
     await nextTask();
     expect(store.dispersiveRowsReady(KEY)).toBe(true);
     expect(store.dispersiveRowsOf(KEY)).toStrictEqual(inlineRows());

@@ -1,12 +1,13 @@
 /**
- * The light's spectral transform computed in the Web Worker is the main thread's, bit for bit (the
- * same code on both sides of a message); the store that asks the worker has the texels once its
+ * The light's spectral transform computed in the Web Worker from the light's weights is the main
+ * thread's, bit for bit (the same code on both sides of a message); the store that asks the worker has the texels once its
  * answer arrives, and computes them itself where there is no worker or it fails.
  */
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { type SpectralLight, spectralLightKey, spectralTransformTexels } from '../../../src/film/spectralTransformTexels.ts';
+import { spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import type {
   TexelsReply as SpectralTransformReply,
   TexelsRequest as SpectralTransformRequest,
@@ -15,9 +16,11 @@ import { fakeWorkerClass, loadWorkerScope, nextTask } from '../fakeWorker.ts';
 
 const LIGHT: SpectralLight = { illuminant: 'D93', normalization: 'paper' };
 const KEY = spectralLightKey(LIGHT);
+/** What the store sends the worker for LIGHT: the key and the light's weights (the worker holds no light's data). */
+const REQUEST = { key: KEY, input: spectralWeights(LIGHT.illuminant, LIGHT.normalization) };
 /** The main thread's texels for LIGHT, computed once (an FFT of 2¹⁸ points per channel). */
 let inline: Float32Array | null = null;
-const inlineTexels = () => (inline ??= spectralTransformTexels(LIGHT));
+const inlineTexels = () => (inline ??= spectralTransformTexels(REQUEST.input));
 
 const WORKER = '../../src/film/spectralTransformWorker.ts';
 
@@ -30,7 +33,7 @@ describe('the spectral transform off the main thread', () => {
   it("the worker's answer is the main thread's texels, bit for bit", async () => {
     const { handler, posted } = await loadWorkerScope<SpectralTransformReply>(WORKER);
     expect(handler, 'the worker listens for messages').not.toBeNull();
-    handler!(new MessageEvent('message', { data: { key: KEY } }));
+    handler!(new MessageEvent('message', { data: REQUEST }));
     expect(posted).toHaveLength(1);
     expect(posted[0]!.key).toBe(KEY);
     expect(posted[0]!.texels).toStrictEqual(inlineTexels());
@@ -47,7 +50,7 @@ describe('the spectral transform off the main thread', () => {
     expect(worker!.options.type).toBe('module');
     expect(existsSync(fileURLToPath(worker!.url)), `${worker!.url} is a file`).toBe(true);
     expect(worker!.url.pathname.endsWith('/spectralTransformWorker.ts')).toBe(true);
-    expect(worker!.requests).toEqual([{ key: KEY }]);
+    expect(worker!.requests).toEqual([REQUEST]);
     await nextTask();
     expect(store.spectralTransformTexelsReady(KEY)).toBe(true);
     expect(store.spectralTransformTexelsOf(KEY)).toStrictEqual(inlineTexels());
@@ -61,7 +64,7 @@ describe('the spectral transform off the main thread', () => {
     const ready = store.spectralTransformTexelsWhenReady(KEY).then(() => (kept = true));
     await Promise.resolve();
     expect(kept).toBe(false);
-    expect(FakeWorker.made[0]!.requests).toEqual([{ key: KEY }]);
+    expect(FakeWorker.made[0]!.requests).toEqual([REQUEST]);
     await ready;
     expect(store.spectralTransformTexelsReady(KEY)).toBe(true);
     expect(store.spectralTransformTexelsOf(KEY)).toStrictEqual(inlineTexels());
