@@ -42,7 +42,7 @@ describe("a dispersive film's row terms off the main thread", () => {
   });
 
   it('the store asks its module worker once per key, has the terms when the answer arrives, and keeps the last four keys', async () => {
-    const FakeWorker = await fakeWorkerClass<TexelsRequest, TexelsReply>(WORKER);
+    const FakeWorker = await fakeWorkerClass<TexelsRequest<string>, TexelsReply>(WORKER);
     vi.stubGlobal('Worker', FakeWorker);
     const store = await import('../../../src/film/dispersiveRowsStore.ts');
     expect(store.dispersiveRowsReady(KEY)).toBe(false);

@@ -7,7 +7,7 @@ import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { type SpectralLight, spectralLightKey, spectralTransformTexels } from '../../../src/film/spectralTransformTexels.ts';
-import { spectralWeights } from '../../../src/physics/spectralWeights.ts';
+import { type SpectralWeights, spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import type {
   TexelsReply as SpectralTransformReply,
   TexelsRequest as SpectralTransformRequest,
@@ -40,7 +40,7 @@ describe('the spectral transform off the main thread', () => {
   });
 
   it('the store asks its module worker once, and has the texels when the answer arrives', async () => {
-    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest, SpectralTransformReply>(WORKER);
+    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest<SpectralWeights>, SpectralTransformReply>(WORKER);
     vi.stubGlobal('Worker', FakeWorker);
     const store = await import('../../../src/film/spectralTransformStore.ts');
     expect(store.spectralTransformTexelsReady(KEY)).toBe(false);
@@ -57,7 +57,7 @@ describe('the spectral transform off the main thread', () => {
   });
 
   it("the store's promise is kept when the worker's answer arrives, not before", async () => {
-    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest, SpectralTransformReply>(WORKER);
+    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest<SpectralWeights>, SpectralTransformReply>(WORKER);
     vi.stubGlobal('Worker', FakeWorker);
     const store = await import('../../../src/film/spectralTransformStore.ts');
     let kept = false;
@@ -73,7 +73,7 @@ describe('the spectral transform off the main thread', () => {
   });
 
   it("after its worker fails, the store's promise is kept with the texels computed here", async () => {
-    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest, SpectralTransformReply>(WORKER, true);
+    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest<SpectralWeights>, SpectralTransformReply>(WORKER, true);
     vi.stubGlobal('Worker', FakeWorker);
     const store = await import('../../../src/film/spectralTransformStore.ts');
     await store.spectralTransformTexelsWhenReady(KEY);
@@ -88,7 +88,7 @@ describe('the spectral transform off the main thread', () => {
   });
 
   it('after its worker fails, the store computes the texels itself', async () => {
-    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest, SpectralTransformReply>(WORKER, true);
+    const FakeWorker = await fakeWorkerClass<SpectralTransformRequest<SpectralWeights>, SpectralTransformReply>(WORKER, true);
     vi.stubGlobal('Worker', FakeWorker);
     const store = await import('../../../src/film/spectralTransformStore.ts');
     expect(store.spectralTransformTexelsReady(KEY)).toBe(false);
