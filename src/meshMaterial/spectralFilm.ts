@@ -2,7 +2,6 @@ import { type Material, type MeshPhysicalMaterial } from 'three';
 import { type filmColorUniforms } from '../film/filmColor.ts';
 import { type filmStackUniforms } from '../film/filmStack.ts';
 import { type FilmTable } from '../film/filmTable.ts';
-import { loadedDrawing } from './spectralDrawing.ts';
 import {
   type CheckedOptions,
   OPTION_NAMES,
@@ -21,8 +20,8 @@ export interface SpectralFilm {
   readonly warned: Set<string>;
   /** metalStateOf at the last draw: a change three cannot see (metalness, the base colour) may need a new program */
   drawnMetal: string | null;
-  /** The film's part of the program key where its entry holds it at once (the WebGPU entry's); else the drawing's, once loaded. */
-  readonly programKey?: (m: MeshPhysicalMaterial, o: CheckedOptions) => string;
+  /** The film's part of the program key, given by the entry's drawing once it is loaded (before, the program holds three's film). */
+  programKey?: (m: MeshPhysicalMaterial, o: CheckedOptions) => string;
 }
 
 const films = new WeakMap<Material, SpectralFilm>();
@@ -52,8 +51,8 @@ export function warnOnce(film: SpectralFilm, cause: string, message: string): vo
  * listeners it is gone while it is still in use.
  */
 export function setOptions(m: MeshPhysicalMaterial, film: SpectralFilm, options: CheckedOptions): void {
-  // Before the WebGL entry's drawing is loaded, the program holds three's film: the drawing's arrival moves the version anyway.
-  const keyOf = film.programKey ?? loadedDrawing()?.filmKeyOf;
+  // Before the entry's drawing is loaded, the program holds three's film: the drawing's arrival moves the version anyway.
+  const keyOf = film.programKey;
   if (keyOf && keyOf(m, film.options) !== keyOf(m, options)) m.needsUpdate = true;
   film.options = options;
 }

@@ -28,8 +28,11 @@ function hook(m: MeshPhysicalMaterial, film: SpectralFilm): void {
     customProgramCacheKey: (userKey) => `spectral-iridescence ${loadedDrawing()?.filmKeyOf(m, film.options) ?? 'loading'} ${userKey}`,
     onBeforeRender: (renderer) => loadedDrawing()?.drawFilm(m, film, renderer),
   });
-  if (!loadedDrawing())
+  const loaded = loadedDrawing();
+  if (loaded) film.programKey = loaded.filmKeyOf;
+  else
     void loadDrawing().then((drawing) => {
+      film.programKey = drawing.filmKeyOf;
       m.needsUpdate = true;
       void drawing.prepareFilm(m, film);
     });

@@ -3,7 +3,6 @@
  * (src/meshMaterial/spectralFilm.ts): its TSL inputs and its table, brought up to the material
  * before each render; and the lighting model that draws its film.
  */
-import { type MeshPhysicalMaterial } from 'three';
 import { clamp, float, ior, iridescenceIOR, vec2 } from 'three/tsl';
 import { MeshPhysicalNodeMaterial, type NodeBuilder, type PhysicalLightingModel, type Renderer } from 'three/webgpu';
 import { updateFilmColorUniforms } from '../film/filmColor.ts';
@@ -20,14 +19,9 @@ import { type FilmInputs, setFilmInputs } from './filmInputs.ts';
 import { CHANNEL_KINDS } from './filmReflectance.ts';
 import { type FilmNodes, filmXyz, xyzToLinearWorking } from './filmColor.ts';
 import { NodeFilmTable } from './filmTable.ts';
+import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
 import { FilmUpdateNode } from './filmUpdateNode.ts';
 import { SpectralLightingModel } from './spectralLightingModel.ts';
-
-/** A material the entry makes spectral: a node material, or a classic one WebGPURenderer draws through its node copy. */
-export type PhysicalMaterial = MeshPhysicalNodeMaterial | MeshPhysicalMaterial;
-
-/** A physical material as the shared film code reads it (the glTF parameters both kinds hold). */
-export const physical = (m: PhysicalMaterial) => m as MeshPhysicalMaterial;
 
 /** A spectral node film: the shared record, its TSL inputs, its table (null until `table` is drawn). */
 export interface NodeFilm {

@@ -4,11 +4,9 @@
  * its node copy, with the film's lighting model (nodeFilm.ts) in place of three's.
  */
 import { type Material, type MeshPhysicalMaterial, type Object3D } from 'three';
-import { type MeshPhysicalNodeMaterial } from 'three/webgpu';
-import { filmColorUniforms, releaseFilmColorTextures } from '../film/filmColor.ts';
-import { filmStackUniforms } from '../film/filmStack.ts';
-import { filmKeyOf, filmSettingsOf } from '../meshMaterial/materialFilm.ts';
-import { refuse } from '../meshMaterial/materialParameters.ts';
+import { MeshPhysicalNodeMaterial, type NodeBuilder, type PhysicalLightingModel } from 'three/webgpu';
+import { ParameterError } from '../input/validate.ts';
+import { filmParametersOf, refuse } from '../meshMaterial/materialParameters.ts';
 import { materialsUnder } from '../meshMaterial/materialsUnder.ts';
 import { type SpectralFilm, addFilm, defineOptionProperties, filmOf, setOptions } from '../meshMaterial/spectralFilm.ts';
 import {
@@ -17,22 +15,23 @@ import {
   type SpectralIridescenceProperties,
   spectralIridescenceOptions,
 } from '../meshMaterial/spectralIridescenceOptions.ts';
-import { filmInputs } from './filmInputs.ts';
-import {
-  type NodeFilm,
-  type PhysicalMaterial,
-  addNodeFilm,
-  drawsTable,
-  nodeFilmOf,
-  physical,
-  setupLightingModel,
-  updateNodeFilm,
-} from './nodeFilm.ts';
+import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
+import { nodeDrawing } from './spectralNodeDrawing.ts';
 
-export type { PhysicalMaterial } from './nodeFilm.ts';
+export type { PhysicalMaterial } from './physicalMaterial.ts';
 
-/** The film's hooks on `m`: its lighting model (enumerable, so a classic material's node copy takes it), its part of the program key. */
-function hook(m: PhysicalMaterial): void {
+/** three's lighting model until the film's drawing is loaded, then the drawing's (nodeFilm.ts). */
+function setupLightingModel(this: MeshPhysicalNodeMaterial, builder: NodeBuilder): PhysicalLightingModel {
+  const drawing = nodeDrawing.loaded();
+  return drawing ? drawing.setupLightingModel.call(this, builder) : MeshPhysicalNodeMaterial.prototype.setupLightingModel.call(this);
+}
+
+/**
+ * The film's hooks on `m`: its lighting model (enumerable, so a classic material's node copy
+ * takes it) and its part of the program key ('loading' until the drawing is here, whose arrival
+ * moves the material's version).
+ */
+function hook(m: PhysicalMaterial, film: SpectralFilm): void {
   // eslint-disable-next-line @typescript-eslint/unbound-method -- called on `m` below
   const userKey = m.customProgramCacheKey;
   Object.defineProperties(m, {
@@ -40,7 +39,7 @@ function hook(m: PhysicalMaterial): void {
     customProgramCacheKey: {
       configurable: true,
       writable: true,
-      value: () => `${userKey.call(m)} spectral-iridescence ${filmKeyOf(physical(m), filmOf(m)!.options)}`,
+      value: () => `${userKey.call(m)} spectral-iridescence ${nodeDrawing.loaded()?.nodeFilmKey(m, film) ?? 'loading'}`,
     },
   });
 }
@@ -52,26 +51,18 @@ function patch<M extends PhysicalMaterial>(m: M, options: CheckedOptions): M & S
     setOptions(physical(m), known, options);
     return m as M & SpectralIridescenceProperties;
   }
-  const film: SpectralFilm = {
-    options,
-    uniforms: { ...filmColorUniforms(), ...filmStackUniforms() },
-    table: null,
-    warned: new Set(),
-    drawnMetal: null,
-    programKey: filmKeyOf,
-  };
-  const f: NodeFilm = { film, inputs: filmInputs(), table: null };
+  const film: SpectralFilm = { options, uniforms: null, table: null, warned: new Set(), drawnMetal: null };
   addFilm(physical(m), film);
-  addNodeFilm(m, f);
-  hook(m);
+  hook(m, film);
   defineOptionProperties(m);
-  updateNodeFilm(f, m, null);
-  m.needsUpdate = true;
+  let disposed = false;
   m.addEventListener('dispose', () => {
-    releaseFilmColorTextures(film);
-    f.table?.dispose();
-    f.table = null;
+    disposed = true;
+    nodeDrawing.loaded()?.releaseNodeFilm(m);
   });
+  const loaded = nodeDrawing.loaded();
+  if (loaded) loaded.startNodeFilm(m, film);
+  else void nodeDrawing.load().then((drawing) => disposed || drawing.startNodeFilm(m, film));
   return m as M & SpectralIridescenceProperties;
 }
 
@@ -87,7 +78,7 @@ export function spectralIridescence<M extends PhysicalMaterial>(
   options: SpectralIridescenceOptions = {},
 ): M & SpectralIridescenceProperties {
   const checked = spectralIridescenceOptions(options);
-  filmSettingsOf(physical(material), checked, refuse);
+  filmParametersOf(physical(material), checked, refuse);
   return patch(material, checked);
 }
 
@@ -109,20 +100,23 @@ export function useSpectralIridescence(root: Object3D, options: SpectralIridesce
 const READY_POLL_MS = 16;
 
 /**
- * A promise that resolves once every table and datum the material's film needs is built (its
+ * A promise kept once the film's drawing is loaded (a chunk of its own, fetched the first time a
+ * material is made spectral) and every table and datum the material's film needs is built (its
  * table is drawn by the first render that draws the material), so a screenshot can wait for it.
+ * A ParameterError for a material this entry has not made spectral.
  */
-export function whenSpectralReady(material: Material): Promise<void> {
+export async function whenSpectralReady(material: Material): Promise<void> {
+  const notSpectral = () =>
+    new ParameterError(
+      'material',
+      'whenSpectralReady: the material is not spectral; expected one spectralIridescence of thin-film-color/webgpu upgraded',
+    );
+  if (!filmOf(material)) throw notSpectral();
+  const drawing = await nodeDrawing.load();
   const m = material as PhysicalMaterial;
-  const f = nodeFilmOf(m);
-  if (!f)
-    return Promise.reject(new Error('whenSpectralReady: the material is not spectral (spectralIridescence of thin-film-color/webgpu)'));
-  const ready = () => {
-    const s = filmSettingsOf(physical(m), f.film.options, (_, value) => value);
-    return !drawsTable(m, s) || f.table?.holds(s) === true;
-  };
-  return new Promise((resolve) => {
-    const poll = () => (ready() ? resolve() : setTimeout(poll, READY_POLL_MS));
+  if (drawing.nodeFilmReady(m) === null) throw notSpectral();
+  await new Promise<void>((resolve) => {
+    const poll = () => (drawing.nodeFilmReady(m) ? resolve() : setTimeout(poll, READY_POLL_MS));
     poll();
   });
 }

@@ -5,14 +5,32 @@
  */
 import { Group, Mesh, MeshPhysicalMaterial, MeshStandardMaterial, BoxGeometry } from 'three';
 import { MeshPhysicalNodeMaterial } from 'three/webgpu';
-import { describe, expect, it, vi } from 'vitest';
+import { beforeAll, describe, expect, it, vi } from 'vitest';
 import { ParameterError } from '../../../src/input/validate.ts';
 import { isSpectralIridescence } from '../../../src/meshMaterial/spectralFilm.ts';
 import { spectralIridescence, useSpectralIridescence, whenSpectralReady } from '../../../src/nodeMaterial/spectralNodeMaterial.ts';
+import { nodeDrawing } from '../../../src/nodeMaterial/spectralNodeDrawing.ts';
 
 const film = () => new MeshPhysicalNodeMaterial({ iridescence: 1, iridescenceIOR: 1.33, iridescenceThicknessMaximum: 450 });
 
+describe('the WebGPU entry, before its drawing is loaded', () => {
+  it("draws three's film in a program of its own; the drawing's arrival moves the version and the key to the film's", async () => {
+    vi.resetModules();
+    const entry = await import('../../../src/nodeMaterial/spectralNodeMaterial.ts');
+    const m = entry.spectralIridescence(film(), { mode: 'exact' });
+    const [version, key] = [m.version, m.customProgramCacheKey()];
+    expect(key).toMatch(/spectral-iridescence loading$/);
+    m.polarization = 's';
+    await entry.whenSpectralReady(m);
+    expect(m.version).toBeGreaterThan(version);
+    expect(m.customProgramCacheKey()).not.toBe(key);
+    expect(m.customProgramCacheKey()).not.toMatch(/loading/);
+  });
+});
+
 describe('the WebGPU entry', () => {
+  beforeAll(() => nodeDrawing.load());
+
   it('checks its options as the WebGL entry does: a bad one is a ParameterError naming it, and nothing is changed', () => {
     const cases: readonly (readonly [string, object])[] = [
       ['mode', { mode: 'series' }],
@@ -68,6 +86,10 @@ describe('the WebGPU entry', () => {
 
   it('whenSpectralReady resolves for `exact` at once and refuses a material that is not spectral', async () => {
     await expect(whenSpectralReady(spectralIridescence(film(), { mode: 'exact' }))).resolves.toBeUndefined();
-    await expect(whenSpectralReady(film())).rejects.toThrow(/not spectral/);
+    await expect(whenSpectralReady(film())).rejects.toThrow(ParameterError);
+    await expect(whenSpectralReady(film())).rejects.toMatchObject({
+      parameter: 'material',
+      message: expect.stringMatching(/not spectral/) as unknown,
+    });
   });
 });

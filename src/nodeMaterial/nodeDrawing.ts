@@ -1,0 +1,47 @@
+/**
+ * What draws the WebGPU entry's film, loaded apart from the entry (spectralNodeDrawing.ts) the
+ * first time a material is made spectral: the film's nodes, its table and lighting model
+ * (nodeFilm.ts), and the data they are computed from (the CIE tables, the lights, the media).
+ */
+import { filmColorUniforms, releaseFilmColorTextures } from '../film/filmColor.ts';
+import { filmStackUniforms } from '../film/filmStack.ts';
+import { filmKeyOf, filmSettingsOf } from '../meshMaterial/materialFilm.ts';
+import { type SpectralFilm } from '../meshMaterial/spectralFilm.ts';
+import { filmInputs } from './filmInputs.ts';
+import { type NodeFilm, addNodeFilm, drawsTable, nodeFilmOf, updateNodeFilm } from './nodeFilm.ts';
+import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
+
+export { setupLightingModel } from './nodeFilm.ts';
+
+/**
+ * Starts drawing `film` on `m`: its uniforms and TSL inputs, brought up to the material, and its
+ * program key from here on; the material's version moves, so the next render builds the film.
+ */
+export function startNodeFilm(m: PhysicalMaterial, film: SpectralFilm): void {
+  film.uniforms = { ...filmColorUniforms(), ...filmStackUniforms() };
+  film.programKey = filmKeyOf;
+  const f: NodeFilm = { film, inputs: filmInputs(), table: null };
+  addNodeFilm(m, f);
+  updateNodeFilm(f, m, null);
+  m.needsUpdate = true;
+}
+
+/** The film's part of `m`'s program key. */
+export const nodeFilmKey = (m: PhysicalMaterial, film: SpectralFilm): string => filmKeyOf(physical(m), film.options);
+
+/** Whether `m`'s film has all it needs (its table drawn for the film as it is, where it is drawn from one); null where `m` is not this entry's. */
+export function nodeFilmReady(m: PhysicalMaterial): boolean | null {
+  const f = nodeFilmOf(m);
+  if (!f) return null;
+  const s = filmSettingsOf(physical(m), f.film.options, (_, value) => value);
+  return !drawsTable(m, s) || f.table?.holds(s) === true;
+}
+
+/** Lets `m`'s film go: its share of the light's textures, and its table. */
+export function releaseNodeFilm(m: PhysicalMaterial): void {
+  const f = nodeFilmOf(m);
+  if (!f) return;
+  releaseFilmColorTextures(f.film);
+  f.table?.dispose();
+  f.table = null;
+}
