@@ -5,10 +5,10 @@
  */
 import { filmColorUniforms, releaseFilmColorTextures } from '../film/filmColor.ts';
 import { filmStackUniforms } from '../film/filmStack.ts';
-import { filmKeyOf, filmSettingsOf } from '../meshMaterial/materialFilm.ts';
+import { filmKeyOf } from '../meshMaterial/materialFilm.ts';
 import { type SpectralFilm } from '../meshMaterial/spectralFilm.ts';
 import { filmInputs } from './filmInputs.ts';
-import { type NodeFilm, addNodeFilm, drawsTable, nodeFilmOf, updateNodeFilm } from './nodeFilm.ts';
+import { type NodeFilm, addNodeFilm, nodeFilmOf, updateNodeFilm } from './nodeFilm.ts';
 import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
 
 export { setupLightingModel } from './nodeFilm.ts';
@@ -29,13 +29,8 @@ export function startNodeFilm(m: PhysicalMaterial, film: SpectralFilm): void {
 /** The film's part of `m`'s program key. */
 export const nodeFilmKey = (m: PhysicalMaterial, film: SpectralFilm): string => filmKeyOf(physical(m), film.options);
 
-/** Whether `m`'s film has all it needs (its table drawn for the film as it is, where it is drawn from one); null where `m` is not this entry's. */
-export function nodeFilmReady(m: PhysicalMaterial): boolean | null {
-  const f = nodeFilmOf(m);
-  if (!f) return null;
-  const s = filmSettingsOf(physical(m), f.film.options, (_, value) => value);
-  return !drawsTable(m, s) || f.table?.holds(s) === true;
-}
+/** Whether `m` is drawn by this entry's film (made spectral by it). */
+export const drawsNodeFilm = (m: PhysicalMaterial): boolean => nodeFilmOf(m) !== undefined;
 
 /** Lets `m`'s film go: its share of the light's textures, and its table. */
 export function releaseNodeFilm(m: PhysicalMaterial): void {

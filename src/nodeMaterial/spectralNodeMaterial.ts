@@ -96,14 +96,12 @@ export function useSpectralIridescence(root: Object3D, options: SpectralIridesce
   return found;
 }
 
-/** How often whenSpectralReady looks whether the material's table is drawn. */
-const READY_POLL_MS = 16;
-
 /**
  * A promise kept once the film's drawing is loaded (a chunk of its own, fetched the first time a
- * material is made spectral) and every table and datum the material's film needs is built (its
- * table is drawn by the first render that draws the material), so a screenshot can wait for it.
- * A ParameterError for a material this entry has not made spectral.
+ * material is made spectral) and holds the material's film: the next render that draws the
+ * material builds what its film needs (the table, on the GPU, before the draw) and draws the
+ * settled film, so a screenshot awaits this, then renders. A ParameterError for a material this
+ * entry has not made spectral.
  */
 export async function whenSpectralReady(material: Material): Promise<void> {
   const notSpectral = () =>
@@ -113,10 +111,5 @@ export async function whenSpectralReady(material: Material): Promise<void> {
     );
   if (!filmOf(material)) throw notSpectral();
   const drawing = await nodeDrawing.load();
-  const m = material as PhysicalMaterial;
-  if (drawing.nodeFilmReady(m) === null) throw notSpectral();
-  await new Promise<void>((resolve) => {
-    const poll = () => (drawing.nodeFilmReady(m) ? resolve() : setTimeout(poll, READY_POLL_MS));
-    poll();
-  });
+  if (!drawing.drawsNodeFilm(material as PhysicalMaterial)) throw notSpectral();
 }

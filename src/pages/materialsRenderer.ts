@@ -12,7 +12,7 @@ export interface PageRenderer {
   /** which renderer draws the page, as the readout names it */
   readonly name: string;
   readonly upgrade: Upgrade;
-  /** When a spectral material of the page can be drawn settled (the WebGL entry's whenSpectralReady; the node film builds its table as it is drawn). */
+  /** When a spectral material of the page can be drawn settled: its entry's whenSpectralReady. */
   readonly whenReady: (m: Material) => Promise<void>;
   /** The 8-bit pixel drawn at (x, y) device pixels from the canvas's bottom left, read at once; null where the canvas cannot be read at once (WebGPU). */
   readonly readPixel: (x: number, y: number) => number[] | null;
@@ -32,14 +32,14 @@ function webglRenderer(canvas: HTMLCanvasElement): PageRenderer {
 
 /** WebGPURenderer and the WebGPU entry, once the renderer has its backend. */
 async function webgpuRenderer(canvas: HTMLCanvasElement): Promise<PageRenderer> {
-  const [{ WebGPURenderer }, { spectralIridescence: nodeEntry }] = await Promise.all([
+  const [{ WebGPURenderer }, { spectralIridescence: nodeEntry, whenSpectralReady: nodeReady }] = await Promise.all([
     import('three/webgpu'),
     import('../nodeMaterial/spectralNodeMaterial.ts'),
   ]);
   const renderer = new WebGPURenderer({ canvas, antialias: true });
   await renderer.init();
   const backend = (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend ? 'WebGPU' : 'WebGL2';
-  return { renderer, name: `WebGPURenderer (${backend})`, upgrade: nodeEntry, whenReady: () => Promise.resolve(), readPixel: () => null };
+  return { renderer, name: `WebGPURenderer (${backend})`, upgrade: nodeEntry, whenReady: nodeReady, readPixel: () => null };
 }
 
 /** The renderer the page's URL asks for. */

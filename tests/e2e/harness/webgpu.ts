@@ -18,7 +18,7 @@ import {
 import { float } from 'three/tsl';
 import { MeshPhysicalNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
-import { spectralIridescence } from '../../../src/nodeMaterial/spectralNodeMaterial.ts';
+import { spectralIridescence, whenSpectralReady } from '../../../src/nodeMaterial/spectralNodeMaterial.ts';
 import { encode8 } from '../../../src/physics/colorConversions.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/settings/filmQuality.ts';
 import type { ParityGroup } from '../../../scripts/harness/parityCase.ts';
@@ -75,7 +75,9 @@ async function nodePixel(
   kind: Kind,
   options: SpectralIridescenceOptions = {},
 ): Promise<{ linear: number[]; codes: number[] }> {
-  const { scene, camera } = filmScene(c, materialOf(c, kind, options));
+  const material = materialOf(c, kind, options);
+  if (kind !== 'three') await whenSpectralReady(material);
+  const { scene, camera } = filmScene(c, material);
   const pixel = await drawCentre(scene, camera);
   disposeAll(scene);
   return pixel;
