@@ -9,6 +9,7 @@ import {
   optionChanges,
   nodePixels,
   openHarness,
+  tableFillCalls,
   worstCodeDifference,
 } from './webgpuChecks.ts';
 
@@ -43,6 +44,7 @@ test("the WebGPU entry on WebGPURenderer's WebGL2 backend draws the WebGL entry'
     expect(worstCodeDifference(node[i]!.exact, caseReference8(c)), `${label}: ${node[i]!.exact}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
   });
   await optionChanges(page);
+  await tableFillCalls(page, 'webgl');
   await nodeParity(page, 'exact');
   await nodeParity(page, 'table');
   expect(problems).toEqual([]);

@@ -8,6 +8,7 @@ import {
   optionChanges,
   nodePixels,
   openHarness,
+  tableFillCalls,
   worstCodeDifference,
 } from './webgpuChecks.ts';
 
@@ -31,6 +32,7 @@ test("the WebGPU entry on WebGPURenderer's WebGPU backend draws the reference's 
       );
   });
   await optionChanges(page);
+  await tableFillCalls(page, 'webgpu');
   await nodeParity(page, 'exact');
   await nodeParity(page, 'table');
   expect(problems).toEqual([]);
