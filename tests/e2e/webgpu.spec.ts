@@ -15,8 +15,9 @@ import {
 
 /**
  * The WebGPU entry (src/nodeMaterial/) on WebGPURenderer's WebGL2 backend, beside the WebGL entry
- * on WebGLRenderer in the same page: the same scene's centre pixel, and the node film against the
- * float64 reference on the parity grids. Its WebGPU backend: webgpuBackend.spec.ts.
+ * on WebGLRenderer in the same page: the same scene's centre pixel, its table filled by a render
+ * pass, and the node film against the float64 reference on the parity grids. Its WebGPU backend:
+ * webgpuBackend.spec.ts.
  */
 test("the WebGPU entry on WebGPURenderer's WebGL2 backend draws the WebGL entry's pixels and holds the parity bounds", async ({ page }) => {
   // Each method's programs for every fill and polarisation, and the tables of both grids, on a CPU rasteriser.
