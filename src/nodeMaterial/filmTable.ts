@@ -1,18 +1,18 @@
 /**
  * The `table` method for the node material: a half-float texture of the film's XYZ over
  * (thickness 0..max, cos θ_i 0..1) for light from outside, laid out as the quality's table says
- * (filmTableLayout.ts), filled on the GPU by a render pass (a quad whose fragment is the film at
- * the texel's thickness and angle by the binned integral: the texel's own film, as the GLSL's
- * series fill gives it; averaged over the texel's thickness cell, as the GLSL's binned fill does,
- * it measured ΔE00 1.07 on the parity harness's stress grid, against 0.92) and looked up with the
- * GPU's filtering (half float filters on every backend; a float32 texture filters only with
- * `float32-filterable`). The twin of src/film/filmTable.ts, shaders/film/filmTable.glsl and
- * shaders/methods/tableMethod.glsl.
+ * (filmTableLayout.ts), filled on the GPU (filmTableFill.ts): by compute into a storage texture on
+ * WebGPURenderer's WebGPU backend (filmTableCompute.ts), by a render pass into a render target on
+ * its WebGL2 backend (filmTablePass.ts). Each texel is the film at the texel's thickness and angle
+ * by the binned integral: the texel's own film, as the GLSL's series fill gives it; averaged over
+ * the texel's thickness cell, as the GLSL's binned fill does, it measured ΔE00 1.07 on the parity
+ * harness's stress grid, against 0.92. It is looked up with the GPU's filtering (half float
+ * filters on every backend; a float32 texture filters only with `float32-filterable`). The twin of
+ * src/film/filmTable.ts, shaders/film/filmTable.glsl and shaders/methods/tableMethod.glsl.
  */
-import { HalfFloatType, LinearFilter, RenderTarget } from 'three';
-import { Fn, texture, uniform, uv, vec2, vec4 } from 'three/tsl';
-import { type Node, NodeMaterial, QuadMesh, type Renderer, type UniformNode } from 'three/webgpu';
-import { fillGpu, filmSpectralBins } from '../film/filmFillGpu.ts';
+import { Fn, texture, uniform, vec2 } from 'three/tsl';
+import { type Node, type Renderer } from 'three/webgpu';
+import { filmSpectralBins, fillGpu } from '../film/filmFillGpu.ts';
 import { tableKey } from '../film/filmTableKey.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from '../film/spectralBinsTexture.ts';
 import { uniformField } from '../fields/uniformField.ts';
@@ -22,14 +22,10 @@ import { filmTableWidth } from '../settings/filmTableLayout.ts';
 import { type FloatNode } from './complex.ts';
 import { type FilmNodes, filmXyz } from './filmColor.ts';
 import { floatRow } from './filmInputs.ts';
+import { TableCompute } from './filmTableCompute.ts';
+import { type TableFill, type TableGrid, computesOn } from './filmTableFill.ts';
 import { tableCosIncidence, tableThicknessNm, tableUv } from './filmTableLayout.ts';
-
-/** The grid the table holds: texels along thickness, rows, the thickness of its last column. */
-interface Grid {
-  readonly width: UniformNode<'float', number>;
-  readonly rows: UniformNode<'float', number>;
-  readonly maxThicknessNm: UniformNode<'float', number>;
-}
+import { TablePass } from './filmTablePass.ts';
 
 /**
  * The thickness of the table's last column: a material's film is the uniform field (filmSettingsOf
@@ -38,59 +34,65 @@ interface Grid {
  */
 const tableMaxThicknessNm = (s: MaterialFilmSettings): number => uniformField.maxThicknessNm(s, null);
 
+/** A fill of the table for one backend and the key of the film it holds. */
+interface Filled {
+  readonly fill: TableFill;
+  builtKey: string;
+}
+
 export class NodeFilmTable {
-  private readonly target = new RenderTarget(1, 1, {
-    type: HalfFloatType,
-    minFilter: LinearFilter,
-    magFilter: LinearFilter,
-    depthBuffer: false,
-  });
-  private readonly grid: Grid = { width: uniform(1), rows: uniform(1), maxThicknessNm: uniform(1) };
+  private readonly grid: TableGrid = { width: uniform(1), rows: uniform(1), maxThicknessNm: uniform(1) };
   /** the bin weights of the table's integral (its own count: the quality's table.spectralBins for a film of constant media) */
   private readonly weights = texture(floatRow(1));
-  private pass: { readonly key: string; readonly quad: QuadMesh; readonly material: NodeMaterial } | null = null;
-  private builtKey = '';
+  /** by backend: compute (true) or the render pass (false); a renderer of each may draw the material */
+  private readonly fills = new Map<boolean, Filled>();
 
   constructor(readonly quality: FilmQuality) {}
 
-  /** The film's XYZ at a thickness and cos θ_i: one filtered lookup, texel centres at the ends of the ranges (docs/gpu.md#texel-centres). */
+  /** The film's XYZ at a thickness and cos θ_i: one filtered lookup of the texture its renderer's backend fills, texel centres at the ends of the ranges (docs/gpu.md#texel-centres). */
   lookup(thicknessNm: FloatNode, cosIncidence: FloatNode): Node<'vec3'> {
     const { width, rows, maxThicknessNm } = this.grid;
-    const at = tableUv(this.quality.table, thicknessNm, cosIncidence, maxThicknessNm);
-    const texel = vec2(at.x.mul(width.sub(1)).add(0.5), at.y.mul(rows.sub(1)).add(0.5));
-    return texture(this.target.texture, texel.div(vec2(width, rows))).xyz;
+    return Fn((builder) => {
+      const at = tableUv(this.quality.table, thicknessNm, cosIncidence, maxThicknessNm);
+      const texel = vec2(at.x.mul(width.sub(1)).add(0.5), at.y.mul(rows.sub(1)).add(0.5));
+      return texture(this.filledBy(builder.renderer).fill.texture, texel.div(vec2(width, rows))).xyz;
+    })();
   }
 
-  /** Whether the table holds the film of `s` (the key of what it depends on). */
+  /** Whether the table holds the film of `s` (the key of what it depends on), on a backend that draws it. */
   holds(s: MaterialFilmSettings): boolean {
-    return this.builtKey === this.keyOf(s);
+    const key = this.keyOf(s);
+    return [...this.fills.values()].some((f) => f.builtKey === key);
   }
 
-  /** Draws the table for `s` with `renderer` where it holds another film; `film`: the film's nodes bar the bins. */
+  /** Fills the table for `s` with `renderer` where it holds another film; `film`: the film's nodes bar the bins. */
   update(renderer: Renderer, s: MaterialFilmSettings, film: Omit<FilmNodes, 'bins'>): void {
     const key = this.keyOf(s);
-    if (key === this.builtKey) return;
+    const filled = this.filledBy(renderer);
+    if (key === filled.builtKey) return;
     const q = this.quality;
     const count = filmSpectralBins(s, q, q.table.spectralBins);
     this.weights.value = spectralBinsTexture(s.illuminant, s.normalization, count, this);
     const maxThicknessNm = tableMaxThicknessNm(s);
     // The width resolves the fringes of the film (or of a stack's films that follow the thickness): FilmTablePass.fullGrid's.
     const index = fillGpu(s).fieldIndex(s, count);
-    const width = index === null ? 2 : filmTableWidth(q.table, maxThicknessNm, index);
-    this.grid.width.value = width;
+    this.grid.width.value = index === null ? 2 : filmTableWidth(q.table, maxThicknessNm, index);
     this.grid.rows.value = q.table.rows;
     this.grid.maxThicknessNm.value = maxThicknessNm;
-    this.target.setSize(width, q.table.rows);
-    const previous = renderer.getRenderTarget();
-    renderer.setRenderTarget(this.target);
-    this.passFor(count, film).render(renderer);
-    renderer.setRenderTarget(previous);
-    this.builtKey = key;
+    const bins = spectralBinDefines(count, q.spectralTailTolerance);
+    const nodes: FilmNodes = {
+      ...film,
+      bins: { count, first: bins.TFC_SPECTRAL_BIN_FIRST!, end: bins.TFC_SPECTRAL_BIN_END!, weights: this.weights },
+    };
+    const max = this.grid.maxThicknessNm;
+    filled.fill.fill(renderer, JSON.stringify([film.fill, film.kinds, bins]), (u, v) =>
+      filmXyz(nodes, tableThicknessNm(q.table, u, max), tableCosIncidence(q.table, v)),
+    );
+    filled.builtKey = key;
   }
 
   dispose(): void {
-    this.target.dispose();
-    this.pass?.material.dispose();
+    for (const { fill } of this.fills.values()) fill.dispose();
     releaseSpectralBinsTexture(this);
   }
 
@@ -98,28 +100,13 @@ export class NodeFilmTable {
     return JSON.stringify([this.quality, tableKey(s, tableMaxThicknessNm(s))]);
   }
 
-  /** The pass's quad for the film's program (its fill, channels and bins), made again when that changes. */
-  private passFor(count: number, film: Omit<FilmNodes, 'bins'>): QuadMesh {
-    const bins = spectralBinDefines(count, this.quality.spectralTailTolerance);
-    const key = JSON.stringify([film.fill, film.kinds, bins]);
-    if (this.pass?.key === key) return this.pass.quad;
-    this.pass?.material.dispose();
-    const nodes: FilmNodes = {
-      ...film,
-      bins: { count, first: bins.TFC_SPECTRAL_BIN_FIRST!, end: bins.TFC_SPECTRAL_BIN_END!, weights: this.weights },
-    };
-    const material = new NodeMaterial();
-    material.fragmentNode = Fn(() => vec4(this.texelXyz(nodes), 1))();
-    this.pass = { key, quad: new QuadMesh(material), material };
-    return this.pass.quad;
-  }
-
-  /** The XYZ of the texel the pass draws: its thickness and cos θ_i from its centre (u, v run from the first to the last texel centre). */
-  private texelXyz(film: FilmNodes): Node<'vec3'> {
-    const { width, rows, maxThicknessNm } = this.grid;
-    const layout = this.quality.table;
-    const u = uv().x.mul(width).sub(0.5).div(width.sub(1));
-    const v = uv().y.mul(rows).sub(0.5).div(rows.sub(1));
-    return filmXyz(film, tableThicknessNm(layout, u, maxThicknessNm), tableCosIncidence(layout, v));
+  /** The fill of `renderer`'s backend, made at its first use. */
+  private filledBy(renderer: Renderer): Filled {
+    const compute = computesOn(renderer);
+    const known = this.fills.get(compute);
+    if (known) return known;
+    const made = { fill: compute ? new TableCompute(this.grid) : new TablePass(this.grid), builtKey: '' };
+    this.fills.set(compute, made);
+    return made;
   }
 }

@@ -9,13 +9,15 @@ import {
   optionChanges,
   nodePixels,
   openHarness,
+  tableFillCalls,
   worstCodeDifference,
 } from './webgpuChecks.ts';
 
 /**
  * The WebGPU entry (src/nodeMaterial/) on WebGPURenderer's WebGL2 backend, beside the WebGL entry
- * on WebGLRenderer in the same page: the same scene's centre pixel, and the node film against the
- * float64 reference on the parity grids. Its WebGPU backend: webgpuBackend.spec.ts.
+ * on WebGLRenderer in the same page: the same scene's centre pixel, its table filled by a render
+ * pass, and the node film against the float64 reference on the parity grids. Its WebGPU backend:
+ * webgpuBackend.spec.ts.
  */
 test("the WebGPU entry on WebGPURenderer's WebGL2 backend draws the WebGL entry's pixels and holds the parity bounds", async ({ page }) => {
   // Each method's programs for every fill and polarisation, and the tables of both grids, on a CPU rasteriser.
@@ -43,6 +45,7 @@ test("the WebGPU entry on WebGPURenderer's WebGL2 backend draws the WebGL entry'
     expect(worstCodeDifference(node[i]!.exact, caseReference8(c)), `${label}: ${node[i]!.exact}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
   });
   await optionChanges(page);
+  await tableFillCalls(page, 'webgl');
   await nodeParity(page, 'exact');
   await nodeParity(page, 'table');
   expect(problems).toEqual([]);

@@ -8,6 +8,7 @@ import {
   optionChanges,
   nodePixels,
   openHarness,
+  tableFillCalls,
   worstCodeDifference,
 } from './webgpuChecks.ts';
 
@@ -15,7 +16,7 @@ import {
  * The WebGPU entry (src/nodeMaterial/) on WebGPURenderer's WebGPU backend, in the launch that has
  * WebGPU and no WebGL2 (the `webgpu` project of playwright.config.ts): the pixel cases against the
  * float64 reference, as webgpu.spec.ts holds the WebGL2 backend's against it and the WebGL entry,
- * and the node film against the reference on the parity grids.
+ * its table filled by compute, and the node film against the reference on the parity grids.
  */
 test("the WebGPU entry on WebGPURenderer's WebGPU backend draws the reference's pixels and holds the parity bounds", async ({ page }) => {
   // Each method's programs for every fill and polarisation, and the tables of both grids, on SwiftShader's Vulkan.
@@ -31,6 +32,7 @@ test("the WebGPU entry on WebGPURenderer's WebGPU backend draws the reference's 
       );
   });
   await optionChanges(page);
+  await tableFillCalls(page, 'webgpu');
   await nodeParity(page, 'exact');
   await nodeParity(page, 'table');
   expect(problems).toEqual([]);

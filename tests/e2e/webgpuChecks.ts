@@ -110,6 +110,22 @@ export async function optionChanges(page: Page): Promise<void> {
   expect(changed).toEqual(fresh);
 }
 
+/**
+ * The table is filled by compute on the WebGPU backend and by a render pass on WebGL2: a `table`
+ * material's first frame takes one compute call (WebGPU) or one render call (WebGL2) more than an
+ * `exact` material's; its second frame, which draws the table it holds, as many as exact's.
+ */
+export async function tableFillCalls(page: Page, backend: 'webgpu' | 'webgl'): Promise<void> {
+  const [c] = PIXEL_CASES[0]!;
+  const [exact, table] = await page.evaluate(async (c) => {
+    const h = window.webgpuHarness!;
+    return [await h.frameCalls(c, { mode: 'exact' }), await h.frameCalls(c, { mode: 'table' })];
+  }, c);
+  const fill = backend === 'webgpu' ? { compute: 1, render: 0 } : { compute: 0, render: 1 };
+  expect(table[0]).toEqual({ compute: exact[0]!.compute + fill.compute, render: exact[0]!.render + fill.render });
+  expect(table[1]).toEqual(exact[1]);
+}
+
 /** The node film against the float64 reference on the parity harness's fixed and stress grids, in `mode`. */
 export async function nodeParity(page: Page, mode: 'exact' | 'table') {
   const grid = async (groups: Group[]) => {

@@ -97,6 +97,23 @@ async function changedPixels(c: FilmCase, changes: readonly SpectralIridescenceO
 }
 
 /**
+ * The compute and render calls WebGPURenderer counts (renderer.info) over two frames of one node
+ * material of film case `c`: the first builds what the material draws (its table in `table` mode).
+ */
+async function frameCalls(c: FilmCase, options: SpectralIridescenceOptions): Promise<{ compute: number; render: number }[]> {
+  const { info } = renderer!;
+  const { scene, camera } = filmScene(c, materialOf(c, 'node', options));
+  const out = [];
+  for (let frame = 0; frame < 2; frame++) {
+    const before = { compute: info.compute.calls, render: info.render.calls };
+    await drawCentre(scene, camera);
+    out.push({ compute: info.compute.calls - before.compute, render: info.render.calls - before.render });
+  }
+  disposeAll(scene);
+  return out;
+}
+
+/**
  * The centre pixel of film case `c` on WebGLRenderer, into a float target (linear), as 8-bit sRGB:
  * with the WebGL entry's film (`options`), or three's own iridescence (null).
  */
@@ -122,7 +139,7 @@ async function webglPixel(c: FilmCase, options: SpectralIridescenceOptions | nul
 const nodeFilmXyz = (groups: readonly ParityGroup[], mode: NodeParityMode, quality: FilmQuality = DEFAULT_FILM_QUALITY) =>
   renderNodeFilmXyz(renderer!, groups, mode, quality);
 
-window.webgpuHarness = { start, nodePixel, changedPixels, webglPixel, nodeFilmXyz };
+window.webgpuHarness = { start, nodePixel, changedPixels, frameCalls, webglPixel, nodeFilmXyz };
 document.body.dataset.ready = 'yes';
 
 declare global {
@@ -131,6 +148,7 @@ declare global {
       start: typeof start;
       nodePixel: typeof nodePixel;
       changedPixels: typeof changedPixels;
+      frameCalls: typeof frameCalls;
       webglPixel: typeof webglPixel;
       nodeFilmXyz: typeof nodeFilmXyz;
     };

@@ -1,0 +1,55 @@
+/**
+ * The node film's table filled by compute (WebGPURenderer's WebGPU backend): one invocation per
+ * texel writes the texel's XYZ into a half-float storage texture (rgba16float: a storage format of
+ * core WebGPU, and filterable on every adapter, so the lookup samples it with linear filtering).
+ */
+import { HalfFloatType, type Texture } from 'three';
+import { Fn, float, instanceIndex, textureStore, uint, uvec2, vec4 } from 'three/tsl';
+import { type ComputeNode, type Renderer, StorageTexture } from 'three/webgpu';
+import { type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
+
+export class TableCompute implements TableFill {
+  private readonly storage = new StorageTexture(1, 1);
+  private kernel: { readonly program: string; readonly node: ComputeNode } | null = null;
+
+  constructor(private readonly grid: TableGrid) {
+    this.storage.type = HalfFloatType;
+    // one level: the lookup reads texels and filters between them
+    this.storage.generateMipmaps = false;
+  }
+
+  get texture(): Texture {
+    return this.storage;
+  }
+
+  fill(renderer: Renderer, program: string, xyz: TexelXyz): void {
+    const width = this.grid.width.value;
+    const rows = this.grid.rows.value;
+    // a 2D texture's depth is 1 (three's types ask for one)
+    this.storage.setSize(width, rows, 1);
+    const node = this.kernelFor(program, xyz);
+    node.count = width * rows;
+    void renderer.compute(node);
+  }
+
+  dispose(): void {
+    this.storage.dispose();
+    this.kernel?.node.dispose();
+  }
+
+  /** The compute node of the program, made again when the program changes. */
+  private kernelFor(program: string, xyz: TexelXyz): ComputeNode {
+    if (this.kernel?.program === program) return this.kernel.node;
+    this.kernel?.node.dispose();
+    const { width, rows } = this.grid;
+    // Invocation i is texel (i mod width, i div width); its (u, v) its column and row over the last ones.
+    const node = Fn(() => {
+      const x = instanceIndex.mod(uint(width));
+      const y = instanceIndex.div(uint(width));
+      const value = xyz(float(x).div(width.sub(1)), float(y).div(rows.sub(1)));
+      textureStore(this.storage, uvec2(x, y), vec4(value, 1)).toWriteOnly();
+    })().compute(1);
+    this.kernel = { program, node };
+    return node;
+  }
+}
