@@ -5,10 +5,9 @@
  */
 import { filmColorUniforms, releaseFilmColorTextures } from '../film/filmColor.ts';
 import { filmStackUniforms } from '../film/filmStack.ts';
-import { filmKeyOf } from '../meshMaterial/materialFilm.ts';
 import { type SpectralFilm } from '../meshMaterial/spectralFilm.ts';
 import { filmInputs } from './filmInputs.ts';
-import { type NodeFilm, addNodeFilm, nodeFilmOf, updateNodeFilm } from './nodeFilm.ts';
+import { type NodeFilm, addNodeFilm, nodeFilmOf, nodeProgramKey, updateNodeFilm } from './nodeFilm.ts';
 import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
 
 export { setupLightingModel } from './nodeFilm.ts';
@@ -19,7 +18,7 @@ export { setupLightingModel } from './nodeFilm.ts';
  */
 export function startNodeFilm(m: PhysicalMaterial, film: SpectralFilm): void {
   film.uniforms = { ...filmColorUniforms(), ...filmStackUniforms() };
-  film.programKey = filmKeyOf;
+  film.programKey = nodeProgramKey;
   const f: NodeFilm = { film, inputs: filmInputs(), table: null };
   addNodeFilm(m, f);
   updateNodeFilm(f, m, null);
@@ -27,7 +26,7 @@ export function startNodeFilm(m: PhysicalMaterial, film: SpectralFilm): void {
 }
 
 /** The film's part of `m`'s program key. */
-export const nodeFilmKey = (m: PhysicalMaterial, film: SpectralFilm): string => filmKeyOf(physical(m), film.options);
+export const nodeFilmKey = (m: PhysicalMaterial, film: SpectralFilm): string => nodeProgramKey(physical(m), film.options);
 
 /** Whether `m` is drawn by this entry's film (made spectral by it). */
 export const drawsNodeFilm = (m: PhysicalMaterial): boolean => nodeFilmOf(m) !== undefined;

@@ -3,6 +3,7 @@
  * (src/meshMaterial/spectralFilm.ts): its TSL inputs and its table, brought up to the material
  * before each render; and the lighting model that draws its film.
  */
+import { type MeshPhysicalMaterial } from 'three';
 import { clamp, float, ior, iridescenceIOR, vec2 } from 'three/tsl';
 import { MeshPhysicalNodeMaterial, type NodeBuilder, type PhysicalLightingModel, type Renderer } from 'three/webgpu';
 import { updateFilmColorUniforms } from '../film/filmColor.ts';
@@ -11,9 +12,10 @@ import { spectralBinDefines } from '../film/spectralBinsTexture.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { filmFill } from '../methods/filmFills.ts';
 import { methodReads } from '../methods/methods.ts';
-import { type MaterialFilmSettings, filmSettingsOf, metalOf, metalStateOf } from '../meshMaterial/materialFilm.ts';
+import { type MaterialFilmSettings, filmKeyOf, filmSettingsOf, metalOf, metalStateOf } from '../meshMaterial/materialFilm.ts';
 import { clampWithWarning } from '../meshMaterial/materialParameters.ts';
 import { type SpectralFilm, filmOf, warnOnce } from '../meshMaterial/spectralFilm.ts';
+import { type CheckedOptions } from '../meshMaterial/spectralIridescenceOptions.ts';
 import { type FloatNode } from './complex.ts';
 import { type FilmInputs, setFilmInputs } from './filmInputs.ts';
 import { CHANNEL_KINDS } from './filmReflectance.ts';
@@ -47,6 +49,17 @@ const drawnSettings = (f: NodeFilm, m: PhysicalMaterial): MaterialFilmSettings =
 export function drawsTable(m: PhysicalMaterial, s: MaterialFilmSettings): boolean {
   const node = (m as Partial<MeshPhysicalNodeMaterial>).iridescenceIORNode;
   return !methodReads(s.mode, 'spectralBins') && !node;
+}
+
+/**
+ * The film's part of the material's program key: what its nodes are built from. Drawn from the
+ * table, they are the lookup alone, whatever the film, its light or its polarisation (those are
+ * the table's texels): the table's quality and the lobe the film lies on; drawn by `exact`, all
+ * the film's defines say. A change of light or polarisation in `table` then builds no program.
+ */
+export function nodeProgramKey(m: MeshPhysicalMaterial, o: CheckedOptions): string {
+  const s = filmSettingsOf(m, o, (_, value) => value);
+  return drawsTable(m, s) ? `table ${JSON.stringify(o.quality)}${metalStateOf(m, o)}` : filmKeyOf(m, o);
 }
 
 /** The film's nodes that the pass and the material share: its fill, channels, the media's inputs. */

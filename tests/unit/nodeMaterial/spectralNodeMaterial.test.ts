@@ -61,6 +61,19 @@ describe('the WebGPU entry', () => {
     expect(m.polarization).toBe('unpolarized');
   });
 
+  it('drawn from the table, its light and polarisation are the texels: a change of them keeps the program; by exact, a change of polarisation does not', () => {
+    const m = spectralIridescence(film());
+    const [version, key] = [m.version, m.customProgramCacheKey()];
+    m.illuminant = 'D93';
+    m.polarization = 's';
+    m.film = 'water';
+    expect([m.version, m.customProgramCacheKey()]).toEqual([version, key]);
+    m.mode = 'exact';
+    const exactKey = m.customProgramCacheKey();
+    m.polarization = 'p';
+    expect(m.customProgramCacheKey()).not.toBe(exactKey);
+  });
+
   it("upgrades a loaded scene's iridescent physical materials, classic or node, and gives a classic one the lighting model its node copy takes", () => {
     const root = new Group();
     const classic = new MeshPhysicalMaterial({ iridescence: 1 });
