@@ -8,7 +8,14 @@ import { Loop, float, int, ivec2, length, select, textureLoad, vec2, vec3 } from
 import { type Node, type TextureNode } from 'three/webgpu';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
 import { type FloatNode } from './complex.ts';
-import { type AiryTerms, type FilmOptics, meanChannelReflectance, reflectanceAt, roundTripAttenuation } from './filmReflectance.ts';
+import {
+  type AiryTerms,
+  type FilmOptics,
+  meanChannelReflectance,
+  reflectanceAt,
+  roundTripAttenuation,
+  weightedSum,
+} from './filmReflectance.ts';
 
 /** The bins as the program holds them (spectralBinDefines): their count, the ones visited (first ≤ b < end), their weights. */
 export interface SpectralBinNodes {
@@ -48,10 +55,10 @@ export function binReflectance(o: FilmOptics, centerNm: FloatNode, phase: FloatN
   const path = o.opticalPathNm;
   const a = roundTripAttenuation(path, centerNm).toVar();
   const attenuated = (c: AiryTerms): AiryTerms => ({ rab: c.rab, multiple: c.multiple.mul(a), roundTrip: c.roundTrip.mul(a) });
-  const mean = o.channels
-    .map((c) => meanChannelReflectance(attenuated(c), phase, halfWidth))
-    .reduce((x, y) => x.add(y))
-    .div(o.channels.length);
+  const mean = weightedSum(
+    o.weights,
+    o.channels.map((c) => meanChannelReflectance(attenuated(c), phase, halfWidth)),
+  );
   return select(path.x.equal(0).and(path.y.notEqual(0)), reflectanceAt(o, centerNm), mean);
 }
 

@@ -10,7 +10,7 @@ import { type FilmFill } from '../methods/filmFills.ts';
 import { XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type SpectralBinNodes, binReflectance, binSum, binnedXyz } from './binnedIntegration.ts';
 import { type ComplexNode, type FloatNode } from './complex.ts';
-import { type ChannelKind, filmOptics, filmPathPerNm } from './filmReflectance.ts';
+import { type Channels, filmOptics, filmPathPerNm } from './filmReflectance.ts';
 import { mediaAt } from './medium.ts';
 import { type StackNodes, layersReflectance } from './transferMatrix.ts';
 
@@ -19,7 +19,7 @@ export interface FilmNodes {
   readonly fill: FilmFill;
   /** n_a, real: the light comes from a transparent medium */
   readonly nOutside: FloatNode;
-  readonly kinds: readonly ChannelKind[];
+  readonly channels: Channels;
   readonly bins: SpectralBinNodes;
   readonly nFilm: ComplexNode;
   readonly nInside: ComplexNode;
@@ -32,7 +32,7 @@ function dispersiveXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: Float
   const pathPerNm = (lambdaNm: FloatNode) => filmPathPerNm(mediaAt(f.knots, lambdaNm).film, f.nOutside, cosIncidence);
   return binSum(f.bins, ({ low, high, center }) => {
     const media = mediaAt(f.knots, center);
-    const optics = filmOptics(f.kinds, f.nOutside, media.film, media.inside, thicknessNm, cosIncidence);
+    const optics = filmOptics(f.channels, f.nOutside, media.film, media.inside, thicknessNm, cosIncidence);
     const lowPhase = pathPerNm(low).mul(thicknessNm).div(low).toVar();
     const highPhase = pathPerNm(high).mul(thicknessNm).div(high).toVar();
     return binReflectance(optics, center, lowPhase.add(highPhase).mul(Math.PI), lowPhase.sub(highPhase).mul(Math.PI));
@@ -42,9 +42,11 @@ function dispersiveXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: Float
 /** The film's XYZ at a thickness and cos θ_i, light from outside. */
 export function filmXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: FloatNode): Node<'vec3'> {
   if (f.fill === 'stack')
-    return binSum(f.bins, ({ index, center }) => layersReflectance(f.stack, f.kinds, index, center, f.nOutside, thicknessNm, cosIncidence));
+    return binSum(f.bins, ({ index, center }) =>
+      layersReflectance(f.stack, f.channels, index, center, f.nOutside, thicknessNm, cosIncidence),
+    );
   if (f.fill === 'dispersive') return dispersiveXyz(f, thicknessNm, cosIncidence);
-  return binnedXyz(f.bins, filmOptics(f.kinds, f.nOutside, f.nFilm, f.nInside, thicknessNm, cosIncidence));
+  return binnedXyz(f.bins, filmOptics(f.channels, f.nOutside, f.nFilm, f.nInside, thicknessNm, cosIncidence));
 }
 
 /** XYZ → linear sRGB, three's working space (eq 19), row by row. */

@@ -1,7 +1,8 @@
 /**
  * Film reflectance in TSL by the Airy sum, eqs (1)–(14), and its closed-form mean over a phase
  * window. The node twin of shaders/physics/filmReflectance.glsl (src/physics/filmReflectance.ts);
- * the polarisation is the program's, so its channels are unrolled here.
+ * the channels are unrolled here, each R weighted by a node (a constant where the polarisation is
+ * the program's, a uniform where the table's fill takes s and p in one program).
  */
 import { If, abs, atan, atanh, clamp, cos, exp, float, min, select, sin, sqrt, vec2 } from 'three/tsl';
 import { type Polarization } from '../physics/filmReflectance.ts';
@@ -15,6 +16,26 @@ export type ChannelKind = 0 | 1 | 2;
 /** The channels whose R is averaged, for each polarisation. */
 export const CHANNEL_KINDS: Readonly<Record<Polarization, readonly ChannelKind[]>> = { unpolarized: [0, 1], paper: [2], s: [0], p: [1] };
 
+/** The channels a film's R is the weighted sum of: their kinds, and each one's weight (the weights sum to 1). */
+export interface Channels {
+  readonly kinds: readonly ChannelKind[];
+  readonly weights: readonly FloatNode[];
+}
+
+/** A polarisation's weight of each of `kinds`: 1/n for its n channels, 0 for the others. */
+export const channelWeights = (p: Polarization, kinds: readonly ChannelKind[]): number[] =>
+  kinds.map((k) => (CHANNEL_KINDS[p].includes(k) ? 1 / CHANNEL_KINDS[p].length : 0));
+
+/** A polarisation's channels in a program of its own: its kinds, each of equal, constant weight. */
+export const channelsOf = (p: Polarization): Channels => ({
+  kinds: CHANNEL_KINDS[p],
+  weights: channelWeights(p, CHANNEL_KINDS[p]).map((w) => float(w)),
+});
+
+/** Σ weight × R over the channels. */
+export const weightedSum = (weights: readonly FloatNode[], values: readonly FloatNode[]): FloatNode =>
+  values.map((v, i) => v.mul(weights[i]!)).reduce((a, b) => a.add(b));
+
 /** The λ-independent factors of eq (13) for one channel: r = r_ab + multiple e^{iφ} / (1 − roundTrip e^{iφ}). */
 export interface AiryTerms {
   readonly rab: ComplexNode;
@@ -24,6 +45,8 @@ export interface AiryTerms {
 
 export interface FilmOptics {
   readonly channels: readonly AiryTerms[];
+  /** each channel's weight in R */
+  readonly weights: readonly FloatNode[];
   /** Δ = 2 ñ_b d cos θ_r (eq 12 reduced) */
   readonly opticalPathNm: ComplexNode;
 }
@@ -45,7 +68,7 @@ export const filmPathPerNm = (nFilm: ComplexNode, nOutside: FloatNode, cosIncide
  * channel keeps eq (13).
  */
 export function filmOptics(
-  kinds: readonly ChannelKind[],
+  { kinds, weights }: Channels,
   nOutside: FloatNode,
   nFilm: ComplexNode,
   nInside: ComplexNode,
@@ -72,7 +95,7 @@ export function filmOptics(
       roundTrip: select(bare, zero, film.roundTrip).toVar(),
     };
   });
-  return { channels, opticalPathNm: cMul(nFilm, cosR).mul(thicknessNm.mul(2)).toVar() };
+  return { channels, weights, opticalPathNm: cMul(nFilm, cosR).mul(thicknessNm.mul(2)).toVar() };
 }
 
 /** One channel's R, eq (13) squared, at the round-trip phase factor z = e^{iφ}. */
@@ -81,11 +104,16 @@ export function channelReflectance(c: AiryTerms, z: ComplexNode): FloatNode {
   return cAbs2(c.rab.add(select(cIsZero(c.multiple), vec2(0, 0), series)));
 }
 
-/** R at one wavelength, eqs (11), (13), (14), averaged over the channels. */
+/** R at one wavelength, eqs (11), (13), (14), the channels' weighted sum. */
 export function reflectanceAt(o: FilmOptics, lambdaNm: FloatNode): FloatNode {
   const z = cExpI(o.opticalPathNm.mul(float(2 * Math.PI).div(lambdaNm))).toVar();
-  const sum = o.channels.map((c) => channelReflectance(c, z)).reduce((a, b) => a.add(b));
-  return min(1, sum.div(o.channels.length));
+  return min(
+    1,
+    weightedSum(
+      o.weights,
+      o.channels.map((c) => channelReflectance(c, z)),
+    ),
+  );
 }
 
 /**

@@ -17,11 +17,13 @@ import { tableKey } from '../film/filmTableKey.ts';
 import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } from '../film/spectralBinsTexture.ts';
 import { uniformField } from '../fields/uniformField.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
+import { type Polarization } from '../physics/filmReflectance.ts';
 import { type MaterialFilmSettings } from '../meshMaterial/materialFilm.ts';
 import { filmTableWidth } from '../settings/filmTableLayout.ts';
 import { type FloatNode } from './complex.ts';
 import { type FilmNodes, filmXyz } from './filmColor.ts';
 import { floatRow } from './filmInputs.ts';
+import { CHANNEL_KINDS, type Channels, channelWeights, channelsOf } from './filmReflectance.ts';
 import { TableCompute } from './filmTableCompute.ts';
 import { type TableFill, type TableGrid, computesOn } from './filmTableFill.ts';
 import { tableCosIncidence, tableThicknessNm, tableUv } from './filmTableLayout.ts';
@@ -44,6 +46,8 @@ export class NodeFilmTable {
   private readonly grid: TableGrid = { width: uniform(1), rows: uniform(1), maxThicknessNm: uniform(1) };
   /** the bin weights of the table's integral (its own count: the quality's table.spectralBins for a film of constant media) */
   private readonly weights = texture(floatRow(1));
+  /** the weights of s and p in the fill (channelsFor) */
+  private readonly physicalWeights = CHANNEL_KINDS.unpolarized.map(() => uniform(0));
   /** by backend: compute (true) or the render pass (false); a renderer of each may draw the material */
   private readonly fills = new Map<boolean, Filled>();
 
@@ -65,8 +69,8 @@ export class NodeFilmTable {
     return [...this.fills.values()].some((f) => f.builtKey === key);
   }
 
-  /** Fills the table for `s` with `renderer` where it holds another film; `film`: the film's nodes bar the bins. */
-  update(renderer: Renderer, s: MaterialFilmSettings, film: Omit<FilmNodes, 'bins'>): void {
+  /** Fills the table for `s` with `renderer` where it holds another film; `film`: the film's nodes bar its channels and bins. */
+  update(renderer: Renderer, s: MaterialFilmSettings, film: Omit<FilmNodes, 'bins' | 'channels'>): void {
     const key = this.keyOf(s);
     const filled = this.filledBy(renderer);
     if (key === filled.builtKey) return;
@@ -80,12 +84,14 @@ export class NodeFilmTable {
     this.grid.rows.value = q.table.rows;
     this.grid.maxThicknessNm.value = maxThicknessNm;
     const bins = spectralBinDefines(count, q.spectralTailTolerance);
+    const channels = this.channelsFor(s.polarization);
     const nodes: FilmNodes = {
       ...film,
+      channels,
       bins: { count, first: bins.TFC_SPECTRAL_BIN_FIRST!, end: bins.TFC_SPECTRAL_BIN_END!, weights: this.weights },
     };
     const max = this.grid.maxThicknessNm;
-    filled.fill.fill(renderer, JSON.stringify([film.fill, film.kinds, bins]), (u, v) =>
+    filled.fill.fill(renderer, JSON.stringify([film.fill, channels.kinds, bins]), (u, v) =>
       filmXyz(nodes, tableThicknessNm(q.table, u, max), tableCosIncidence(q.table, v)),
     );
     filled.builtKey = key;
@@ -94,6 +100,18 @@ export class NodeFilmTable {
   dispose(): void {
     for (const { fill } of this.fills.values()) fill.dispose();
     releaseSpectralBinsTexture(this);
+  }
+
+  /**
+   * The fill's channels for polarisation `p`: s and p in one program, weighted by uniforms, so that
+   * a change among unpolarised, s and p refills the table with the program it has; the paper's
+   * average of the amplitudes in its own.
+   */
+  private channelsFor(p: Polarization): Channels {
+    if (p === 'paper') return channelsOf(p);
+    const kinds = CHANNEL_KINDS.unpolarized;
+    channelWeights(p, kinds).forEach((w, i) => (this.physicalWeights[i]!.value = w));
+    return { kinds, weights: this.physicalWeights };
   }
 
   private keyOf(s: MaterialFilmSettings): string {

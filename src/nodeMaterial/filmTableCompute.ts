@@ -7,10 +7,11 @@ import { HalfFloatType, type Texture } from 'three';
 import { Fn, float, instanceIndex, textureStore, uint, uvec2, vec4 } from 'three/tsl';
 import { type ComputeNode, type Renderer, StorageTexture } from 'three/webgpu';
 import { type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
+import { KeptPrograms } from './keptPrograms.ts';
 
 export class TableCompute implements TableFill {
   private readonly storage = new StorageTexture(1, 1);
-  private kernel: { readonly program: string; readonly node: ComputeNode } | null = null;
+  private readonly kernels = new KeptPrograms<ComputeNode>((node) => node.dispose());
 
   constructor(private readonly grid: TableGrid) {
     this.storage.type = HalfFloatType;
@@ -34,22 +35,20 @@ export class TableCompute implements TableFill {
 
   dispose(): void {
     this.storage.dispose();
-    this.kernel?.node.dispose();
+    this.kernels.clear();
   }
 
-  /** The compute node of the program, made again when the program changes. */
+  /** The compute node of the program (kept for the last programs). */
   private kernelFor(program: string, xyz: TexelXyz): ComputeNode {
-    if (this.kernel?.program === program) return this.kernel.node;
-    this.kernel?.node.dispose();
     const { width, rows } = this.grid;
     // Invocation i is texel (i mod width, i div width); its (u, v) its column and row over the last ones.
-    const node = Fn(() => {
-      const x = instanceIndex.mod(uint(width));
-      const y = instanceIndex.div(uint(width));
-      const value = xyz(float(x).div(width.sub(1)), float(y).div(rows.sub(1)));
-      textureStore(this.storage, uvec2(x, y), vec4(value, 1)).toWriteOnly();
-    })().compute(1);
-    this.kernel = { program, node };
-    return node;
+    return this.kernels.of(program, () =>
+      Fn(() => {
+        const x = instanceIndex.mod(uint(width));
+        const y = instanceIndex.div(uint(width));
+        const value = xyz(float(x).div(width.sub(1)), float(y).div(rows.sub(1)));
+        textureStore(this.storage, uvec2(x, y), vec4(value, 1)).toWriteOnly();
+      })().compute(1),
+    );
   }
 }

@@ -7,6 +7,7 @@ import { HalfFloatType, LinearFilter, RenderTarget, type Texture } from 'three';
 import { Fn, uv, vec4 } from 'three/tsl';
 import { NodeMaterial, QuadMesh, type Renderer } from 'three/webgpu';
 import { type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
+import { KeptPrograms } from './keptPrograms.ts';
 
 export class TablePass implements TableFill {
   private readonly target = new RenderTarget(1, 1, {
@@ -15,7 +16,9 @@ export class TablePass implements TableFill {
     magFilter: LinearFilter,
     depthBuffer: false,
   });
-  private pass: { readonly program: string; readonly quad: QuadMesh; readonly material: NodeMaterial } | null = null;
+  private readonly passes = new KeptPrograms<{ readonly quad: QuadMesh; readonly material: NodeMaterial }>((pass) =>
+    pass.material.dispose(),
+  );
 
   constructor(private readonly grid: TableGrid) {}
 
@@ -33,20 +36,19 @@ export class TablePass implements TableFill {
 
   dispose(): void {
     this.target.dispose();
-    this.pass?.material.dispose();
+    this.passes.clear();
   }
 
-  /** The quad of the program, made again when the program changes. */
+  /** The quad of the program (kept for the last programs). */
   private quadFor(program: string, xyz: TexelXyz): QuadMesh {
-    if (this.pass?.program === program) return this.pass.quad;
-    this.pass?.material.dispose();
     const { width, rows } = this.grid;
-    const material = new NodeMaterial();
-    // The fragment's centre in texels, less half a texel, over the texels between the first and last centres.
-    material.fragmentNode = Fn(() =>
-      vec4(xyz(uv().x.mul(width).sub(0.5).div(width.sub(1)), uv().y.mul(rows).sub(0.5).div(rows.sub(1))), 1),
-    )();
-    this.pass = { program, quad: new QuadMesh(material), material };
-    return this.pass.quad;
+    return this.passes.of(program, () => {
+      const material = new NodeMaterial();
+      // The fragment's centre in texels, less half a texel, over the texels between the first and last centres.
+      material.fragmentNode = Fn(() =>
+        vec4(xyz(uv().x.mul(width).sub(0.5).div(width.sub(1)), uv().y.mul(rows).sub(0.5).div(rows.sub(1))), 1),
+      )();
+      return { quad: new QuadMesh(material), material };
+    }).quad;
   }
 }

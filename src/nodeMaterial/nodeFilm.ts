@@ -18,7 +18,7 @@ import { type SpectralFilm, filmOf, warnOnce } from '../meshMaterial/spectralFil
 import { type CheckedOptions } from '../meshMaterial/spectralIridescenceOptions.ts';
 import { type FloatNode } from './complex.ts';
 import { type FilmInputs, setFilmInputs } from './filmInputs.ts';
-import { CHANNEL_KINDS } from './filmReflectance.ts';
+import { channelsOf } from './filmReflectance.ts';
 import { type FilmNodes, filmXyz, xyzToLinearWorking } from './filmColor.ts';
 import { NodeFilmTable } from './filmTable.ts';
 import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
@@ -63,11 +63,10 @@ export function nodeProgramKey(m: MeshPhysicalMaterial, o: CheckedOptions): stri
 }
 
 /** The film's nodes that the pass and the material share: its fill, channels, the media's inputs. */
-const sharedNodes = (f: NodeFilm, s: MaterialFilmSettings): Omit<FilmNodes, 'bins' | 'nFilm' | 'nInside'> => ({
+const sharedNodes = (f: NodeFilm, s: MaterialFilmSettings): Omit<FilmNodes, 'bins' | 'channels' | 'nFilm' | 'nInside'> => ({
   fill: filmFill(s),
   // three's film lies in air
   nOutside: float(1),
-  kinds: CHANNEL_KINDS[s.polarization],
   knots: f.inputs.knots,
   stack: { layers: f.inputs.layers, count: f.inputs.layerCount },
 });
@@ -100,6 +99,7 @@ function exactXyz(f: NodeFilm, m: PhysicalMaterial, s: MaterialFilmSettings, thi
   return filmXyz(
     {
       ...sharedNodes(f, s),
+      channels: channelsOf(s.polarization),
       bins: {
         count: bins.TFC_SPECTRAL_BINS!,
         first: bins.TFC_SPECTRAL_BIN_FIRST!,

@@ -13,7 +13,7 @@ import { Loop, float, int, ivec2, min, select, textureLoad, vec2 } from 'three/t
 import { type Node, type TextureNode } from 'three/webgpu';
 import { FILM_LAYER } from '../film/filmStack.ts';
 import { type ComplexNode, type FloatNode, cAbs2, cDiv, cExpI, cIsZero, cMul } from './complex.ts';
-import { type ChannelKind, channelOf } from './filmReflectance.ts';
+import { type Channels, channelOf, weightedSum } from './filmReflectance.ts';
 import { fresnelCoefficients, interfaceBothWays } from './fresnel.ts';
 import { refractedCos } from './snell.ts';
 import { texelFloat, texelVec2 } from './texelRecords.ts';
@@ -47,10 +47,10 @@ function rouardStep(
   return select(cIsZero(multiple), forward.r, step);
 }
 
-/** R of the stack at bin `bin` (centre λ), light from the outside n_a, averaged over the channels. */
+/** R of the stack at bin `bin` (centre λ), light from the outside n_a, the channels' weighted sum. */
 export function layersReflectance(
   stack: StackNodes,
-  kinds: readonly ChannelKind[],
+  { kinds, weights }: Channels,
   bin: Node<'int'>,
   lambdaNm: FloatNode,
   nOutside: FloatNode,
@@ -80,6 +80,11 @@ export function layersReflectance(
     const { forward, backward } = interfaceBothWays(nOut, cosOut, nIn, cosIn);
     kinds.forEach((kind, k) => gamma[k]!.assign(rouardStep(channelOf(forward, kind), channelOf(backward, kind), gamma[k]!, z)));
   });
-  const sum = gamma.map((g) => cAbs2(g)).reduce((a, b) => a.add(b));
-  return min(1, sum.div(kinds.length));
+  return min(
+    1,
+    weightedSum(
+      weights,
+      gamma.map((g) => cAbs2(g)),
+    ),
+  );
 }

@@ -16,7 +16,7 @@ import { spectralBinDefines } from '../../../src/film/spectralBinsTexture.ts';
 import { filmFill } from '../../../src/methods/filmFills.ts';
 import { type FilmNodes, filmXyz } from '../../../src/nodeMaterial/filmColor.ts';
 import { filmInputs, floatRow, setFilmInputs } from '../../../src/nodeMaterial/filmInputs.ts';
-import { CHANNEL_KINDS } from '../../../src/nodeMaterial/filmReflectance.ts';
+import { channelsOf } from '../../../src/nodeMaterial/filmReflectance.ts';
 import { NodeFilmTable } from '../../../src/nodeMaterial/filmTable.ts';
 import { type FilmQuality } from '../../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
@@ -41,13 +41,15 @@ const tableFor = (q: FilmQuality): NodeFilmTable => {
 };
 
 /** The pass drawing the film of `s` at each case (thickness, cos θ_i) of the case texture. */
-function passFor(s: FilmSettings, mode: NodeParityMode, q: FilmQuality, film: Omit<FilmNodes, 'bins'>): QuadMesh {
+function passFor(s: FilmSettings, mode: NodeParityMode, q: FilmQuality, film: Omit<FilmNodes, 'bins' | 'channels'>): QuadMesh {
   const bins = spectralBinDefines(filmSpectralBins(s, q, q.exactSpectralBins), q.spectralTailTolerance);
-  const key = JSON.stringify([mode, q, film.fill, film.kinds, bins]);
+  const channels = channelsOf(s.polarization);
+  const key = JSON.stringify([mode, q, film.fill, channels.kinds, bins]);
   const known = passes.get(key);
   if (known) return known.quad;
   const nodes: FilmNodes = {
     ...film,
+    channels,
     bins: { count: bins.TFC_SPECTRAL_BINS!, first: bins.TFC_SPECTRAL_BIN_FIRST!, end: bins.TFC_SPECTRAL_BIN_END!, weights: inputs.weights },
   };
   const material = new NodeMaterial();
@@ -75,7 +77,6 @@ async function renderGroup(renderer: WebGPURenderer, g: ParityGroup, mode: NodeP
   const film = {
     fill: filmFill(s),
     nOutside,
-    kinds: CHANNEL_KINDS[s.polarization],
     nFilm: inputs.nFilm,
     nInside: inputs.nInside,
     knots: inputs.knots,
