@@ -206,7 +206,7 @@ export class PlotPanel {
     show('deltaE00', c.deltaE00.toFixed(3));
     this.swatch.style.background = c.hex;
 
-    const spectrum = filmSpectrum({ ...stack, thicknessNm: reading.thicknessNm }, s.illuminant, s.polarization);
+    const spectrum = filmSpectrum({ ...stack, thicknessNm: reading.thicknessNm }, s.illuminant, s.polarization, 1, s.lightTint);
     drawSpectrumPlot(this.spectrum, spectrum, this.cat['common.wavelength']);
     this.shown = { view: { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg, illuminant: s.illuminant }, spectrum };
     const stackText = spectrum.layerCount ? message(this.cat, 'plots.stackNote', { count: spectrum.layerCount }) : '';
@@ -220,7 +220,13 @@ export class PlotPanel {
       stack,
       maxThicknessNm: maxNm,
       count: SCALE_SAMPLES,
-      options: { illuminant: s.illuminant, polarization: s.polarization, normalization: s.normalization, xyzToLinearRgb: toRgb },
+      options: {
+        illuminant: s.illuminant,
+        lightTint: s.lightTint,
+        polarization: s.polarization,
+        normalization: s.normalization,
+        xyzToLinearRgb: toRgb,
+      },
     };
     const key = JSON.stringify(request);
     if (key !== this.scaleKey) {

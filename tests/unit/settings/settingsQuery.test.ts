@@ -150,6 +150,10 @@ describe('URL parameters', () => {
       v,
       'line:NM with NM in [380, 780] nm',
     ]),
+    // A tint: three numbers, each in [0, 1] (not two, not four, none outside, none not a number).
+    ...['', '0.5', '0.5,0.5', '0.5,0.5,0.5,0.5', '1.1,0.5,0.5', '0.5,-0.1,0.5', '0.5,0.5,NaN', '0.5,,0.5', 'red', ABSURDLY_LONG].map(
+      (v): [string, string, string] => ['lightTint', v, 'R,G,B: three numbers, each in [0, 1]'],
+    ),
     ...['animate', 'renew'].flatMap((name) =>
       ['', 'yes', 'true', '2', '-1', ABSURDLY_LONG].map((v): [string, string, string] => [name, v, '0 or 1']),
     ),
