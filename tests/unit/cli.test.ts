@@ -403,6 +403,12 @@ describe('color CLI, the table of bad values', () => {
         'FL1–FL12, LED-B1–LED-B5, LED-BH1, LED-RGB1, LED-V1, LED-V2, Na, line:NM with NM in [380, 780] nm, or a daylight CCT in [4000, 25000] K',
       ],
     ),
+    ...['', '0.5', '0.5,0.5', '0.5,0.5,0.5,0.5', '1.01,0.5,0.5', '0.5,-0.01,0.5', '0.5,0.5,NaN', '0.5,,0.5', 'red'].map((v): Row => [
+      ['--light-tint', v],
+      '--light-tint',
+      v,
+      'R,G,B: three numbers, each in [0, 1]',
+    ]),
     ...notNames(['json', 'csv']).map((v): Row => [['--angles', '0:10:5', '--format', v], '--format', v, 'json, csv']),
     ...(['--from', '--to'] as const).flatMap((flag) =>
       [...NOT_NUMBERS, ...outsideRange(0, 20000)].map((v): Row => {
@@ -459,6 +465,17 @@ describe('color CLI, the table of bad values', () => {
       row('illuminant', v, '[4000, 25000] K'),
     ),
     ['illuminant', '{ "daylightCct": 1e999 }', 'illuminant', '{"daylightCct":null}', '[4000, 25000] K'],
+    ...[
+      '"1,0.5,0.2"',
+      '[1, 0.5]',
+      '[1, 0.5, 0.2, 0]',
+      '[1.5, 0.5, 0.2]',
+      '[1, -0.5, 0.2]',
+      '[1, "0.5", 0.2]',
+      '[1, null, 0.2]',
+      'null',
+      '1',
+    ].map((v) => row('lightTint', v, 'R,G,B: three numbers, each in [0, 1]')),
     ...['"bogus"', '""', '"S"', 'null', '1', `"${ABSURDLY_LONG}"`].map((v) => row('polarization', v, 'unpolarized, paper, s, p')),
     ...['"bogus"', '""', '"White"', 'null', '1'].map((v) => row('normalization', v, 'white, paper')),
     ...['"500"', '500', '{}'].map((v) => row('wavelengthsNm', v, '[300, 830]')),

@@ -227,7 +227,8 @@ describe('URL parameters', () => {
 
 describe('settingsToQuery', () => {
   it('round-trips through parseSettings, defaults left out', () => {
-    const { settings } = parseSettings('?thickness=420&illuminant=7500&mode=exact&animate=0&time=3&nInside=1.2');
+    const { settings } = parseSettings('?thickness=420&illuminant=7500&lightTint=1,0.5,0.2&mode=exact&animate=0&time=3&nInside=1.2');
+    expect(settings.lightTint).toEqual([1, 0.5, 0.2]);
     const query = settingsToQuery(settings);
     expect(parseSettings(`?${query}`)).toEqual({ settings, errors: [], refusals: [] });
     expect(settingsToQuery(DEFAULT_SETTINGS)).toBe('');
