@@ -22,9 +22,9 @@ const shared = new SharedTextures((key) => {
 });
 
 /**
- * The bin weights ∫_bin I_in T x̄, ȳ, z̄ dλ / k (T the tint's spectrum) and each bin's window (SpectralBins.windows) as a
- * `count` × 2 float texture, from the reference
- * (one source of truth), for `holder`; shared by the holders of the same weights (SharedTextures).
+ * The bin weights ∫_bin I_in T x̄, ȳ, z̄ dλ / k (T the tint's spectrum) and each bin's window
+ * (SpectralBins.windows) as a `count` × 2 float texture, from the reference (one source of truth),
+ * for `holder`; shared by the holders of the same weights (SharedTextures).
  */
 export const spectralBinsTexture = (light: SpectralLight, count: number, holder: object): DataTexture =>
   shared.hold(`{"light":${spectralLightKey(light)},"count":${count}}`, holder);

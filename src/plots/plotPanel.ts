@@ -208,7 +208,10 @@ export class PlotPanel {
 
     const spectrum = filmSpectrum({ ...stack, thicknessNm: reading.thicknessNm }, s.illuminant, s.polarization, 1, s.lightTint);
     drawSpectrumPlot(this.spectrum, spectrum, this.cat['common.wavelength']);
-    this.shown = { view: { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg, illuminant: s.illuminant }, spectrum };
+    this.shown = {
+      view: { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg, illuminant: s.illuminant, lightTint: s.lightTint },
+      spectrum,
+    };
     const stackText = spectrum.layerCount ? message(this.cat, 'plots.stackNote', { count: spectrum.layerCount }) : '';
     this.stackNote.hidden = !stackText;
     this.stackNote.textContent = stackText;
