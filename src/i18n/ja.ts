@@ -32,7 +32,7 @@ export const JA: Catalogue = {
   'param.nOutside': '外側の屈折率',
   'param.nInside': '内側の屈折率',
   'param.illuminant': '光源',
-  'param.lightTint': '光の色味',
+  'param.lightTint': '光の色味（線形 sRGB）',
   'param.polarization': '偏光',
   'param.normalization': '正規化',
   'param.space': '色空間',

@@ -14,7 +14,7 @@ export const LIGHT_TINT_DOMAIN: NumberDomain = { min: 0, max: 1, unit: '' };
 export const WHITE_TINT: LightTint = [1, 1, 1];
 
 /** What a tint may be, as every message (URL, element, CLI, the material's options) states it. */
-export const LIGHT_TINT_EXPECTED = `R,G,B: three numbers, each in [${LIGHT_TINT_DOMAIN.min}, ${LIGHT_TINT_DOMAIN.max}]`;
+export const LIGHT_TINT_EXPECTED = `three numbers R,G,B, each in [${LIGHT_TINT_DOMAIN.min}, ${LIGHT_TINT_DOMAIN.max}]`;
 
 const isTint = (values: readonly unknown[]): values is LightTint =>
   values.length === 3 && values.every((v) => isInDomain(v, LIGHT_TINT_DOMAIN));

@@ -435,7 +435,7 @@ describe('color CLI, the table of bad values', () => {
       ['--light-tint', v],
       '--light-tint',
       v,
-      'R,G,B: three numbers, each in [0, 1]',
+      'three numbers R,G,B, each in [0, 1]',
     ]),
     ...notNames(['json', 'csv']).map((v): Row => [['--angles', '0:10:5', '--format', v], '--format', v, 'json, csv']),
     ...(['--from', '--to'] as const).flatMap((flag) =>
@@ -503,7 +503,7 @@ describe('color CLI, the table of bad values', () => {
       '[1, null, 0.2]',
       'null',
       '1',
-    ].map((v) => row('lightTint', v, 'R,G,B: three numbers, each in [0, 1]')),
+    ].map((v) => row('lightTint', v, 'three numbers R,G,B, each in [0, 1]')),
     ...['"bogus"', '""', '"S"', 'null', '1', `"${ABSURDLY_LONG}"`].map((v) => row('polarization', v, 'unpolarized, paper, s, p')),
     ...['"bogus"', '""', '"White"', 'null', '1'].map((v) => row('normalization', v, 'white, paper')),
     ...['"500"', '500', '{}'].map((v) => row('wavelengthsNm', v, '[300, 830]')),

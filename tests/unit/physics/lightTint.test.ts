@@ -109,7 +109,7 @@ describe('bad tints: named with the allowed range, nothing computed', () => {
     'refuses the JSON value %j with a ParameterError naming lightTint and [0, 1]',
     (value) => {
       expect(() => lightTintFromJson(value)).toThrow(ParameterError);
-      expect(() => lightTintFromJson(value)).toThrow(/^lightTint: .* expected R,G,B: three numbers, each in \[0, 1\]$/);
+      expect(() => lightTintFromJson(value)).toThrow(/^lightTint: .* expected three numbers R,G,B, each in \[0, 1\]$/);
     },
   );
 
@@ -117,6 +117,6 @@ describe('bad tints: named with the allowed range, nothing computed', () => {
     expect(parseLightTint('0,1,0.25')).toEqual([0, 1, 0.25]);
     expect(parseLightTint(lightTintText([1, 0.5, 0.2]))).toEqual([1, 0.5, 0.2]);
     expect(lightTintFromJson([0, 0, 1])).toEqual([0, 0, 1]);
-    expect(LIGHT_TINT_EXPECTED).toBe('R,G,B: three numbers, each in [0, 1]');
+    expect(LIGHT_TINT_EXPECTED).toBe('three numbers R,G,B, each in [0, 1]');
   });
 });

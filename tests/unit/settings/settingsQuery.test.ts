@@ -152,7 +152,7 @@ describe('URL parameters', () => {
     ]),
     // A tint: three numbers, each in [0, 1] (not two, not four, none outside, none not a number).
     ...['', '0.5', '0.5,0.5', '0.5,0.5,0.5,0.5', '1.1,0.5,0.5', '0.5,-0.1,0.5', '0.5,0.5,NaN', '0.5,,0.5', 'red', ABSURDLY_LONG].map(
-      (v): [string, string, string] => ['lightTint', v, 'R,G,B: three numbers, each in [0, 1]'],
+      (v): [string, string, string] => ['lightTint', v, 'three numbers R,G,B, each in [0, 1]'],
     ),
     ...['animate', 'renew'].flatMap((name) =>
       ['', 'yes', 'true', '2', '-1', ABSURDLY_LONG].map((v): [string, string, string] => [name, v, '0 or 1']),
