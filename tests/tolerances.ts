@@ -328,3 +328,19 @@ export const GOVERNED_FRAME_RATIO = 1.3;
  * interpolated to 1 nm over 380–830 nm (held past 780 nm): 2.7e-4 the most measured (LED-V1's x).
  */
 export const LAMP_WHITE_POINT_TOL = 3e-4;
+
+/**
+ * Mallett and Yuksel's basis sums to 1 only as closely as the published table holds it: measured
+ * max |r + g + b − 1| = 9.98e-6 over its 81 rows (colour-science's copy).
+ */
+export const MALLETT_BASIS_SUM_TOL = 1e-5;
+/**
+ * A perfect reflector under D65 tinted (R, G, B), `white`, against (R, G, B) in linear sRGB. The
+ * basis reproduces sRGB exactly under the integration its authors used; here its 5 nm rows are
+ * read linearly at 1 nm and eq (19)'s matrix is the paper's, printed to 4 decimals: the untinted
+ * white itself is (0.99964, 1.00040, 0.99958), and the primaries are off by at most 1.31e-3
+ * (blue's B), measured over the pure primaries, (1, 0.5, 0.2) and (0.3, 0.7, 0.9). Half of 1/255.
+ */
+export const TINTED_WHITE_RGB_TOL = 2e-3;
+/** The page's centre under a tinted lamp against the float64 reference: the issue's goal, 3 codes of 255. */
+export const MAX_CODE_DIFFERENCE_TINT = 3;

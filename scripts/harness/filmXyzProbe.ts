@@ -11,6 +11,7 @@ import { ShaderMaterial, type WebGLRenderTarget, type WebGLRenderer } from 'thre
 import { type FilmTableBinding, filmColorDefines, filmColorUniforms, updateFilmColorUniforms } from '../../src/film/filmColor.ts';
 import { type FilmQuality } from '../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
+import { WHITE_TINT } from '../../src/physics/lightTint.ts';
 import type { FilmSettings } from '../../src/settings/filmSettings.ts';
 import { filmTableLookupColumns } from '../../src/settings/filmTableLayout.ts';
 import { bindFilmTable } from '../../src/film/filmTableGrid.ts';
@@ -82,7 +83,7 @@ export class FilmXyzProbe {
       const settings = { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: Math.max(...thicknessesNm), mode } as const;
       table = this.tableAround(quality, settings, thicknessesNm);
     }
-    updateFilmColorUniforms(m, { ...g, mode }, quality, table);
+    updateFilmColorUniforms(m, { lightTint: WHITE_TINT, ...g, mode }, quality, table);
     const out = renderFloatRow(this.renderer, m, g.inputs.length);
     inputTexture.dispose();
     return g.inputs.map((_, i) => [out[4 * i]!, out[4 * i + 1]!, out[4 * i + 2]!]);

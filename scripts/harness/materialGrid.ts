@@ -63,7 +63,7 @@ async function materialGridXyz(g: ParityGroup, mode: Exclude<ParityMode, 'three-
       iridescenceThicknessMinimum: 0,
       iridescenceThicknessMaximum: maxNm,
     }),
-    { mode, illuminant: g.illuminant, polarization: g.polarization, normalization: g.normalization },
+    { mode, illuminant: g.illuminant, lightTint: g.lightTint, polarization: g.polarization, normalization: g.normalization },
   );
   await whenSpectralReady(material);
   const plane = new Mesh(new PlaneGeometry(2, 4), material);

@@ -1,3 +1,4 @@
+import type { LightTint } from '../../src/physics/lightTint.ts';
 import type { FilmLayer } from '../../src/physics/stackFilms.ts';
 import type { FilmSettings } from '../../src/settings/filmSettings.ts';
 
@@ -9,6 +10,8 @@ export interface ParityGroup extends Pick<
   FilmSettings,
   'nOutside' | 'nFilm' | 'nInside' | 'illuminant' | 'polarization' | 'normalization'
 > {
+  /** The light's tint (none: untinted). */
+  readonly lightTint?: LightTint;
   /** A stack of films in place of nFilm (none or empty: the single film); its `d` layers take each case's thickness. */
   readonly layers?: readonly FilmLayer[];
   /** [thicknessNm, cosIncidence] per case */

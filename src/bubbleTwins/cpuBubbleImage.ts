@@ -47,7 +47,7 @@ type FilmColor = (thicknessNm: number, cosIncidence: number, fromInside: boolean
 /** The film's linear sRGB (eq 19 after eqs 1–18) at a thickness and cos θ_i, from the memoised lattice. */
 function filmColorLattice(s: FilmSettings): FilmColor {
   const step = Math.max(MIN_THICKNESS_STEP_NM, maxFieldThicknessNm(s) / LATTICE_THICKNESSES);
-  const bins = spectralBins(spectralWeights(s.illuminant, s.normalization), DEFAULT_FILM_QUALITY.exactSpectralBins);
+  const bins = spectralBins(spectralWeights(s.illuminant, s.normalization, s.lightTint), DEFAULT_FILM_QUALITY.exactSpectralBins);
   const cache = new Map<string, Rgb>();
   const node = (k: number, j: number, fromInside: boolean): Rgb => {
     const key = `${k}|${j}|${fromInside}`;

@@ -1,5 +1,6 @@
 import { FILM_STACK_DOMAIN, type FilmStack, type Polarization, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminants.ts';
+import { type LightTint, lightTintFromJson } from '../physics/lightTint.ts';
 import {
   type Medium,
   type MediumRole,
@@ -22,6 +23,7 @@ export interface ColorCase {
   /** The films its option `layers` stacks in place of the stack's single film (stackFilms.ts); empty: the single film. */
   readonly films: readonly FilmLayer[];
   readonly illuminant: IlluminantSpec;
+  readonly lightTint: LightTint;
   readonly polarization: Polarization;
   readonly normalization: Normalization;
   /** Wavelengths at which R(λ) is reported as well. */
@@ -52,6 +54,7 @@ export const CASE_FIELDS = [
   ...(Object.keys(MEDIUM_FIELDS) as MediumField[]),
   'layers',
   'illuminant',
+  'lightTint',
   'polarization',
   'normalization',
   'wavelengthsNm',
@@ -136,6 +139,7 @@ export function validateColorCase(
     stack,
     films,
     illuminant: raw.illuminant === undefined ? DEFAULT_SETTINGS.illuminant : illuminantFromJson(raw.illuminant, nameOf('illuminant')),
+    lightTint: raw.lightTint === undefined ? DEFAULT_SETTINGS.lightTint : lightTintFromJson(raw.lightTint, nameOf('lightTint')),
     polarization: oneOf(nameOf('polarization'), orDefault('polarization', DEFAULT_SETTINGS.polarization), POLARIZATIONS),
     normalization: oneOf(nameOf('normalization'), orDefault('normalization', DEFAULT_SETTINGS.normalization), NORMALIZATIONS),
     wavelengthsNm: validateWavelengths(raw.wavelengthsNm, nameOf('wavelengthsNm'), stack, films),

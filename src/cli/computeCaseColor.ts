@@ -9,6 +9,7 @@ import {
   mapToGamut,
 } from '../physics/colorConversions.ts';
 import type { IlluminantSpec } from '../physics/illuminants.ts';
+import type { LightTint } from '../physics/lightTint.ts';
 import { type IndexJson, type Medium, indexJson, mediumIndexAt } from '../physics/medium.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 import { FILM_FILLS, filmFill } from '../methods/filmFills.ts';
@@ -19,6 +20,8 @@ import type { ColorCase } from './colorCase.ts';
 export interface CaseColor {
   readonly id: string | number;
   readonly illuminant: IlluminantSpec;
+  /** The light's tint, linear sRGB relative to its white. */
+  readonly lightTint: LightTint;
   /** Which k of eqs (16)–(18) scales `xyz`: `white` (Y = 1 for a perfect reflector) or `paper`. */
   readonly normalization: Normalization;
   readonly xyz: Xyz;
@@ -51,7 +54,7 @@ const to8Bit = (linear: Rgb, luminance: number, gamut: GamutMapping): Rgb => {
  * R(λ) of the single film (eqs 1–14), or of a stack of films by the transfer matrix (transferMatrix.ts).
  */
 export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
-  const options = { illuminant: c.illuminant, polarization: c.polarization, normalization: c.normalization };
+  const options = { illuminant: c.illuminant, lightTint: c.lightTint, polarization: c.polarization, normalization: c.normalization };
   const film = withOptionFilms(c.stack, c.films);
   const stack = filmStackOf(film);
   const xyz = stackXyz(stack, options);
@@ -60,6 +63,7 @@ export function computeCaseColor(c: ColorCase, gamut: GamutMapping): CaseColor {
   return {
     id: c.id,
     illuminant: c.illuminant,
+    lightTint: c.lightTint,
     normalization: c.normalization,
     xyz,
     linearSrgb,

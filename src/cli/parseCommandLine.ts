@@ -1,5 +1,6 @@
 import { GAMUT_MAPPINGS, type GamutMapping } from '../physics/colorConversions.ts';
 import { ILLUMINANT_EXPECTED, parseIlluminant } from '../physics/illuminants.ts';
+import { LIGHT_TINT_EXPECTED, parseLightTint } from '../physics/lightTint.ts';
 import { mediumExpected, readMedium } from '../physics/medium.ts';
 import { FIELD_THICKNESS, followsField } from '../physics/stackFilms.ts';
 import { parseLayers } from '../physics/stackText.ts';
@@ -163,6 +164,7 @@ function flagValue(field: Exclude<CaseField, 'id'>, flag: string, text: string):
     return text.split(',').map((part, i) => parseStrictNumber(`${flag}[${i}]`, part, expected));
   }
   if (field === 'illuminant') return parseIlluminant(text) ?? rejectValue(flag, text, ILLUMINANT_EXPECTED);
+  if (field === 'lightTint') return parseLightTint(text) ?? rejectValue(flag, text, LIGHT_TINT_EXPECTED);
   if (field === 'layers') return parseLayers(flag, text);
   if (field in MEDIUM_FIELDS) {
     const { role } = MEDIUM_FIELDS[field as MediumField];

@@ -43,7 +43,8 @@ ${mediaLines()}
 Many cases:
   --cases FILE.json     a JSON array (at most ${MAX_CASES}) of objects with any of the fields
                         ${CASE_FIELDS.join(', ')};
-                        illuminant is a name, "line:NM" or { "daylightCct": K }; wavelengthsNm an array
+                        illuminant is a name, "line:NM" or { "daylightCct": K }; lightTint [R, G, B];
+                        wavelengthsNm an array
                         (at most ${MAX_WAVELENGTHS}); layers [{ "n", "thicknessNm" }, …] outside in,
                         in place of nFilm and thicknessNm, each n as nFilm, each thicknessNm a
                         number; id defaults to the case's index.
@@ -65,7 +66,7 @@ A chart instead of a table, written to a file (at most ${MAX_CHART_COLUMNS} colu
                                 svg: one rect per cell, ticks as lines, labels as text.
 
 Output: a JSON array, one object per case, in input order:
-  { id, illuminant, normalization, xyz, linearSrgb, srgb8, linearWideGamut, displayP3_8, reflectance,
+  { id, illuminant, lightTint, normalization, xyz, linearSrgb, srgb8, linearWideGamut, displayP3_8, reflectance,
     nFilm (or with layers nLayers: each layer's index at each wavelength), nInside }
 Bad input: exit status 2, one line on stderr, nothing on stdout.
 `;

@@ -56,17 +56,17 @@ export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<s
  */
 function updateFilmColorTextures(
   m: Pick<ShaderMaterial, 'uniforms'>,
-  s: FilmColorSettings & Pick<FilmSettings, 'illuminant' | 'normalization'>,
+  s: FilmColorSettings & Pick<FilmSettings, 'illuminant' | 'lightTint' | 'normalization'>,
   q: FilmQuality,
 ): void {
   const u = m.uniforms;
   const bins = filmSpectralBins(s, q, q.exactSpectralBins);
-  if (methodReads(s.mode, 'spectralBins')) bindSpectralBins(u, s.illuminant, s.normalization, bins, m);
+  if (methodReads(s.mode, 'spectralBins')) bindSpectralBins(u, s, bins, m);
   else {
     releaseSpectralBinsTexture(m);
     u.uSpectralBins!.value = null;
   }
-  if (methodReads(s.mode, 'spectralTransform')) u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, m);
+  if (methodReads(s.mode, 'spectralTransform')) u.uSpectralTransform!.value = spectralTransformTexture(s, m);
   else {
     releaseSpectralTransformTexture(m);
     u.uSpectralTransform!.value = null;
@@ -107,7 +107,7 @@ export interface FilmTableBinding {
  */
 export function updateFilmColorUniforms(
   m: Pick<ShaderMaterial, 'uniforms'>,
-  s: FilmColorSettings & FilmMedia & Pick<FilmSettings, 'illuminant' | 'normalization'>,
+  s: FilmColorSettings & FilmMedia & Pick<FilmSettings, 'illuminant' | 'lightTint' | 'normalization'>,
   q: FilmQuality,
   table: FilmTableBinding | null,
 ): void {

@@ -12,5 +12,5 @@ import type { StackedSettings } from './filmStack.ts';
 export function tableKey(s: FilmOptics & StackedSettings, maxThicknessNm: number): string {
   const films = filmLayersOf(s);
   const range = followsField(films) ? maxThicknessNm : null;
-  return JSON.stringify([s.nOutside, films, s.nInside, s.illuminant, s.polarization, s.normalization, range]);
+  return JSON.stringify([s.nOutside, films, s.nInside, s.illuminant, s.lightTint, s.polarization, s.normalization, range]);
 }

@@ -4,8 +4,6 @@ import { enumCode } from '../gpu/enumDefines.ts';
 import { FullscreenPass } from '../gpu/fullscreenPass.ts';
 import type { FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmOptics } from '../settings/filmSettings.ts';
-import type { IlluminantSpec } from '../physics/illuminantSpec.ts';
-import type { Normalization } from '../physics/spectralConventions.ts';
 import { type FilmTableLayout, filmTableWidth } from '../settings/filmTableLayout.ts';
 import { airySeriesRows, airySeriesRowsTexture } from './airySeriesRows.ts';
 import { dispersiveRowsKey, dispersiveRowsTexture } from './dispersiveRows.ts';
@@ -20,6 +18,7 @@ import {
   spectralTransformTexture,
   spectralTransformWhenReady,
 } from './spectralTransformTexture.ts';
+import type { SpectralLight } from './spectralTransformTexels.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
 
 /** Columns [from, to) of a grid. */
@@ -80,14 +79,9 @@ export class FilmTablePass {
   }
 
   /** What a build of `s` over `grids` is computed from, each asked by `light` (the light's transform) or `rows` (a dispersive film's row terms of a grid). */
-  private inputs<T>(
-    s: FilmOptics,
-    grids: readonly FilmTableGrid[],
-    light: (i: IlluminantSpec, n: Normalization) => T,
-    rows: (key: string) => T,
-  ): T[] {
+  private inputs<T>(s: FilmOptics, grids: readonly FilmTableGrid[], light: (l: SpectralLight) => T, rows: (key: string) => T): T[] {
     const dispersive = fillGpu(s).dispersiveRows ? grids.map((g) => rows(dispersiveRowsKey(s, this.rowLayout(s, g)))) : [];
-    return [light(s.illuminant, s.normalization), ...dispersive];
+    return [light(s), ...dispersive];
   }
 
   /** Whether the light's transform and, for a dispersive film, the row terms of each grid are at hand (each asked of its worker at once). */
@@ -120,8 +114,8 @@ export class FilmTablePass {
     if (target.width !== grid.width || target.height !== 2 * grid.rows) target.setSize(grid.width, 2 * grid.rows);
     const material = this.programs.material(s);
     const u = material.uniforms;
-    bindSpectralBins(u, s.illuminant, s.normalization, this.programs.bins(s), this);
-    u.uSpectralTransform!.value = spectralTransformTexture(s.illuminant, s.normalization, this);
+    bindSpectralBins(u, s, this.programs.bins(s), this);
+    u.uSpectralTransform!.value = spectralTransformTexture(s, this);
     // A stack of films is filled by its recursion per bin; a dispersive film is filled from the bins, with their terms per row (shaders/film/filmTable.glsl).
     this.updateRows(s, grid);
     u.uDispersiveRows!.value = this.rows.texture;
@@ -182,8 +176,8 @@ export class FilmTablePass {
     renderer.setRenderTarget(target); // three picks a program by its target (no tone mapping into a texture)
     const compiled = this.fullscreen.compileAsync(renderer, this.programs.material(s));
     renderer.setRenderTarget(previous);
-    spectralBinsTexture(s.illuminant, s.normalization, this.programs.bins(s), this);
-    spectralTransformTexture(s.illuminant, s.normalization, this);
+    spectralBinsTexture(s, this.programs.bins(s), this);
+    spectralTransformTexture(s, this);
     await compiled;
   }
 

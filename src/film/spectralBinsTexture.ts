@@ -3,15 +3,12 @@ import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { MAX_LIGHT_LINES } from '../physics/lightLines.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { significantBins, spectralBins } from '../physics/binnedIntegration.ts';
-import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type Normalization, spectralWeights } from '../physics/spectralWeights.ts';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, spectralWeights } from '../physics/spectralWeights.ts';
+import { type SpectralLight, spectralLightKey } from './spectralTransformTexels.ts';
 
 const shared = new SharedTextures((key) => {
-  const { illuminant, normalization, count } = JSON.parse(key) as {
-    illuminant: IlluminantSpec;
-    normalization: Normalization;
-    count: number;
-  };
-  const { weights, windows } = spectralBins(spectralWeights(illuminant, normalization), count);
+  const { light, count } = JSON.parse(key) as { light: SpectralLight; count: number };
+  const { weights, windows } = spectralBins(spectralWeights(light.illuminant, light.normalization, light.lightTint), count);
   // Row 0: each bin's weights; row 1: its light's σ̄ less the bin's middle σ, and half-width in σ.
   const data = new Float32Array(4 * count * 2);
   for (let b = 0; b < count; b++) {
@@ -25,12 +22,12 @@ const shared = new SharedTextures((key) => {
 });
 
 /**
- * The bin weights ∫_bin I_in x̄, ȳ, z̄ dλ / k and each bin's window (SpectralBins.windows) as a
- * `count` × 2 float texture, from the reference
- * (one source of truth), for `holder`; shared by the holders of the same weights (SharedTextures).
+ * The bin weights ∫_bin I_in T x̄, ȳ, z̄ dλ / k (T the tint's spectrum) and each bin's window
+ * (SpectralBins.windows) as a `count` × 2 float texture, from the reference (one source of truth),
+ * for `holder`; shared by the holders of the same weights (SharedTextures).
  */
-export const spectralBinsTexture = (illuminant: IlluminantSpec, normalization: Normalization, count: number, holder: object): DataTexture =>
-  shared.hold(JSON.stringify({ illuminant, normalization, count }), holder);
+export const spectralBinsTexture = (light: SpectralLight, count: number, holder: object): DataTexture =>
+  shared.hold(`{"light":${spectralLightKey(light)},"count":${count}}`, holder);
 
 /** The uniforms shaders/physics/binnedIntegration.glsl declares for the bin weights and a line source's lines. */
 export const spectralBinsUniforms = () => ({
@@ -41,17 +38,11 @@ export const spectralBinsUniforms = () => ({
 
 /**
  * Points `u` (spectralBinsUniforms) at the light's bin weights, held for `holder`, and at its lines
- * (none for a light with a spectrum): each line's weights p x̄, ȳ, z̄(λ)/k and λ, from the reference.
+ * (none for a light with a spectrum): each line's weights p T(λ) x̄, ȳ, z̄(λ)/k and λ, from the reference.
  */
-export function bindSpectralBins(
-  u: ShaderMaterial['uniforms'],
-  illuminant: IlluminantSpec,
-  normalization: Normalization,
-  count: number,
-  holder: object,
-): void {
-  u.uSpectralBins!.value = spectralBinsTexture(illuminant, normalization, count, holder);
-  const lines = spectralWeights(illuminant, normalization).lines ?? [];
+export function bindSpectralBins(u: ShaderMaterial['uniforms'], light: SpectralLight, count: number, holder: object): void {
+  u.uSpectralBins!.value = spectralBinsTexture(light, count, holder);
+  const lines = spectralWeights(light.illuminant, light.normalization, light.lightTint).lines ?? [];
   lines.forEach((l, i) => (u.uLightLines!.value as Vector4[])[i]!.set(l.x, l.y, l.z, l.nm));
   u.uLightLineCount!.value = lines.length;
 }

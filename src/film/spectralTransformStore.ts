@@ -12,7 +12,7 @@ const store = new WorkerTexels(
   () => new Worker(new URL('./spectralTransformWorker.ts', import.meta.url), { type: 'module' }),
   (key) => {
     const light = JSON.parse(key) as SpectralLight;
-    return spectralWeights(light.illuminant, light.normalization);
+    return spectralWeights(light.illuminant, light.normalization, light.lightTint);
   },
   spectralTransformTexels,
   1,

@@ -1,4 +1,5 @@
 import { type IlluminantSpec } from '../physics/illuminants.ts';
+import type { LightTint } from '../physics/lightTint.ts';
 import { type Normalization, type SpectralWeights } from '../physics/spectralWeights.ts';
 import { SPECTRAL_TRANSFORM_COUNT, spectralTransform } from '../physics/spectralTransform.ts';
 
@@ -6,19 +7,20 @@ import { SPECTRAL_TRANSFORM_COUNT, spectralTransform } from '../physics/spectral
 export const SPECTRAL_TRANSFORM_WIDTH = 2048;
 export const SPECTRAL_TRANSFORM_ROWS = Math.ceil(SPECTRAL_TRANSFORM_COUNT / SPECTRAL_TRANSFORM_WIDTH);
 
-/** What the light's spectral transform depends on. */
+/** What the light's weights, and so its spectral transform and bins, depend on. */
 export interface SpectralLight {
   readonly illuminant: IlluminantSpec;
   readonly normalization: Normalization;
+  readonly lightTint: LightTint;
 }
 
-/** The light's key: lights with the same key have the same transform. */
+/** The light's key: lights with the same key have the same weights (settings holding a light give its own fields only). */
 export const spectralLightKey = (light: SpectralLight): string =>
-  JSON.stringify({ illuminant: light.illuminant, normalization: light.normalization });
+  JSON.stringify({ illuminant: light.illuminant, normalization: light.normalization, lightTint: light.lightTint });
 
 /**
  * The spectral transform (src/physics/spectralTransform.ts, an FFT) of a light's weights
- * (spectralWeights of its illuminant and normalisation) as the RGBA float
+ * (spectralWeights of its illuminant, normalisation and tint) as the RGBA float
  * texels of a SPECTRAL_TRANSFORM_WIDTH × 2 SPECTRAL_TRANSFORM_ROWS texture: rows 0 .. ROWS-1 hold
  * Re H (x, y, z), rows ROWS .. 2 ROWS-1 Im H, entry i at (i mod WIDTH, i div WIDTH). No DOM, no
  * three.js: the main thread and the worker (spectralTransformWorker.ts) compute it alike.

@@ -1,10 +1,13 @@
 import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
-import { type IlluminantSpec } from '../physics/illuminants.ts';
-import { type Normalization } from '../physics/spectralWeights.ts';
 import { SPECTRAL_TRANSFORM_CARRIER_PER_NM, SPECTRAL_TRANSFORM_COUNT, SPECTRAL_TRANSFORM_STEP_NM } from '../physics/spectralTransform.ts';
 import { AIRY_SERIES_MAX_ORDERS, AIRY_SERIES_TOLERANCE } from '../physics/airySeries.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
-import { SPECTRAL_TRANSFORM_ROWS as ROWS, SPECTRAL_TRANSFORM_WIDTH as WIDTH, spectralLightKey } from './spectralTransformTexels.ts';
+import {
+  SPECTRAL_TRANSFORM_ROWS as ROWS,
+  SPECTRAL_TRANSFORM_WIDTH as WIDTH,
+  type SpectralLight,
+  spectralLightKey,
+} from './spectralTransformTexels.ts';
 import { spectralTransformTexelsOf, spectralTransformTexelsReady, spectralTransformTexelsWhenReady } from './spectralTransformStore.ts';
 
 const shared = new SharedTextures((key) => {
@@ -19,21 +22,20 @@ const shared = new SharedTextures((key) => {
  * shaders/physics/airySeries.glsl, for `holder`; computed on this thread if not at hand (~30 ms;
  * see spectralTransformReady) and shared by the holders of the same light (SharedTextures).
  */
-export const spectralTransformTexture = (illuminant: IlluminantSpec, normalization: Normalization, holder: object): DataTexture =>
-  shared.hold(spectralLightKey({ illuminant, normalization }), holder);
+export const spectralTransformTexture = (light: SpectralLight, holder: object): DataTexture => shared.hold(spectralLightKey(light), holder);
 
 /**
  * Whether `spectralTransformTexture` for the light would return at once (a texture held, or its
  * texels at hand); if not, they are being computed in a Web Worker (spectralTransformStore.ts).
  */
-export function spectralTransformReady(illuminant: IlluminantSpec, normalization: Normalization): boolean {
-  const key = spectralLightKey({ illuminant, normalization });
+export function spectralTransformReady(light: SpectralLight): boolean {
+  const key = spectralLightKey(light);
   return shared.has(key) || spectralTransformTexelsReady(key);
 }
 
 /** A promise kept once `spectralTransformTexture` for the light would return at once: its texels computed in the Web Worker, or here where there is none. */
-export function spectralTransformWhenReady(illuminant: IlluminantSpec, normalization: Normalization): Promise<void> {
-  const key = spectralLightKey({ illuminant, normalization });
+export function spectralTransformWhenReady(light: SpectralLight): Promise<void> {
+  const key = spectralLightKey(light);
   return shared.has(key) ? Promise.resolve() : spectralTransformTexelsWhenReady(key);
 }
 

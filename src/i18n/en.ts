@@ -32,6 +32,7 @@ export const EN = {
   'param.nInside': 'n inside',
   'param.layers': 'film layers (n film unused when set)',
   'param.illuminant': 'illuminant',
+  'param.lightTint': 'light tint (linear sRGB)',
   'param.polarization': 'polarization',
   'param.normalization': 'normalization',
   'param.space': 'colour space',
@@ -136,6 +137,7 @@ export const EN = {
   'expected.choice': 'one of {choices}',
   'expected.flag': '0 or 1',
   'expected.illuminant': 'one of {names}, line:NM with NM in [{lineMin}, {lineMax}] nm, or a daylight CCT in [{min}, {max}] K',
+  'expected.lightTint': 'three numbers R,G,B, each in [{min}, {max}]',
   'expected.filmIndex':
     'a number in [{min}, {max}], {materials}, or cauchy:A,B[,C] (n = A + B/λ² + C/λ⁴, λ in nm) within [{min}, {max}] over {from}–{to} nm',
   'expected.medium':
@@ -153,6 +155,9 @@ export const EN = {
   'panel.folder.view': 'view',
   'panel.daylightCct': 'daylight CCT (K)',
   'panel.lineNm': 'line wavelength (nm)',
+  'panel.tintRed': 'light tint R (linear sRGB)',
+  'panel.tintGreen': 'light tint G (linear sRGB)',
+  'panel.tintBlue': 'light tint B (linear sRGB)',
   'panel.filmMaterial': 'film material',
   'panel.cauchy': 'Cauchy A,B[,C] (λ in nm)',
   'panel.insideMedium': 'inside medium',

@@ -32,6 +32,7 @@ export const JA: Catalogue = {
   'param.nOutside': '外側の屈折率',
   'param.nInside': '内側の屈折率',
   'param.illuminant': '光源',
+  'param.lightTint': '光の色味（線形 sRGB）',
   'param.polarization': '偏光',
   'param.normalization': '正規化',
   'param.space': '色空間',
@@ -137,6 +138,7 @@ export const JA: Catalogue = {
   'expected.flag': '0 または 1',
   'expected.illuminant':
     '{names} のいずれか、line:NM（NM は [{lineMin}, {lineMax}] nm の波長）、または [{min}, {max}] K の昼光の相関色温度',
+  'expected.lightTint': 'R,G,B（3 つの数値、それぞれ [{min}, {max}]）',
   'expected.filmIndex':
     '[{min}, {max}] の数値、{materials}、または {from}–{to} nm で [{min}, {max}] に収まるコーシーの式 cauchy:A,B[,C]（n = A + B/λ² + C/λ⁴、λ は nm）',
   'expected.medium':
@@ -154,6 +156,9 @@ export const JA: Catalogue = {
   'panel.folder.view': '表示',
   'panel.daylightCct': '昼光の相関色温度 (K)',
   'panel.lineNm': '単色光の波長 (nm)',
+  'panel.tintRed': '光の色味 R（線形 sRGB）',
+  'panel.tintGreen': '光の色味 G（線形 sRGB）',
+  'panel.tintBlue': '光の色味 B（線形 sRGB）',
   'panel.filmMaterial': '薄膜の物質',
   'panel.cauchy': 'コーシーの式 A,B[,C]（λ は nm）',
   'panel.insideMedium': '内側の媒質',

@@ -86,7 +86,7 @@ export async function prepareFilm(m: MeshPhysicalMaterial, film: SpectralFilm): 
   const s = drawnSettings(film, m);
   const held = holdTable(film, s);
   if (held) await held.table.inputsWhenReady(s, held.maxThicknessNm);
-  if (methodReads(s.mode, 'spectralTransform')) await spectralTransformWhenReady(s.illuminant, s.normalization);
+  if (methodReads(s.mode, 'spectralTransform')) await spectralTransformWhenReady(s);
 }
 
 /**

@@ -20,10 +20,11 @@ export type MaterialFilmSettings = FilmOptics & { readonly thicknessNm: number }
  */
 export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit: Limit): MaterialFilmSettings {
   const { nFilm, nInside, thicknessNm } = filmParametersOf(m, o, limit);
-  const { illuminant, polarization, normalization, layers } = o;
+  const { illuminant, lightTint, polarization, normalization, layers } = o;
   const nOutside = SOAP_FILM_IN_AIR.nOutside;
   return {
     illuminant,
+    lightTint,
     polarization,
     normalization,
     layers,

@@ -2,6 +2,7 @@ import { Color } from 'three';
 import type { LinearRgb } from '../physics/artistMetal.ts';
 import { POLARIZATIONS, type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec, illuminantFromJson } from '../physics/illuminantSpec.ts';
+import { type LightTint, lightTintFromJson } from '../physics/lightTint.ts';
 import { NORMALIZATIONS, type Normalization } from '../physics/spectralConventions.ts';
 import { type Medium, assertMedium, mediumFromJson, parseMediumText } from '../physics/medium.ts';
 import type { FilmLayer } from '../physics/stackFilms.ts';
@@ -23,11 +24,13 @@ export type LayersInput = readonly FilmLayer[] | string;
 /** An edge tint as given: a three.js Color, a hex number (sRGB, as three reads one) or linear [r, g, b]. */
 export type EdgeTintInput = Color | number | LinearRgb;
 
-/** How the film is computed and seen: the demo's `mode`, `illuminant`, `polarization`, `normalization`, and the quality knobs. */
+/** How the film is computed and seen: the demo's `mode`, `illuminant`, `lightTint`, `polarization`, `normalization`, and the quality knobs. */
 export interface SpectralIridescenceOptions {
   /** `table` by default */
   readonly mode?: FilmMode;
   readonly illuminant?: IlluminantSpec;
+  /** the light's tint, linear sRGB [R, G, B] relative to its white, each in [0, 1]; [1, 1, 1] by default */
+  readonly lightTint?: LightTint;
   readonly polarization?: Polarization;
   readonly normalization?: Normalization;
   /**
@@ -68,6 +71,7 @@ export interface SpectralIridescenceOptions {
 export interface SpectralIridescenceProperties {
   mode: FilmMode;
   illuminant: IlluminantSpec;
+  lightTint: LightTint;
   polarization: Polarization;
   normalization: Normalization;
   get base(): Medium | null;
@@ -100,6 +104,7 @@ export type CheckedOptions = Required<Omit<SpectralIridescenceOptions, 'quality'
 export const OPTION_NAMES = [
   'mode',
   'illuminant',
+  'lightTint',
   'polarization',
   'normalization',
   'base',
@@ -123,6 +128,7 @@ export function spectralIridescenceOptions(o: SpectralIridescenceOptions = {}): 
   return {
     mode: oneOf('mode', o.mode ?? 'table', MODES),
     illuminant: illuminantFromJson(o.illuminant ?? DEFAULT_LIGHT.illuminant),
+    lightTint: lightTintFromJson(o.lightTint ?? DEFAULT_LIGHT.lightTint),
     polarization: oneOf('polarization', o.polarization ?? DEFAULT_LIGHT.polarization, POLARIZATIONS),
     normalization: oneOf('normalization', o.normalization ?? DEFAULT_LIGHT.normalization, NORMALIZATIONS),
     base: mediumOf('base', o.base ?? null, 'inside'),

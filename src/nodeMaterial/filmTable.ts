@@ -76,7 +76,7 @@ export class NodeFilmTable {
     if (key === filled.builtKey) return;
     const q = this.quality;
     const count = filmSpectralBins(s, q, q.table.spectralBins);
-    this.weights.value = spectralBinsTexture(s.illuminant, s.normalization, count, this);
+    this.weights.value = spectralBinsTexture(s, count, this);
     const maxThicknessNm = tableMaxThicknessNm(s);
     // The width resolves the fringes of the film (or of a stack's films that follow the thickness): FilmTablePass.fullGrid's.
     const index = fillGpu(s).fieldIndex(s, count);

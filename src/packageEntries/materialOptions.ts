@@ -14,6 +14,7 @@ export {
 export { DEFAULT_FILM_QUALITY, type FilmQuality, type FilmQualityOptions } from '../settings/filmQuality.ts';
 export type { FilmTableLayout } from '../settings/filmTableLayout.ts';
 export type { IlluminantSpec } from '../physics/illuminants.ts';
+export type { LightTint } from '../physics/lightTint.ts';
 export type { Medium } from '../physics/medium.ts';
 export type { LinearRgb } from '../physics/artistMetal.ts';
 export { ParameterError } from '../input/validate.ts';

@@ -14,6 +14,7 @@ export {
 } from '../physics/filmReflectance.ts';
 export { type ColorOptions, filmXyz, whiteXyz } from '../physics/spectralIntegration.ts';
 export { NAMED_ILLUMINANTS, type IlluminantSpec } from '../physics/illuminants.ts';
+export { LIGHT_TINT_DOMAIN, type LightTint } from '../physics/lightTint.ts';
 export { NORMALIZATIONS, type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 export {
   type Matrix3,

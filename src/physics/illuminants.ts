@@ -7,7 +7,15 @@ import {
   CIE_DAYLIGHT_STEP_NM,
 } from './data/cieDaylightComponents.ts';
 import { CIE_LAMPS, CIE_LAMPS_START_NM, CIE_LAMPS_STEP_NM } from './data/cieLamps.ts';
+import {
+  MALLETT2019_BLUE,
+  MALLETT2019_GREEN,
+  MALLETT2019_RED,
+  MALLETT2019_START_NM,
+  MALLETT2019_STEP_NM,
+} from './data/mallett2019Basis.ts';
 import { SODIUM_D_LINES } from './lightLines.ts';
+import { type LightTint, WHITE_TINT, isWhiteTint } from './lightTint.ts';
 import { interpolateTable } from './tableInterpolation.ts';
 import { ParameterError, assertInRange } from '../input/validate.ts';
 import {
@@ -132,11 +140,28 @@ export function illuminantSpd(spec: IlluminantSpec): (lambdaNm: number) => numbe
 }
 
 /**
- * The light as a plot draws it on a 1 nm grid: its spectrum, or each line as a triangle 1 nm wide
- * on each side whose height is its power (its share of each grid point, by linear interpolation).
+ * The spectrum of a tint (R, G, B) by Mallett and Yuksel's sRGB basis (data/mallett2019Basis.ts):
+ * R·r(λ) + G·g(λ) + B·b(λ), each basis spectrum linear between its 5 nm rows and held at its end
+ * rows' values outside 380–780 nm. A light's spectrum times this is the tinted light's. The white
+ * tint is 1 exactly: the published basis sums to 1 only within 1e-5, and an untinted light is the illuminant.
  */
-export function illuminantDrawn(spec: IlluminantSpec): (lambdaNm: number) => number {
+export function tintSpectrum(tint: LightTint): (lambdaNm: number) => number {
+  if (isWhiteTint(tint)) return () => 1;
+  const basis = [MALLETT2019_RED, MALLETT2019_GREEN, MALLETT2019_BLUE].map((t) => heldTable(t, MALLETT2019_START_NM, MALLETT2019_STEP_NM));
+  return (l) => tint[0] * basis[0]!(l) + tint[1] * basis[1]!(l) + tint[2] * basis[2]!(l);
+}
+
+/**
+ * The light as a plot draws it on a 1 nm grid: its spectrum, or each line as a triangle 1 nm wide
+ * on each side whose height is its power (its share of each grid point, by linear interpolation);
+ * either times the spectrum of its tint.
+ */
+export function illuminantDrawn(spec: IlluminantSpec, tint: LightTint = WHITE_TINT): (lambdaNm: number) => number {
   const lines = illuminantLines(spec);
-  if (lines === null) return illuminantSpd(spec);
-  return (l) => lines.reduce((sum, line) => sum + line.power * Math.max(0, 1 - Math.abs(l - line.nm)), 0);
+  const t = tintSpectrum(tint);
+  if (lines === null) {
+    const spd = illuminantSpd(spec);
+    return (l) => spd(l) * t(l);
+  }
+  return (l) => lines.reduce((sum, line) => sum + line.power * t(line.nm) * Math.max(0, 1 - Math.abs(l - line.nm)), 0);
 }

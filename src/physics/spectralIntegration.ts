@@ -1,5 +1,6 @@
 import { type FilmOptics, type FilmStack, type Polarization, filmOptics, reflectanceAt } from './filmReflectance.ts';
 import { type IlluminantSpec } from './illuminants.ts';
+import type { LightTint } from './lightTint.ts';
 import { type Medium, assertMedium, isDispersiveMedium, mediumStackAt } from './medium.ts';
 import {
   LAMBDA_MIN_NM,
@@ -124,6 +125,8 @@ export interface ColorOptions {
   readonly illuminant?: IlluminantSpec;
   readonly polarization?: Polarization;
   readonly normalization?: Normalization;
+  /** The light's tint (lightTint.ts); untinted when absent. */
+  readonly lightTint?: LightTint;
   /** Fixed sub-steps per nm instead of the adaptive rule (for convergence studies). */
   readonly stepsPerNm?: number;
 }
@@ -136,7 +139,7 @@ export interface ColorOptions {
  */
 export function filmXyz(stack: FilmStack<Medium>, options: ColorOptions = {}): Xyz {
   const polarization = options.polarization ?? 'unpolarized';
-  const w = spectralWeights(options.illuminant ?? 'D65', options.normalization ?? 'white');
+  const w = spectralWeights(options.illuminant ?? 'D65', options.normalization ?? 'white', options.lightTint);
   if (![stack.nOutside, stack.nFilm, stack.nInside].some(isDispersiveMedium)) {
     const optics = filmOptics(mediumStackAt(stack, LAMBDA_MIN_NM), polarization);
     return integrateXyz((l) => reflectanceAt(optics, l), w, options.stepsPerNm ?? adaptiveStepsPerNm(optics));

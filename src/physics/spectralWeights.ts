@@ -1,5 +1,6 @@
 import { CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, CIE1931_XBAR, CIE1931_YBAR, CIE1931_ZBAR } from './data/cie1931Cmf2deg.ts';
-import { type IlluminantSpec, illuminantKey, illuminantLines, illuminantSpd } from './illuminants.ts';
+import { type IlluminantSpec, illuminantKey, illuminantLines, illuminantSpd, tintSpectrum } from './illuminants.ts';
+import { type LightTint, WHITE_TINT, lightTintText } from './lightTint.ts';
 import { type SpectralLine } from './lightLines.ts';
 import { interpolateTable } from './tableInterpolation.ts';
 import { LAMBDA_MIN_NM, LAMBDA_SPAN_NM, type Normalization } from './spectralConventions.ts';
@@ -9,8 +10,9 @@ export { LAMBDA_MAX_NM, LAMBDA_MIN_NM, LAMBDA_SPAN_NM, NORMALIZATIONS, type Norm
 export type Xyz = readonly [number, number, number];
 
 /**
- * I_in(λ)·x̄, ȳ, z̄(λ) / k at every 1 nm from 380 to 830 nm (451 knots; between knots the
- * weights are linear). These are the tables the shader receives as a texture.
+ * I_in(λ)·T(λ)·x̄, ȳ, z̄(λ) / k at every 1 nm from 380 to 830 nm (451 knots; between knots the
+ * weights are linear), T the spectrum of the light's tint (1 untinted). These are the tables the
+ * shader receives as a texture.
  */
 export interface SpectralWeights {
   readonly x: Float64Array;
@@ -34,22 +36,21 @@ export interface WeightedLine {
 const cmf = (t: readonly number[], l: number) => interpolateTable(t, CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, l);
 
 /**
- * The weights of a line source: p x̄, ȳ, z̄(λ_l) / k with the CMFs linear between their 1 nm knots.
- * `white`: k = Σ p ȳ(λ_l), so a perfect reflector has Y = 1. `paper`: the powers scaled to sum to 1
- * (a line has no value at 560 nm to scale by) and the paper's k = ∫ ȳ dλ.
+ * The weights of a line source: p T(λ_l) x̄, ȳ, z̄(λ_l) / k with the CMFs linear between their 1 nm
+ * knots and T the tint's spectrum. `white`: k = Σ p ȳ(λ_l), so a perfect reflector in the untinted
+ * light has Y = 1. `paper`: the powers scaled to sum to 1 (a line has no value at 560 nm to scale
+ * by) and the paper's k = ∫ ȳ dλ.
  */
-function lineWeights(lines: readonly SpectralLine[], normalization: Normalization): SpectralWeights {
+function lineWeights(lines: readonly SpectralLine[], normalization: Normalization, tint: (lambdaNm: number) => number): SpectralWeights {
   const total = lines.reduce((sum, l) => sum + l.power, 0);
   const k =
     normalization === 'paper'
       ? total * trapezoid1nm((l) => cmf(CIE1931_YBAR, l))
       : lines.reduce((sum, l) => sum + l.power * cmf(CIE1931_YBAR, l.nm), 0);
-  const weighted = lines.map((l) => ({
-    nm: l.nm,
-    x: (l.power * cmf(CIE1931_XBAR, l.nm)) / k,
-    y: (l.power * cmf(CIE1931_YBAR, l.nm)) / k,
-    z: (l.power * cmf(CIE1931_ZBAR, l.nm)) / k,
-  }));
+  const weighted = lines.map((l) => {
+    const p = (l.power * tint(l.nm)) / k;
+    return { nm: l.nm, x: p * cmf(CIE1931_XBAR, l.nm), y: p * cmf(CIE1931_YBAR, l.nm), z: p * cmf(CIE1931_ZBAR, l.nm) };
+  });
   const n = LAMBDA_SPAN_NM + 1;
   return { x: new Float64Array(n), y: new Float64Array(n), z: new Float64Array(n), lines: weighted };
 }
@@ -58,9 +59,16 @@ const weightsCache = new Map<string, SpectralWeights>();
 /** Weights kept (11 kB each): a CCT slider dragged for an hour must not grow the cache without end. */
 const MAX_CACHED_WEIGHTS = 64;
 
-/** The weights of eqs (15)–(18) for an illuminant and normalisation (the last 64 used are cached). */
-export function spectralWeights(illuminant: IlluminantSpec, normalization: Normalization = 'white'): SpectralWeights {
-  const key = `${illuminantKey(illuminant)}|${normalization}`;
+/**
+ * The weights of eqs (15)–(18) for an illuminant, normalisation and tint (the last 64 used are
+ * cached). `white` divides by the untinted light's Y, so a tint darkens as well as colours the light.
+ */
+export function spectralWeights(
+  illuminant: IlluminantSpec,
+  normalization: Normalization = 'white',
+  tint: LightTint = WHITE_TINT,
+): SpectralWeights {
+  const key = `${illuminantKey(illuminant)}|${normalization}|${lightTintText(tint)}`;
   const cached = weightsCache.get(key);
   if (cached) {
     weightsCache.delete(key); // most recently used last
@@ -68,14 +76,15 @@ export function spectralWeights(illuminant: IlluminantSpec, normalization: Norma
     return cached;
   }
   const lines = illuminantLines(illuminant);
-  const w = lines === null ? spectrumWeights(illuminant, normalization) : lineWeights(lines, normalization);
+  const t = tintSpectrum(tint);
+  const w = lines === null ? spectrumWeights(illuminant, normalization, t) : lineWeights(lines, normalization, t);
   weightsCache.set(key, w);
   if (weightsCache.size > MAX_CACHED_WEIGHTS) weightsCache.delete(weightsCache.keys().next().value!);
   return w;
 }
 
-/** The weights of a light with a spectrum, I_in x̄, ȳ, z̄ / k at its 1 nm knots. */
-function spectrumWeights(illuminant: IlluminantSpec, normalization: Normalization): SpectralWeights {
+/** The weights of a light with a spectrum, I_in T x̄, ȳ, z̄ / k at its 1 nm knots (T the tint's spectrum). */
+function spectrumWeights(illuminant: IlluminantSpec, normalization: Normalization, tint: (lambdaNm: number) => number): SpectralWeights {
   const spd = illuminantSpd(illuminant);
   const n = LAMBDA_SPAN_NM + 1;
   const x = new Float64Array(n);
@@ -84,13 +93,13 @@ function spectrumWeights(illuminant: IlluminantSpec, normalization: Normalizatio
   const scale = normalization === 'paper' ? 1 / spd(560) : 1;
   for (let i = 0; i < n; i++) {
     const l = LAMBDA_MIN_NM + i;
-    const s = spd(l) * scale;
+    const s = spd(l) * scale * tint(l);
     x[i] = s * cmf(CIE1931_XBAR, l);
     y[i] = s * cmf(CIE1931_YBAR, l);
     z[i] = s * cmf(CIE1931_ZBAR, l);
   }
-  // k by the same trapezoid rule as the colour integral, so a perfect reflector gives Y = 1 exactly.
-  const k = normalization === 'paper' ? trapezoid1nm((l) => cmf(CIE1931_YBAR, l)) : trapezoid1nm((_, i) => y[i] as number);
+  // k by the same trapezoid rule as the colour integral, so a perfect reflector in the untinted light gives Y = 1 exactly.
+  const k = normalization === 'paper' ? trapezoid1nm((l) => cmf(CIE1931_YBAR, l)) : trapezoid1nm((l) => spd(l) * cmf(CIE1931_YBAR, l));
   for (const t of [x, y, z]) for (let i = 0; i < n; i++) t[i] = (t[i] as number) / k;
   return { x, y, z };
 }

@@ -100,6 +100,6 @@ export function layersXyz(stack: LayerStack, options: ColorOptions = {}): Xyz {
   assertLayerStack(stack);
   const opticsAt = opticsOf(stack, options.polarization ?? 'unpolarized');
   const steps = options.stepsPerNm ?? stepsPerNmOf(opticsAt);
-  const w = spectralWeights(options.illuminant ?? 'D65', options.normalization ?? 'white');
+  const w = spectralWeights(options.illuminant ?? 'D65', options.normalization ?? 'white', options.lightTint);
   return integrateXyz((l) => layersReflectanceAt(opticsAt(l), l), w, steps);
 }

@@ -2,6 +2,7 @@ import { type Matrix3, type Rgb, applyMatrix3, encode8, mapToGamut } from '../ph
 import { followsField } from '../physics/stackFilms.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
+import type { LightTint } from '../physics/lightTint.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 import { type FilmOption, filmLayersOf, filmStackOf, stackXyz } from '../methods/filmStacks.ts';
 
@@ -15,6 +16,8 @@ export interface ScaleColor {
 
 export interface ScaleOptions {
   readonly illuminant: IlluminantSpec;
+  /** The light's tint (none: untinted). */
+  readonly lightTint?: LightTint;
   readonly polarization: Polarization;
   readonly normalization: Normalization;
   /** XYZ → the display's linear RGB (eq 19 for sRGB). */

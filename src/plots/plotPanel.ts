@@ -1,4 +1,4 @@
-import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB, xyzToXy } from '../physics/colorConversions.ts';
+import { type Matrix3, XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB, xyzToXy } from '../physics/colorConversions.ts';
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
 import { message } from '../i18n/messages.ts';
 import { type FilmSettings } from '../settings/filmSettings.ts';
@@ -6,7 +6,7 @@ import type { ProbeReading } from '../view/probe.ts';
 import { drawChromaticityPlot } from './chromaticityPlot.ts';
 import { type ProbedView, downloadName } from './downloadName.ts';
 import { type FilmSpectrum, filmSpectrum } from './filmSpectrum.ts';
-import type { ScaleColor } from './interferenceScale.ts';
+import type { ScaleColor, ScaleRequest } from './interferenceScale.ts';
 import { interferenceScaleFor } from './interferenceScaleStore.ts';
 import { probeColor } from './probeColor.ts';
 import { PLOT_BACKGROUND, addPlotStyles } from './plotStyles.ts';
@@ -206,9 +206,12 @@ export class PlotPanel {
     show('deltaE00', c.deltaE00.toFixed(3));
     this.swatch.style.background = c.hex;
 
-    const spectrum = filmSpectrum({ ...stack, thicknessNm: reading.thicknessNm }, s.illuminant, s.polarization);
+    const spectrum = filmSpectrum({ ...stack, thicknessNm: reading.thicknessNm }, s.illuminant, s.polarization, 1, s.lightTint);
     drawSpectrumPlot(this.spectrum, spectrum, this.cat['common.wavelength']);
-    this.shown = { view: { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg, illuminant: s.illuminant }, spectrum };
+    this.shown = {
+      view: { thicknessNm: reading.thicknessNm, angleDeg: reading.angleDeg, illuminant: s.illuminant, lightTint: s.lightTint },
+      spectrum,
+    };
     const stackText = spectrum.layerCount ? message(this.cat, 'plots.stackNote', { count: spectrum.layerCount }) : '';
     this.stackNote.hidden = !stackText;
     this.stackNote.textContent = stackText;
@@ -216,22 +219,27 @@ export class PlotPanel {
     this.fillTable();
     const maxNm = Math.max(MIN_SCALE_NM, fieldMaxNm);
     this.scalePoint = { thicknessNm: reading.thicknessNm, xyz: c.xyz, rgb8: c.rgb8, maxNm };
+    this.askScale(stack, maxNm, s, toRgb);
+    this.drawScale();
+  }
+
+  /** Asks for the colour scale of the film in the light of `s` where it is not the one asked last (computed in a worker, drawn when it arrives). */
+  private askScale(stack: ScaleRequest['stack'], maxThicknessNm: number, s: FilmSettings, xyzToLinearRgb: Matrix3): void {
+    const { illuminant, lightTint, polarization, normalization } = s;
     const request = {
       stack,
-      maxThicknessNm: maxNm,
+      maxThicknessNm,
       count: SCALE_SAMPLES,
-      options: { illuminant: s.illuminant, polarization: s.polarization, normalization: s.normalization, xyzToLinearRgb: toRgb },
+      options: { illuminant, lightTint, polarization, normalization, xyzToLinearRgb },
     };
     const key = JSON.stringify(request);
-    if (key !== this.scaleKey) {
-      this.scaleKey = key;
-      const colors = interferenceScaleFor(request, (arrived) => {
-        this.scale = { key, colors: arrived };
-        if (this.scaleKey === key && this.shown) this.drawScale();
-      });
-      if (colors) this.scale = { key, colors };
-    }
-    this.drawScale();
+    if (key === this.scaleKey) return;
+    this.scaleKey = key;
+    const colors = interferenceScaleFor(request, (arrived) => {
+      this.scale = { key, colors: arrived };
+      if (this.scaleKey === key && this.shown) this.drawScale();
+    });
+    if (colors) this.scale = { key, colors };
   }
 
   /**

@@ -2,6 +2,7 @@ import { type Matrix3, applyMatrix3, encode8, mapToGamut } from '../physics/colo
 import { deltaE00 } from '../physics/colorDifference.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
+import type { LightTint } from '../physics/lightTint.ts';
 import { whiteXyz } from '../physics/spectralIntegration.ts';
 import { type Normalization, type Xyz } from '../physics/spectralWeights.ts';
 import { type FilmOption, filmStackOf, stackXyz } from '../methods/filmStacks.ts';
@@ -13,12 +14,14 @@ export interface ProbeColor {
   /** The gamut-clipped colour, encoded to 8 bits, and as #rrggbb. */
   readonly rgb8: readonly [number, number, number];
   readonly hex: string;
-  /** ΔE00 (CIEDE2000) between the rendered and the reference XYZ, under the illuminant's white. */
+  /** ΔE00 (CIEDE2000) between the rendered and the reference XYZ, under the untinted illuminant's white. */
   readonly deltaE00: number;
 }
 
 export interface ProbeLight {
   readonly illuminant: IlluminantSpec;
+  /** The light's tint (none: untinted). */
+  readonly lightTint?: LightTint;
   readonly polarization: Polarization;
   readonly normalization: Normalization;
 }

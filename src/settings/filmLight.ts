@@ -1,3 +1,4 @@
+import { WHITE_TINT } from '../physics/lightTint.ts';
 import type { FilmSettings } from './filmSettings.ts';
 
 /**
@@ -6,6 +7,7 @@ import type { FilmSettings } from './filmSettings.ts';
  */
 export const DEFAULT_LIGHT = {
   illuminant: 'D65',
+  lightTint: WHITE_TINT,
   polarization: 'unpolarized',
   normalization: 'white',
-} as const satisfies Pick<FilmSettings, 'illuminant' | 'polarization' | 'normalization'>;
+} as const satisfies Pick<FilmSettings, 'illuminant' | 'lightTint' | 'polarization' | 'normalization'>;

@@ -6,7 +6,7 @@ import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAP
 import { DEFAULT_LIGHT } from './filmLight.ts';
 import { layersRow } from './layersRow.ts';
 import { type ParameterRow, defaultsOf } from './parameterRow.ts';
-import { illuminantRow, mediumRow } from './textRows.ts';
+import { illuminantRow, lightTintRow, mediumRow } from './textRows.ts';
 import { choiceRow, flagRow, numberRow } from './valueRows.ts';
 
 type Row = ParameterRow<FilmSettings>;
@@ -45,6 +45,7 @@ export const FILM_PARAMETERS: readonly Row[] = [
   numberRow({ key: 'nOutside', url: 'nOutside' }, FILM_STACK_DOMAIN.nOutside, SOAP_FILM_IN_AIR.nOutside, 'film', 0.01),
   mediumRow({ key: 'nInside', url: 'nInside' }, SOAP_FILM_IN_AIR.nInside, 'film', 'inside'),
   illuminantRow({ key: 'illuminant', url: 'illuminant' }, DEFAULT_LIGHT.illuminant, 'light and colour'),
+  lightTintRow({ key: 'lightTint', url: 'lightTint' }, DEFAULT_LIGHT.lightTint, 'light and colour'),
   choiceRow({ key: 'polarization', url: 'polarization' }, POLARIZATIONS, DEFAULT_LIGHT.polarization, 'light and colour'),
   choiceRow({ key: 'normalization', url: 'normalization' }, NORMALIZATIONS, DEFAULT_LIGHT.normalization, 'light and colour'),
   choiceRow({ key: 'space', url: 'space' }, SPACES, 'srgb', 'light and colour'),

@@ -4,6 +4,7 @@ import { FIELDS, type FieldName, type FieldSettings } from '../fields/fields.ts'
 import { ENVIRONMENTS, type Environment, HDR_ENVIRONMENTS, type HdrEnvironment, isHdrEnvironment } from '../environments/environments.ts';
 import { FILM_METHODS, type FilmMethodName, MODES } from '../methods/methods.ts';
 import { type IlluminantSpec } from '../physics/illuminants.ts';
+import type { LightTint } from '../physics/lightTint.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type Normalization } from '../physics/spectralWeights.ts';
 
@@ -41,6 +42,8 @@ export interface FilmSettings extends FieldSettings {
   /** ñ_c, the same kinds: an absorbing one (a metal) is opaque */
   readonly nInside: Medium;
   readonly illuminant: IlluminantSpec;
+  /** The light's tint, linear sRGB relative to its white (lightTint.ts). */
+  readonly lightTint: LightTint;
   readonly polarization: Polarization;
   readonly normalization: Normalization;
   readonly space: (typeof SPACES)[number];
@@ -57,5 +60,5 @@ export interface FilmSettings extends FieldSettings {
 /** What a film's colour and its table depend on (src/film/): its media, its stack, its light and its method. */
 export type FilmOptics = Pick<
   FilmSettings,
-  'nOutside' | 'nFilm' | 'nInside' | 'layers' | 'illuminant' | 'polarization' | 'normalization' | 'mode'
+  'nOutside' | 'nFilm' | 'nInside' | 'layers' | 'illuminant' | 'lightTint' | 'polarization' | 'normalization' | 'mode'
 >;

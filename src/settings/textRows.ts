@@ -8,6 +8,7 @@ import {
   parseIlluminant,
 } from '../physics/illuminants.ts';
 import { LINE_DOMAIN_NM } from '../physics/lightLines.ts';
+import { LIGHT_TINT_DOMAIN, LIGHT_TINT_EXPECTED, type LightTint, lightTintText, parseLightTint } from '../physics/lightTint.ts';
 import {
   DISPERSION_CHECK_NM,
   FILM_INDEX_EXPECTED,
@@ -30,7 +31,7 @@ import {
   named,
 } from './parameterRow.ts';
 
-/* The rows of a value of a kind of its own written as text: an illuminant, a film index, a medium (and a stack of films, layersRow.ts). */
+/* The rows of a value of a kind of its own written as text: an illuminant, a tint, a film index, a medium (and a stack of films, layersRow.ts). */
 
 /** A value of a kind of its own written as text: how it reads (a value, or why not) and writes. */
 export interface TextKind<V> {
@@ -87,6 +88,23 @@ export const illuminantRow = <S, K extends keyof S & string>(
     },
     text: illuminantText,
     control: (folder) => ({ folder, kind: 'illuminant' }),
+  });
+
+/** A light's tint (lightTint.ts): `R,G,B`, each in its domain. */
+export const lightTintRow = <S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  defaultValue: S[K] & LightTint,
+  folder: PanelFolder | null,
+) =>
+  textRow<S, K, LightTint>(n, defaultValue, folder, {
+    expected: LIGHT_TINT_EXPECTED,
+    expects: { key: 'expected.lightTint', values: { min: LIGHT_TINT_DOMAIN.min, max: LIGHT_TINT_DOMAIN.max } },
+    parse: (raw) => {
+      const value = parseLightTint(raw);
+      return value === null ? { problem: null } : { value };
+    },
+    text: lightTintText,
+    control: (folder) => ({ folder, kind: 'tint' }),
   });
 
 /** A film index (filmIndex.ts): a number, a material's name or `cauchy:A,B[,C]`, within its domain over the band. */

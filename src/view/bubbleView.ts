@@ -91,8 +91,12 @@ export class BubbleView {
       environmentFailure: (env) => this.environments.failure(env),
       compilesInParallel: compilesInParallel(this.renderer),
       drawsDisplayP3: () => drawsDisplayP3(this.renderer),
-      lightReady: (l) => spectralTransformReady(l.illuminant, l.normalization),
-      lightShown: this.frame && { illuminant: this.settings.illuminant, normalization: this.settings.normalization },
+      lightReady: spectralTransformReady,
+      lightShown: this.frame && {
+        illuminant: this.settings.illuminant,
+        lightTint: this.settings.lightTint,
+        normalization: this.settings.normalization,
+      },
       baseStepsPerFrame: this.quality.flowStepsPerFrame,
     };
   }

@@ -9,7 +9,7 @@ import { shownPixelRatio } from '../settings/pixelRatio.ts';
 import { type ViewSettings, filmSettingsOf, governedValue } from '../settings/viewParameters.ts';
 
 /** The light a film is drawn in. */
-export type FilmLight = Pick<FilmSettings, 'illuminant' | 'normalization'>;
+export type FilmLight = Pick<FilmSettings, 'illuminant' | 'lightTint' | 'normalization'>;
 
 /** Where the HDR environment asked for stands: shown, on its way (the stand-in meanwhile), or failed (the stand-in instead). */
 export type EnvironmentStatus =
@@ -81,7 +81,7 @@ export interface DrawnFrame {
   readonly notices: readonly FrameNotice[];
 }
 
-const lightOf = (s: FilmLight): FilmLight => ({ illuminant: s.illuminant, normalization: s.normalization });
+const lightOf = (s: FilmLight): FilmLight => ({ illuminant: s.illuminant, lightTint: s.lightTint, normalization: s.normalization });
 const sameLight = (a: FilmLight, b: FilmLight): boolean => JSON.stringify(lightOf(a)) === JSON.stringify(lightOf(b));
 const lightText = (l: FilmLight): string => JSON.stringify(lightOf(l));
 

@@ -5,9 +5,11 @@ import { methodReads } from '../../src/methods/methods.ts';
 import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../../src/physics/colorConversions.ts';
 import { showSettings } from './appSettings.ts';
 import { centrePixel } from './drawingBuffer.ts';
-import { MAX_CODE_DIFFERENCE, reference8, stackReference8, worstCodeDifference } from './referenceColor.ts';
+import { MAX_CODE_DIFFERENCE, reference8, stackReference8, worstCodeDifference, xyzTo8 } from './referenceColor.ts';
 import { DISPERSIVE_FIRST_FRAME_MS, STACK_FIRST_FRAME_MS } from './waits.ts';
-import { MAX_CODE_DIFFERENCE_STACK } from '../tolerances.ts';
+import { MAX_CODE_DIFFERENCE_STACK, MAX_CODE_DIFFERENCE_TINT } from '../tolerances.ts';
+import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
+import { filmXyz } from '../../src/physics/spectralIntegration.ts';
 import { EN } from '../../src/i18n/en.ts';
 import { message } from '../../src/i18n/messages.ts';
 import { type FilmLayer, resolveLayers } from '../../src/physics/stackFilms.ts';
@@ -77,6 +79,24 @@ test('under lamps and lines the centre pixel is the reference: a fluorescent tub
     expect.soft(() => expectClose(rgb, expected, `${thicknessNm} nm under ${light}, ${mode}`)).not.toThrow();
     // A table under a line source is drawn by exact, and the page says so.
     if (light === 'Na') await expect(page.getByText('mode=table under a line source (Na)')).toBeVisible();
+  }
+});
+
+test('under a tinted fluorescent light (FL2, lightTint 1,0.5,0.2) the centre pixel is the reference in table, fourier and exact', async ({
+  demoPage: page,
+}) => {
+  // exact integrates its bins per fragment: a small view keeps the three frames short on a software GPU. At 600 nm no
+  // channel of the reference is clipped (77, 22, 21).
+  await page.setViewportSize({ width: 160, height: 120 });
+  for (const mode of ['table', 'fourier', 'exact'] as const) {
+    const query = `thickness=600&illuminant=FL2&lightTint=1,0.5,0.2&mode=${mode}`;
+    const { rgb } = await centre(page, query);
+    const light = parseSettings(query).settings;
+    const expected = xyzTo8(filmXyz({ ...SOAP_FILM_IN_AIR, angleDeg: 0, thicknessNm: 600 }, light), XYZ_TO_LINEAR_SRGB);
+    // A page that left the light untinted would be far off: the tint is seen.
+    expect(worstCodeDifference(expected, reference8({ thicknessNm: 600 }, 'FL2'))).toBeGreaterThan(5 * MAX_CODE_DIFFERENCE_TINT);
+    console.log(`centre ${mode} FL2 tinted 1,0.5,0.2 600 nm: page ${rgb} reference ${expected}`);
+    expect.soft(() => expectClose(rgb, expected, `600 nm under FL2 tinted 1,0.5,0.2, ${mode}`, MAX_CODE_DIFFERENCE_TINT)).not.toThrow();
   }
 });
 

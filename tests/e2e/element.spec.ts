@@ -110,8 +110,10 @@ test('attributes: a bad one is named with its range and its default kept; a chan
 }) => {
   const problems = watchProblems(page);
   await countGl(page);
-  await plainPage(page, `<thin-film-bubble ${FILM} nFilm="<b>9</b>" illuminant="D99"></thin-film-bubble>`);
+  await plainPage(page, `<thin-film-bubble ${FILM} nFilm="<b>9</b>" illuminant="D99" lighttint="1,2,0"></thin-film-bubble>`);
   const el = page.locator('thin-film-bubble');
+  await expect(el.locator('.tfb-messages')).toContainText('lightTint');
+  await expect(el.locator('.tfb-messages')).toContainText('each in [0, 1]');
   await expect(el.locator('.tfb-messages')).toContainText('nFilm');
   await expect(el.locator('.tfb-messages')).toContainText('[1, 4]');
   await expect(el.locator('.tfb-messages')).toContainText('illuminant');

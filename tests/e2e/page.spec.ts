@@ -2,7 +2,10 @@ import { test, expect } from '@playwright/test';
 import { centrePixel } from './drawingBuffer.ts';
 import { openPanel } from './panel.ts';
 import { watchProblems } from './pageWatch.ts';
-import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
+import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference, xyzTo8 } from './referenceColor.ts';
+import { XYZ_TO_LINEAR_SRGB } from '../../src/physics/colorConversions.ts';
+import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
+import { filmXyz } from '../../src/physics/spectralIntegration.ts';
 import { DISPERSIVE_FIRST_FRAME_MS } from './waits.ts';
 import { DEMO_VIEW_CHANGES } from '../../src/settings/demoView.ts';
 
@@ -99,6 +102,19 @@ test('the panel changes the view and the URL, and the URL restores the state', a
     );
   expect(await current()).toMatchObject({ field: 'uniform', env: 'none', thicknessNm: 300 });
   expect(worstCodeDifference(await centrePixel(page), reference8({ thicknessNm: 300 }))).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  // The tint's B slider: the URL and the centre follow the tinted light.
+  const tintBlue = page.locator('.lil-controller', { hasText: 'light tint B (linear sRGB)' }).locator('input');
+  await tintBlue.fill('0.2');
+  await tintBlue.press('Enter');
+  await expect(page).toHaveURL(/lightTint=1(,|%2C)1(,|%2C)0\.2/);
+  const tinted = xyzTo8(filmXyz({ ...SOAP_FILM_IN_AIR, angleDeg: 0, thicknessNm: 300 }, { lightTint: [1, 1, 0.2] }), XYZ_TO_LINEAR_SRGB);
+  // A new light is shown once its transform has arrived from the worker (lightChange.spec): until then the previous one.
+  await expect
+    .poll(async () => worstCodeDifference(await centrePixel(page), tinted), { timeout: 30_000 })
+    .toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+  await tintBlue.fill('1');
+  await tintBlue.press('Enter');
+  await expect(page).toHaveURL(/^(?!.*lightTint=)/);
 
   // The panel shows only what applies: the swirl's speed and range under the swirl, the flow folder
   // under the flow; what it hides keeps its value in the URL.

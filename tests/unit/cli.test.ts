@@ -46,6 +46,7 @@ function spawned(...args: string[]): Spawned {
 interface CaseOutput {
   id: string | number;
   illuminant: unknown;
+  lightTint: unknown;
   normalization: string;
   xyz: number[];
   linearSrgb: number[];
@@ -198,6 +199,33 @@ describe('color CLI, tables', () => {
     expect(rows.map((row) => row.angleDeg)).toEqual(Array.from({ length: 18 }, (_, i) => i * 5));
     expect(new Set(rows.map((row) => row.thicknessNm))).toEqual(new Set([300]));
     for (const row of rows) expect(row.hex).toMatch(/^#[0-9a-f]{6}$/);
+  });
+});
+
+describe('color CLI, a tinted light', () => {
+  it('--light-tint 1,1,1 is the untinted light; the output names the tint', () => {
+    const plain = cliJson('--illuminant', 'FL2', '--thickness', '450');
+    const white = cliJson('--illuminant', 'FL2', '--thickness', '450', '--light-tint', '1,1,1');
+    expect(white).toEqual(plain);
+    expect(plain[0]!.lightTint).toEqual([1, 1, 1]);
+  });
+
+  it("a cases file's tints add up as light does: (1, 0.5, 0.2) is the sum of its three primaries' films", () => {
+    const tints = [
+      [1, 0, 0],
+      [0, 0.5, 0],
+      [0, 0, 0.2],
+      [1, 0.5, 0.2],
+    ];
+    const text = JSON.stringify(tints.map((lightTint, id) => ({ id, lightTint, illuminant: 'D65', thicknessNm: 700, angleDeg: 30 })));
+    const r = runColorCommand(['--cases', 'tints.json'], () => text);
+    expect(r.exitCode).toBe(0);
+    const rows = JSON.parse(r.stdout) as CaseOutput[];
+    expect(rows.map((row) => row.lightTint)).toEqual(tints);
+    for (let k = 0; k < 3; k++) {
+      const sum = rows[0]!.xyz[k]! + rows[1]!.xyz[k]! + rows[2]!.xyz[k]!;
+      expect(Math.abs(sum - rows[3]!.xyz[k]!)).toBeLessThan(FLOAT_TOLERANCE);
+    }
   });
 });
 
@@ -403,6 +431,12 @@ describe('color CLI, the table of bad values', () => {
         'FL1–FL12, LED-B1–LED-B5, LED-BH1, LED-RGB1, LED-V1, LED-V2, Na, line:NM with NM in [380, 780] nm, or a daylight CCT in [4000, 25000] K',
       ],
     ),
+    ...['', '0.5', '0.5,0.5', '0.5,0.5,0.5,0.5', '1.01,0.5,0.5', '0.5,-0.01,0.5', '0.5,0.5,NaN', '0.5,,0.5', 'red'].map((v): Row => [
+      ['--light-tint', v],
+      '--light-tint',
+      v,
+      'three numbers R,G,B, each in [0, 1]',
+    ]),
     ...notNames(['json', 'csv']).map((v): Row => [['--angles', '0:10:5', '--format', v], '--format', v, 'json, csv']),
     ...(['--from', '--to'] as const).flatMap((flag) =>
       [...NOT_NUMBERS, ...outsideRange(0, 20000)].map((v): Row => {
@@ -459,6 +493,17 @@ describe('color CLI, the table of bad values', () => {
       row('illuminant', v, '[4000, 25000] K'),
     ),
     ['illuminant', '{ "daylightCct": 1e999 }', 'illuminant', '{"daylightCct":null}', '[4000, 25000] K'],
+    ...[
+      '"1,0.5,0.2"',
+      '[1, 0.5]',
+      '[1, 0.5, 0.2, 0]',
+      '[1.5, 0.5, 0.2]',
+      '[1, -0.5, 0.2]',
+      '[1, "0.5", 0.2]',
+      '[1, null, 0.2]',
+      'null',
+      '1',
+    ].map((v) => row('lightTint', v, 'three numbers R,G,B, each in [0, 1]')),
     ...['"bogus"', '""', '"S"', 'null', '1', `"${ABSURDLY_LONG}"`].map((v) => row('polarization', v, 'unpolarized, paper, s, p')),
     ...['"bogus"', '""', '"White"', 'null', '1'].map((v) => row('normalization', v, 'white, paper')),
     ...['"500"', '500', '{}'].map((v) => row('wavelengthsNm', v, '[300, 830]')),

@@ -24,6 +24,29 @@ describe('the bins a shader visits do not depend on the light', () => {
     }
   });
 
+  it("drop of a tinted light at most the tolerance of the untinted light's white, the scale `white` normalises by (the tint's spectrum is at most 1)", () => {
+    for (const illuminant of NAMED_ILLUMINANTS.filter((name) => illuminantLines(name) === null)) {
+      const white = spectralBins(spectralWeights(illuminant, 'white'), count).weights;
+      for (const tint of [
+        [1, 0, 0],
+        [0, 1, 0],
+        [0, 0, 1],
+        [1, 0.5, 0.2],
+      ] as const) {
+        const tinted = spectralBins(spectralWeights(illuminant, 'white', tint), count).weights;
+        for (let c = 0; c < 3; c++) {
+          let dropped = 0;
+          let whole = 0;
+          for (let b = 0; b < count; b++) {
+            whole += white[3 * b + c]!;
+            if (b < d.TFC_SPECTRAL_BIN_FIRST! || b >= d.TFC_SPECTRAL_BIN_END!) dropped += tinted[3 * b + c]!;
+          }
+          expect(dropped, `${illuminant} ${tint.join()} channel ${c}`).toBeLessThanOrEqual(tolerance * whole);
+        }
+      }
+    }
+  });
+
   it('still skip the far red tail, where the colour-matching functions vanish', () => {
     expect(d.TFC_SPECTRAL_BIN_END).toBeLessThan(count);
   });

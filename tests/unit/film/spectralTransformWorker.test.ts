@@ -14,10 +14,10 @@ import type {
 } from '../../../src/threads/workerTexels.ts';
 import { fakeWorkerClass, loadWorkerScope, nextTask } from '../fakeWorker.ts';
 
-const LIGHT: SpectralLight = { illuminant: 'D93', normalization: 'paper' };
+const LIGHT: SpectralLight = { illuminant: 'D93', normalization: 'paper', lightTint: [1, 0.5, 0.2] };
 const KEY = spectralLightKey(LIGHT);
 /** What the store sends the worker for LIGHT: the key and the light's weights (the worker holds no light's data). */
-const REQUEST = { key: KEY, input: spectralWeights(LIGHT.illuminant, LIGHT.normalization) };
+const REQUEST = { key: KEY, input: spectralWeights(LIGHT.illuminant, LIGHT.normalization, LIGHT.lightTint) };
 /** The main thread's texels for LIGHT, computed once (an FFT of 2¹⁸ points per channel). */
 let inline: Float32Array | null = null;
 const inlineTexels = () => (inline ??= spectralTransformTexels(REQUEST.input));

@@ -111,6 +111,12 @@ describe('options as properties', () => {
     expect(m.illuminant).toEqual({ daylightCct: 7500 });
     expect(parameterOf(() => (m.mode = 'bogus' as 'table'))).toBe('mode');
     expect(parameterOf(() => (m.illuminant = { daylightCct: 1000 }))).toBe('illuminant');
+    expect(m.lightTint).toEqual([1, 1, 1]);
+    m.lightTint = [1, 0.5, 0.2];
+    expect(m.lightTint).toEqual([1, 0.5, 0.2]);
+    for (const bad of [[1, 1.5, 0], [1, 1], [0, -0.1, 0], '1,1,1'])
+      expect(parameterOf(() => (m.lightTint = bad as never))).toBe('lightTint');
+    expect(m.lightTint).toEqual([1, 0.5, 0.2]);
     expect(parameterOf(() => (m.polarization = 'circular' as 's'))).toBe('polarization');
     expect(parameterOf(() => (m.normalization = 'peak' as 'white'))).toBe('normalization');
     expect(parameterOf(() => (m.quality = { exactSpectralBins: 7 }))).toBe('quality.exactSpectralBins');

@@ -35,6 +35,7 @@ describe('the WebGPU entry', () => {
     const cases: readonly (readonly [string, object])[] = [
       ['mode', { mode: 'series' }],
       ['illuminant', { illuminant: 'D50' }],
+      ['lightTint', { lightTint: [1, 2, 0] }],
       ['polarization', { polarization: 'q' }],
       ['base', { base: 'unobtainium' }],
       ['layers', { layers: '(1.4:10)*65' }],

@@ -15,10 +15,22 @@ describe('plot downloads', () => {
     expect(downloadName({ thicknessNm: 0, angleDeg: 89.5, illuminant: { daylightCct: 7500 } }, 'spectrum', 'csv')).toBe(
       'film-0nm-7500K-90deg-spectrum.csv',
     );
+    expect(downloadName({ thicknessNm: 600, angleDeg: 0, illuminant: 'FL2', lightTint: [1, 0.5, 0.2] }, 'spectrum', 'png')).toBe(
+      'film-600nm-FL2-tint-1-0.5-0.2-0deg-spectrum.png',
+    );
+    expect(downloadName({ thicknessNm: 600, angleDeg: 0, illuminant: 'FL2', lightTint: [1, 1, 1] }, 'spectrum', 'png')).toBe(
+      'film-600nm-FL2-0deg-spectrum.png',
+    );
     expect(downloadName({ thicknessNm: 600, angleDeg: 0, illuminant: { lineNm: 632.8 } }, 'spectrum', 'png')).toBe(
       'film-600nm-line-632.8nm-0deg-spectrum.png',
     );
     expect(downloadName({ thicknessNm: 600, angleDeg: 0, illuminant: 'LED-B1' }, 'xy', 'png')).toBe('film-600nm-LED-B1-0deg-xy.png');
+  });
+
+  it("draws a tinted light's spectrum: equal energy tinted blue is the basis's blue (its rows at 450 and 700 nm)", () => {
+    const s = filmSpectrum({ ...SOAP_FILM_IN_AIR, thicknessNm: 450, angleDeg: 0 }, 'E', 'unpolarized', 1, [0, 0, 1]);
+    const at = (nm: number) => s.incident[nm - 380]!;
+    expect(Math.abs(at(700) / at(450) - 0.276826038721536 / 0.957025264931328)).toBeLessThan(1e-12);
   });
 
   it("draws a line source's lines in the spectrum: each line's power shared by the 1 nm samples beside it", () => {

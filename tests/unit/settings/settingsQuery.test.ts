@@ -150,6 +150,10 @@ describe('URL parameters', () => {
       v,
       'line:NM with NM in [380, 780] nm',
     ]),
+    // A tint: three numbers, each in [0, 1] (not two, not four, none outside, none not a number).
+    ...['', '0.5', '0.5,0.5', '0.5,0.5,0.5,0.5', '1.1,0.5,0.5', '0.5,-0.1,0.5', '0.5,0.5,NaN', '0.5,,0.5', 'red', ABSURDLY_LONG].map(
+      (v): [string, string, string] => ['lightTint', v, 'three numbers R,G,B, each in [0, 1]'],
+    ),
     ...['animate', 'renew'].flatMap((name) =>
       ['', 'yes', 'true', '2', '-1', ABSURDLY_LONG].map((v): [string, string, string] => [name, v, '0 or 1']),
     ),
@@ -223,7 +227,8 @@ describe('URL parameters', () => {
 
 describe('settingsToQuery', () => {
   it('round-trips through parseSettings, defaults left out', () => {
-    const { settings } = parseSettings('?thickness=420&illuminant=7500&mode=exact&animate=0&time=3&nInside=1.2');
+    const { settings } = parseSettings('?thickness=420&illuminant=7500&lightTint=1,0.5,0.2&mode=exact&animate=0&time=3&nInside=1.2');
+    expect(settings.lightTint).toEqual([1, 0.5, 0.2]);
     const query = settingsToQuery(settings);
     expect(parseSettings(`?${query}`)).toEqual({ settings, errors: [], refusals: [] });
     expect(settingsToQuery(DEFAULT_SETTINGS)).toBe('');

@@ -25,7 +25,7 @@ const OFFERS: FrameOffers = {
 /** A frozen swirl in the sky, in the table, at grid and speed left to the governor: what the default view asks. */
 const ASKED: ViewSettings = { ...DEFAULT_VIEW_SETTINGS, field: 'swirl', env: 'sky', mode: 'table', animate: false };
 const FLOW: ViewSettings = { ...ASKED, field: 'flow', animate: true, seed: 7, thicknessNm: 600 };
-const D65_WHITE = { illuminant: 'D65', normalization: 'white' } as const;
+const D65_WHITE = { illuminant: 'D65', lightTint: [1, 1, 1], normalization: 'white' } as const;
 
 describe('what is drawn for what is asked', () => {
   it('shows a wide space in Display P3 where the canvas can, else sRGB with a notice; sRGB asked never asks the canvas', () => {
@@ -100,7 +100,7 @@ describe('what is drawn for what is asked', () => {
     const waiting = { ...OFFERS, lightShown: D65_WHITE, lightReady: () => false };
     const frame = resolveFrame(asked, waiting);
     expect([frame.film.illuminant, frame.film.normalization]).toEqual(['D65', 'white']);
-    expect(frame.lightPending).toEqual({ illuminant: 'D93', normalization: asked.normalization });
+    expect(frame.lightPending).toEqual({ illuminant: 'D93', lightTint: asked.lightTint, normalization: asked.normalization });
     expect(frame.notices.map((n) => n.setting)).toEqual(['illuminant']);
     // Ready, or a method that reads no transform (the table's own pass fills it), or no light shown yet: the light asked for.
     for (const [mode, offers] of [
