@@ -27,7 +27,7 @@ try {
 const rowOf = (name: string) => ROWS.find((r) => r.name === name) ?? { kind: 'bubble' as const, measuresError: true };
 const problems = [
   ...ROWS.filter((row) => !results.rows.some((r) => r.name === row.name)).map((row) => `row not run: ${row.name}`),
-  ...resultProblems(results, rowOf, { materials: true, flowSpeed: true }),
+  ...resultProblems(results, rowOf, { materials: true, node: true, flowSpeed: true }),
 ];
 if (problems.length > 0) {
   console.error(`${source} is not a complete run; ${DOC} left as it is:\n${problems.map((p) => `- ${p}`).join('\n')}`);

@@ -1,0 +1,101 @@
+/**
+ * The node figures' page (scripts/bench/nodeFigures.ts): three.js's WebGPURenderer on the backend
+ * asked for, and on it the sphere's frame times with each material (nodeScene.ts), the WebGPU
+ * entry's film over the error grids (scripts/harness/nodeFilmProbe.ts), and the main thread's long
+ * tasks from each option change of a spectral material to its frame drawn.
+ */
+import { NoToneMapping } from 'three';
+import { WebGPURenderer } from 'three/webgpu';
+import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
+import { type NodeParityMode, renderNodeFilmXyz } from '../../harness/nodeFilmProbe.ts';
+import type { ParityGroup } from '../../harness/parityCase.ts';
+import { median } from '../median.ts';
+import { NODE_MATERIAL_NAMES, NODE_OPTION_CHANGES, type NodeBackend, type NodeMaterialName } from '../nodeMaterials.ts';
+import { nodeScene } from './nodeScene.ts';
+
+/** Every long task of the main thread since the page loaded: [start, duration], ms. */
+const longTasks: [number, number][] = [];
+const observer = new PerformanceObserver((list) => {
+  for (const e of list.getEntries()) longTasks.push([e.startTime, e.duration]);
+});
+observer.observe({ type: 'longtask', buffered: true });
+
+/**
+ * How long after a change's frame its long tasks are taken: Chromium queues a long task's entry
+ * after the task ends, and delivers it to the observer in a later task.
+ */
+const ENTRY_DELIVERY_MS = 200;
+
+let renderer: WebGPURenderer | null = null;
+
+/** Starts WebGPURenderer on `backend`; the backend it runs on (a browser without a WebGPU adapter falls back to WebGL2). */
+async function start(backend: NodeBackend): Promise<NodeBackend> {
+  void renderer?.dispose();
+  renderer = new WebGPURenderer({ canvas: document.querySelector<HTMLCanvasElement>('#gpu')!, forceWebGL: backend === 'webgl' });
+  renderer.toneMapping = NoToneMapping;
+  await renderer.init();
+  return (renderer.backend as { isWebGPUBackend?: boolean }).isWebGPUBackend ? 'webgpu' : 'webgl';
+}
+
+/** Median frame (ms) of the sphere with each material, after each is ready; the materials take turns frame by frame so noise hits all alike. */
+async function frameTimes(width: number, height: number, frames: number): Promise<Record<NodeMaterialName, number>> {
+  const s = nodeScene(renderer!, width, height);
+  try {
+    for (const name of NODE_MATERIAL_NAMES) await s.drawReady(name);
+    const times = Object.fromEntries(NODE_MATERIAL_NAMES.map((n) => [n, [] as number[]])) as Record<NodeMaterialName, number[]>;
+    for (let i = 0; i < frames; i++)
+      for (const name of NODE_MATERIAL_NAMES) {
+        const t0 = performance.now();
+        await s.draw(name);
+        times[name].push(performance.now() - t0);
+      }
+    return Object.fromEntries(NODE_MATERIAL_NAMES.map((n) => [n, median(times[n])])) as Record<NodeMaterialName, number>;
+  } finally {
+    s.dispose();
+  }
+}
+
+/** One option change's cost: the long tasks' durations (ms) from the change to its frame drawn, and that time (ms). */
+export interface ChangeCost {
+  readonly longTasksMs: number[];
+  readonly toFrameMs: number;
+}
+
+/** Each of NODE_OPTION_CHANGES in turn on the `table` sphere, once it is ready: drawn until the film is ready, then once more. */
+async function optionChanges(width: number, height: number): Promise<ChangeCost[]> {
+  const s = nodeScene(renderer!, width, height);
+  try {
+    await s.drawReady('table');
+    const costs: ChangeCost[] = [];
+    for (const [, change] of NODE_OPTION_CHANGES) {
+      const changedAt = performance.now();
+      Object.assign(s.materials.table, change);
+      await s.drawReady('table');
+      const drawnAt = performance.now();
+      await new Promise((resolve) => setTimeout(resolve, ENTRY_DELIVERY_MS));
+      for (const e of observer.takeRecords()) longTasks.push([e.startTime, e.duration]);
+      const longTasksMs = longTasks.filter(([t, ms]) => t + ms > changedAt && t < drawnAt).map(([, ms]) => ms);
+      costs.push({ longTasksMs, toFrameMs: drawnAt - changedAt });
+    }
+    return costs;
+  } finally {
+    s.dispose();
+  }
+}
+
+/** XYZ per case of every group through the WebGPU entry's film in `mode`, at its default quality. */
+const filmXyz = (groups: readonly ParityGroup[], mode: NodeParityMode) => renderNodeFilmXyz(renderer!, groups, mode, DEFAULT_FILM_QUALITY);
+
+window.nodeBench = { start, frameTimes, optionChanges, filmXyz };
+document.body.dataset.ready = 'yes';
+
+declare global {
+  interface Window {
+    nodeBench?: {
+      start: typeof start;
+      frameTimes: typeof frameTimes;
+      optionChanges: typeof optionChanges;
+      filmXyz: typeof filmXyz;
+    };
+  }
+}
