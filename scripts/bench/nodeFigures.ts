@@ -7,6 +7,7 @@
  */
 import { type Browser, chromium } from '@playwright/test';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
+import type { FilmQuality } from '../../src/settings/filmQuality.ts';
 import { webgpuLaunchOptions } from '../chromium.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import { type GridError, gridError } from './errorGrids.ts';
@@ -18,6 +19,8 @@ export interface NodeFiguresPlan {
   readonly width: number;
   readonly height: number;
   readonly frames: number;
+  /** the spectral materials' and the error grids' film quality */
+  readonly quality: FilmQuality;
 }
 
 /** One option change of NODE_OPTION_CHANGES: the main thread's long tasks (over LONG_TASK_MS) from the change to its frame drawn. */
@@ -71,13 +74,14 @@ async function backendFigures(
 ): Promise<NodeBackendFigures> {
   const page = await openOn(browser, baseUrl, backend, how);
   try {
-    const frameMs = await page.evaluate(([w, h, n]) => window.nodeBench!.frameTimes(w, h, n), [how.width, how.height, how.frames] as const);
+    const size = [how.width, how.height, how.quality] as const;
+    const frameMs = await page.evaluate(([w, h, q, n]) => window.nodeBench!.frameTimes(w, h, q, n), [...size, how.frames] as const);
     const gridErrors = {} as NodeBackendFigures['gridErrors'];
     for (const mode of NODE_GRID_MODES) {
-      const xyz = await page.evaluate(([g, m]) => window.nodeBench!.filmXyz(g, m), [grids, mode] as const);
+      const xyz = await page.evaluate(([g, m, q]) => window.nodeBench!.filmXyz(g, m, q), [grids, mode, how.quality] as const);
       gridErrors[mode] = grids.map((g, i) => gridError(g, reference[i]!, xyz[i]!));
     }
-    const costs = await page.evaluate(([w, h]) => window.nodeBench!.optionChanges(w, h), [how.width, how.height] as const);
+    const costs = await page.evaluate(([w, h, q]) => window.nodeBench!.optionChanges(w, h, q), size);
     if (costs.length !== NODE_OPTION_CHANGES.length)
       throw new Error(`the page made ${costs.length} changes, not ${NODE_OPTION_CHANGES.length}`);
     const changes = costs.map(({ longTasksMs, toFrameMs }) => ({

@@ -6,7 +6,7 @@
  */
 import { NoToneMapping } from 'three';
 import { WebGPURenderer } from 'three/webgpu';
-import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
+import type { FilmQuality } from '../../../src/settings/filmQuality.ts';
 import { type NodeParityMode, renderNodeFilmXyz } from '../../harness/nodeFilmProbe.ts';
 import type { ParityGroup } from '../../harness/parityCase.ts';
 import { median } from '../median.ts';
@@ -38,8 +38,8 @@ async function start(backend: NodeBackend): Promise<NodeBackend> {
 }
 
 /** Median frame (ms) of the sphere with each material, after each is ready; the materials take turns frame by frame so noise hits all alike. */
-async function frameTimes(width: number, height: number, frames: number): Promise<Record<NodeMaterialName, number>> {
-  const s = nodeScene(renderer!, width, height);
+async function frameTimes(width: number, height: number, quality: FilmQuality, frames: number): Promise<Record<NodeMaterialName, number>> {
+  const s = nodeScene(renderer!, width, height, quality);
   try {
     for (const name of NODE_MATERIAL_NAMES) await s.drawReady(name);
     const times = Object.fromEntries(NODE_MATERIAL_NAMES.map((n) => [n, [] as number[]])) as Record<NodeMaterialName, number[]>;
@@ -62,8 +62,8 @@ export interface ChangeCost {
 }
 
 /** Each of NODE_OPTION_CHANGES in turn on the `table` sphere, once it is ready: drawn until the film is ready, then once more. */
-async function optionChanges(width: number, height: number): Promise<ChangeCost[]> {
-  const s = nodeScene(renderer!, width, height);
+async function optionChanges(width: number, height: number, quality: FilmQuality): Promise<ChangeCost[]> {
+  const s = nodeScene(renderer!, width, height, quality);
   try {
     await s.drawReady('table');
     const costs: ChangeCost[] = [];
@@ -83,8 +83,9 @@ async function optionChanges(width: number, height: number): Promise<ChangeCost[
   }
 }
 
-/** XYZ per case of every group through the WebGPU entry's film in `mode`, at its default quality. */
-const filmXyz = (groups: readonly ParityGroup[], mode: NodeParityMode) => renderNodeFilmXyz(renderer!, groups, mode, DEFAULT_FILM_QUALITY);
+/** XYZ per case of every group through the WebGPU entry's film in `mode`. */
+const filmXyz = (groups: readonly ParityGroup[], mode: NodeParityMode, quality: FilmQuality) =>
+  renderNodeFilmXyz(renderer!, groups, mode, quality);
 
 window.nodeBench = { start, frameTimes, optionChanges, filmXyz };
 document.body.dataset.ready = 'yes';

@@ -18,7 +18,7 @@ import {
   SphereGeometry,
 } from 'three';
 import { MeshPhysicalNodeMaterial, type WebGPURenderer } from 'three/webgpu';
-import { spectralIridescence, whenSpectralReady } from '../../../src/packageEntries/webgpu.ts';
+import { type FilmQuality, spectralIridescence, whenSpectralReady } from '../../../src/packageEntries/webgpu.ts';
 import { NODE_MATERIALS, type NodeMaterialName } from '../nodeMaterials.ts';
 
 /** A soap film over a glossy grey dielectric, its thickness across the sphere by a thickness map (glTF: green, min → max). */
@@ -50,13 +50,13 @@ function whiteEnvironment(): DataTexture {
 }
 
 /** The material of each of NODE_MATERIALS. */
-function materials(map: DataTexture): Record<NodeMaterialName, MeshPhysicalNodeMaterial> {
+function materials(map: DataTexture, quality: FilmQuality): Record<NodeMaterialName, MeshPhysicalNodeMaterial> {
   const physical = (iridescence: number) => new MeshPhysicalNodeMaterial({ ...FILM, iridescence, iridescenceThicknessMap: map });
   return {
     floor: physical(0),
     'three.js': physical(1),
-    table: spectralIridescence(physical(1), { mode: 'table' }),
-    exact: spectralIridescence(physical(1), { mode: 'exact' }),
+    table: spectralIridescence(physical(1), { mode: 'table', quality }),
+    exact: spectralIridescence(physical(1), { mode: 'exact', quality }),
   };
 }
 
@@ -69,9 +69,10 @@ export interface NodeScene {
   dispose(): void;
 }
 
-export function nodeScene(renderer: WebGPURenderer, width: number, height: number): NodeScene {
+/** The scene at `width`×`height`, its spectral films of `quality`. */
+export function nodeScene(renderer: WebGPURenderer, width: number, height: number, quality: FilmQuality): NodeScene {
   const map = thicknessMap();
-  const byName = materials(map);
+  const byName = materials(map, quality);
   const scene = new Scene();
   scene.environment = whiteEnvironment();
   const light = new DirectionalLight(0xffffff, 2);
