@@ -3,14 +3,14 @@
  * browser) and on its WebGPU backend (in a launch of its own, which has WebGPU and no WebGL2:
  * scripts/chromium.ts): the frame of a sphere with three.js's node iridescence and with the
  * spectral film (`table`, `exact`) against the same material without iridescence, the film's ΔE00
- * over the error grids, and the main thread's long tasks from each option change to its frame.
+ * over the error grids (and three.js's node iridescence's, the whole material's pixels), and the main thread's long tasks from each option change to its frame.
  */
 import { type Browser, chromium } from '@playwright/test';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import type { FilmQuality } from '../../src/settings/filmQuality.ts';
 import { webgpuLaunchOptions } from '../chromium.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
-import { type GridError, gridError } from './errorGrids.ts';
+import { type GridError, filmsGridError, gridError } from './errorGrids.ts';
 import { NODE_BACKENDS, NODE_GRID_MODES, NODE_OPTION_CHANGES, type NodeBackend, type NodeMaterialName } from './nodeMaterials.ts';
 import { openPage } from './openPage.ts';
 import { LONG_TASK_MS } from './panelChanges.ts';
@@ -39,6 +39,11 @@ export interface NodeBackendFigures {
   readonly frameMs: Record<NodeMaterialName, number>;
   /** per mode, the film's ΔE00 over each error grid */
   readonly gridErrors: Record<(typeof NODE_GRID_MODES)[number], GridError[]>;
+  /**
+   * three.js's node iridescence: the ΔE00 of the whole material's pixels over each error grid's
+   * films thicker than 0 nm (three turns its film off at 0 nm and draws its own base there)
+   */
+  readonly threeGridErrors: GridError[];
   /** per change of NODE_OPTION_CHANGES, in its order */
   readonly changes: NodeChangeFigures[];
 }
@@ -81,6 +86,8 @@ async function backendFigures(
       const xyz = await page.evaluate(([g, m, q]) => window.nodeBench!.filmXyz(g, m, q), [grids, mode, how.quality] as const);
       gridErrors[mode] = grids.map((g, i) => gridError(g, reference[i]!, xyz[i]!));
     }
+    const threes = await page.evaluate((g) => window.nodeBench!.threeGridXyz(g), grids);
+    const threeGridErrors = grids.map((g, i) => filmsGridError(g, reference[i]!, threes[i]!));
     const costs = await page.evaluate(([w, h, q]) => window.nodeBench!.optionChanges(w, h, q), size);
     if (costs.length !== NODE_OPTION_CHANGES.length)
       throw new Error(`the page made ${costs.length} changes, not ${NODE_OPTION_CHANGES.length}`);
@@ -89,7 +96,7 @@ async function backendFigures(
       over: longTasksMs.filter((ms) => ms > LONG_TASK_MS).length,
       toFrameMs,
     }));
-    return { backend, frameMs, gridErrors, changes };
+    return { backend, frameMs, gridErrors, threeGridErrors, changes };
   } finally {
     await page.close();
   }

@@ -38,6 +38,11 @@ export function nodeMarkdown(n: NodeFigures): string {
       f.gridErrors[mode].map(stats).join(' — '),
     ),
   );
+  const threes = row(
+    "three.js's node iridescence, the whole material's pixels (scripts/harness/materialGridScene.ts), films > 0 nm: ΔE00 against the float64 reference, fixed grid — stress grid (max / p99 / mean)",
+    b,
+    (f) => f.threeGridErrors.map(stats).join(' — '),
+  );
   const changes = NODE_OPTION_CHANGES.map(([what], i) =>
     row(
       `option change on the \`table\` sphere, ${what}: the main thread's longest task and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); → that frame`,
@@ -53,6 +58,7 @@ export function nodeMarkdown(n: NodeFigures): string {
     `|---|${b.map(() => '---|').join('')}`,
     ...frames,
     ...errors,
+    threes,
     ...changes,
   ].join('\n');
 }
@@ -65,9 +71,12 @@ export function nodeProblems(n: NodeFigures): string[] {
   for (const f of n.backends) {
     if (f.changes.length !== NODE_OPTION_CHANGES.length)
       problems.push(`node figures, ${f.backend}: ${f.changes.length} option changes, not ${NODE_OPTION_CHANGES.length}`);
-    for (const mode of NODE_GRID_MODES)
-      if (f.gridErrors[mode].length !== 2)
-        problems.push(`node figures, ${f.backend}, ${mode}: ${f.gridErrors[mode].length} error grids, not 2`);
+    const grids: readonly (readonly [string, readonly GridError[]])[] = [
+      ...NODE_GRID_MODES.map((m) => [m, f.gridErrors[m]] as const),
+      ['three.js', f.threeGridErrors],
+    ];
+    for (const [what, errors] of grids)
+      if (errors.length !== 2) problems.push(`node figures, ${f.backend}, ${what}: ${errors.length} error grids, not 2`);
   }
   return problems;
 }

@@ -1,12 +1,14 @@
 /**
  * The node figures' page (scripts/bench/nodeFigures.ts): three.js's WebGPURenderer on the backend
  * asked for, and on it the sphere's frame times with each material (nodeScene.ts), the WebGPU
- * entry's film over the error grids (scripts/harness/nodeFilmProbe.ts), and the main thread's long
- * tasks from each option change of a spectral material to its frame drawn.
+ * entry's film over the error grids (scripts/harness/nodeFilmProbe.ts) and three.js's node
+ * iridescence over them (the whole material: scripts/harness/materialGridScene.ts), and the main
+ * thread's long tasks from each option change of a spectral material to its frame drawn.
  */
-import { NoToneMapping } from 'three';
-import { WebGPURenderer } from 'three/webgpu';
+import { FloatType, NoToneMapping, RenderTarget } from 'three';
+import { MeshPhysicalNodeMaterial, WebGPURenderer } from 'three/webgpu';
 import type { FilmQuality } from '../../../src/settings/filmQuality.ts';
+import { type DrawRow, gridMaterialParameters, gridXyz } from '../../harness/materialGridScene.ts';
 import { type NodeParityMode, renderNodeFilmXyz } from '../../harness/nodeFilmProbe.ts';
 import type { ParityGroup } from '../../harness/parityCase.ts';
 import { median } from '../median.ts';
@@ -87,7 +89,29 @@ async function optionChanges(width: number, height: number, quality: FilmQuality
 const filmXyz = (groups: readonly ParityGroup[], mode: NodeParityMode, quality: FilmQuality) =>
   renderNodeFilmXyz(renderer!, groups, mode, quality);
 
-window.nodeBench = { start, frameTimes, optionChanges, filmXyz };
+const drawRow: DrawRow = async (scene, camera, width) => {
+  const r = renderer!;
+  const target = new RenderTarget(width, 1, { type: FloatType });
+  r.setRenderTarget(target);
+  r.render(scene, camera);
+  r.setRenderTarget(null);
+  const rgba = (await r.readRenderTargetPixelsAsync(target, 0, 0, width, 1)) as Float32Array;
+  target.dispose();
+  return rgba;
+};
+
+/** XYZ per case of every group through three.js's node iridescence: the whole material's pixels (materialGridScene.ts). */
+async function threeGridXyz(groups: readonly ParityGroup[]): Promise<number[][][]> {
+  const out: number[][][] = [];
+  for (const g of groups) {
+    const material = new MeshPhysicalNodeMaterial(gridMaterialParameters(g));
+    out.push(await gridXyz(g, material, drawRow));
+    material.dispose();
+  }
+  return out;
+}
+
+window.nodeBench = { start, frameTimes, optionChanges, filmXyz, threeGridXyz };
 document.body.dataset.ready = 'yes';
 
 declare global {
@@ -97,6 +121,7 @@ declare global {
       frameTimes: typeof frameTimes;
       optionChanges: typeof optionChanges;
       filmXyz: typeof filmXyz;
+      threeGridXyz: typeof threeGridXyz;
     };
   }
 }

@@ -139,6 +139,7 @@ describe('bench results check', () => {
       backend: name,
       frameMs: { floor: 10, 'three.js': 12, table: 13, exact: 40 },
       gridErrors: { table: [stats, stats], exact: [stats, stats] },
+      threeGridErrors: [stats, stats],
       changes: NODE_OPTION_CHANGES.map(() => change),
     });
     const node = { width: 160, height: 90, frames: 1, backends: [backend('webgl'), backend('webgpu')] };
