@@ -13,6 +13,7 @@ import type { ParityGroup } from '../harness/parityCase.ts';
 import { type GridError, filmsGridError, gridError } from './errorGrids.ts';
 import { NODE_BACKENDS, NODE_GRID_MODES, NODE_OPTION_CHANGES, type NodeBackend, type NodeMaterialName } from './nodeMaterials.ts';
 import { openPage } from './openPage.ts';
+import type { NodeFrameTime } from './page/nodeBench.ts';
 import { LONG_TASK_MS } from './panelChanges.ts';
 
 export interface NodeFiguresPlan {
@@ -35,8 +36,8 @@ export interface NodeChangeFigures {
 
 export interface NodeBackendFigures {
   readonly backend: NodeBackend;
-  /** median frame (ms) of the sphere with each material */
-  readonly frameMs: Record<NodeMaterialName, number>;
+  /** the sphere's frames with each material: their median (ms) and count */
+  readonly frames: Record<NodeMaterialName, NodeFrameTime>;
   /** per mode, the film's ΔE00 over each error grid */
   readonly gridErrors: Record<(typeof NODE_GRID_MODES)[number], GridError[]>;
   /**
@@ -48,10 +49,7 @@ export interface NodeBackendFigures {
   readonly changes: NodeChangeFigures[];
 }
 
-export interface NodeFigures {
-  readonly width: number;
-  readonly height: number;
-  readonly frames: number;
+export interface NodeFigures extends NodeFiguresPlan {
   /** per backend of NODE_BACKENDS, in its order */
   readonly backends: NodeBackendFigures[];
 }
@@ -68,19 +66,20 @@ async function openOn(browser: Browser, baseUrl: string, backend: NodeBackend, h
   throw new Error(`WebGPURenderer found no ${backend} backend`);
 }
 
-/** One backend's figures, in `browser`. */
+/** One backend's figures, in `browser`; a material whose first frame outlasts `how.frameBudgetMs` is timed once. */
 async function backendFigures(
   browser: Browser,
   baseUrl: string,
   backend: NodeBackend,
-  how: NodeFiguresPlan,
+  how: NodeFiguresPlan & { readonly frameBudgetMs: number },
   grids: readonly ParityGroup[],
   reference: readonly (readonly Xyz[])[],
 ): Promise<NodeBackendFigures> {
   const page = await openOn(browser, baseUrl, backend, how);
   try {
     const size = [how.width, how.height, how.quality] as const;
-    const frameMs = await page.evaluate(([w, h, q, n]) => window.nodeBench!.frameTimes(w, h, q, n), [...size, how.frames] as const);
+    const timed = [...size, how.frames, how.frameBudgetMs] as const;
+    const frames = await page.evaluate(([w, h, q, n, budget]) => window.nodeBench!.frameTimes(w, h, q, n, budget), timed);
     const gridErrors = {} as NodeBackendFigures['gridErrors'];
     for (const mode of NODE_GRID_MODES) {
       const xyz = await page.evaluate(([g, m, q]) => window.nodeBench!.filmXyz(g, m, q), [grids, mode, how.quality] as const);
@@ -96,7 +95,7 @@ async function backendFigures(
       over: longTasksMs.filter((ms) => ms > LONG_TASK_MS).length,
       toFrameMs,
     }));
-    return { backend, frameMs, gridErrors, threeGridErrors, changes };
+    return { backend, frames, gridErrors, threeGridErrors, changes };
   } finally {
     await page.close();
   }
@@ -106,7 +105,7 @@ async function backendFigures(
 export async function nodeFigures(
   browser: Browser,
   baseUrl: string,
-  how: NodeFiguresPlan,
+  how: NodeFiguresPlan & { readonly frameBudgetMs: number },
   grids: readonly ParityGroup[],
   reference: readonly (readonly Xyz[])[],
 ): Promise<NodeFigures> {
@@ -119,5 +118,6 @@ export async function nodeFigures(
       await own?.close();
     }
   }
-  return { ...how, backends };
+  const { width, height, frames, quality } = how;
+  return { width, height, frames, quality, backends };
 }

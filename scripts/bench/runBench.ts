@@ -180,7 +180,13 @@ function browserTasks(run: BrowserRun, rows: readonly BenchRow[], extras: BenchE
   };
   const node = async () => {
     figures.node = await stages.run(NODE_ROW, () =>
-      nodeFigures(browser, devUrl, plan.node, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
+      nodeFigures(
+        browser,
+        devUrl,
+        { ...plan.node, frameBudgetMs: plan.frameBudgetMs },
+        grids.grids(FIXED_GRID.nFilm),
+        grids.reference(FIXED_GRID.nFilm),
+      ),
     );
   };
   const pack = async () => {

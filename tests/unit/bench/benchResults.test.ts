@@ -135,14 +135,15 @@ describe('bench results check', () => {
 
   it('the node figures of both backends in order, each with every option change and both error grids per mode, each finite', () => {
     const change = { longestMs: 0, over: 0, toFrameMs: 40 };
+    const t = (medianMs: number) => ({ medianMs, count: 1 });
     const backend = (name: 'webgl' | 'webgpu'): NodeBackendFigures => ({
       backend: name,
-      frameMs: { floor: 10, 'three.js': 12, table: 13, exact: 40 },
+      frames: { floor: t(10), 'three.js': t(12), table: t(13), exact: t(40) },
       gridErrors: { table: [stats, stats], exact: [stats, stats] },
       threeGridErrors: [stats, stats],
       changes: NODE_OPTION_CHANGES.map(() => change),
     });
-    const node = { width: 160, height: 90, frames: 1, backends: [backend('webgl'), backend('webgpu')] };
+    const node = { ...SMOKE_PLAN.node, backends: [backend('webgl'), backend('webgpu')] };
     const ASKED = { ...NONE, node: true };
     expect(resultProblems(results(good, { node }), measures, ASKED)).toEqual(['no demo figures', 'no defaultView figures']);
     const lacking = {
@@ -158,9 +159,9 @@ describe('bench results check', () => {
         'node figures, webgpu, table: 1 error grids, not 2',
       ]),
     );
-    const oneBackend = { ...node, backends: [{ ...backend('webgl'), frameMs: { ...backend('webgl').frameMs, exact: NaN } }] };
+    const oneBackend = { ...node, backends: [{ ...backend('webgl'), frames: { ...backend('webgl').frames, exact: t(NaN) } }] };
     expect(resultProblems(results(good, { node: oneBackend }), measures, ASKED)).toEqual(
-      expect.arrayContaining(['results.node.backends.0.frameMs.exact is NaN', 'node figures of backends webgl, not webgl, webgpu']),
+      expect.arrayContaining(['results.node.backends.0.frames.exact.medianMs is NaN', 'node figures of backends webgl, not webgl, webgpu']),
     );
   });
 });
