@@ -27,7 +27,7 @@ export function nodeMarkdown(n: NodeFigures): string {
   const frames = NODE_MATERIAL_NAMES.map((name, i) =>
     row(
       i === 0
-        ? `a sphere filling the view's height (${n.width}×${n.height}, a constant white environment and a directional light), median of ${n.frames} frames (one [1] where the first outlasts the frame budget), ms (× the floor, on the same backend in the same run): ${NODE_MATERIALS[name].label}`
+        ? `a sphere filling the view's height (${n.width}×${n.height}, a constant white environment and a directional light), median of ${n.frames} frames ([1]: one, as the first outlasted the frame budget), ms (× the floor, on the same backend in the same run): ${NODE_MATERIALS[name].label}`
         : `… ${NODE_MATERIALS[name].label}`,
       b,
       (f) => {
@@ -48,7 +48,9 @@ export function nodeMarkdown(n: NodeFigures): string {
   );
   const changes = NODE_OPTION_CHANGES.map(([what], i) =>
     row(
-      `option change on the \`table\` sphere, ${what}: the main thread's longest task and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); → that frame`,
+      i === 0
+        ? `option changes on the \`table\` sphere, one after another, each drawn until whenSpectralReady resolves: the main thread's longest task and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); change → that frame: ${what}`
+        : `… ${what}`,
       b,
       (f) => {
         const c = f.changes[i]!;
