@@ -14,9 +14,9 @@ import { benchUsage, parseBenchArgs } from './bench/benchArgs.ts';
 import { FULL_PLAN, SMOKE_PLAN, withPorts } from './bench/benchPlan.ts';
 import { resultProblems } from './bench/benchResults.ts';
 import { benchMarkdown } from './bench/benchMarkdown.ts';
-import { FLOW_SPEED_ROW, MATERIALS_ROW, ROWS } from './bench/rows.ts';
+import { FLOW_SPEED_ROW, MATERIALS_ROW, NODE_ROW, ROWS } from './bench/rows.ts';
 
-const rowNames = [...ROWS.map((r) => r.name), FLOW_SPEED_ROW, MATERIALS_ROW];
+const rowNames = [...ROWS.map((r) => r.name), FLOW_SPEED_ROW, MATERIALS_ROW, NODE_ROW];
 const parsed = parseBenchArgs(process.argv.slice(2), rowNames);
 if ('error' in parsed) {
   console.error(parsed.error);
@@ -31,7 +31,7 @@ const plan = withPorts(smoke ? SMOKE_PLAN : FULL_PLAN, port);
 const picked = (name: string) => !only || only.some((text) => name.includes(text));
 // The floor always runs: the other rows' frame times are given against it.
 const rows = ROWS.filter((r, i) => i === 0 || picked(r.name));
-const extras = { materials: picked(MATERIALS_ROW), flowSpeed: picked(FLOW_SPEED_ROW) };
+const extras = { materials: picked(MATERIALS_ROW), node: picked(NODE_ROW), flowSpeed: picked(FLOW_SPEED_ROW) };
 
 // Vite, Playwright and the rows' code load only once the command line is known to be good.
 const { runBench } = await import('./bench/runBench.ts');

@@ -6,6 +6,7 @@ import { defaultViewMarkdown } from './defaultView.ts';
 import { LONG_TASK_MS, PANEL_CHANGES } from './panelChanges.ts';
 import { flowSpeedMarkdown } from './flowSpeed.ts';
 import { referenceSpeedMarkdown } from './referenceSpeed.ts';
+import { nodeMarkdown } from './nodeMarkdown.ts';
 import { MATERIALS_ROW } from './rows.ts';
 import { rowsMarkdown } from './rowsMarkdown.ts';
 
@@ -81,6 +82,7 @@ export function benchMarkdown(r: BenchResults): string {
     builtMarkdown(r),
     r.defaultView ? defaultViewMarkdown(r.defaultView, r.plan.defaultView) : '',
     materialsMarkdown(r),
+    r.node ? nodeMarkdown(r.node) : '',
     stagesMarkdown(r),
     r.machine.webgl,
   ]

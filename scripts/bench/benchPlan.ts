@@ -5,9 +5,10 @@
  * the browser tests' (tests/e2e/servers.ts), so the bench runs beside either; `--port` moves them.
  */
 import type { ParityGroup } from '../harness/parityCase.ts';
-import type { FilmQuality } from '../../src/settings/filmQuality.ts';
+import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../src/settings/filmQuality.ts';
 import type { DefaultViewPlan } from './defaultView.ts';
 import type { FlowSpeedPlan } from './flowSpeed.ts';
+import type { NodeFiguresPlan } from './nodeFigures.ts';
 
 export interface BenchPlan {
   readonly smoke: boolean;
@@ -22,6 +23,8 @@ export interface BenchPlan {
   /** every `gridStride`-th film of each error grid */
   readonly gridStride: number;
   readonly materials: { readonly width: number; readonly height: number; readonly frames: number };
+  /** the sphere of the node figures on WebGPURenderer (nodeFigures.ts): its size, and the frames timed per material and backend */
+  readonly node: NodeFiguresPlan;
   /** the built demo's viewport, and how long after a panel change's frame in full its tasks are still counted */
   readonly demo: { readonly width: number; readonly height: number; readonly windowMs: number };
   /** the built demo's default view against the swirl: their size, how long each animates, and how long the governor's settling is left out of the frame interval */
@@ -45,6 +48,16 @@ export interface BenchPlan {
   readonly resultsFile: string;
 }
 
+/**
+ * A row's quality in the smoke run: its table at most 128 texels wide and 16 rows per half, so a
+ * table row builds in a moment and still runs every step of its kind (fill, precision, layout
+ * powers), and likewise the node figures' tables; the smoke checks that each row runs and gives finite figures, not their values.
+ */
+export const smokeQuality = (q: FilmQuality): FilmQuality => ({
+  ...q,
+  table: { ...q.table, width: Math.min(q.table.width, 128), rows: Math.min(q.table.rows, 16) },
+});
+
 export const FULL_PLAN: BenchPlan = {
   smoke: false,
   sizes: [
@@ -57,6 +70,7 @@ export const FULL_PLAN: BenchPlan = {
   changesBack: true,
   gridStride: 1,
   materials: { width: 1280, height: 720, frames: 10 },
+  node: { width: 1280, height: 720, frames: 10, quality: DEFAULT_FILM_QUALITY },
   demo: { width: 1280, height: 720, windowMs: 1000 },
   defaultView: { width: 1280, height: 720, seconds: 30, settlingMs: 3000, firstFrameLoads: 5 },
   flowSpeed: { grids: [64, 128], warmUpSteps: 3, batchSteps: 4, batches: 5 },
@@ -76,6 +90,7 @@ export const SMOKE_PLAN: BenchPlan = {
   changesBack: false,
   gridStride: 16,
   materials: { width: 160, height: 90, frames: 1 },
+  node: { width: 160, height: 90, frames: 1, quality: smokeQuality(DEFAULT_FILM_QUALITY) },
   demo: { width: 320, height: 180, windowMs: 400 },
   defaultView: { width: 320, height: 180, seconds: 2, settlingMs: 500, firstFrameLoads: 1 },
   flowSpeed: { grids: [8, 16], warmUpSteps: 1, batchSteps: 1, batches: 1 },
@@ -93,13 +108,3 @@ export const withPorts = (plan: BenchPlan, devPort: number | null): BenchPlan =>
 /** The plan's share of a grid: every `stride`-th film. */
 export const thinnedGrid = (g: ParityGroup, stride: number): ParityGroup =>
   stride === 1 ? g : { ...g, inputs: g.inputs.filter((_, i) => i % stride === 0) };
-
-/**
- * A row's quality in the smoke run: its table at most 128 texels wide and 16 rows per half, so a
- * table row builds in a moment and still runs every step of its kind (fill, precision, layout
- * powers); the smoke checks that each row runs and gives finite figures, not their values.
- */
-export const smokeQuality = (q: FilmQuality): FilmQuality => ({
-  ...q,
-  table: { ...q.table, width: Math.min(q.table.width, 128), rows: Math.min(q.table.rows, 16) },
-});

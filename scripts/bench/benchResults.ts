@@ -8,9 +8,11 @@ import type { DefaultViewFigures } from './defaultView.ts';
 import type { DemoPageFigures } from './demoPage.ts';
 import type { GpuSimulationSpeed, SimulationSpeed } from './flowSpeed.ts';
 import type { MaterialFigures } from './materialFigures.ts';
+import type { NodeFigures } from './nodeFigures.ts';
 import type { PackageSize } from './packageSize.ts';
 import type { ReferenceSpeed } from './referenceSpeed.ts';
 import type { BenchRow } from './rows.ts';
+import { nodeProblems } from './nodeMarkdown.ts';
 import type { MeasuredRow } from './rowsMarkdown.ts';
 
 export interface BenchResults {
@@ -30,6 +32,8 @@ export interface BenchResults {
   readonly flowTwin: readonly SimulationSpeed[] | null;
   /** null: not run (rows picked without it) or failed */
   readonly materials: MaterialFigures | null;
+  /** null: not run (rows picked without it) or failed */
+  readonly node: NodeFigures | null;
   readonly bundle: BundleSizes | null;
   readonly package: PackageSize | null;
   readonly demo: DemoPageFigures | null;
@@ -64,7 +68,7 @@ function nonFinite(value: unknown, path: string, key: string, parentKey: string)
 export function resultProblems(
   r: BenchResults,
   rowOf: (rowName: string) => Pick<BenchRow, 'kind' | 'measuresError' | 'timesChanges'>,
-  expect: { readonly materials: boolean; readonly flowSpeed: boolean },
+  expect: { readonly materials: boolean; readonly node: boolean; readonly flowSpeed: boolean },
 ): string[] {
   const problems = r.failures.map((f) => `${f.stage} threw: ${f.message}`);
   const figures = {
@@ -73,6 +77,7 @@ export function resultProblems(
     flowGpu: r.flowGpu,
     flowTwin: r.flowTwin,
     materials: r.materials,
+    node: r.node,
     bundle: r.bundle,
     package: r.package,
     demo: r.demo,
@@ -88,6 +93,8 @@ export function resultProblems(
   }))
     if (figures === null) problems.push(`no ${name} figures`);
   if (expect.materials && r.materials === null) problems.push('no materials figures');
+  if (expect.node && r.node === null) problems.push('no node figures (WebGPURenderer)');
+  if (r.node) problems.push(...nodeProblems(r.node));
   if (expect.flowSpeed)
     for (const [name, speeds] of Object.entries({ 'flow GPU': r.flowGpu, 'flow twin': r.flowTwin })) {
       const grids = speeds?.map((s) => s.gridN) ?? [];

@@ -188,3 +188,6 @@ export const FLOW_SPEED_ROW = 'flow simulation: steps per second on the GPU and 
 
 /** The spectral material's figures (the example page, the app bundle): they run with every row, or when this name is picked. */
 export const MATERIALS_ROW = 'materials page: spectral film against three.js iridescence';
+
+/** The WebGPU entry's figures on three.js's WebGPURenderer, both backends (nodeFigures.ts): they run with every row, or when this name is picked. */
+export const NODE_ROW = "WebGPURenderer: three.js's node iridescence and the WebGPU entry, on its WebGL2 and WebGPU backends";

@@ -20,10 +20,11 @@ import { type DemoPageFigures, demoPageFigures } from './demoPage.ts';
 import { FIXED_GRID, STRESS_GRID, gridError, referenceXyz } from './errorGrids.ts';
 import type { GpuSimulationSpeed } from './flowSpeed.ts';
 import { type MaterialFigures, materialFigures } from './materialFigures.ts';
+import { type NodeFigures, nodeFigures } from './nodeFigures.ts';
 import { type PackageSize, packageSize } from './packageSize.ts';
 import { Progress, type Stage, rowCost } from './progress.ts';
 import { referenceSpeed } from './referenceSpeed.ts';
-import { type BenchRow, FLOW_SPEED_ROW, MATERIALS_ROW } from './rows.ts';
+import { type BenchRow, FLOW_SPEED_ROW, MATERIALS_ROW, NODE_ROW } from './rows.ts';
 import type { MeasuredRow } from './rowsMarkdown.ts';
 import { type LaneTask, runAtOnce } from './runAtOnce.ts';
 import { twinSpeed } from './twinSpeed.ts';
@@ -37,7 +38,7 @@ const FLOW_TWIN_STAGE = `${FLOW_SPEED_ROW}: the twin in Node`;
 const FLOW_GPU_STAGE = `${FLOW_SPEED_ROW}: the GPU`;
 
 /** Expected costs of the stages other than the rows, against a fast row's (the full run). */
-const STAGE_COSTS = { reference: 0.5, flowTwin: 1, flowGpu: 3, materials: 3, bundle: 1.5, package: 1.5, demo: 5, defaultView: 3 };
+const STAGE_COSTS = { reference: 0.5, flowTwin: 1, flowGpu: 3, materials: 3, node: 4, bundle: 1.5, package: 1.5, demo: 5, defaultView: 3 };
 
 /** The error grids of a film (the soap film, or a row's own index) and their reference colours, computed once per film. */
 class ErrorGrids {
@@ -79,6 +80,7 @@ async function measureRow(lane: RowLane, row: BenchRow, grids: ErrorGrids): Prom
 /** The stages that run with every row, or where picked by name. */
 export interface BenchExtras {
   readonly materials: boolean;
+  readonly node: boolean;
   readonly flowSpeed: boolean;
 }
 
@@ -90,6 +92,7 @@ function benchStages(rows: readonly BenchRow[], extras: BenchExtras): Stage[] {
     ...rows.map((r) => ({ name: r.name, cost: rowCost(r) })),
     ...(extras.flowSpeed ? [{ name: FLOW_GPU_STAGE, cost: STAGE_COSTS.flowGpu }] : []),
     ...(extras.materials ? [{ name: MATERIALS_ROW, cost: STAGE_COSTS.materials }] : []),
+    ...(extras.node ? [{ name: NODE_ROW, cost: STAGE_COSTS.node }] : []),
     { name: BUNDLE_STAGE, cost: STAGE_COSTS.bundle },
     { name: PACKAGE_STAGE, cost: STAGE_COSTS.package },
     { name: DEMO_STAGE, cost: STAGE_COSTS.demo },
@@ -127,6 +130,7 @@ class StageRunner {
 interface BrowserFigures {
   rows: (MeasuredRow | null)[];
   materials: MaterialFigures | null;
+  node: NodeFigures | null;
   flowGpu: GpuSimulationSpeed[] | null;
   bundle: BundleSizes | null;
   package: PackageSize | null;
@@ -174,6 +178,17 @@ function browserTasks(run: BrowserRun, rows: readonly BenchRow[], extras: BenchE
       materialFigures(browser, devUrl, plan.materials, grids.grids(FIXED_GRID.nFilm), grids.reference(FIXED_GRID.nFilm)),
     );
   };
+  const node = async () => {
+    figures.node = await stages.run(NODE_ROW, () =>
+      nodeFigures(
+        browser,
+        devUrl,
+        { ...plan.node, frameBudgetMs: plan.frameBudgetMs },
+        grids.grids(FIXED_GRID.nFilm),
+        grids.reference(FIXED_GRID.nFilm),
+      ),
+    );
+  };
   const pack = async () => {
     figures.package = await stages.run(PACKAGE_STAGE, packageSize);
   };
@@ -186,6 +201,7 @@ function browserTasks(run: BrowserRun, rows: readonly BenchRow[], extras: BenchE
     })),
     ...(extras.flowSpeed ? [{ cost: STAGE_COSTS.flowGpu, run: flowGpu }] : []),
     ...(extras.materials ? [{ cost: STAGE_COSTS.materials, run: materials }] : []),
+    ...(extras.node ? [{ cost: STAGE_COSTS.node, run: node }] : []),
     { cost: STAGE_COSTS.package, run: pack },
     { cost: STAGE_COSTS.bundle + STAGE_COSTS.demo + STAGE_COSTS.defaultView, run: () => builtPage(run) },
   ];
@@ -210,7 +226,7 @@ async function browserFigures(
     plan,
     devUrl,
     grids: new ErrorGrids(plan.gridStride),
-    figures: { rows: [], materials: null, flowGpu: null, bundle: null, package: null, demo: null, defaultView: null },
+    figures: { rows: [], materials: null, node: null, flowGpu: null, bundle: null, package: null, demo: null, defaultView: null },
   };
   const server = await createServer({
     logLevel: 'silent',
@@ -253,6 +269,7 @@ export async function runBench(plan: BenchPlan, rows: readonly BenchRow[], extra
       flowGpu: figures.flowGpu,
       flowTwin,
       materials: figures.materials,
+      node: figures.node,
       bundle: figures.bundle,
       package: figures.package,
       demo: figures.demo,

@@ -3,7 +3,7 @@
  * WebGPU backend, or with `forceWebGL` its WebGL2 one) into a float target and read back, with
  * three's node iridescence or the entry's film, on a MeshPhysicalNodeMaterial or a classic
  * MeshPhysicalMaterial; and, where the browser has WebGL2, the WebGL entry's film on WebGLRenderer
- * in the same scene; and the node film's XYZ of the parity cases (nodeFilmProbe.ts).
+ * in the same scene; and the node film's XYZ of the parity cases (scripts/harness/nodeFilmProbe.ts).
  */
 import {
   type Camera,
@@ -23,7 +23,7 @@ import { encode8 } from '../../../src/physics/colorConversions.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/settings/filmQuality.ts';
 import type { ParityGroup } from '../../../scripts/harness/parityCase.ts';
 import { type FilmCase, disposeAll, filmMaterial, filmScene } from './filmCaseScene.ts';
-import { type NodeParityMode, renderNodeFilmXyz } from './nodeFilmProbe.ts';
+import { type NodeParityMode, renderNodeFilmXyz } from '../../../scripts/harness/nodeFilmProbe.ts';
 
 const SIZE = 64;
 /** 8-bit sRGB codes of linear RGB, clipped as a canvas clips. */
@@ -135,7 +135,7 @@ async function webglPixel(c: FilmCase, options: SpectralIridescenceOptions | nul
   return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
 }
 
-/** XYZ per case of every group through the node film (nodeFilmProbe.ts). */
+/** XYZ per case of every group through the node film (scripts/harness/nodeFilmProbe.ts). */
 const nodeFilmXyz = (groups: readonly ParityGroup[], mode: NodeParityMode, quality: FilmQuality = DEFAULT_FILM_QUALITY) =>
   renderNodeFilmXyz(renderer!, groups, mode, quality);
 

@@ -3,6 +3,8 @@ import { describe, expect, it } from 'vitest';
 import { FULL_PLAN, SMOKE_PLAN } from '../../../scripts/bench/benchPlan.ts';
 import type { BenchResults } from '../../../scripts/bench/benchResults.ts';
 import { resultProblems } from '../../../scripts/bench/benchResults.ts';
+import type { NodeBackendFigures } from '../../../scripts/bench/nodeFigures.ts';
+import { NODE_OPTION_CHANGES } from '../../../scripts/bench/nodeMaterials.ts';
 import type { MeasuredRow } from '../../../scripts/bench/rowsMarkdown.ts';
 import { DEFAULT_FILM_QUALITY } from '../../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
@@ -36,6 +38,7 @@ const results = (rows: MeasuredRow[], more: Partial<BenchResults> = {}): BenchRe
   flowGpu: null,
   flowTwin: null,
   materials: null,
+  node: null,
   bundle: { files: {}, demoGzipBytes: 1000, elementGzipBytes: 900, environmentGzipBytes: [100] },
   package: { tarballBytes: 100, unpackedBytes: 300, files: 5 },
   demo: null,
@@ -50,8 +53,8 @@ const measures = (name: string) => ({
   measuresError: name !== 'floor',
 });
 
-/** A run of rows picked without the materials and the flow speed. */
-const NONE = { materials: false, flowSpeed: false } as const;
+/** A run of rows picked without the materials, the node figures and the flow speed. */
+const NONE = { materials: false, node: false, flowSpeed: false } as const;
 
 describe('bench results check', () => {
   const good = [row('floor'), row('table', { errors: [stats, stats] })];
@@ -92,7 +95,7 @@ describe('bench results check', () => {
       flowGpu: all.map((n) => ({ ...speed(n), drawsPerStep: 103 })),
       flowTwin: [speed(all[0]!, NaN)],
     });
-    expect(resultProblems(r, measures, { materials: false, flowSpeed: true })).toEqual([
+    expect(resultProblems(r, measures, { materials: false, node: false, flowSpeed: true })).toEqual([
       'results.flowTwin.0.stepsPerSecond is NaN',
       'no demo figures',
       'no defaultView figures',
@@ -109,10 +112,11 @@ describe('bench results check', () => {
       changeToFrameMs: [300, null, 320, 330],
     });
     const r = results([good[0]!, untimed], { plan: SMOKE_PLAN, failures: [{ stage: 'exact, 90 bins', message: 'lost context' }] });
-    expect(resultProblems(r, measures, { materials: true, flowSpeed: true })).toEqual(
+    expect(resultProblems(r, measures, { materials: true, node: true, flowSpeed: true })).toEqual(
       expect.arrayContaining([
         'exact, 90 bins threw: lost context',
         'no materials figures',
+        'no node figures (WebGPURenderer)',
         'no flow GPU figures at every grid of the plan',
         'table: size 2 not timed',
         'table: a change not timed',
@@ -127,5 +131,37 @@ describe('bench results check', () => {
       changeToFrameMs: [null, null, null, null],
     });
     expect(resultProblems(results([good[0]!, slow]), measures, NONE)).toEqual(['no demo figures', 'no defaultView figures']);
+  });
+
+  it('the node figures of both backends in order, each with every option change and both error grids per mode, each finite', () => {
+    const change = { longestMs: 0, over: 0, toFrameMs: 40 };
+    const t = (medianMs: number) => ({ medianMs, count: 1 });
+    const backend = (name: 'webgl' | 'webgpu'): NodeBackendFigures => ({
+      backend: name,
+      frames: { floor: t(10), 'three.js': t(12), table: t(13), exact: t(40) },
+      gridErrors: { table: [stats, stats], exact: [stats, stats] },
+      threeGridErrors: [stats, stats],
+      changes: NODE_OPTION_CHANGES.map(() => change),
+    });
+    const node = { ...SMOKE_PLAN.node, backends: [backend('webgl'), backend('webgpu')] };
+    const ASKED = { ...NONE, node: true };
+    expect(resultProblems(results(good, { node }), measures, ASKED)).toEqual(['no demo figures', 'no defaultView figures']);
+    const lacking = {
+      ...node,
+      backends: [
+        { ...backend('webgl'), changes: [change] },
+        { ...backend('webgpu'), gridErrors: { table: [stats], exact: [stats, stats] } },
+      ],
+    };
+    expect(resultProblems(results(good, { node: lacking }), measures, ASKED)).toEqual(
+      expect.arrayContaining([
+        `node figures, webgl: 1 option changes, not ${NODE_OPTION_CHANGES.length}`,
+        'node figures, webgpu, table: 1 error grids, not 2',
+      ]),
+    );
+    const oneBackend = { ...node, backends: [{ ...backend('webgl'), frames: { ...backend('webgl').frames, exact: t(NaN) } }] };
+    expect(resultProblems(results(good, { node: oneBackend }), measures, ASKED)).toEqual(
+      expect.arrayContaining(['results.node.backends.0.frames.exact.medianMs is NaN', 'node figures of backends webgl, not webgl, webgpu']),
+    );
   });
 });

@@ -1,27 +1,27 @@
 /**
- * The node film's parity probe (tests/e2e/webgpu*.spec.ts): film XYZ of the parity cases through
+ * The node film's parity probe (tests/e2e/webgpu*.spec.ts, the benchmark): film XYZ of the parity cases through
  * the TSL film (src/nodeMaterial/) on WebGPURenderer, into a float target, read back; one draw per
  * group, one texel per case, no colour conversion. `exact` evaluates the film per texel; `table`
  * looks it up in the node material's own table (NodeFilmTable), built over the group's largest
  * thickness. The twin of scripts/harness/filmXyzProbe.ts for the GLSL.
  */
-import { methodReads } from '../../../src/methods/methods.ts';
+import { methodReads } from '../../src/methods/methods.ts';
 import { FloatType, RenderTarget } from 'three';
 import { Fn, float, int, ivec2, textureLoad, uniform, uniformTexture, uv, vec4 } from 'three/tsl';
 import { NodeMaterial, QuadMesh, type WebGPURenderer } from 'three/webgpu';
-import { filmColorUniforms, updateFilmColorUniforms } from '../../../src/film/filmColor.ts';
-import { filmSpectralBins } from '../../../src/film/filmFillGpu.ts';
-import { filmStackUniforms } from '../../../src/film/filmStack.ts';
-import { spectralBinDefines } from '../../../src/film/spectralBinsTexture.ts';
-import { filmFill } from '../../../src/methods/filmFills.ts';
-import { type FilmNodes, filmXyz } from '../../../src/nodeMaterial/filmColor.ts';
-import { filmInputs, floatRow, setFilmInputs } from '../../../src/nodeMaterial/filmInputs.ts';
-import { channelsOf } from '../../../src/nodeMaterial/filmReflectance.ts';
-import { NodeFilmTable } from '../../../src/nodeMaterial/filmTable.ts';
-import { type FilmQuality } from '../../../src/settings/filmQuality.ts';
-import { DEFAULT_SETTINGS } from '../../../src/settings/filmParameters.ts';
-import { type FilmSettings } from '../../../src/settings/filmSettings.ts';
-import type { ParityGroup } from '../../../scripts/harness/parityCase.ts';
+import { filmColorUniforms, updateFilmColorUniforms } from '../../src/film/filmColor.ts';
+import { filmSpectralBins } from '../../src/film/filmFillGpu.ts';
+import { filmStackUniforms } from '../../src/film/filmStack.ts';
+import { spectralBinDefines } from '../../src/film/spectralBinsTexture.ts';
+import { filmFill } from '../../src/methods/filmFills.ts';
+import { type FilmNodes, filmXyz } from '../../src/nodeMaterial/filmColor.ts';
+import { filmInputs, floatRow, setFilmInputs } from '../../src/nodeMaterial/filmInputs.ts';
+import { channelsOf } from '../../src/nodeMaterial/filmReflectance.ts';
+import { NodeFilmTable } from '../../src/nodeMaterial/filmTable.ts';
+import { type FilmQuality } from '../../src/settings/filmQuality.ts';
+import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
+import { type FilmSettings } from '../../src/settings/filmSettings.ts';
+import type { ParityGroup } from './parityCase.ts';
 
 export type NodeParityMode = 'exact' | 'table';
 

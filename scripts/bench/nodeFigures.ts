@@ -1,0 +1,123 @@
+/**
+ * The WebGPU entry's figures on three.js's WebGPURenderer, on its WebGL2 backend (in the run's
+ * browser) and on its WebGPU backend (in a launch of its own, which has WebGPU and no WebGL2:
+ * scripts/chromium.ts): the frame of a sphere with three.js's node iridescence and with the
+ * spectral film (`table`, `exact`) against the same material without iridescence, the film's ΔE00
+ * over the error grids (and three.js's node iridescence's, the whole material's pixels), and the main thread's long tasks from each option change to its frame.
+ */
+import { type Browser, chromium } from '@playwright/test';
+import type { Xyz } from '../../src/physics/spectralWeights.ts';
+import type { FilmQuality } from '../../src/settings/filmQuality.ts';
+import { webgpuLaunchOptions } from '../chromium.ts';
+import type { ParityGroup } from '../harness/parityCase.ts';
+import { type GridError, filmsGridError, gridError } from './errorGrids.ts';
+import { NODE_BACKENDS, NODE_GRID_MODES, NODE_OPTION_CHANGES, type NodeBackend, type NodeMaterialName } from './nodeMaterials.ts';
+import { openPage } from './openPage.ts';
+import type { NodeFrameTime } from './page/nodeBench.ts';
+import { LONG_TASK_MS } from './panelChanges.ts';
+
+export interface NodeFiguresPlan {
+  readonly width: number;
+  readonly height: number;
+  readonly frames: number;
+  /** the spectral materials' and the error grids' film quality */
+  readonly quality: FilmQuality;
+}
+
+/** One option change of NODE_OPTION_CHANGES: the main thread's long tasks (over LONG_TASK_MS) from the change to its frame drawn. */
+export interface NodeChangeFigures {
+  /** the longest task, ms (0 for none over LONG_TASK_MS) */
+  readonly longestMs: number;
+  /** tasks over LONG_TASK_MS */
+  readonly over: number;
+  /** the change → its frame drawn with the film ready, ms */
+  readonly toFrameMs: number;
+}
+
+export interface NodeBackendFigures {
+  readonly backend: NodeBackend;
+  /** the sphere's frames with each material: their median (ms) and count */
+  readonly frames: Record<NodeMaterialName, NodeFrameTime>;
+  /** per mode, the film's ΔE00 over each error grid */
+  readonly gridErrors: Record<(typeof NODE_GRID_MODES)[number], GridError[]>;
+  /**
+   * three.js's node iridescence: the ΔE00 of the whole material's pixels over each error grid's
+   * films thicker than 0 nm (three turns its film off at 0 nm and draws its own base there)
+   */
+  readonly threeGridErrors: GridError[];
+  /** per change of NODE_OPTION_CHANGES, in its order */
+  readonly changes: NodeChangeFigures[];
+}
+
+export interface NodeFigures extends NodeFiguresPlan {
+  /** per backend of NODE_BACKENDS, in its order */
+  readonly backends: NodeBackendFigures[];
+}
+
+/** Opens the page on `backend`; a fresh browser's first WebGPU page may find no adapter, so it is loaded again then. */
+async function openOn(browser: Browser, baseUrl: string, backend: NodeBackend, how: NodeFiguresPlan) {
+  const page = await openPage(browser, { viewport: { width: how.width, height: how.height }, deviceScaleFactor: 1 });
+  for (let attempt = 0; attempt < 3; attempt++) {
+    await page.goto(`${baseUrl}/scripts/bench/page/nodeBench.html`);
+    await page.waitForSelector('body[data-ready="yes"]');
+    if ((await page.evaluate((b) => window.nodeBench!.start(b), backend)) === backend) return page;
+  }
+  await page.close();
+  throw new Error(`WebGPURenderer found no ${backend} backend`);
+}
+
+/** One backend's figures, in `browser`; a material whose first frame outlasts `how.frameBudgetMs` is timed once. */
+async function backendFigures(
+  browser: Browser,
+  baseUrl: string,
+  backend: NodeBackend,
+  how: NodeFiguresPlan & { readonly frameBudgetMs: number },
+  grids: readonly ParityGroup[],
+  reference: readonly (readonly Xyz[])[],
+): Promise<NodeBackendFigures> {
+  const page = await openOn(browser, baseUrl, backend, how);
+  try {
+    const size = [how.width, how.height, how.quality] as const;
+    const timed = [...size, how.frames, how.frameBudgetMs] as const;
+    const frames = await page.evaluate(([w, h, q, n, budget]) => window.nodeBench!.frameTimes(w, h, q, n, budget), timed);
+    const gridErrors = {} as NodeBackendFigures['gridErrors'];
+    for (const mode of NODE_GRID_MODES) {
+      const xyz = await page.evaluate(([g, m, q]) => window.nodeBench!.filmXyz(g, m, q), [grids, mode, how.quality] as const);
+      gridErrors[mode] = grids.map((g, i) => gridError(g, reference[i]!, xyz[i]!));
+    }
+    const threes = await page.evaluate((g) => window.nodeBench!.threeGridXyz(g), grids);
+    const threeGridErrors = grids.map((g, i) => filmsGridError(g, reference[i]!, threes[i]!));
+    const costs = await page.evaluate(([w, h, q]) => window.nodeBench!.optionChanges(w, h, q), size);
+    if (costs.length !== NODE_OPTION_CHANGES.length)
+      throw new Error(`the page made ${costs.length} changes, not ${NODE_OPTION_CHANGES.length}`);
+    const changes = costs.map(({ longTasksMs, toFrameMs }) => ({
+      longestMs: Math.max(0, ...longTasksMs),
+      over: longTasksMs.filter((ms) => ms > LONG_TASK_MS).length,
+      toFrameMs,
+    }));
+    return { backend, frames, gridErrors, threeGridErrors, changes };
+  } finally {
+    await page.close();
+  }
+}
+
+/** Both backends' figures: the WebGL2 backend's in `browser`, the WebGPU backend's in a browser launched for it and closed after. */
+export async function nodeFigures(
+  browser: Browser,
+  baseUrl: string,
+  how: NodeFiguresPlan & { readonly frameBudgetMs: number },
+  grids: readonly ParityGroup[],
+  reference: readonly (readonly Xyz[])[],
+): Promise<NodeFigures> {
+  const backends: NodeBackendFigures[] = [];
+  for (const backend of NODE_BACKENDS) {
+    const own = backend === 'webgpu' ? await chromium.launch(webgpuLaunchOptions()) : null;
+    try {
+      backends.push(await backendFigures(own ?? browser, baseUrl, backend, how, grids, reference));
+    } finally {
+      await own?.close();
+    }
+  }
+  const { width, height, frames, quality } = how;
+  return { width, height, frames, quality, backends };
+}

@@ -1,0 +1,87 @@
+/**
+ * The node figures (nodeFigures.ts) as Markdown, one column per backend of WebGPURenderer, and
+ * what a run's node figures lack.
+ */
+import type { GridError } from './errorGrids.ts';
+import type { NodeBackendFigures, NodeFigures } from './nodeFigures.ts';
+import {
+  NODE_BACKENDS,
+  NODE_BACKEND_LABELS,
+  NODE_GRID_MODES,
+  NODE_MATERIALS,
+  NODE_MATERIAL_NAMES,
+  NODE_OPTION_CHANGES,
+} from './nodeMaterials.ts';
+import { LONG_TASK_MS } from './panelChanges.ts';
+import { NODE_ROW } from './rows.ts';
+
+const ms = (x: number) => (x >= 100 ? x.toFixed(0) : x.toFixed(1));
+const stats = (e: GridError) => `${e.max.toFixed(3)} / ${e.p99.toFixed(3)} / ${e.mean.toFixed(3)}`;
+
+/** A table row: its legend, then one cell per backend. */
+const row = (legend: string, backends: readonly NodeBackendFigures[], cell: (b: NodeBackendFigures) => string) =>
+  `| ${legend} | ${backends.map(cell).join(' | ')} |`;
+
+export function nodeMarkdown(n: NodeFigures): string {
+  const b = n.backends;
+  const frames = NODE_MATERIAL_NAMES.map((name, i) =>
+    row(
+      i === 0
+        ? `a sphere filling the view's height (${n.width}×${n.height}, a constant white environment and a directional light), median of ${n.frames} frames ([1]: one, as the first outlasted the frame budget), ms (× the floor, on the same backend in the same run): ${NODE_MATERIALS[name].label}`
+        : `… ${NODE_MATERIALS[name].label}`,
+      b,
+      (f) => {
+        const t = f.frames[name];
+        return `${ms(t.medianMs)} (${(t.medianMs / f.frames.floor.medianMs).toFixed(2)}×)${t.count < n.frames ? ` [${t.count}]` : ''}`;
+      },
+    ),
+  );
+  const errors = NODE_GRID_MODES.map((mode) =>
+    row(`the spectral film, \`${mode}\`: ΔE00 against the float64 reference, fixed grid — stress grid (max / p99 / mean)`, b, (f) =>
+      f.gridErrors[mode].map(stats).join(' — '),
+    ),
+  );
+  const threes = row(
+    "three.js's node iridescence, the whole material's pixels (scripts/harness/materialGridScene.ts), films > 0 nm: ΔE00 against the float64 reference, fixed grid — stress grid (max / p99 / mean)",
+    b,
+    (f) => f.threeGridErrors.map(stats).join(' — '),
+  );
+  const changes = NODE_OPTION_CHANGES.map(([what], i) =>
+    row(
+      i === 0
+        ? `option changes on the \`table\` sphere, one after another, each drawn until whenSpectralReady resolves: the main thread's longest task and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); change → that frame: ${what}`
+        : `… ${what}`,
+      b,
+      (f) => {
+        const c = f.changes[i]!;
+        return `${c.longestMs.toFixed(0)} ms, ${c.over} over; ${ms(c.toFrameMs)} ms`;
+      },
+    ),
+  );
+  return [
+    `| ${NODE_ROW} | ${b.map((f) => NODE_BACKEND_LABELS[f.backend]).join(' | ')} |`,
+    `|---|${b.map(() => '---|').join('')}`,
+    ...frames,
+    ...errors,
+    threes,
+    ...changes,
+  ].join('\n');
+}
+
+/** What the node figures lack: a backend, a grid or a change. */
+export function nodeProblems(n: NodeFigures): string[] {
+  const problems: string[] = [];
+  if (n.backends.map((f) => f.backend).join() !== NODE_BACKENDS.join())
+    problems.push(`node figures of backends ${n.backends.map((f) => f.backend).join(', ')}, not ${NODE_BACKENDS.join(', ')}`);
+  for (const f of n.backends) {
+    if (f.changes.length !== NODE_OPTION_CHANGES.length)
+      problems.push(`node figures, ${f.backend}: ${f.changes.length} option changes, not ${NODE_OPTION_CHANGES.length}`);
+    const grids: readonly (readonly [string, readonly GridError[]])[] = [
+      ...NODE_GRID_MODES.map((m) => [m, f.gridErrors[m]] as const),
+      ['three.js', f.threeGridErrors],
+    ];
+    for (const [what, errors] of grids)
+      if (errors.length !== 2) problems.push(`node figures, ${f.backend}, ${what}: ${errors.length} error grids, not 2`);
+  }
+  return problems;
+}
