@@ -1,9 +1,10 @@
 /**
  * `tsx scripts/inParallel.ts <npm script>...`: runs the named npm scripts at once, each one's
  * output printed whole when it ends (so that the outputs do not interleave), and exits with the
- * first non-zero status among them (0 if all pass). `npm test` runs its checks that time nothing
- * this way: the type check, ESLint and Prettier each keep one core busy, so on a 2-core machine
- * they and the packed library's test fill both cores instead of one (docs/testing.md).
+ * first non-zero status among them (0 if all pass). `npm test` runs its checks that are not tests
+ * this way (`npm run checks`): the type check, ESLint and Prettier each keep one core busy, so on
+ * a 2-core machine they fill both cores instead of one (docs/testing.md). Tests, which wait for
+ * the machine with time limits, run one stage at a time.
  */
 import { spawn } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
