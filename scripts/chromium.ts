@@ -50,8 +50,11 @@ export function glBackendName(): GlBackendName {
   return process.exit(2);
 }
 
-const found = (executablePath: string | undefined): ChromiumSearch => ({
-  found: { ...(executablePath ? { executablePath } : {}), args: [...GL_BACKENDS[glBackendName()].args] },
+/** The backend TFC_GL does not name: the browser tests' `@both-backends` tests run on it too (docs/testing.md). */
+export const otherGlBackend = (): GlBackendName => GL_BACKEND_NAMES.find((n) => n !== glBackendName())!;
+
+const found = (executablePath: string | undefined, backend: GlBackendName): ChromiumSearch => ({
+  found: { ...(executablePath ? { executablePath } : {}), args: [...GL_BACKENDS[backend].args] },
 });
 const missing = (why: string): ChromiumSearch => ({
   missing: `${why} Install one (Debian: apt-get install -y chromium; elsewhere: npx playwright install chromium) or set CHROME_PATH.`,
@@ -60,13 +63,13 @@ const missing = (why: string): ChromiumSearch => ({
 /**
  * The Chromium that the browser tests, the benchmark and the render command launch: CHROME_PATH
  * if set, else Debian's /usr/bin/chromium, else the browser Playwright downloads with
- * `npx playwright install chromium`; with the flags of the backend TFC_GL names.
+ * `npx playwright install chromium`; with the flags of `backend` (the one TFC_GL names unless given).
  */
-export function findChromium(): ChromiumSearch {
+export function findChromium(backend: GlBackendName = glBackendName()): ChromiumSearch {
   const fromEnv = process.env.CHROME_PATH;
-  if (fromEnv) return existsSync(fromEnv) ? found(fromEnv) : missing(`CHROME_PATH=${fromEnv} does not exist.`);
-  if (existsSync('/usr/bin/chromium')) return found('/usr/bin/chromium');
-  if (existsSync(chromium.executablePath())) return found(undefined);
+  if (fromEnv) return existsSync(fromEnv) ? found(fromEnv, backend) : missing(`CHROME_PATH=${fromEnv} does not exist.`);
+  if (existsSync('/usr/bin/chromium')) return found('/usr/bin/chromium', backend);
+  if (existsSync(chromium.executablePath())) return found(undefined, backend);
   return missing('no Chromium found.');
 }
 
@@ -80,9 +83,9 @@ export const WEBGPU_ARGS = ['--enable-unsafe-webgpu', '--enable-features=Vulkan,
 /** Launch options for the WebGPU tests: the Chromium found, with WEBGPU_ARGS for flags. */
 export const webgpuLaunchOptions = (): ChromiumLaunchOptions => ({ ...chromiumLaunchOptions(), args: [...WEBGPU_ARGS] });
 
-/** Launch options for the tests and the benchmark: with no Chromium, the run stops (exit 1) with the line saying how to get one. */
-export function chromiumLaunchOptions(): ChromiumLaunchOptions {
-  const search = findChromium();
+/** Launch options for the tests and the benchmark on `backend`: with no Chromium, the run stops (exit 1) with the line saying how to get one. */
+export function chromiumLaunchOptions(backend: GlBackendName = glBackendName()): ChromiumLaunchOptions {
+  const search = findChromium(backend);
   if ('found' in search) return search.found;
   console.error(search.missing);
   return process.exit(1);
@@ -104,15 +107,14 @@ export async function webgl2Renderer(browser: Browser): Promise<string> {
 }
 
 /**
- * The renderer `browser` gives, checked against the backend TFC_GL names: a browser that fell
- * back to another backend, or to no WebGL2 at all, throws. Returns one line for a report.
+ * The renderer `browser` gives, checked against the backend `name` (the one TFC_GL names unless
+ * given): a browser that fell back to another backend, or to no WebGL2 at all, throws. Returns one line for a report.
  */
-export async function checkedRenderer(browser: Browser): Promise<string> {
-  const name = glBackendName();
+export async function checkedRenderer(browser: Browser, name: GlBackendName = glBackendName()): Promise<string> {
   const renderer = await webgl2Renderer(browser);
   if (!renderer.includes(GL_BACKENDS[name].renderer)) {
     throw new Error(
-      `TFC_GL=${name} asks for a WebGL2 renderer with "${GL_BACKENDS[name].renderer}" in its name; Chromium gave "${renderer}".`,
+      `The WebGL backend ${name} asks for a WebGL2 renderer with "${GL_BACKENDS[name].renderer}" in its name; Chromium gave "${renderer}".`,
     );
   }
   return `WebGL2 backend ${name}: ${renderer}`;

@@ -81,8 +81,9 @@ export const test = base.extend<{ parityPage: Page; demoPage: Page }, { sharedPa
 });
 
 /**
- * The tag of the tests CI also runs on the backend it does not choose (`npm run test:e2e:other-backend`,
- * which greps for it): the table, the flow, the material and a lost context, so that neither backend rots.
+ * The tag of the tests also run on the WebGL backend TFC_GL does not name (the `webgl-other`
+ * project of playwright.config.ts, alone: `npm run test:e2e:other-backend`): the table, the flow,
+ * the material and a lost context, so that neither backend rots.
  */
 export const BOTH_BACKENDS = '@both-backends';
 
