@@ -10,6 +10,7 @@ import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import type { FilmQuality } from '../../src/settings/filmQuality.ts';
 import { webgpuLaunchOptions } from '../chromium.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
+import { loadOnBackend } from '../harness/webgpuAdapter.ts';
 import { type GridError, filmsGridError, gridError } from './errorGrids.ts';
 import { NODE_BACKENDS, NODE_GRID_MODES, NODE_OPTION_CHANGES, type NodeBackend, type NodeMaterialName } from './nodeMaterials.ts';
 import { openPage } from './openPage.ts';
@@ -54,14 +55,15 @@ export interface NodeFigures extends NodeFiguresPlan {
   readonly backends: NodeBackendFigures[];
 }
 
-/** Opens the page on `backend`; a fresh browser's first WebGPU page may find no adapter, so it is loaded again then. */
+/** Opens the page on `backend` (loadOnBackend: loaded again where a fresh browser's WebGPU found no adapter). */
 async function openOn(browser: Browser, baseUrl: string, backend: NodeBackend, how: NodeFiguresPlan) {
   const page = await openPage(browser, { viewport: { width: how.width, height: how.height }, deviceScaleFactor: 1 });
-  for (let attempt = 0; attempt < 3; attempt++) {
+  const started = await loadOnBackend(backend, async () => {
     await page.goto(`${baseUrl}/scripts/bench/page/nodeBench.html`);
     await page.waitForSelector('body[data-ready="yes"]');
-    if ((await page.evaluate((b) => window.nodeBench!.start(b), backend)) === backend) return page;
-  }
+    return page.evaluate((b) => window.nodeBench!.start(b), backend);
+  });
+  if (started) return page;
   await page.close();
   throw new Error(`WebGPURenderer found no ${backend} backend`);
 }

@@ -1,4 +1,5 @@
 import { expect, test } from '@playwright/test';
+import { loadOnBackend } from '../../scripts/harness/webgpuAdapter.ts';
 import { watchProblems } from './pageWatch.ts';
 import {
   MAX_CODE_DIFFERENCE,
@@ -44,11 +45,11 @@ test('the materials page on WebGPURenderer (?renderer=webgpu) draws both materia
   // Every material's program and the environment's PMREM compiled on SwiftShader's Vulkan.
   test.setTimeout(300_000);
   const problems = watchProblems(page);
-  for (let attempt = 0; attempt < 3; attempt++) {
+  await loadOnBackend('WebGPU', async () => {
     await page.goto('/materials.html?renderer=webgpu');
     await expect(page.locator('#readout')).toHaveText(/WebGPURenderer \((WebGPU|WebGL2)\)/);
-    if ((await page.locator('#readout').textContent())!.includes('(WebGPU)')) break;
-  }
+    return /\((WebGPU|WebGL2)\)/.exec((await page.locator('#readout').textContent())!)![1]!;
+  });
   await expect(page.locator('#readout')).toHaveText('WebGPURenderer (WebGPU): the probe reads pixels on WebGLRenderer only.');
   await expect(page.locator('body')).toHaveAttribute('data-frames', /[3-9]|\d\d/);
   expect(problems.filter((p) => !p.includes('WebGPU is not available'))).toEqual([]);

@@ -15,6 +15,7 @@ import { layersXyz } from '../../src/physics/stackColor.ts';
 import { filmXyz } from '../../src/physics/spectralIntegration.ts';
 import { type SpectralIridescenceOptions } from '../../src/meshMaterial/spectralIridescenceOptions.ts';
 import { MAX_DELTA_E00_FIXED, MAX_DELTA_E00_STRESS } from '../tolerances.ts';
+import { loadOnBackend } from '../../scripts/harness/webgpuAdapter.ts';
 import { type FilmCase } from './harness/filmCaseScene.ts';
 import { type Group, compare, fixedDomain, perTable, stressDomain, toParity } from './parityGrids.ts';
 import { MAX_CODE_DIFFERENCE, worstCodeDifference, xyzTo8 } from './referenceColor.ts';
@@ -58,14 +59,14 @@ export function caseReference8([c, o]: readonly [FilmCase, SpectralIridescenceOp
   return xyzTo8(filmXyz({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm, nInside }, color), XYZ_TO_LINEAR_SRGB);
 }
 
-/** Opens the harness on WebGPURenderer's `backend`; a fresh browser's first WebGPU page may find no adapter, so it is loaded again then. */
+/** Opens the harness on WebGPURenderer's `backend` (loadOnBackend: loaded again where a fresh browser's WebGPU found no adapter). */
 export async function openHarness(page: Page, backend: 'webgpu' | 'webgl'): Promise<void> {
-  for (let attempt = 0; attempt < 3; attempt++) {
+  const started = await loadOnBackend(backend, async () => {
     await page.goto('/tests/e2e/harness/webgpu.html');
     await expect(page.locator('body')).toHaveAttribute('data-ready', 'yes');
-    if ((await page.evaluate((b) => window.webgpuHarness!.start(b), backend)) === backend) return;
-  }
-  throw new Error(`WebGPURenderer found no ${backend} backend`);
+    return page.evaluate((b) => window.webgpuHarness!.start(b), backend);
+  });
+  if (!started) throw new Error(`WebGPURenderer found no ${backend} backend`);
 }
 
 /**
