@@ -13,8 +13,7 @@ import { methodReads } from '../methods/methods.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { restoresOf } from './contextRestores.ts';
-import { type MaterialFilmSettings, filmDefinesOf, filmKeyOf, filmSettingsOf, metalOf, metalStateOf } from './materialFilm.ts';
-import { clampWithWarning } from './materialParameters.ts';
+import { type MaterialFilmSettings, drawnFilmSettings, filmDefinesOf, filmKeyOf, followMetal, metalOf } from './materialFilm.ts';
 import { spectralFragmentShader } from './spectralFragmentShader.ts';
 import { type SpectralFilm, warnOnce } from './spectralFilm.ts';
 
@@ -33,14 +32,6 @@ const withUniforms = (film: SpectralFilm): SpectralFilm & { uniforms: NonNullabl
   film.uniforms ??= { ...filmColorUniforms(), ...filmStackUniforms() };
   return film as SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> };
 };
-
-/** The film's settings as drawn: a parameter out of its domain clamped, with a warning (never thrown inside render). */
-const drawnSettings = (film: SpectralFilm, m: MeshPhysicalMaterial): MaterialFilmSettings =>
-  filmSettingsOf(
-    m,
-    film.options,
-    clampWithWarning((name, message) => warnOnce(film, name, message)),
-  );
 
 /**
  * The table the film `s` is drawn from, held for `film` (shared with the materials of the same
@@ -63,8 +54,7 @@ function holdTable(film: SpectralFilm, s: MaterialFilmSettings): { table: FilmTa
  */
 function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRenderer): void {
   const o = film.options;
-  const s = drawnSettings(film, m);
-  if (s.mode !== o.mode) warnOnce(film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
+  const s = drawnFilmSettings(m, film);
   const held = holdTable(film, s);
   if (held) {
     const restores = restoresOf(renderer);
@@ -83,7 +73,7 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
  */
 export async function prepareFilm(m: MeshPhysicalMaterial, film: SpectralFilm): Promise<void> {
   if (!(m.iridescence > 0)) return;
-  const s = drawnSettings(film, m);
+  const s = drawnFilmSettings(m, film);
   const held = holdTable(film, s);
   if (held) await held.table.inputsWhenReady(s, held.maxThicknessNm);
   if (methodReads(s.mode, 'spectralTransform')) await spectralTransformWhenReady(s);
@@ -106,10 +96,7 @@ export function compileFilm(m: MeshPhysicalMaterial, film: SpectralFilm, shader:
  * is built before the draw, so the frame shows the settled film.
  */
 export function drawFilm(m: MeshPhysicalMaterial, film: SpectralFilm, renderer: WebGLRenderer): void {
-  // metalness and color are uniforms to three: a metal's coming or going (or its k reaching 0) needs a new program three would not make.
-  const state = metalStateOf(m, film.options);
-  if (film.drawnMetal !== null && film.drawnMetal !== state) m.needsUpdate = true;
-  film.drawnMetal = state;
+  followMetal(m, film);
   if (m.iridescence > 0) update(film, m, renderer);
 }
 

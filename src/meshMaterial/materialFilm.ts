@@ -7,7 +7,8 @@ import { filmColorDefines } from '../film/filmColor.ts';
 import { type FilmOptics } from '../settings/filmSettings.ts';
 import { drawnFilmMethod } from '../settings/drawnFilm.ts';
 import { type CheckedOptions } from './spectralIridescenceOptions.ts';
-import { type Limit, filmParametersOf, onColourMetal } from './materialParameters.ts';
+import { type Limit, clampWithWarning, filmParametersOf, onColourMetal } from './materialParameters.ts';
+import { type SpectralFilm, warnOnce } from './spectralFilm.ts';
 
 /** The film a material draws: its optics, and the thickness its table reaches. */
 export type MaterialFilmSettings = FilmOptics & { readonly thicknessNm: number };
@@ -82,3 +83,29 @@ export function metalStateOf(m: MeshPhysicalMaterial, o: CheckedOptions): string
 /** The film's part of the program key: the defines, and which lobe is spectral. */
 export const filmKeyOf = (m: MeshPhysicalMaterial, o: CheckedOptions): string =>
   `${JSON.stringify(filmDefinesOf(m, o))}${metalStateOf(m, o)}`;
+
+/**
+ * The film as both entries draw it now, inside three's render (which must not throw): a parameter
+ * out of its domain clamped, with a warning; where the method has no form for a stack, the one
+ * drawn in its place, said once.
+ */
+export function drawnFilmSettings(m: MeshPhysicalMaterial, film: SpectralFilm): MaterialFilmSettings {
+  const o = film.options;
+  const s = filmSettingsOf(
+    m,
+    o,
+    clampWithWarning((name, message) => warnOnce(film, name, message)),
+  );
+  if (s.mode !== o.mode) warnOnce(film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
+  return s;
+}
+
+/**
+ * Follows the material's metal from draw to draw: metalness and colour are uniforms to three, so a
+ * metal's coming or going (or its k reaching 0) moves the version for a program three would not make.
+ */
+export function followMetal(m: MeshPhysicalMaterial, film: SpectralFilm): void {
+  const state = metalStateOf(m, film.options);
+  if (film.drawnMetal !== null && film.drawnMetal !== state) m.needsUpdate = true;
+  film.drawnMetal = state;
+}

@@ -12,8 +12,15 @@ import { spectralBinDefines } from '../film/spectralBinsTexture.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { filmFill } from '../methods/filmFills.ts';
 import { methodReads } from '../methods/methods.ts';
-import { type MaterialFilmSettings, filmKeyOf, filmSettingsOf, metalOf, metalStateOf } from '../meshMaterial/materialFilm.ts';
-import { clampWithWarning } from '../meshMaterial/materialParameters.ts';
+import {
+  type MaterialFilmSettings,
+  drawnFilmSettings,
+  filmKeyOf,
+  filmSettingsOf,
+  followMetal,
+  metalOf,
+  metalStateOf,
+} from '../meshMaterial/materialFilm.ts';
 import { type SpectralFilm, filmOf, warnOnce } from '../meshMaterial/spectralFilm.ts';
 import { type CheckedOptions } from '../meshMaterial/spectralIridescenceOptions.ts';
 import { type FloatNode } from './complex.ts';
@@ -31,14 +38,6 @@ export interface NodeFilm {
   readonly inputs: FilmInputs;
   table: NodeFilmTable | null;
 }
-
-/** The film as drawn now: its settings, clamped to their domains with a warning. */
-const drawnSettings = (f: NodeFilm, m: PhysicalMaterial): MaterialFilmSettings =>
-  filmSettingsOf(
-    physical(m),
-    f.film.options,
-    clampWithWarning((name, message) => warnOnce(f.film, name, message)),
-  );
 
 /**
  * Whether the film is drawn from the table: every method that does not integrate the bins per
@@ -74,13 +73,10 @@ const sharedNodes = (f: NodeFilm, s: MaterialFilmSettings): Omit<FilmNodes, 'bin
 /** Brings the film's uniforms, inputs and table up to the material, the table drawn with `renderer`. */
 export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Renderer | null): void {
   const o = f.film.options;
-  const s = drawnSettings(f, m);
-  if (s.mode !== o.mode) warnOnce(f.film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
+  const s = drawnFilmSettings(physical(m), f.film);
   if (methodReads(s.mode, 'spectralTransform'))
     warnOnce(f.film, 'series', `mode ${s.mode} is drawn from the table on WebGPURenderer (its series per fragment is WebGLRenderer's)`);
-  const state = metalStateOf(physical(m), o);
-  if (f.film.drawnMetal !== null && f.film.drawnMetal !== state) m.needsUpdate = true;
-  f.film.drawnMetal = state;
+  followMetal(physical(m), f.film);
   // The entry makes the film's uniforms with the film (spectralNodeMaterial.ts).
   const film = f.film as SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> };
   updateFilmColorUniforms(film, { ...s, mode: 'exact' }, o.quality, null);
@@ -140,7 +136,7 @@ export function setupLightingModel(this: MeshPhysicalNodeMaterial, builder: Node
   const m = builder.material as PhysicalMaterial;
   const f = nodeFilms.get(m);
   if (!f || !filmOf(m) || !three.iridescence) return three;
-  const s = drawnSettings(f, m);
+  const s = drawnFilmSettings(physical(m), f.film);
   const table = drawsTable(m, s) ? tableOf(f) : null;
   const filmRgb = (thicknessNm: FloatNode, cosIncidence: FloatNode) => {
     const xyz = table ? table.lookup(thicknessNm, cosIncidence) : exactXyz(f, m, s, thicknessNm, cosIncidence);
