@@ -24,6 +24,15 @@ export interface SpectralFilm {
   programKey?: (m: MeshPhysicalMaterial, o: CheckedOptions) => string;
 }
 
+/** A film record with `options`, before its entry's drawing gives it uniforms, a table and a program key. */
+export const newFilm = (options: CheckedOptions): SpectralFilm => ({
+  options,
+  uniforms: null,
+  table: null,
+  warned: new Set(),
+  drawnMetal: null,
+});
+
 const films = new WeakMap<Material, SpectralFilm>();
 
 /** The film of a spectral material (undefined for any other). */

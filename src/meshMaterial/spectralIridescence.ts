@@ -10,7 +10,16 @@ import { chainHooks } from './materialHooks.ts';
 import { filmParametersOf, refuse } from './materialParameters.ts';
 import { NODE_RENDERER_MESSAGE, warnWhereDrawnAsNodes } from './nodeRendererWarning.ts';
 import { loadDrawing, loadedDrawing } from './spectralDrawing.ts';
-import { type SpectralFilm, addFilm, copySpectralFilm, defineOptionProperties, filmOf, setOptions, warnOnce } from './spectralFilm.ts';
+import {
+  type SpectralFilm,
+  addFilm,
+  copySpectralFilm,
+  defineOptionProperties,
+  filmOf,
+  newFilm,
+  setOptions,
+  warnOnce,
+} from './spectralFilm.ts';
 import { spectralMaterialJson } from './spectralIridescenceJson.ts';
 import { materialsUnder } from './materialsUnder.ts';
 
@@ -64,7 +73,7 @@ function patch<M extends MeshPhysicalMaterial>(m: M, options: CheckedOptions): M
     setOptions(m, known, options);
     return m as M & SpectralIridescenceProperties;
   }
-  const film: SpectralFilm = { options, uniforms: null, table: null, warned: new Set(), drawnMetal: null };
+  const film = newFilm(options);
   addFilm(m, film);
   hook(m, film);
   warnWhereDrawnAsNodes(m, () => warnOnce(film, 'node renderer', NODE_RENDERER_MESSAGE));

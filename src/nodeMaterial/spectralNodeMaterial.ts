@@ -8,7 +8,7 @@ import { MeshPhysicalNodeMaterial, type NodeBuilder, type PhysicalLightingModel 
 import { ParameterError } from '../input/validate.ts';
 import { filmParametersOf, refuse } from '../meshMaterial/materialParameters.ts';
 import { materialsUnder } from '../meshMaterial/materialsUnder.ts';
-import { type SpectralFilm, addFilm, defineOptionProperties, filmOf, setOptions } from '../meshMaterial/spectralFilm.ts';
+import { type SpectralFilm, addFilm, defineOptionProperties, filmOf, newFilm, setOptions } from '../meshMaterial/spectralFilm.ts';
 import {
   type CheckedOptions,
   type SpectralIridescenceOptions,
@@ -51,7 +51,7 @@ function patch<M extends PhysicalMaterial>(m: M, options: CheckedOptions): M & S
     setOptions(physical(m), known, options);
     return m as M & SpectralIridescenceProperties;
   }
-  const film: SpectralFilm = { options, uniforms: null, table: null, warned: new Set(), drawnMetal: null };
+  const film = newFilm(options);
   addFilm(physical(m), film);
   hook(m, film);
   defineOptionProperties(m);
