@@ -79,6 +79,7 @@ async function renderGroup(renderer: WebGPURenderer, g: ParityGroup, mode: NodeP
     nOutside,
     nFilm: inputs.nFilm,
     nInside: inputs.nInside,
+    lines: inputs.lines,
     knots: inputs.knots,
     stack: { layers: inputs.layers, count: inputs.layerCount },
   };

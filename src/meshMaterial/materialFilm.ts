@@ -6,6 +6,7 @@ import { type SampledIndex } from '../physics/sampledIndex.ts';
 import { filmColorDefines } from '../film/filmColor.ts';
 import { type FilmOptics } from '../settings/filmSettings.ts';
 import { drawnFilmMethod } from '../settings/drawnFilm.ts';
+import type { MessageKey } from '../i18n/en.ts';
 import { type CheckedOptions } from './spectralIridescenceOptions.ts';
 import { type Limit, clampWithWarning, filmParametersOf, onColourMetal } from './materialParameters.ts';
 import { type SpectralFilm, warnOnce } from './spectralFilm.ts';
@@ -37,9 +38,18 @@ export function filmSettingsOf(m: MeshPhysicalMaterial, o: CheckedOptions, limit
   };
 }
 
-/** The method drawn: the option's, or where it has no form for the film (a stack in `fourier`) the one drawn in its place (drawnFilmMethod). */
-const drawnModeOf = (o: CheckedOptions): CheckedOptions['mode'] =>
-  drawnFilmMethod({ ...o, nFilm: o.film ?? SOAP_FILM_IN_AIR.nFilm, nInside: o.base ?? SOAP_FILM_IN_AIR.nInside }, 'material').film.mode;
+/**
+ * The method drawn and why: the option's, or where it has no form for the film (a stack in
+ * `fourier`) or cannot hold the light (a line source in a table) the one drawn in its place (drawnFilmMethod).
+ */
+const drawnMethodOf = (o: CheckedOptions) =>
+  drawnFilmMethod({ ...o, nFilm: o.film ?? SOAP_FILM_IN_AIR.nFilm, nInside: o.base ?? SOAP_FILM_IN_AIR.nInside }, 'material');
+
+const drawnModeOf = (o: CheckedOptions): CheckedOptions['mode'] => drawnMethodOf(o).film.mode;
+
+/** Why a method is drawn in another's place, in the material's console warning (the entries load no message catalogue). */
+const insteadReason = (key: MessageKey): string =>
+  key === 'app.linesAsExact' ? "a table's grid cannot hold a line source's fringes" : 'it has no closed form for a stack of films';
 
 /** Each material's metal from its colours, and the colours it was made from. */
 const metals = new WeakMap<MeshPhysicalMaterial, { readonly key: string; readonly medium: SampledIndex }>();
@@ -86,8 +96,8 @@ export const filmKeyOf = (m: MeshPhysicalMaterial, o: CheckedOptions): string =>
 
 /**
  * The film as both entries draw it now, inside three's render (which must not throw): a parameter
- * out of its domain clamped, with a warning; where the method has no form for a stack, the one
- * drawn in its place, said once.
+ * out of its domain clamped, with a warning; where the method cannot draw the film or its light,
+ * the one drawn in its place, said once.
  */
 export function drawnFilmSettings(m: MeshPhysicalMaterial, film: SpectralFilm): MaterialFilmSettings {
   const o = film.options;
@@ -96,7 +106,8 @@ export function drawnFilmSettings(m: MeshPhysicalMaterial, film: SpectralFilm): 
     o,
     clampWithWarning((name, message) => warnOnce(film, name, message)),
   );
-  if (s.mode !== o.mode) warnOnce(film, 'layers', `mode ${o.mode} has no closed form for a stack of films: drawn with mode ${s.mode}`);
+  const { notice } = drawnMethodOf(o);
+  if (notice) warnOnce(film, notice.key, `mode ${o.mode}: ${insteadReason(notice.key)}; drawn with mode ${s.mode}`);
   return s;
 }
 

@@ -4,8 +4,8 @@
  * node twin of shaders/physics/binnedIntegration.glsl (src/physics/binnedIntegration.ts); the bin
  * weights (∫_bin I_in x̄, ȳ, z̄ / k) are src/film/spectralBinsTexture.ts's texture.
  */
-import { Loop, float, int, ivec2, length, select, textureLoad, vec2, vec3 } from 'three/tsl';
-import { type Node, type TextureNode } from 'three/webgpu';
+import { If, Loop, clamp, float, int, ivec2, length, select, textureLoad, vec2, vec3 } from 'three/tsl';
+import { type Node, type TextureNode, type UniformArrayNode, type UniformNode } from 'three/webgpu';
 import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
 import { type FloatNode } from './complex.ts';
 import {
@@ -25,6 +25,15 @@ export interface SpectralBinNodes {
   readonly weights: TextureNode;
 }
 
+/**
+ * A line source's lines (src/physics/lightLines.ts): `count` of them (0: the light has a spectrum
+ * and the bins integrate it), each (p x̄, ȳ, z̄(λ)/k, λ in nm); spectralBinsTexture.ts sets both.
+ */
+export interface LightLineNodes {
+  readonly values: UniformArrayNode<'vec4'>;
+  readonly count: UniformNode<'int', number>;
+}
+
 /** One bin's wavelengths: its ends and centre, and its weight. */
 export interface Bin {
   readonly index: Node<'int'>;
@@ -33,15 +42,28 @@ export interface Bin {
   readonly center: FloatNode;
 }
 
-/** Σ over the visited bins of `reflectance(bin)` × the bin's weight. */
-export function binSum(bins: SpectralBinNodes, reflectance: (bin: Bin) => FloatNode): Node<'vec3'> {
+/**
+ * Σ over the visited bins of `reflectance(bin)` × the bin's weight; under a line source, Σ over its
+ * lines instead, each a bin of no width [λ, λ] (its phase window none) in the bin it falls in (whose
+ * index a stack's texture reads) times the line's weight, as binnedIntegration.glsl sums them.
+ */
+export function binSum(bins: SpectralBinNodes, lines: LightLineNodes, reflectance: (bin: Bin) => FloatNode): Node<'vec3'> {
   const width = (LAMBDA_MAX_NM - LAMBDA_MIN_NM) / bins.count;
   const xyz = vec3(0, 0, 0).toVar();
-  Loop({ start: int(bins.first), end: int(bins.end), type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
-    const low = float(i).mul(width).add(LAMBDA_MIN_NM).toVar();
-    const high = low.add(width);
-    const bin = { index: i, low, high, center: low.add(width / 2) };
-    xyz.addAssign(textureLoad(bins.weights, ivec2(i, int(0))).xyz.mul(reflectance(bin)));
+  If(lines.count.greaterThan(0), () => {
+    Loop({ start: int(0), end: lines.count, type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
+      const line = lines.values.element(i);
+      const nm = line.w.toVar();
+      const index = int(clamp(nm.sub(LAMBDA_MIN_NM).div(width), 0, bins.count - 1));
+      xyz.addAssign(line.xyz.mul(reflectance({ index, low: nm, high: nm, center: nm })));
+    });
+  }).Else(() => {
+    Loop({ start: int(bins.first), end: int(bins.end), type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
+      const low = float(i).mul(width).add(LAMBDA_MIN_NM).toVar();
+      const high = low.add(width);
+      const bin = { index: i, low, high, center: low.add(width / 2) };
+      xyz.addAssign(textureLoad(bins.weights, ivec2(i, int(0))).xyz.mul(reflectance(bin)));
+    });
   });
   return xyz;
 }
@@ -67,9 +89,14 @@ export function binReflectance(o: FilmOptics, centerNm: FloatNode, phase: FloatN
  * path at its ends, widened (in quadrature) by extraHalfWidthPerInvNm × (nm / λ), which the table
  * pass uses to average over a cell's thickness range.
  */
-export function binnedXyz(bins: SpectralBinNodes, o: FilmOptics, extraHalfWidthPerInvNm: FloatNode = float(0)): Node<'vec3'> {
+export function binnedXyz(
+  bins: SpectralBinNodes,
+  lines: LightLineNodes,
+  o: FilmOptics,
+  extraHalfWidthPerInvNm: FloatNode = float(0),
+): Node<'vec3'> {
   const path = o.opticalPathNm;
-  return binSum(bins, ({ low, high, center }) => {
+  return binSum(bins, lines, ({ low, high, center }) => {
     const inverseLow = float(1).div(low);
     const inverseHigh = float(1).div(high);
     const phase = path.x.mul(Math.PI).mul(inverseLow.add(inverseHigh));

@@ -8,19 +8,20 @@ import { vec3 } from 'three/tsl';
 import { type Node, type TextureNode } from 'three/webgpu';
 import { type FilmFill } from '../methods/filmFills.ts';
 import { XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
-import { type SpectralBinNodes, binReflectance, binSum, binnedXyz } from './binnedIntegration.ts';
+import { type LightLineNodes, type SpectralBinNodes, binReflectance, binSum, binnedXyz } from './binnedIntegration.ts';
 import { type ComplexNode, type FloatNode } from './complex.ts';
 import { type Channels, filmOptics, filmPathPerNm } from './filmReflectance.ts';
 import { mediaAt } from './medium.ts';
 import { type StackNodes, layersReflectance } from './transferMatrix.ts';
 
-/** What the film's nodes read: its channels, its bins, its media (at the D line, their knots, or the stack). */
+/** What the film's nodes read: its channels, its bins or a line source's lines, its media (at the D line, their knots, or the stack). */
 export interface FilmNodes {
   readonly fill: FilmFill;
   /** n_a, real: the light comes from a transparent medium */
   readonly nOutside: FloatNode;
   readonly channels: Channels;
   readonly bins: SpectralBinNodes;
+  readonly lines: LightLineNodes;
   readonly nFilm: ComplexNode;
   readonly nInside: ComplexNode;
   readonly knots: TextureNode;
@@ -30,7 +31,7 @@ export interface FilmNodes {
 /** Each bin's Fresnel terms at ñ of its centre, its phase window from the optical path at its two ends (dispersiveBinnedXyz). */
 function dispersiveXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: FloatNode): Node<'vec3'> {
   const pathPerNm = (lambdaNm: FloatNode) => filmPathPerNm(mediaAt(f.knots, lambdaNm).film, f.nOutside, cosIncidence);
-  return binSum(f.bins, ({ low, high, center }) => {
+  return binSum(f.bins, f.lines, ({ low, high, center }) => {
     const media = mediaAt(f.knots, center);
     const optics = filmOptics(f.channels, f.nOutside, media.film, media.inside, thicknessNm, cosIncidence);
     const lowPhase = pathPerNm(low).mul(thicknessNm).div(low).toVar();
@@ -42,11 +43,11 @@ function dispersiveXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: Float
 /** The film's XYZ at a thickness and cos θ_i, light from outside. */
 export function filmXyz(f: FilmNodes, thicknessNm: FloatNode, cosIncidence: FloatNode): Node<'vec3'> {
   if (f.fill === 'stack')
-    return binSum(f.bins, ({ index, center }) =>
+    return binSum(f.bins, f.lines, ({ index, center }) =>
       layersReflectance(f.stack, f.channels, index, center, f.nOutside, thicknessNm, cosIncidence),
     );
   if (f.fill === 'dispersive') return dispersiveXyz(f, thicknessNm, cosIncidence);
-  return binnedXyz(f.bins, filmOptics(f.channels, f.nOutside, f.nFilm, f.nInside, thicknessNm, cosIncidence));
+  return binnedXyz(f.bins, f.lines, filmOptics(f.channels, f.nOutside, f.nFilm, f.nInside, thicknessNm, cosIncidence));
 }
 
 /** XYZ → linear sRGB, three's working space (eq 19), row by row. */

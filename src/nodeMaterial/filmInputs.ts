@@ -1,12 +1,14 @@
 /**
- * What the node film reads from the CPU: the bin weights, the media's knots, the stack, the media
+ * What the node film reads from the CPU: the bin weights or a line source's lines, the media's knots, the stack, the media
  * at the D line, as TSL textures and uniforms of one material, brought up to its film's uniforms
  * (src/film/filmColor.ts's, the WebGL material's: one source for both) before each draw.
  */
-import { DataTexture, FloatType, NearestFilter, RGBAFormat, Vector2 } from 'three';
-import { uniform, uniformTexture } from 'three/tsl';
+import { DataTexture, FloatType, NearestFilter, RGBAFormat, Vector2, Vector4 } from 'three';
+import { uniform, uniformArray, uniformTexture } from 'three/tsl';
 import { type TextureNode, type UniformNode } from 'three/webgpu';
 import { MEDIA_KNOT, MEDIA_KNOT_DEFINES } from '../film/filmMedia.ts';
+import { MAX_LIGHT_LINES } from '../physics/lightLines.ts';
+import { type LightLineNodes } from './binnedIntegration.ts';
 
 /** A float RGBA texture of `width` × 1 texels (a placeholder until the film's own is bound). */
 export function floatRow(width: number, data = new Float32Array(4 * width)): DataTexture {
@@ -18,6 +20,7 @@ export function floatRow(width: number, data = new Float32Array(4 * width)): Dat
 
 export interface FilmInputs {
   readonly weights: TextureNode;
+  readonly lines: LightLineNodes;
   readonly knots: TextureNode;
   readonly layers: TextureNode;
   readonly layerCount: UniformNode<'int', number>;
@@ -27,6 +30,13 @@ export interface FilmInputs {
 
 export const filmInputs = (): FilmInputs => ({
   weights: uniformTexture(floatRow(1)),
+  lines: {
+    values: uniformArray(
+      Array.from({ length: MAX_LIGHT_LINES }, () => new Vector4()),
+      'vec4',
+    ),
+    count: uniform(0, 'int'),
+  },
   knots: uniformTexture(floatRow(MEDIA_KNOT.texels * MEDIA_KNOT_DEFINES.TFC_MEDIA_KNOTS!)),
   layers: uniformTexture(floatRow(1)),
   layerCount: uniform(0, 'int'),
@@ -40,6 +50,8 @@ type Uniforms = Record<string, { value: unknown }>;
 export function setFilmInputs(i: FilmInputs, u: Uniforms): void {
   const bins = u.uSpectralBins!.value as DataTexture | null;
   if (bins) i.weights.value = bins;
+  (u.uLightLines!.value as Vector4[]).forEach((line, k) => (i.lines.values.array[k] as Vector4).copy(line));
+  i.lines.count.value = u.uLightLineCount!.value as number;
   const layers = u.uFilmLayers!.value as DataTexture | null;
   if (layers) i.layers.value = layers;
   i.layerCount.value = u.uFilmLayerCount!.value as number;

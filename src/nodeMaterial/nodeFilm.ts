@@ -66,6 +66,7 @@ const sharedNodes = (f: NodeFilm, s: MaterialFilmSettings): Omit<FilmNodes, 'bin
   fill: filmFill(s),
   // three's film lies in air
   nOutside: float(1),
+  lines: f.inputs.lines,
   knots: f.inputs.knots,
   stack: { layers: f.inputs.layers, count: f.inputs.layerCount },
 });

@@ -1,5 +1,5 @@
 import { type NumberDomain, isInDomain, parseDecimal, rejectValue } from '../input/validate.ts';
-import { LINE_EXPECTED, LINE_PREFIX, SODIUM_D_LINES, type SpectralLine, parseLineNm } from './lightLines.ts';
+import { LINE_DOMAIN_NM, LINE_EXPECTED, LINE_PREFIX, SODIUM_D_LINES, type SpectralLine, parseLineNm } from './lightLines.ts';
 
 /**
  * The lights by name, and how each is checked and written, apart from their spectra
@@ -79,16 +79,17 @@ function namedOrLine(text: string): IlluminantSpec | null {
 
 /**
  * An illuminant as a JSON value (cases files, the material's options): a name, `line:NM`, or
- * exactly `{ daylightCct: K }` in the CCT's domain; anything else is a ParameterError naming `field`.
+ * exactly `{ daylightCct: K }` or `{ lineNm: NM }` (the IlluminantSpec it reads as) in its domain;
+ * anything else is a ParameterError naming `field`.
  */
 export function illuminantFromJson(value: unknown, field = 'illuminant'): IlluminantSpec {
   const named = typeof value === 'string' ? namedOrLine(value) : null;
   if (named !== null) return named;
   const isObject = typeof value === 'object' && value !== null && !Array.isArray(value);
-  if (isObject && Object.keys(value).join() === 'daylightCct') {
-    const cct = (value as { daylightCct: unknown }).daylightCct;
-    if (isInDomain(cct, DAYLIGHT_CCT_DOMAIN_K)) return { daylightCct: cct };
-  }
+  const only = isObject ? Object.keys(value).join() : '';
+  const number = isObject ? (value as Record<string, unknown>)[only] : undefined;
+  if (only === 'daylightCct' && isInDomain(number, DAYLIGHT_CCT_DOMAIN_K)) return { daylightCct: number };
+  if (only === 'lineNm' && isInDomain(number, LINE_DOMAIN_NM)) return { lineNm: number };
   return rejectValue(field, value, ILLUMINANT_EXPECTED);
 }
 

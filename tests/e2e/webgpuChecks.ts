@@ -40,6 +40,11 @@ export const PIXEL_CASES: readonly (readonly [FilmCase, SpectralIridescenceOptio
   ],
   [SOAP, { layers: MIRROR }],
   [{ ...SOAP, thicknessNm: 0 }, {}],
+  // line sources (summed over their lines; `exact` draws them, as a table would warn) and a tinted lamp
+  [SOAP, { illuminant: 'Na', mode: 'exact' }],
+  [HIGH, { illuminant: { lineNm: 532 }, film: 'water', mode: 'exact' }],
+  [SOAP, { layers: MIRROR, illuminant: 'Na', mode: 'exact' }],
+  [HIGH, { illuminant: 'FL2', lightTint: [1, 0.5, 0.2] }],
 ];
 
 /** The float64 reference's 8-bit colour of a pixel case (the film over the metal of its colour, or the stack's). */
@@ -51,7 +56,7 @@ export function caseReference8([c, o]: readonly [FilmCase, SpectralIridescenceOp
   };
   const nInside: Medium = (o.base as Medium | undefined) ?? (c.metalColor === undefined ? c.ior : metal(c.metalColor));
   const nFilm: Medium = (o.film as Medium | undefined) ?? c.nFilm;
-  const color = { illuminant, polarization: o.polarization ?? 'unpolarized' } as const;
+  const color = { illuminant, polarization: o.polarization ?? 'unpolarized', lightTint: o.lightTint } as const;
   if (typeof o.layers === 'string') {
     const films = parseLayers('layers', o.layers) as readonly ResolvedLayer[];
     return xyzTo8(layersXyz({ nOutside: 1, films, nInside, angleDeg: c.angleDeg }, color), XYZ_TO_LINEAR_SRGB);

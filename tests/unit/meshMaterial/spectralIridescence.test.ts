@@ -6,7 +6,7 @@
 import { MeshPhysicalMaterial, ShaderLib } from 'three';
 import { beforeAll, describe, expect, it, vi } from 'vitest';
 import { loadDrawing } from '../../../src/meshMaterial/spectralDrawing.ts';
-import { spectralIridescence } from '../../../src/meshMaterial/spectralIridescence.ts';
+import { spectralIridescence, whenSpectralReady } from '../../../src/meshMaterial/spectralIridescence.ts';
 import { isSpectralIridescence } from '../../../src/meshMaterial/spectralFilm.ts';
 import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
 import { parameterOf } from './parameterOf.ts';
@@ -57,6 +57,22 @@ describe("the user's hooks", () => {
     m.onBeforeCompile(shader as never, null as never);
     expect(isSpectral(shader.fragmentShader)).toBe(false);
     expect(warn).toHaveBeenCalledTimes(1);
+    warn.mockRestore();
+  });
+
+  it('says once why another method draws the film: a line source in a table, a stack in `fourier`', async () => {
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
+    const prepared = async (options: Parameters<typeof spectralIridescence>[1]) => {
+      const m = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }), options);
+      for (let i = 0; i < 2; i++) await whenSpectralReady(m);
+    };
+    await prepared({ illuminant: 'Na' });
+    await prepared({ mode: 'fourier', layers: '(2.35:56.6/1.46:91.1)*8' });
+    await prepared({ illuminant: 'Na', mode: 'exact' });
+    expect(warn.mock.calls.map(([text]) => String(text))).toEqual([
+      expect.stringMatching(/mode table: a table's grid cannot hold a line source's fringes; drawn with mode exact/),
+      expect.stringMatching(/mode fourier: it has no closed form for a stack of films; drawn with mode table/),
+    ]);
     warn.mockRestore();
   });
 

@@ -163,4 +163,10 @@ describe('bad lights: named with the allowed range, nothing computed', () => {
     expect(parseIlluminant('line:780')).toEqual({ lineNm: 780 });
     expect(illuminantFromJson('line:632.8')).toEqual({ lineNm: 632.8 });
   });
+
+  it('takes a line as the spec it reads as, and refuses one outside [380, 780] nm or with other keys', () => {
+    expect(illuminantFromJson({ lineNm: 589 })).toEqual({ lineNm: 589 });
+    for (const bad of [{ lineNm: 379.9 }, { lineNm: 781 }, { lineNm: '589' }, { lineNm: 589, daylightCct: 5000 }])
+      expect(() => illuminantFromJson(bad)).toThrow(/illuminant: .* line:NM with NM in \[380, 780\] nm/);
+  });
 });
