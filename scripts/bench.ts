@@ -4,8 +4,8 @@
  * flowing film's simulation speed on the GPU and in its float64 twin, the built demo's and the
  * package's size, the demo's first frame and render-on-demand counts. Prints
  * Markdown and writes bench-results.json (git-ignored; `npm run bench:docs` makes
- * docs/benchmarks.md of it). `--smoke` runs everything once, small, and writes its results
- * elsewhere. Exit status 2 for a bad command line, 1 if a stage threw or a figure is missing or
+ * docs/benchmarks.md of it). `--smoke` runs each kind of row and every figure once, small, and
+ * writes its results elsewhere. Exit status 2 for a bad command line, 1 if a stage threw or a figure is missing or
  * not finite. Benchmarks measure; the tests check correctness.
  */
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -29,8 +29,9 @@ if (parsed.args.help) {
 const { smoke, only, port } = parsed.args;
 const plan = withPorts(smoke ? SMOKE_PLAN : FULL_PLAN, port);
 const picked = (name: string) => !only || only.some((text) => name.includes(text));
-// The floor always runs: the other rows' frame times are given against it.
-const rows = ROWS.filter((r, i) => i === 0 || picked(r.name));
+// The floor always runs: the other rows' frame times are given against it. The smoke leaves out
+// the costlier variants of its rows (BenchRow.smoke) unless they are picked by name.
+const rows = ROWS.filter((r, i) => i === 0 || (picked(r.name) && (!smoke || only !== null || r.smoke !== false)));
 const extras = { materials: picked(MATERIALS_ROW), node: picked(NODE_ROW), flowSpeed: picked(FLOW_SPEED_ROW) };
 
 // Vite, Playwright and the rows' code load only once the command line is known to be good.

@@ -7,7 +7,8 @@
  */
 
 export const BENCH_FLAGS: Readonly<Record<string, string>> = {
-  '--smoke': 'every row and figure once, small and fast, to check that each runs and gives finite figures (results in .scratch/)',
+  '--smoke':
+    'every figure and each kind of row once (the costlier variants of a row left out unless named), small and fast, to check that each runs and gives finite figures (results in .scratch/)',
   '--port': "<port>: the Vite dev server's port, and the next one the built demo's preview (else the plan's own)",
   '--help': 'this text',
 };

@@ -1,7 +1,7 @@
 /**
  * How much the benchmark measures: the full run (the figures in docs/benchmarks.md) or the smoke
- * run (`--smoke`: every row and figure once, at a small size, to show that each one runs and gives
- * finite figures; its times mean nothing). Its own ports: 5173 is the dev server's, 5180 and 5181
+ * run (`--smoke`: every figure and each kind of row once (BenchRow.smoke), at a small size, to show
+ * that each one runs and gives finite figures; its times mean nothing). Its own ports: 5173 is the dev server's, 5180 and 5181
  * the browser tests' (tests/e2e/servers.ts), so the bench runs beside either; `--port` moves them.
  */
 import type { ParityGroup } from '../harness/parityCase.ts';

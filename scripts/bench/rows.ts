@@ -25,6 +25,11 @@ export interface BenchRow {
   readonly quality: FilmQuality;
   /** whether the error columns apply (the film colour is ours or the peer's) */
   readonly measuresError: boolean;
+  /**
+   * false: left out of the smoke run, a costlier variant of a row it keeps (the same page and
+   * figures, a slower shader that the browser tests draw): the smoke shows each kind of row runs
+   */
+  readonly smoke?: false;
 }
 
 const q = DEFAULT_FILM_QUALITY;
@@ -130,7 +135,7 @@ export const ROWS: readonly BenchRow[] = [
   FOURIER_ROW,
   fourier(2, ' (three.js/glTF keep m ≤ 2)'),
   fourier(3, ' (Blender Cycles keeps m ≤ 3)'),
-  exact(45),
+  { ...exact(45), smoke: false },
   EXACT_ROW,
   table({ fill: 'binned', thickEndCellNm: 0 }, ' (before: the previous default)'),
   DEFAULT_TABLE_ROW,
@@ -151,7 +156,7 @@ export const ROWS: readonly BenchRow[] = [
   sceneStep('default table, uniform field (swirl off)', { field: 'uniform' }),
   sceneStep('default table, drainage field (swirl off)', { field: 'drainage' }),
   // The flowing film simulated on the GPU each frame, at each fixed grid, in real time.
-  ...FLOW_ROW_GRIDS.map(flowRow),
+  ...FLOW_ROW_GRIDS.map((n) => ({ ...flowRow(n), ...(n === Math.max(...FLOW_ROW_GRIDS) && { smoke: false as const }) })),
   sceneStep('default table, front wall only', { sides: 'front' }),
   // What the environment costs: none reflects the light's white and draws no background; the
   // default sky; each HDR map (three lookups a fragment, AgX).
@@ -166,8 +171,9 @@ export const ROWS: readonly BenchRow[] = [
   {
     ...fourier(q.airySeriesMaxOrders, ", nFilm=water (the shader's fallback: 150 dispersive bins per fragment; the app draws the table)"),
     settings: view('fourier', { nFilm: 'water' }),
+    smoke: false,
   },
-  { ...exact(90), name: 'exact, nFilm=water (150 bins, Fresnel per bin)', settings: view('exact', { nFilm: 'water' }) },
+  { ...exact(90), name: 'exact, nFilm=water (150 bins, Fresnel per bin)', settings: view('exact', { nFilm: 'water' }), smoke: false },
   // Stacks of films (docs/gpu.md#stacks-of-films) against the default table and exact rows above: the
   // table filled by the recursion per bin (a stack of fixed layers is the same at every thickness:
   // two columns), a frame the same lookup; `exact` runs the recursion per fragment. No error
@@ -180,6 +186,7 @@ export const ROWS: readonly BenchRow[] = [
     settings: view('exact', BRAGG_16),
     quality: q,
     measuresError: false,
+    smoke: false,
   },
 ];
 
