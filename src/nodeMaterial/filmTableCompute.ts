@@ -33,18 +33,6 @@ export class TableCompute implements TableFill {
     void renderer.compute(node);
   }
 
-  build(renderer: Renderer, program: string, xyz: TexelXyz): Promise<void> {
-    return this.kernels.build(
-      program,
-      () => this.kernel(xyz),
-      (node) => renderer.compileComputeAsync(node),
-    );
-  }
-
-  isBuilt(program: string): boolean {
-    return this.kernels.isBuilt(program);
-  }
-
   dispose(): void {
     this.storage.dispose();
     this.kernels.clear();
@@ -52,17 +40,15 @@ export class TableCompute implements TableFill {
 
   /** The compute node of the program (kept for the last programs). */
   private kernelFor(program: string, xyz: TexelXyz): ComputeNode {
-    return this.kernels.of(program, () => this.kernel(xyz));
-  }
-
-  /** A compute node writing `xyz` into the texels: invocation i is texel (i mod width, i div width), its (u, v) its column and row over the last ones. */
-  private kernel(xyz: TexelXyz): ComputeNode {
     const { width, rows } = this.grid;
-    return Fn(() => {
-      const x = instanceIndex.mod(uint(width));
-      const y = instanceIndex.div(uint(width));
-      const value = xyz(float(x).div(width.sub(1)), float(y).div(rows.sub(1)));
-      textureStore(this.storage, uvec2(x, y), vec4(value, 1)).toWriteOnly();
-    })().compute(1);
+    // Invocation i is texel (i mod width, i div width); its (u, v) its column and row over the last ones.
+    return this.kernels.of(program, () =>
+      Fn(() => {
+        const x = instanceIndex.mod(uint(width));
+        const y = instanceIndex.div(uint(width));
+        const value = xyz(float(x).div(width.sub(1)), float(y).div(rows.sub(1)));
+        textureStore(this.storage, uvec2(x, y), vec4(value, 1)).toWriteOnly();
+      })().compute(1),
+    );
   }
 }

@@ -24,18 +24,9 @@ export interface TableFill {
   readonly texture: Texture;
   /**
    * Fills every texel of the grid (its size as the grid's uniforms hold it) with `xyz`, by
-   * `renderer`; `program` names xyz's program: the same name, the same program. A program not
-   * built yet is built here, on this thread.
+   * `renderer`; `program` names xyz's program: the same name, the same program.
    */
   fill(renderer: Renderer, program: string, xyz: TexelXyz): void;
-  /**
-   * Builds `program` off the frame (three's compileAsync: the nodes built in slices that yield to
-   * the page, the GPU program compiled in parallel where the backend can), so that its fill
-   * builds nothing; once however often asked.
-   */
-  build(renderer: Renderer, program: string, xyz: TexelXyz): Promise<void>;
-  /** Whether `program` is built (filled with, or its build done). */
-  isBuilt(program: string): boolean;
   dispose(): void;
 }
 
