@@ -83,7 +83,11 @@ async function renderGroup(renderer: WebGPURenderer, g: ParityGroup, mode: NodeP
     knots: inputs.knots,
     stack: { layers: inputs.layers, count: inputs.layerCount },
   };
-  if (methodReads(mode, 'table')) tableFor(q).update(renderer, s, film);
+  if (methodReads(mode, 'table')) {
+    // A table filled before fills another film once that film's program is built off the frame.
+    await tableFor(q).prepare(renderer, s, film);
+    tableFor(q).update(renderer, s, film);
+  }
   const target = new RenderTarget(count, 1, { type: FloatType, depthBuffer: false });
   renderer.setRenderTarget(target);
   passFor(s, mode, q, film).render(renderer);

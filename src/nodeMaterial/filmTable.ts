@@ -25,7 +25,7 @@ import { type FilmNodes, filmXyz } from './filmColor.ts';
 import { floatRow } from './filmInputs.ts';
 import { CHANNEL_KINDS, type Channels, channelWeights, channelsOf } from './filmReflectance.ts';
 import { TableCompute } from './filmTableCompute.ts';
-import { type TableFill, type TableGrid, computesOn } from './filmTableFill.ts';
+import { type TableFill, type TableGrid, type TexelXyz, computesOn } from './filmTableFill.ts';
 import { tableCosIncidence, tableThicknessNm, tableUv } from './filmTableLayout.ts';
 import { TablePass } from './filmTablePass.ts';
 
@@ -35,6 +35,9 @@ import { TablePass } from './filmTablePass.ts';
  * from that field alone, so the entry loads no other field.
  */
 const tableMaxThicknessNm = (s: MaterialFilmSettings): number => uniformField.maxThicknessNm(s, null);
+
+/** The film's nodes a fill reads, bar its channels and bins (the table's own). */
+export type FillFilm = Omit<FilmNodes, 'bins' | 'channels'>;
 
 /** A fill of the table for one backend and the key of the film it holds. */
 interface Filled {
@@ -69,32 +72,34 @@ export class NodeFilmTable {
     return [...this.fills.values()].some((f) => f.builtKey === key);
   }
 
-  /** Fills the table for `s` with `renderer` where it holds another film; `film`: the film's nodes bar its channels and bins. */
-  update(renderer: Renderer, s: MaterialFilmSettings, film: Omit<FilmNodes, 'bins' | 'channels'>): void {
+  /**
+   * Fills the table for `s` with `renderer` where it holds another film; `film`: the film's nodes
+   * bar its channels and bins. Where the fill builds off the frame (the render pass), a table
+   * filled before keeps its film until the new fill's program is built (`prepare`), so that no
+   * option change builds one on this thread.
+   */
+  update(renderer: Renderer, s: MaterialFilmSettings, film: FillFilm): void {
     const key = this.keyOf(s);
     const filled = this.filledBy(renderer);
     if (key === filled.builtKey) return;
-    const q = this.quality;
-    const count = filmSpectralBins(s, q, q.table.spectralBins);
-    this.weights.value = spectralBinsTexture(s, count, this);
-    const maxThicknessNm = tableMaxThicknessNm(s);
-    // The width resolves the fringes of the film (or of a stack's films that follow the thickness): FilmTablePass.fullGrid's.
-    const index = fillGpu(s).fieldIndex(s, count);
-    this.grid.width.value = index === null ? 2 : filmTableWidth(q.table, maxThicknessNm, index);
-    this.grid.rows.value = q.table.rows;
-    this.grid.maxThicknessNm.value = maxThicknessNm;
-    const bins = spectralBinDefines(count, q.spectralTailTolerance);
-    const channels = this.channelsFor(s.polarization);
-    const nodes: FilmNodes = {
-      ...film,
-      channels,
-      bins: { count, first: bins.TFC_SPECTRAL_BIN_FIRST!, end: bins.TFC_SPECTRAL_BIN_END!, weights: this.weights },
-    };
-    const max = this.grid.maxThicknessNm;
-    filled.fill.fill(renderer, JSON.stringify([film.fill, channels.kinds, bins]), (u, v) =>
-      filmXyz(nodes, tableThicknessNm(q.table, u, max), tableCosIncidence(q.table, v)),
-    );
+    const plan = this.fillOf(s, film);
+    const offFrame = filled.fill.offFrame;
+    if (offFrame && filled.builtKey !== '' && !offFrame.isBuilt(plan.program)) {
+      void this.prepare(renderer, s, film);
+      return;
+    }
+    plan.setInputs();
+    filled.fill.fill(renderer, plan.program, plan.xyz);
     filled.builtKey = key;
+  }
+
+  /** Builds, off the frame, the program that fills the table for `s` where it holds another film: done when `update` fills it at once. */
+  prepare(renderer: Renderer, s: MaterialFilmSettings, film: FillFilm): Promise<void> {
+    const filled = this.filledBy(renderer);
+    const offFrame = filled.fill.offFrame;
+    if (!offFrame || this.keyOf(s) === filled.builtKey) return Promise.resolve();
+    const { program, xyz } = this.fillOf(s, film);
+    return offFrame.build(renderer, program, xyz);
   }
 
   dispose(): void {
@@ -103,15 +108,46 @@ export class NodeFilmTable {
   }
 
   /**
-   * The fill's channels for polarisation `p`: s and p in one program, weighted by uniforms, so that
-   * a change among unpolarised, s and p refills the table with the program it has; the paper's
-   * average of the amplitudes in its own.
+   * The fill for `s`: its program's name (the same name, the same program), its texel's XYZ, and
+   * what sets the inputs the program reads (the bin weights, the grid, the channels' weights) to
+   * `s`'s, called just before it fills.
+   */
+  private fillOf(s: MaterialFilmSettings, film: FillFilm): { program: string; xyz: TexelXyz; setInputs: () => void } {
+    const q = this.quality;
+    const count = filmSpectralBins(s, q, q.table.spectralBins);
+    const bins = spectralBinDefines(count, q.spectralTailTolerance);
+    const channels = this.channelsFor(s.polarization);
+    const nodes: FilmNodes = {
+      ...film,
+      channels,
+      bins: { count, first: bins.TFC_SPECTRAL_BIN_FIRST!, end: bins.TFC_SPECTRAL_BIN_END!, weights: this.weights },
+    };
+    const max = this.grid.maxThicknessNm;
+    const setInputs = () => {
+      this.weights.value = spectralBinsTexture(s, count, this);
+      const maxThicknessNm = tableMaxThicknessNm(s);
+      // The width resolves the fringes of the film (or of a stack's films that follow the thickness): FilmTablePass.fullGrid's.
+      const index = fillGpu(s).fieldIndex(s, count);
+      this.grid.width.value = index === null ? 2 : filmTableWidth(q.table, maxThicknessNm, index);
+      this.grid.rows.value = q.table.rows;
+      this.grid.maxThicknessNm.value = maxThicknessNm;
+      if (s.polarization !== 'paper')
+        channelWeights(s.polarization, channels.kinds).forEach((w, i) => (this.physicalWeights[i]!.value = w));
+    };
+    return {
+      program: JSON.stringify([film.fill, channels.kinds, bins]),
+      xyz: (u, v) => filmXyz(nodes, tableThicknessNm(q.table, u, max), tableCosIncidence(q.table, v)),
+      setInputs,
+    };
+  }
+
+  /**
+   * The fill's channels for polarisation `p`: s and p in one program, weighted by uniforms (set
+   * with the fill's inputs), so that a change among unpolarised, s and p refills the table with
+   * the program it has; the paper's average of the amplitudes in its own.
    */
   private channelsFor(p: Polarization): Channels {
-    if (p === 'paper') return channelsOf(p);
-    const kinds = CHANNEL_KINDS.unpolarized;
-    channelWeights(p, kinds).forEach((w, i) => (this.physicalWeights[i]!.value = w));
-    return { kinds, weights: this.physicalWeights };
+    return p === 'paper' ? channelsOf(p) : { kinds: CHANNEL_KINDS.unpolarized, weights: this.physicalWeights };
   }
 
   private keyOf(s: MaterialFilmSettings): string {

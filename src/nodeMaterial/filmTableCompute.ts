@@ -23,6 +23,13 @@ export class TableCompute implements TableFill {
     return this.storage;
   }
 
+  /**
+   * None: each kernel is built in place, at its first fill. Built ahead with compileComputeAsync,
+   * the first switch to a dispersive film measured no shorter a task on SwiftShader's WebGPU, and
+   * far longer to its frame (the pipeline compiled beside the frames drawn meanwhile, on the same CPU).
+   */
+  readonly offFrame = null;
+
   fill(renderer: Renderer, program: string, xyz: TexelXyz): void {
     const width = this.grid.width.value;
     const rows = this.grid.rows.value;

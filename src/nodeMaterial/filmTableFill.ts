@@ -24,10 +24,25 @@ export interface TableFill {
   readonly texture: Texture;
   /**
    * Fills every texel of the grid (its size as the grid's uniforms hold it) with `xyz`, by
-   * `renderer`; `program` names xyz's program: the same name, the same program.
+   * `renderer`; `program` names xyz's program: the same name, the same program. A program not
+   * built yet is built here, on this thread.
    */
   fill(renderer: Renderer, program: string, xyz: TexelXyz): void;
+  /** How the fill builds a program ahead of its use, off the frame; none where it builds each in place. */
+  readonly offFrame: OffFrameBuild | null;
   dispose(): void;
+}
+
+/** A fill's programs built ahead of their use. */
+export interface OffFrameBuild {
+  /**
+   * Builds `program` off the frame (three's compileAsync: the nodes built in slices that yield to
+   * the page, the GL program linked in parallel where the context can), so that its fill builds
+   * nothing; once however often asked.
+   */
+  build(renderer: Renderer, program: string, xyz: TexelXyz): Promise<void>;
+  /** Whether `program` is built (filled with, or its build done). */
+  isBuilt(program: string): boolean;
 }
 
 /** Whether `renderer` runs on the WebGPU backend (compute), not the WebGL2 one. */

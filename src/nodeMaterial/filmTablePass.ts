@@ -1,13 +1,30 @@
 /**
  * The node film's table filled by a render pass (WebGPURenderer's WebGL2 backend, which has no
  * compute): a quad over a half-float render target whose fragment is the texel's XYZ, its (u, v)
- * from the fragment's centre.
+ * from the fragment's centre. The quad is a mesh of its own with a clip-space vertex node, not
+ * three's QuadMesh (whose render swaps in a vertex node of its own), so that compileAsync builds
+ * the very program the fill draws with.
  */
-import { HalfFloatType, LinearFilter, RenderTarget, type Texture } from 'three';
-import { Fn, uv, vec4 } from 'three/tsl';
-import { NodeMaterial, QuadMesh, type Renderer } from 'three/webgpu';
-import { type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
+import {
+  BufferGeometry,
+  Float32BufferAttribute,
+  HalfFloatType,
+  LinearFilter,
+  Mesh,
+  OrthographicCamera,
+  RenderTarget,
+  type Texture,
+} from 'three';
+import { Fn, positionGeometry, uv, vec4 } from 'three/tsl';
+import { NodeMaterial, type Renderer } from 'three/webgpu';
+import { type OffFrameBuild, type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
 import { KeptPrograms } from './keptPrograms.ts';
+
+/** The quad: three's QuadMesh's triangle over clip space and its uv (v = 0 at the top), and the camera it is drawn with (the vertex node ignores it). */
+const quadGeometry = new BufferGeometry()
+  .setAttribute('position', new Float32BufferAttribute([-1, 3, 0, -1, -1, 0, 3, -1, 0], 3))
+  .setAttribute('uv', new Float32BufferAttribute([0, -1, 0, 1, 2, 1], 2));
+const quadCamera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
 
 export class TablePass implements TableFill {
   private readonly target = new RenderTarget(1, 1, {
@@ -16,9 +33,7 @@ export class TablePass implements TableFill {
     magFilter: LinearFilter,
     depthBuffer: false,
   });
-  private readonly passes = new KeptPrograms<{ readonly quad: QuadMesh; readonly material: NodeMaterial }>((pass) =>
-    pass.material.dispose(),
-  );
+  private readonly passes = new KeptPrograms<Mesh<BufferGeometry, NodeMaterial>>((quad) => quad.material.dispose());
 
   constructor(private readonly grid: TableGrid) {}
 
@@ -28,27 +43,51 @@ export class TablePass implements TableFill {
 
   fill(renderer: Renderer, program: string, xyz: TexelXyz): void {
     this.target.setSize(this.grid.width.value, this.grid.rows.value);
-    const previous = renderer.getRenderTarget();
-    renderer.setRenderTarget(this.target);
-    this.quadFor(program, xyz).render(renderer);
-    renderer.setRenderTarget(previous);
+    this.onTarget(renderer, () =>
+      renderer.render(
+        this.passes.of(program, () => this.quad(xyz)),
+        quadCamera,
+      ),
+    );
   }
+
+  readonly offFrame: OffFrameBuild = {
+    // The target is the fill's, so that the program compiled is the one its render asks for.
+    build: (renderer, program, xyz) =>
+      this.passes.build(
+        program,
+        () => this.quad(xyz),
+        (quad) => this.onTarget(renderer, () => renderer.compileAsync(quad, quadCamera)),
+      ),
+    isBuilt: (program) => this.passes.isBuilt(program),
+  };
 
   dispose(): void {
     this.target.dispose();
     this.passes.clear();
   }
 
-  /** The quad of the program (kept for the last programs). */
-  private quadFor(program: string, xyz: TexelXyz): QuadMesh {
+  /** `draw`'s result, `renderer` drawing into the table's target meanwhile. */
+  private onTarget<T>(renderer: Renderer, draw: () => T): T {
+    const previous = renderer.getRenderTarget();
+    renderer.setRenderTarget(this.target);
+    try {
+      return draw();
+    } finally {
+      renderer.setRenderTarget(previous);
+    }
+  }
+
+  /** A quad whose fragment at the texel's centre, less half a texel, over the texels between the first and last centres, is `xyz` there. */
+  private quad(xyz: TexelXyz): Mesh<BufferGeometry, NodeMaterial> {
     const { width, rows } = this.grid;
-    return this.passes.of(program, () => {
-      const material = new NodeMaterial();
-      // The fragment's centre in texels, less half a texel, over the texels between the first and last centres.
-      material.fragmentNode = Fn(() =>
-        vec4(xyz(uv().x.mul(width).sub(0.5).div(width.sub(1)), uv().y.mul(rows).sub(0.5).div(rows.sub(1))), 1),
-      )();
-      return { quad: new QuadMesh(material), material };
-    }).quad;
+    const material = new NodeMaterial();
+    material.vertexNode = vec4(positionGeometry.xy, 0, 1);
+    material.fragmentNode = Fn(() =>
+      vec4(xyz(uv().x.mul(width).sub(0.5).div(width.sub(1)), uv().y.mul(rows).sub(0.5).div(rows.sub(1))), 1),
+    )();
+    const quad = new Mesh(quadGeometry, material);
+    quad.frustumCulled = false;
+    return quad;
   }
 }

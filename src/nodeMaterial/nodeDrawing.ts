@@ -7,7 +7,7 @@ import { filmColorUniforms, releaseFilmColorTextures } from '../film/filmColor.t
 import { filmStackUniforms } from '../film/filmStack.ts';
 import { type SpectralFilm } from '../meshMaterial/spectralFilm.ts';
 import { filmInputs } from './filmInputs.ts';
-import { type NodeFilm, addNodeFilm, nodeFilmOf, nodeProgramKey, updateNodeFilm } from './nodeFilm.ts';
+import { type NodeFilm, addNodeFilm, nodeFilmOf, nodeProgramKey, prepareNodeFilm, updateNodeFilm } from './nodeFilm.ts';
 import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
 
 export { setupLightingModel } from './nodeFilm.ts';
@@ -19,7 +19,7 @@ export { setupLightingModel } from './nodeFilm.ts';
 export function startNodeFilm(m: PhysicalMaterial, film: SpectralFilm): void {
   film.uniforms = { ...filmColorUniforms(), ...filmStackUniforms() };
   film.programKey = nodeProgramKey;
-  const f: NodeFilm = { film, inputs: filmInputs(), table: null };
+  const f: NodeFilm = { film, inputs: filmInputs(), table: null, renderer: null };
   addNodeFilm(m, f);
   updateNodeFilm(f, m, null);
   m.needsUpdate = true;
@@ -30,6 +30,9 @@ export const nodeFilmKey = (m: PhysicalMaterial, film: SpectralFilm): string => 
 
 /** Whether `m` is drawn by this entry's film (made spectral by it). */
 export const drawsNodeFilm = (m: PhysicalMaterial): boolean => nodeFilmOf(m) !== undefined;
+
+/** Done when `m`'s next draw builds no program on this thread (prepareNodeFilm); `m` is drawn by this entry's film. */
+export const nodeFilmReady = (m: PhysicalMaterial): Promise<void> => prepareNodeFilm(nodeFilmOf(m)!, m);
 
 /** Lets `m`'s film go: its share of the light's textures, and its table. */
 export function releaseNodeFilm(m: PhysicalMaterial): void {

@@ -27,16 +27,17 @@ import { type FloatNode } from './complex.ts';
 import { type FilmInputs, setFilmInputs } from './filmInputs.ts';
 import { channelsOf } from './filmReflectance.ts';
 import { type FilmNodes, filmXyz, xyzToLinearWorking } from './filmColor.ts';
-import { NodeFilmTable } from './filmTable.ts';
+import { type FillFilm, NodeFilmTable } from './filmTable.ts';
 import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
 import { FilmUpdateNode } from './filmUpdateNode.ts';
 import { SpectralLightingModel } from './spectralLightingModel.ts';
 
-/** A spectral node film: the shared record, its TSL inputs, its table (null until `table` is drawn). */
+/** A spectral node film: the shared record, its TSL inputs, its table (null until `table` is drawn), the renderer that drew it last. */
 export interface NodeFilm {
   readonly film: SpectralFilm;
   readonly inputs: FilmInputs;
   table: NodeFilmTable | null;
+  renderer: Renderer | null;
 }
 
 /**
@@ -71,6 +72,13 @@ const sharedNodes = (f: NodeFilm, s: MaterialFilmSettings): Omit<FilmNodes, 'bin
   stack: { layers: f.inputs.layers, count: f.inputs.layerCount },
 });
 
+/** The film's nodes the table's fill reads. */
+const fillFilm = (f: NodeFilm, s: MaterialFilmSettings): FillFilm => ({
+  ...sharedNodes(f, s),
+  nFilm: f.inputs.nFilm,
+  nInside: f.inputs.nInside,
+});
+
 /** Brings the film's uniforms, inputs and table up to the material, the table drawn with `renderer`. */
 export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Renderer | null): void {
   const o = f.film.options;
@@ -82,8 +90,18 @@ export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Rende
   const film = f.film as SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> };
   updateFilmColorUniforms(film, { ...s, mode: 'exact' }, o.quality, null);
   setFilmInputs(f.inputs, film.uniforms);
-  if (renderer && f.table && drawsTable(m, s))
-    f.table.update(renderer, s, { ...sharedNodes(f, s), nFilm: f.inputs.nFilm, nInside: f.inputs.nInside });
+  if (renderer) f.renderer = renderer;
+  if (renderer && f.table && drawsTable(m, s)) f.table.update(renderer, s, fillFilm(f, s));
+}
+
+/**
+ * Builds off the frame the programs the film's next draw needs that its last one did not (the
+ * table's fill for a new film): done when that draw builds none on this thread. A film not drawn
+ * yet has none built: its first draw builds them.
+ */
+export async function prepareNodeFilm(f: NodeFilm, m: PhysicalMaterial): Promise<void> {
+  const s = drawnFilmSettings(physical(m), f.film);
+  if (f.renderer && f.table && drawsTable(m, s)) await f.table.prepare(f.renderer, s, fillFilm(f, s));
 }
 
 /** The film's XYZ by `exact` on the material: three's iridescenceIOR and ior (clamped to the film's domain) unless the options name the media. */

@@ -98,10 +98,10 @@ export function useSpectralIridescence(root: Object3D, options: SpectralIridesce
 
 /**
  * A promise kept once the film's drawing is loaded (a chunk of its own, fetched the first time a
- * material is made spectral) and holds the material's film: the next render that draws the
- * material builds what its film needs (the table, on the GPU, before the draw) and draws the
- * settled film, so a screenshot awaits this, then renders. A ParameterError for a material this
- * entry has not made spectral.
+ * material is made spectral) and holds the material's film, and once the programs a changed film
+ * needs are built off the frame: the next render that draws the material builds what its film
+ * needs (the table, on the GPU, before the draw) and draws the settled film, so a screenshot
+ * awaits this, then renders. A ParameterError for a material this entry has not made spectral.
  */
 export async function whenSpectralReady(material: Material): Promise<void> {
   const notSpectral = () =>
@@ -112,4 +112,5 @@ export async function whenSpectralReady(material: Material): Promise<void> {
   if (!filmOf(material)) throw notSpectral();
   const drawing = await nodeDrawing.load();
   if (!drawing.drawsNodeFilm(material as PhysicalMaterial)) throw notSpectral();
+  await drawing.nodeFilmReady(material as PhysicalMaterial);
 }

@@ -90,6 +90,8 @@ async function changedPixels(c: FilmCase, changes: readonly SpectralIridescenceO
   const out = [(await drawCentre(scene, camera)).codes];
   for (const change of changes) {
     Object.assign(material, change);
+    // as a user is told to: a change may need a program built off the frame first
+    await whenSpectralReady(material);
     out.push((await drawCentre(scene, camera)).codes);
   }
   disposeAll(scene);

@@ -20,4 +20,25 @@ describe('KeptPrograms', () => {
     kept.clear();
     expect(released).toHaveLength(KEPT_PASSES + 1);
   });
+
+  it('builds a program ahead of its use once, however often asked, and counts a used one as built', async () => {
+    const kept = new KeptPrograms<{ name: string }>(() => {});
+    const compiles: string[] = [];
+    let finish = () => {};
+    const compile = (p: { name: string }) => {
+      compiles.push(p.name);
+      return new Promise<void>((resolve) => (finish = resolve));
+    };
+    const make = () => ({ name: 'dispersive' });
+    const first = kept.build('dispersive', make, compile);
+    const again = kept.build('dispersive', make, compile);
+    expect([compiles, kept.isBuilt('dispersive')]).toEqual([['dispersive'], false]);
+    finish();
+    await Promise.all([first, again]);
+    expect(kept.isBuilt('dispersive')).toBe(true);
+    kept.of('constant', () => ({ name: 'constant' }));
+    expect(kept.isBuilt('constant')).toBe(true);
+    await kept.build('constant', make, compile);
+    expect(compiles).toEqual(['dispersive']);
+  });
 });
