@@ -17,18 +17,27 @@ export function floatRowTexture(rgba: readonly (readonly number[])[]): DataTextu
 }
 
 /**
- * Draws `material` over a row of `count` float pixels and reads them back (RGBA per pixel, no
- * colour conversion): how the parity checks see a shader's own numbers.
+ * What `draw` draws into a row of `count` float pixels (RGBA per pixel, no colour conversion), read
+ * back; `depthBuffer` for a scene whose meshes hide one another.
  */
-export function renderFloatRow(renderer: WebGLRenderer, material: ShaderMaterial, count: number): Float32Array {
-  const pass = new FullscreenPass();
-  const target = new WebGLRenderTarget(count, 1, { type: FloatType, format: RGBAFormat, depthBuffer: false });
+export function readFloatRow(renderer: WebGLRenderer, count: number, draw: () => void, depthBuffer = false): Float32Array {
+  const target = new WebGLRenderTarget(count, 1, { type: FloatType, format: RGBAFormat, depthBuffer });
   renderer.setRenderTarget(target);
-  pass.render(renderer, material);
+  draw();
   const out = new Float32Array(4 * count);
   renderer.readRenderTargetPixels(target, 0, 0, count, 1, out);
   renderer.setRenderTarget(null);
   target.dispose();
+  return out;
+}
+
+/**
+ * Draws `material` over a row of `count` float pixels and reads them back: how the parity checks
+ * see a shader's own numbers.
+ */
+export function renderFloatRow(renderer: WebGLRenderer, material: ShaderMaterial, count: number): Float32Array {
+  const pass = new FullscreenPass();
+  const out = readFloatRow(renderer, count, () => pass.render(renderer, material));
   pass.dispose();
   return out;
 }

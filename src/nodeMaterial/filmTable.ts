@@ -85,7 +85,7 @@ export class NodeFilmTable {
     const plan = this.fillOf(s, film);
     const offFrame = filled.fill.offFrame;
     if (offFrame && filled.builtKey !== '' && !offFrame.isBuilt(plan.program)) {
-      void this.prepare(renderer, s, film);
+      void offFrame.build(renderer, plan.program, plan.xyz);
       return;
     }
     plan.setInputs();
