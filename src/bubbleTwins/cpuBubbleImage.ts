@@ -2,7 +2,7 @@ import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../physics/
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { spectralBins, stackBinnedXyz } from '../physics/binnedIntegration.ts';
 import { absorbsInBand } from '../physics/medium.ts';
-import { spectralWeights } from '../physics/spectralWeights.ts';
+import { lightWeights } from '../physics/spectralWeights.ts';
 import { DEFAULT_FILM_QUALITY } from '../settings/filmQuality.ts';
 import { type ShownEnvironment, environmentRadiance, reflectedRadiance } from './environment.ts';
 import type { EnvironmentPixels } from '../bubbleMaterials/environmentMaps.ts';
@@ -47,7 +47,7 @@ type FilmColor = (thicknessNm: number, cosIncidence: number, fromInside: boolean
 /** The film's linear sRGB (eq 19 after eqs 1–18) at a thickness and cos θ_i, from the memoised lattice. */
 function filmColorLattice(s: FilmSettings): FilmColor {
   const step = Math.max(MIN_THICKNESS_STEP_NM, maxFieldThicknessNm(s) / LATTICE_THICKNESSES);
-  const bins = spectralBins(spectralWeights(s.illuminant, s.normalization, s.lightTint), DEFAULT_FILM_QUALITY.exactSpectralBins);
+  const bins = spectralBins(lightWeights(s), DEFAULT_FILM_QUALITY.exactSpectralBins);
   const cache = new Map<string, Rgb>();
   const node = (k: number, j: number, fromInside: boolean): Rgb => {
     const key = `${k}|${j}|${fromInside}`;

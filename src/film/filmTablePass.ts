@@ -18,7 +18,7 @@ import {
   spectralTransformTexture,
   spectralTransformWhenReady,
 } from './spectralTransformTexture.ts';
-import type { SpectralLight } from './spectralTransformTexels.ts';
+import type { SpectralLight } from '../physics/spectralWeights.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
 
 /** Columns [from, to) of a grid. */

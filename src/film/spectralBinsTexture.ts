@@ -3,12 +3,12 @@ import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { MAX_LIGHT_LINES } from '../physics/lightLines.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { significantBins, spectralBins } from '../physics/binnedIntegration.ts';
-import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, spectralWeights } from '../physics/spectralWeights.ts';
-import { type SpectralLight, spectralLightKey } from './spectralTransformTexels.ts';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type SpectralLight, lightWeights, spectralWeights } from '../physics/spectralWeights.ts';
+import { spectralLightKey } from './spectralTransformTexels.ts';
 
 const shared = new SharedTextures((key) => {
   const { light, count } = JSON.parse(key) as { light: SpectralLight; count: number };
-  const { weights, windows } = spectralBins(spectralWeights(light.illuminant, light.normalization, light.lightTint), count);
+  const { weights, windows } = spectralBins(lightWeights(light), count);
   // Row 0: each bin's weights; row 1: its light's σ̄ less the bin's middle σ, and half-width in σ.
   const data = new Float32Array(4 * count * 2);
   for (let b = 0; b < count; b++) {
@@ -42,7 +42,7 @@ export const spectralBinsUniforms = () => ({
  */
 export function bindSpectralBins(u: ShaderMaterial['uniforms'], light: SpectralLight, count: number, holder: object): void {
   u.uSpectralBins!.value = spectralBinsTexture(light, count, holder);
-  const lines = spectralWeights(light.illuminant, light.normalization, light.lightTint).lines ?? [];
+  const lines = lightWeights(light).lines ?? [];
   lines.forEach((l, i) => (u.uLightLines!.value as Vector4[])[i]!.set(l.x, l.y, l.z, l.nm));
   u.uLightLineCount!.value = lines.length;
 }

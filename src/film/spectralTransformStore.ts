@@ -1,6 +1,6 @@
 import { WorkerTexels } from '../threads/workerTexels.ts';
-import { spectralWeights } from '../physics/spectralWeights.ts';
-import { type SpectralLight, spectralTransformTexels } from './spectralTransformTexels.ts';
+import { type SpectralLight, lightWeights } from '../physics/spectralWeights.ts';
+import { spectralTransformTexels } from './spectralTransformTexels.ts';
 
 /**
  * The texels of the last light computed (0.85 MB), on this thread or in the worker
@@ -11,8 +11,7 @@ import { type SpectralLight, spectralTransformTexels } from './spectralTransform
 const store = new WorkerTexels(
   () => new Worker(new URL('./spectralTransformWorker.ts', import.meta.url), { type: 'module' }),
   (key) => {
-    const light = JSON.parse(key) as SpectralLight;
-    return spectralWeights(light.illuminant, light.normalization, light.lightTint);
+    return lightWeights(JSON.parse(key) as SpectralLight);
   },
   spectralTransformTexels,
   1,

@@ -1,18 +1,9 @@
-import { type IlluminantSpec } from '../physics/illuminants.ts';
-import type { LightTint } from '../physics/lightTint.ts';
-import { type Normalization, type SpectralWeights } from '../physics/spectralWeights.ts';
+import type { SpectralLight, SpectralWeights } from '../physics/spectralWeights.ts';
 import { SPECTRAL_TRANSFORM_COUNT, spectralTransform } from '../physics/spectralTransform.ts';
 
 /** Entries per texture row (WebGL2 guarantees 2048; 4096 is common, SwiftShader has 8192). */
 export const SPECTRAL_TRANSFORM_WIDTH = 2048;
 export const SPECTRAL_TRANSFORM_ROWS = Math.ceil(SPECTRAL_TRANSFORM_COUNT / SPECTRAL_TRANSFORM_WIDTH);
-
-/** What the light's weights, and so its spectral transform and bins, depend on. */
-export interface SpectralLight {
-  readonly illuminant: IlluminantSpec;
-  readonly normalization: Normalization;
-  readonly lightTint: LightTint;
-}
 
 /** The light's key: lights with the same key have the same weights (settings holding a light give its own fields only). */
 export const spectralLightKey = (light: SpectralLight): string =>

@@ -2,12 +2,8 @@ import { DataTexture, FloatType, NearestFilter, RGBAFormat } from 'three';
 import { SPECTRAL_TRANSFORM_CARRIER_PER_NM, SPECTRAL_TRANSFORM_COUNT, SPECTRAL_TRANSFORM_STEP_NM } from '../physics/spectralTransform.ts';
 import { AIRY_SERIES_MAX_ORDERS, AIRY_SERIES_TOLERANCE } from '../physics/airySeries.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
-import {
-  SPECTRAL_TRANSFORM_ROWS as ROWS,
-  SPECTRAL_TRANSFORM_WIDTH as WIDTH,
-  type SpectralLight,
-  spectralLightKey,
-} from './spectralTransformTexels.ts';
+import { SPECTRAL_TRANSFORM_ROWS as ROWS, SPECTRAL_TRANSFORM_WIDTH as WIDTH, spectralLightKey } from './spectralTransformTexels.ts';
+import type { SpectralLight } from '../physics/spectralWeights.ts';
 import { spectralTransformTexelsOf, spectralTransformTexelsReady, spectralTransformTexelsWhenReady } from './spectralTransformStore.ts';
 
 const shared = new SharedTextures((key) => {

@@ -83,6 +83,17 @@ export function spectralWeights(
   return w;
 }
 
+/** What a light's weights, and so its spectral transform and bins, depend on. */
+export interface SpectralLight {
+  readonly illuminant: IlluminantSpec;
+  readonly normalization: Normalization;
+  readonly lightTint: LightTint;
+}
+
+/** The weights of `light`: spectralWeights of its illuminant, normalisation and tint. */
+export const lightWeights = (light: SpectralLight): SpectralWeights =>
+  spectralWeights(light.illuminant, light.normalization, light.lightTint);
+
 /** The weights of a light with a spectrum, I_in T x̄, ȳ, z̄ / k at its 1 nm knots (T the tint's spectrum). */
 function spectrumWeights(illuminant: IlluminantSpec, normalization: Normalization, tint: (lambdaNm: number) => number): SpectralWeights {
   const spd = illuminantSpd(illuminant);

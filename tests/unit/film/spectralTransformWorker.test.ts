@@ -6,7 +6,8 @@
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { type SpectralLight, spectralLightKey, spectralTransformTexels } from '../../../src/film/spectralTransformTexels.ts';
+import { spectralLightKey, spectralTransformTexels } from '../../../src/film/spectralTransformTexels.ts';
+import type { SpectralLight } from '../../../src/physics/spectralWeights.ts';
 import { type SpectralWeights, spectralWeights } from '../../../src/physics/spectralWeights.ts';
 import type {
   TexelsReply as SpectralTransformReply,
