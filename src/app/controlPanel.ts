@@ -10,7 +10,9 @@ import { NAMED_MEDIA } from '../physics/namedMedia.ts';
 import { FILM_STACK_DOMAIN, SOAP_FILM_IN_AIR } from '../physics/filmReflectance.ts';
 import { DAYLIGHT_CCT_DOMAIN_K, type IlluminantSpec, NAMED_ILLUMINANTS, daylightCctOf, illuminantLines } from '../physics/illuminants.ts';
 import { LINE_DOMAIN_NM, SODIUM_D_LINES } from '../physics/lightLines.ts';
-import { LIGHT_TINT_DOMAIN, type LightTint } from '../physics/lightTint.ts';
+import type { LightTint } from '../physics/lightTint.ts';
+import type { Environment } from '../environments/environments.ts';
+import { addEnvironmentControl, addTintControl } from './colorControls.ts';
 import { type Catalogue, EN, type MessageKey } from '../i18n/en.ts';
 import { AUTO, type Auto, PANEL_FOLDERS, type PanelFolder, type ParameterRow, choiceKey, labelKey } from '../settings/parameterRow.ts';
 import { VIEW_PARAMETERS, type ViewSettings } from '../settings/viewParameters.ts';
@@ -23,8 +25,6 @@ const SINGLE_LINE = 'line';
 const CCT_STEP_K = 10;
 /** The line slider's step. */
 const LINE_STEP_NM = 0.1;
-/** The tint's sliders' step. */
-const TINT_STEP = 0.01;
 const INDEX_STEP = 0.01;
 /** The Cauchy text a constant or a material starts with: a glass-like film (n 1.49 at 400 nm, 1.46 at 700 nm). */
 const CAUCHY_START = '1.45,6000';
@@ -151,6 +151,8 @@ function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<
     }
     case 'tint':
       return { join: addTintControl(folder, row, state[row.key] as LightTint, cat) };
+    case 'environment':
+      return addEnvironmentControl(folder, row, state[row.key] as Environment, cat);
     case 'filmIndex':
       return addMediumControls(folder, row, state[row.key] as Medium, cat, FILM_INDEX_KINDS, 'film');
     case 'medium':
@@ -167,15 +169,6 @@ function addControl(folder: GUI, row: ParameterRow<ViewSettings>, state: Record<
     case 'auto':
       return addAutoControl(folder, row, control, state[row.key] as Auto<number>, cat);
   }
-}
-
-/** A tint: a slider for each of R, G and B (linear sRGB) over the tint's domain. */
-function addTintControl(folder: GUI, row: ParameterRow<ViewSettings>, initial: LightTint, cat: Catalogue): Joined {
-  const rgb = { r: initial[0], g: initial[1], b: initial[2] };
-  const sliders = { r: 'panel.tintRed', g: 'panel.tintGreen', b: 'panel.tintBlue' } as const;
-  for (const c of ['r', 'g', 'b'] as const)
-    folder.add(rgb, c, LIGHT_TINT_DOMAIN.min, LIGHT_TINT_DOMAIN.max, TINT_STEP).name(cat[sliders[c]]);
-  return () => ({ [row.key]: [rgb.r, rgb.g, rgb.b] });
 }
 
 /**

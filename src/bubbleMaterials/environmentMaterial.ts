@@ -1,5 +1,12 @@
-import { BackSide, type DataTexture, ShaderMaterial, Vector2 } from 'three';
-import { ENVIRONMENT_KINDS, STAND_IN_ENVIRONMENT, environmentKind, isHdrEnvironment } from '../environments/environments.ts';
+import { BackSide, type DataTexture, ShaderMaterial, Vector2, Vector3 } from 'three';
+import {
+  ENVIRONMENT_KINDS,
+  STAND_IN_ENVIRONMENT,
+  environmentColor,
+  environmentKind,
+  environmentText,
+  isHdrEnvironment,
+} from '../environments/environments.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
 import { enumDefines } from '../gpu/enumDefines.ts';
 import { setDefines } from '../gpu/materialDefines.ts';
@@ -10,7 +17,7 @@ export type EnvironmentSettings = Pick<FilmSettings, 'env' | 'envRotationDeg' | 
 
 /**
  * TFC_ENVIRONMENT for the environment shown: its kind (the caller shows the stand-in until an HDR
- * map has arrived).
+ * map has arrived), never its colour, which is a uniform: a change of colour keeps the program.
  */
 export const environmentDefines = (s: Pick<FilmSettings, 'env'>): Record<string, number> =>
   enumDefines('TFC_ENVIRONMENT', ENVIRONMENT_KINDS, environmentKind(s.env));
@@ -20,14 +27,18 @@ export const environmentUniforms = () => ({
   uEnvironmentMap: { value: null as DataTexture | null },
   /** The map's turn about +y as (cos, sin), computed here once rather than per fragment. */
   uEnvironmentTurn: { value: new Vector2(1, 0) },
+  /** A uniform environment's colour (linear sRGB relative to the light's white); black for the others. */
+  uEnvironmentColor: { value: new Vector3() },
   uExposure: { value: 1 },
 });
 
-/** Points a material at the environment shown (`map`: its texture, for an HDR `env`). */
+/** Points a material at the environment shown (`map`: its texture, for an HDR `env`; a uniform one's colour). */
 export function updateEnvironmentUniforms(m: ShaderMaterial, s: EnvironmentSettings, map: DataTexture | null): void {
-  if (isHdrEnvironment(s.env) !== (map !== null)) throw new Error(`environment ${s.env} shown with${map ? '' : 'out'} a map`);
+  if (isHdrEnvironment(s.env) !== (map !== null))
+    throw new Error(`environment ${environmentText(s.env)} shown with${map ? '' : 'out'} a map`);
   const u = m.uniforms;
   u.uEnvironmentMap!.value = map;
+  (u.uEnvironmentColor!.value as Vector3).set(...(environmentColor(s.env) ?? [0, 0, 0]));
   const turn = (s.envRotationDeg * Math.PI) / 180;
   (u.uEnvironmentTurn!.value as Vector2).set(Math.cos(turn), Math.sin(turn));
   u.uExposure!.value = s.exposure;

@@ -7,7 +7,7 @@ import { DEFAULT_FILM_QUALITY } from '../settings/filmQuality.ts';
 import { type ShownEnvironment, environmentRadiance, reflectedRadiance } from './environment.ts';
 import type { EnvironmentPixels } from '../bubbleMaterials/environmentMaps.ts';
 import { type FilmSettings, toneMappingOf } from '../settings/filmSettings.ts';
-import { environmentKind } from '../environments/environments.ts';
+import { environmentColor, environmentKind, environmentText } from '../environments/environments.ts';
 import { maxFieldThicknessNm, thicknessAt } from '../fields/fields.ts';
 import { toneMap } from './toneMapping.ts';
 import type { Vec3 } from '../fields/thicknessField.ts';
@@ -76,12 +76,14 @@ function filmColorLattice(s: FilmSettings): FilmColor {
   };
 }
 
-/** The environment a still image shows: an HDR `env` needs its pixels (environmentMaps.ts). */
+/** The environment a still image shows: an HDR `env` needs its pixels (environmentMaps.ts), a uniform one its colour. */
 function shownEnvironment(s: FilmSettings, map: EnvironmentPixels | null): ShownEnvironment {
   const kind = environmentKind(s.env);
-  if (kind !== 'map') return { kind };
-  if (!map) throw new Error(`the environment ${s.env} needs its pixels`);
-  return { kind, pixels: map, rotationDeg: s.envRotationDeg };
+  const color = environmentColor(s.env);
+  if (color) return { kind: 'color', color };
+  if (kind === 'none' || kind === 'sky') return { kind };
+  if (!map) throw new Error(`the environment ${environmentText(s.env)} needs its pixels`);
+  return { kind: 'map', pixels: map, rotationDeg: s.envRotationDeg };
 }
 
 /**

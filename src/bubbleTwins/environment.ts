@@ -1,17 +1,19 @@
 import type { Rgb } from '../physics/colorConversions.ts';
 import type { EnvironmentPixels } from '../bubbleMaterials/environmentMaps.ts';
+import type { EnvironmentColor } from '../environments/environmentColor.ts';
 
 type Vec3 = readonly [number, number, number];
 
 /**
  * What a view's walls reflect and its background shows (twin of shaders/bubbleMaterials/environment.glsl),
- * by its kind (ENVIRONMENT_KINDS, src/environments/environments.ts): `none` black, `sky` the procedural sky, or an
- * HDR `map` turned about the vertical axis.
+ * by its kind (ENVIRONMENT_KINDS, src/environments/environments.ts): `none` black, `sky` the procedural sky, an
+ * HDR `map` turned about the vertical axis, or one `color` from every direction.
  */
 export type ShownEnvironment =
   | { readonly kind: 'none' }
   | { readonly kind: 'sky' }
-  | { readonly kind: 'map'; readonly pixels: EnvironmentPixels; readonly rotationDeg: number };
+  | { readonly kind: 'map'; readonly pixels: EnvironmentPixels; readonly rotationDeg: number }
+  | { readonly kind: 'color'; readonly color: EnvironmentColor };
 
 const clamp01 = (v: number) => Math.min(1, Math.max(0, v));
 const smoothstep = (e0: number, e1: number, x: number) => {
@@ -60,6 +62,7 @@ function sampleBilinear(p: EnvironmentPixels, u: number, v: number): Rgb {
 /** The environment's linear sRGB radiance arriving from `direction` (any length). */
 export function environmentRadiance(direction: Vec3, env: ShownEnvironment): Rgb {
   if (env.kind === 'none') return [0, 0, 0];
+  if (env.kind === 'color') return [env.color[0], env.color[1], env.color[2]];
   const l = Math.hypot(direction[0], direction[1], direction[2]);
   const d: Vec3 = [direction[0] / l, direction[1] / l, direction[2] / l];
   if (env.kind === 'sky') return skyRadiance(d[1]);

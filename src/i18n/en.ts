@@ -83,6 +83,7 @@ export const EN = {
   'choice.env.sunset': 'sunset',
   'choice.env.studio': 'studio',
   'choice.env.city': 'city',
+  'choice.env.color': 'uniform colour',
   'choice.sides.both': 'both',
   'choice.sides.front': 'front',
   'choice.illuminant.D55': 'D55',
@@ -138,6 +139,7 @@ export const EN = {
   'expected.flag': '0 or 1',
   'expected.illuminant': 'one of {names}, line:NM with NM in [{lineMin}, {lineMax}] nm, or a daylight CCT in [{min}, {max}] K',
   'expected.lightTint': 'three numbers R,G,B, each in [{min}, {max}]',
+  'expected.environment': 'one of {names}, or {form}, each in [{min}, {max}]',
   'expected.filmIndex':
     'a number in [{min}, {max}], {materials}, or cauchy:A,B[,C] (n = A + B/λ² + C/λ⁴, λ in nm) within [{min}, {max}] over {from}–{to} nm',
   'expected.medium':
@@ -158,6 +160,9 @@ export const EN = {
   'panel.tintRed': 'light tint R (linear sRGB)',
   'panel.tintGreen': 'light tint G (linear sRGB)',
   'panel.tintBlue': 'light tint B (linear sRGB)',
+  'panel.environmentRed': 'environment R (linear sRGB)',
+  'panel.environmentGreen': 'environment G (linear sRGB)',
+  'panel.environmentBlue': 'environment B (linear sRGB)',
   'panel.filmMaterial': 'film material',
   'panel.cauchy': 'Cauchy A,B[,C] (λ in nm)',
   'panel.insideMedium': 'inside medium',

@@ -83,6 +83,7 @@ export const JA: Catalogue = {
   'choice.env.sunset': '夕焼け',
   'choice.env.studio': 'スタジオ',
   'choice.env.city': '街',
+  'choice.env.color': '一様な色',
   'choice.sides.both': '表と裏',
   'choice.sides.front': '表のみ',
   'choice.illuminant.D55': 'D55',
@@ -139,6 +140,7 @@ export const JA: Catalogue = {
   'expected.illuminant':
     '{names} のいずれか、line:NM（NM は [{lineMin}, {lineMax}] nm の波長）、または [{min}, {max}] K の昼光の相関色温度',
   'expected.lightTint': 'R,G,B（3 つの数値、それぞれ [{min}, {max}]）',
+  'expected.environment': '{names} のいずれか、または {form}（それぞれ [{min}, {max}]）',
   'expected.filmIndex':
     '[{min}, {max}] の数値、{materials}、または {from}–{to} nm で [{min}, {max}] に収まるコーシーの式 cauchy:A,B[,C]（n = A + B/λ² + C/λ⁴、λ は nm）',
   'expected.medium':
@@ -159,6 +161,9 @@ export const JA: Catalogue = {
   'panel.tintRed': '光の色味 R（線形 sRGB）',
   'panel.tintGreen': '光の色味 G（線形 sRGB）',
   'panel.tintBlue': '光の色味 B（線形 sRGB）',
+  'panel.environmentRed': '環境の色 R（線形 sRGB）',
+  'panel.environmentGreen': '環境の色 G（線形 sRGB）',
+  'panel.environmentBlue': '環境の色 B（線形 sRGB）',
   'panel.filmMaterial': '薄膜の物質',
   'panel.cauchy': 'コーシーの式 A,B[,C]（λ は nm）',
   'panel.insideMedium': '内側の媒質',

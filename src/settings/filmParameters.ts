@@ -2,11 +2,11 @@ import { FILM_STACK_DOMAIN, POLARIZATIONS, SOAP_FILM_IN_AIR } from '../physics/f
 import { FIELD_SETTINGS, type FieldSettings } from '../fields/fields.ts';
 import { FLOW_PARAMETERS, type FlowParameterKey } from '../physics/filmDynamics/flowParameters.ts';
 import { NORMALIZATIONS } from '../physics/spectralWeights.ts';
-import { ENVIRONMENTS, FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
+import { FIELDS, type FilmSettings, MODES, SIDES, SPACES, TONE_MAPPINGS } from './filmSettings.ts';
 import { DEFAULT_LIGHT } from './filmLight.ts';
 import { layersRow } from './layersRow.ts';
 import { type ParameterRow, defaultsOf } from './parameterRow.ts';
-import { illuminantRow, lightTintRow, mediumRow } from './textRows.ts';
+import { environmentRow, illuminantRow, lightTintRow, mediumRow } from './textRows.ts';
 import { choiceRow, flagRow, numberRow } from './valueRows.ts';
 
 type Row = ParameterRow<FilmSettings>;
@@ -52,7 +52,7 @@ export const FILM_PARAMETERS: readonly Row[] = [
   numberRow({ key: 'exposure', url: 'exposure' }, { min: 0, max: 100, unit: '' }, 1, 'light and colour', 0.01),
   choiceRow({ key: 'tonemap', url: 'tonemap' }, TONE_MAPPINGS, 'auto', 'light and colour'),
   choiceRow({ key: 'mode', url: 'mode' }, MODES, 'table', 'view'),
-  choiceRow({ key: 'env', url: 'env' }, ENVIRONMENTS, 'sky', 'view'),
+  environmentRow({ key: 'env', url: 'env' }, 'sky', 'view'),
   numberRow({ key: 'envRotationDeg', url: 'envRotation' }, { min: 0, max: 360, unit: 'degrees' }, 0, 'view', 1),
   choiceRow({ key: 'sides', url: 'sides' }, SIDES, 'both', 'view'),
   numberRow({ key: 'timeSeconds', url: 'time' }, { min: 0, max: 1e6, unit: 's' }, 0, null),

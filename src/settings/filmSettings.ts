@@ -16,8 +16,10 @@ export { ENVIRONMENTS, HDR_ENVIRONMENTS, isHdrEnvironment };
 export type { Environment, HdrEnvironment };
 /**
  * How HDR light becomes display values: `none` clips (the reference views stay exact), `agx` and
- * `neutral` are three.js's AgX and Khronos PBR Neutral curves; `auto` is `none` for `none` and
- * `sky`, `agx` for the HDR environments (so the sun and bright windows keep their highlights).
+ * `neutral` are three.js's AgX and Khronos PBR Neutral curves; `auto` is `none` for `none`, `sky`
+ * and a uniform colour (at most four times the light's white: no curve bends the film's reflection of
+ * that one known light, and only a background brighter than white clips), `agx` for the HDR
+ * environments (so the sun and bright windows keep their highlights).
  */
 export const TONE_MAPPINGS = ['auto', 'none', 'agx', 'neutral'] as const;
 export type ToneMapping = Exclude<(typeof TONE_MAPPINGS)[number], 'auto'>;

@@ -11,6 +11,8 @@ export type PanelControl =
   | { readonly folder: PanelFolder; readonly kind: 'illuminant' }
   /** A tint (lightTint.ts): a slider for each of R, G and B over the tint's domain. */
   | { readonly folder: PanelFolder; readonly kind: 'tint' }
+  /** An environment: a list of the registry's names plus a uniform colour, whose R, G and B sliders show while it is chosen. */
+  | { readonly folder: PanelFolder; readonly kind: 'environment' }
   /** A film index: a constant (slider), a named material, or a Cauchy film (text A,B[,C]). */
   | { readonly folder: PanelFolder; readonly kind: 'filmIndex' }
   /** A medium (medium.ts): a film index's controls, a named medium (a metal, an oxide) or a complex constant (text n,k). */

@@ -20,6 +20,13 @@ import {
 import { COMPLEX_INDEX_DOMAIN, FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { type Medium, type MediumRole, mediumText, readMedium } from '../physics/medium.ts';
 import { NAMED_MEDIA } from '../physics/namedMedia.ts';
+import {
+  ENVIRONMENT_EXPECTED,
+  ENVIRONMENT_EXPECTED_VALUES,
+  type Environment,
+  environmentText,
+  readEnvironment,
+} from '../environments/environments.ts';
 import { EN } from '../i18n/en.ts';
 import {
   type Expectation,
@@ -31,7 +38,7 @@ import {
   named,
 } from './parameterRow.ts';
 
-/* The rows of a value of a kind of its own written as text: an illuminant, a tint, a film index, a medium (and a stack of films, layersRow.ts). */
+/* The rows of a value of a kind of its own written as text: an illuminant, a tint, an environment, a film index, a medium (and a stack of films, layersRow.ts). */
 
 /** A value of a kind of its own written as text: how it reads (a value, or why not) and writes. */
 export interface TextKind<V> {
@@ -105,6 +112,23 @@ export const lightTintRow = <S, K extends keyof S & string>(
     },
     text: lightTintText,
     control: (folder) => ({ folder, kind: 'tint' }),
+  });
+
+/** An environment (environments.ts): a name in the registry, or a uniform colour `color:R,G,B`. */
+export const environmentRow = <S, K extends keyof S & string>(
+  n: RowNames<S, K>,
+  defaultValue: S[K] & Environment,
+  folder: PanelFolder | null,
+) =>
+  textRow<S, K, Environment>(n, defaultValue, folder, {
+    expected: ENVIRONMENT_EXPECTED,
+    expects: { key: 'expected.environment', values: ENVIRONMENT_EXPECTED_VALUES },
+    parse: (raw) => {
+      const reading = readEnvironment(raw);
+      return 'env' in reading ? { value: reading.env } : reading;
+    },
+    text: environmentText,
+    control: (folder) => ({ folder, kind: 'environment' }),
   });
 
 /** A film index (filmIndex.ts): a number, a material's name or `cauchy:A,B[,C]`, within its domain over the band. */

@@ -1,7 +1,14 @@
-import { expect, test, type Page, type Route } from '@playwright/test';
+import type { Page, Route } from '@playwright/test';
+import { expect, test } from './fixtures.ts';
 import { KEPT_DEFINE_SETS } from '../../src/gpu/materialDefines.ts';
+import { encode8, srgbDecode } from '../../src/physics/colorConversions.ts';
 import { HDR_ENVIRONMENTS } from '../../src/settings/filmSettings.ts';
+import { parseSettings } from '../../src/settings/settingsQuery.ts';
 import { showSettings } from './appSettings.ts';
+import { centrePixel } from './drawingBuffer.ts';
+import { openPanel } from './panel.ts';
+import { EN } from '../../src/i18n/en.ts';
+import { MAX_CODE_DIFFERENCE, worstCodeDifference } from './referenceColor.ts';
 import { watchProblems } from './pageWatch.ts';
 import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './webglContext.ts';
 
@@ -9,7 +16,8 @@ import { gpuObjects, loseContext, restoreContext, settledGpuObjects } from './we
  * The HDR environments as a page meets them: each arrives (its own module, fetched when first
  * shown) with no console error and draws a bubble that is not uniform, and a lost and restored GPU
  * context draws the same bubble again; while one is on its way the page says so and counts no
- * frame as ready; one that fails to load says so and shows the sky.
+ * frame as ready; one that fails to load says so and shows the sky. A uniform colour, given in the
+ * URL's text, lights the bubble linearly and changes colour without a new program.
  */
 
 type Window_ = Window & { bubbleView: import('../../src/view/bubbleView.ts').BubbleView };
@@ -106,4 +114,73 @@ test('a loading environment is announced and counts no frame as ready; a failed 
   await showSettings(page, { env: 'sky' });
   await expect(line).toHaveCount(0);
   expect((await frame(page)).pixels === fallback.pixels, 'the same pixels as the sky asked for').toBe(true);
+});
+
+test("a grey room of g (env=color:g,g,g) shows a bare metal's linear colour under env=none times g and the grey behind; a new grey compiles nothing", async ({
+  demoPage: page,
+}) => {
+  /** The corner pixel: the background, off the bubble. */
+  const cornerPixel = () =>
+    page.evaluate(() => {
+      const gl = (window as unknown as Window_).bubbleView.renderer.getContext();
+      const pixel = new Uint8Array(4);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      gl.readPixels(2, 2, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+      return [pixel[0]!, pixel[1]!, pixel[2]!];
+    });
+  /** The view `query` gives over the shared page's neutral one (tone mapping auto), its centre and corner. */
+  const shown = async (query: string) => {
+    const { settings, refusals } = parseSettings(`${query}&nInside=Cu&thickness=0`);
+    expect(refusals).toEqual([]);
+    const { env, nInside, thicknessNm } = settings;
+    await showSettings(page, { env, nInside, thicknessNm });
+    return { centre: await centrePixel(page), corner: await cornerPixel() };
+  };
+  // Bare copper under the light's white, (0.94, 0.62, 0.52) in linear sRGB: no channel clips, so each says how much light it reflects.
+  const white = await shown('env=none');
+  expect(Math.max(...white.centre)).toBeLessThan(255);
+  for (const g of [0.5, 0.25]) {
+    const grey = await shown(`env=color:${g},${g},${g}`);
+    // Linear in the light reflected: the linear colour under the light's white, times g (tone mapping auto is none here).
+    const expected = white.centre.map((code) => encode8(g * srgbDecode(code / 255)));
+    console.log(`copper in grey ${g}: centre ${grey.centre}, expected ${expected} (under white ${white.centre}); corner ${grey.corner}`);
+    expect(worstCodeDifference(grey.centre, expected), `centre in grey ${g}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+    expect(worstCodeDifference(grey.corner, [encode8(g), encode8(g), encode8(g)]), `corner in grey ${g}`).toBeLessThanOrEqual(
+      MAX_CODE_DIFFERENCE,
+    );
+  }
+  // The second grey drew with the first one's programs: a colour is a uniform, not a define.
+  const programs = (await gpuObjects(page)).programs;
+  const red = await shown('env=color:1,0.2,0.2');
+  expect((await gpuObjects(page)).programs).toBe(programs);
+  expect(worstCodeDifference(red.corner, [encode8(1), encode8(0.2), encode8(0.2)]), 'corner in red').toBeLessThanOrEqual(
+    MAX_CODE_DIFFERENCE,
+  );
+});
+
+test('the panel shows a uniform colour the URL gives as its own choice with R, G and B sliders, and writes the colour and a name back', async ({
+  page,
+}) => {
+  // A fresh page: the panel is made from the settings of the URL it loads.
+  const problems = watchProblems(page);
+  await page.goto('/?env=color:1,0.2,0.2&field=uniform&thickness=450&sides=front&animate=0');
+  await expect(page.locator('body')).toHaveAttribute('data-frames', 'ready');
+  await openPanel(page);
+  const env = page.getByRole('combobox', { name: 'environment', exact: true });
+  const slider = (c: string) => page.locator('.lil-controller', { hasText: `environment ${c} (linear sRGB)` });
+  // lil-gui's options are valued by their labels.
+  await expect(env).toHaveValue(EN['choice.env.color']);
+  await expect(slider('R').locator('input')).toHaveValue('1');
+  await expect(slider('G').locator('input')).toHaveValue('0.2');
+  await slider('G').locator('input').fill('0.5');
+  await slider('G').locator('input').press('Enter');
+  await expect(page).toHaveURL(/env=color(:|%3A)1(,|%2C)0\.5(,|%2C)0\.2(&|$)/);
+  await env.selectOption('sky');
+  await expect(page).toHaveURL(/env=sky/);
+  for (const c of ['R', 'G', 'B']) await expect(slider(c)).toBeHidden();
+  // Back to the colour: the sliders kept theirs.
+  await env.selectOption(EN['choice.env.color']);
+  await expect(page).toHaveURL(/env=color(:|%3A)1(,|%2C)0\.5(,|%2C)0\.2(&|$)/);
+  for (const c of ['R', 'G', 'B']) await expect(slider(c)).toBeVisible();
+  expect(problems).toEqual([]);
 });

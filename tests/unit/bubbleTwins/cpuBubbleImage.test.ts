@@ -95,6 +95,32 @@ describe('the CPU still image of the bubble', () => {
     }
   });
 
+  it('a uniform colour (env=color:R,G,B) draws what a map of that one colour draws, pixel for pixel, with no map', () => {
+    // Exact in float32, as the map's texels are.
+    const L = [0.75, 0.5, 0.25] as const;
+    const uniform: EnvironmentPixels = { width: 4, height: 2, rgba: Float32Array.from({ length: 32 }, (_, k) => [...L, 1][k & 3]!) };
+    for (const over of [
+      { thicknessNm: 700, sides: 'both' },
+      { thicknessNm: 100, nFilm: 1.38, nInside: 'Au', sides: 'both' },
+    ] as const) {
+      const asMap = cpuBubbleImage(film({ ...over, env: 'park', tonemap: 'none' }), SIZE / 4, SIZE / 4, uniform);
+      const asColor = cpuBubbleImage(film({ ...over, env: { color: L }, tonemap: 'auto' }), SIZE / 4, SIZE / 4);
+      expect(asColor, JSON.stringify(over)).toEqual(asMap);
+    }
+  });
+
+  it("over a metal in a grey room of g, the centre is g times the metal's colour (linear in the light it reflects), the background g", () => {
+    const g = 0.5;
+    const s = film({ thicknessNm: 0, nInside: 'Au', sides: 'both', env: { color: [g, g, g] } });
+    const image = cpuBubbleImage(s, SIZE, SIZE);
+    const r = applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz({ nOutside: 1, nFilm: 1.33, nInside: 'Au', thicknessNm: 0, angleDeg: 0 }));
+    const expected = r.map((v) => encode8(Math.min(1, Math.max(0, g * v))));
+    const centre = pixel(image, SIZE / 2, SIZE / 2);
+    for (let i = 0; i < 3; i++)
+      expect(Math.abs(centre[i]! - expected[i]!), `${centre} vs ${expected}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+    expect(pixel(image, 5, 5)).toEqual([encode8(g), encode8(g), encode8(g), 255]);
+  });
+
   it('over a metal the sphere is opaque: in a uniform environment it shows R · L, no far wall, nothing behind; the background stays L', () => {
     const L = [0.9, 0.5, 0.3];
     const uniform: EnvironmentPixels = { width: 4, height: 2, rgba: Float32Array.from({ length: 32 }, (_, k) => [...L, 1][k & 3]!) };

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { environmentRadiance, equirectUv } from '../../../src/bubbleTwins/environment.ts';
+import { environmentRadiance, equirectUv, reflectedRadiance } from '../../../src/bubbleTwins/environment.ts';
 import type { EnvironmentPixels } from '../../../src/bubbleMaterials/environmentMaps.ts';
 import { ALGEBRAIC_TOL, EQUIRECT_SEAM_TOL, ROUNDING_TOL } from '../../tolerances.ts';
 
@@ -71,5 +71,16 @@ describe('the equirectangular environment', () => {
     const justAfter = environmentRadiance(direction(1e-9, v), env);
     expect(Math.abs(justBefore[0] - (W - 1) / 2)).toBeLessThan(EQUIRECT_SEAM_TOL);
     expect(Math.abs(justAfter[0] - (W - 1) / 2)).toBeLessThan(EQUIRECT_SEAM_TOL);
+  });
+});
+
+describe('the uniform coloured environment', () => {
+  it('sends its colour from every direction, of any length, and the walls reflect that colour (not the white that none gives them)', () => {
+    const env = { kind: 'color', color: [1, 0.2, 3.5] } as const;
+    for (const d of [direction(0.1, 0.5), direction(0.7, 0.02), direction(0.45, 0.99), [0, -7, 0] as [number, number, number]]) {
+      expect(environmentRadiance(d, env)).toEqual([1, 0.2, 3.5]);
+      expect(reflectedRadiance(d, env)).toEqual([1, 0.2, 3.5]);
+    }
+    expect(reflectedRadiance([0, 0, 1], { kind: 'color', color: [0, 0, 0] })).toEqual([0, 0, 0]);
   });
 });

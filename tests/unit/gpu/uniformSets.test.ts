@@ -30,6 +30,9 @@ const MEDIA = [
   { nFilm: 1.38, nInside: 'Au' },
 ] as const;
 
+/** Every environment: the registry's names and a uniform colour. */
+const EVERY_ENVIRONMENT = [...ENVIRONMENTS, { color: [1, 0.2, 0.2] } as const];
+
 /** Stacks of films: one that follows the field's thickness over a dispersive inside, one of fixed layers. */
 const STACKS = [
   {
@@ -84,7 +87,7 @@ describe('uniform sets', () => {
     let set: string[] = [];
     for (const mode of FILM_METHODS)
       for (const field of FIELDS)
-        for (const env of ENVIRONMENTS)
+        for (const env of EVERY_ENVIRONMENT)
           for (const media of [...MEDIA, ...STACKS]) {
             const m = createBubbleMaterial({ ...DEFAULT_SETTINGS, mode, field, env, ...media }, DEFAULT_FILM_QUALITY);
             set = Object.keys(m.uniforms);
@@ -94,7 +97,7 @@ describe('uniform sets', () => {
   });
 
   it('the background sets what it declares, for every environment', () => {
-    const materials = ENVIRONMENTS.map((env) => Object.assign(createBackgroundMaterial(), { defines: environmentDefines({ env }) }));
+    const materials = EVERY_ENVIRONMENT.map((env) => Object.assign(createBackgroundMaterial(), { defines: environmentDefines({ env }) }));
     expectDeclaredAreSet(declaredByConfiguration(materials), Object.keys(materials[0]!.uniforms));
   });
 

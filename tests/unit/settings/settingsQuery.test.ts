@@ -150,6 +150,10 @@ describe('URL parameters', () => {
       v,
       'line:NM with NM in [380, 780] nm',
     ]),
+    // An environment: a name, or a uniform colour of three numbers each in [0, 4].
+    ...['color:', 'color:1,1', 'color:1,1,1,1', 'color:4.1,1,1', 'color:1,-0.1,1', 'color:1,1,NaN', 'colour:1,1,1', 'forest'].map(
+      (v): [string, string, string] => ['env', v, 'color:R,G,B, each in [0, 4]'],
+    ),
     // A tint: three numbers, each in [0, 1] (not two, not four, none outside, none not a number).
     ...['', '0.5', '0.5,0.5', '0.5,0.5,0.5,0.5', '1.1,0.5,0.5', '0.5,-0.1,0.5', '0.5,0.5,NaN', '0.5,,0.5', 'red', ABSURDLY_LONG].map(
       (v): [string, string, string] => ['lightTint', v, 'three numbers R,G,B, each in [0, 1]'],
@@ -222,6 +226,24 @@ describe('URL parameters', () => {
   it('builds on a base: a refused value leaves the base value', () => {
     const base = { ...DEFAULT_SETTINGS, thicknessNm: 777 };
     expect(parseSettings('?thickness=-3', base).settings).toEqual(base);
+  });
+});
+
+describe('the env parameter', () => {
+  it('reads a uniform colour and writes it back as it was given', () => {
+    const { settings, errors } = parseSettings('?env=color:1,0.2,0.2');
+    expect(errors).toEqual([]);
+    expect(settings).toEqual({ ...DEFAULT_SETTINGS, env: { color: [1, 0.2, 0.2] } });
+    expect(settingsToQuery(settings)).toBe('env=color%3A1%2C0.2%2C0.2');
+    expect(parseSettings(`?${settingsToQuery(settings)}`)).toEqual({ settings, errors: [], refusals: [] });
+  });
+
+  it('refuses a colour outside its range, says which component and why, and keeps the default', () => {
+    const { settings, errors } = parseSettings('?env=color:1,5,0');
+    expect(settings).toEqual(DEFAULT_SETTINGS);
+    expect(errors).toEqual([
+      'env="color:1,5,0" ignored: expected one of sky, none, park, sunset, studio, city, or color:R,G,B, each in [0, 4] (here G is 5, above 4)',
+    ]);
   });
 });
 
