@@ -7,7 +7,7 @@
  */
 import { FULLSCREEN_VERTEX } from '../../src/gpu/fullscreenPass.ts';
 import { maxFieldThicknessNm } from '../../src/fields/fields.ts';
-import { ShaderMaterial, type WebGLRenderTarget, type WebGLRenderer } from 'three';
+import { ShaderMaterial, Vector3, type WebGLRenderTarget, type WebGLRenderer } from 'three';
 import { type FilmTableBinding, filmColorDefines, filmColorUniforms, updateFilmColorUniforms } from '../../src/film/filmColor.ts';
 import { type FilmQuality } from '../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
@@ -24,10 +24,18 @@ import { methodReads } from '../../src/methods/methods.ts';
 
 const FRAGMENT = `${shaderSource('filmColor.glsl')}
 uniform sampler2D uInputs; // r: thickness in nm, g: cos θ_i
+uniform vec3 uReflectedColor; // with the environment matrix: the colour it reflects
 void main() {
   vec2 film = texelFetch(uInputs, ivec2(gl_FragCoord.xy), 0).rg;
+#ifdef TFC_ENVIRONMENT_MATRIX
+  gl_FragColor = vec4(tfcReflectedXyz(tfcFilmXyz(film.x, film.y, false), uReflectedColor), 1.0);
+#else
   gl_FragColor = vec4(tfcFilmXyz(film.x, film.y, false), 1.0);
+#endif
 }`;
+
+/** The environment a group's film is seen in: a uniform one of the colour it reflects, if it has one (its environment matrix), else none. */
+const environmentOf = (g: ParityGroup): Pick<FilmSettings, 'env'> => ({ env: g.environmentColor ? { color: g.environmentColor } : 'none' });
 
 export class FilmXyzProbe {
   private readonly materials = new Map<string, ShaderMaterial>();
@@ -42,13 +50,13 @@ export class FilmXyzProbe {
   }
 
   private material(mode: ParityMode, g: ParityGroup, quality: FilmQuality): ShaderMaterial {
-    const defines = filmColorDefines({ ...g, mode }, quality);
+    const defines = filmColorDefines({ ...g, ...environmentOf(g), mode }, quality);
     const key = JSON.stringify(defines);
     const hit = this.materials.get(key);
     if (hit) return hit;
     const m = new ShaderMaterial({
       defines,
-      uniforms: { uInputs: { value: null }, ...filmColorUniforms(), ...filmStackUniforms() },
+      uniforms: { uInputs: { value: null }, uReflectedColor: { value: new Vector3() }, ...filmColorUniforms(), ...filmStackUniforms() },
       vertexShader: FULLSCREEN_VERTEX,
       fragmentShader: FRAGMENT,
     });
@@ -80,10 +88,18 @@ export class FilmXyzProbe {
     let table: FilmTableBinding | null = null;
     if (methodReads(mode, 'table')) {
       const thicknessesNm = g.inputs.map(([t]) => t);
-      const settings = { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: Math.max(...thicknessesNm), mode } as const;
+      const settings = {
+        ...DEFAULT_SETTINGS,
+        ...g,
+        ...environmentOf(g),
+        field: 'uniform',
+        thicknessNm: Math.max(...thicknessesNm),
+        mode,
+      } as const;
       table = this.tableAround(quality, settings, thicknessesNm);
     }
-    updateFilmColorUniforms(m, { lightTint: WHITE_TINT, ...g, mode }, quality, table);
+    updateFilmColorUniforms(m, { lightTint: WHITE_TINT, ...g, ...environmentOf(g), mode }, quality, table);
+    (u.uReflectedColor!.value as Vector3).fromArray(g.environmentColor ?? [1, 1, 1]);
     const out = renderFloatRow(this.renderer, m, g.inputs.length);
     inputTexture.dispose();
     return g.inputs.map((_, i) => [out[4 * i]!, out[4 * i + 1]!, out[4 * i + 2]!]);

@@ -12,6 +12,12 @@ export interface ParityGroup extends Pick<
 > {
   /** The light's tint (none: untinted). */
   readonly lightTint?: LightTint;
+  /**
+   * A colour (linear sRGB relative to the light's white) the film reflects, as a uniform environment
+   * of that colour: the shader computes the film's environment matrix M and renders M · colour (none:
+   * the film's XYZ under the light).
+   */
+  readonly environmentColor?: readonly [number, number, number];
   /** A stack of films in place of nFilm (none or empty: the single film); its `d` layers take each case's thickness. */
   readonly layers?: readonly FilmLayer[];
   /** [thicknessNm, cosIncidence] per case */

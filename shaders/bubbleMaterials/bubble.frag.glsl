@@ -1,5 +1,5 @@
 // The bubble (twin of bubbleRadiance in src/bubbleTwins/cpuBubbleImage.ts): the near wall reflects the environment in its mirror direction (the illuminant's
-// white with TFC_ENVIRONMENT 0) weighted by the film's reflectance; through it (T = 1 - R per channel)
+// white with TFC_ENVIRONMENT 0) weighted by the film's reflectance; through it (T = 1 - R: tfcWallRadiance)
 // the far wall, seen from inside at the same θ_i, reflecting the environment in its own mirror
 // direction, and through both walls the environment behind. Left out: the third wall the far
 // wall's reflection crosses on its way in, and every reflection of higher order (each ≤ R² ≈ 2e-3
@@ -15,6 +15,21 @@
 
 uniform mat3 uXyzToLinearDisplay;   // XYZ -> the display's linear space, for the gamut test
 
+// A wall's light: its film's reflection of `reflected` (the light from its mirror direction) and its
+// transmission of `transmitted`, in the working space. Where the walls reflect the light's white
+// (TFC_ENVIRONMENT_NONE), the film's XYZ gives R per channel and T = 1 - R; in a coloured environment
+// its environment matrix (TFC_ENVIRONMENT_MATRIX) gives each colour c as M c, an integral of two
+// spectra, and c - M c through the wall, the light the film does not reflect.
+vec3 tfcWallRadiance(TFC_FILM_COLOR film, vec3 reflected, vec3 transmitted) {
+#ifdef TFC_ENVIRONMENT_MATRIX
+  mat3 m = uXyzToLinearWorking * film;
+  return m * reflected + transmitted - m * transmitted;
+#else
+  vec3 r = tfcApplyMatrix3(uXyzToLinearWorking, film);
+  return r * reflected + clamp(1.0 - r, 0.0, 1.0) * transmitted;
+#endif
+}
+
 varying vec3 vWorldPosition;
 varying vec3 vWorldNormal;
 varying vec3 vSpherePoint;
@@ -24,12 +39,12 @@ void main() {
   vec3 normal = normalize(vWorldNormal);
   float cosIncidence = clamp(abs(dot(normal, toEye)), 0.0, 1.0);
   float nearThicknessNm = tfcThicknessAt(vSpherePoint);
-  vec3 nearXyz = tfcFilmXyz(nearThicknessNm, cosIncidence, false);
+  TFC_FILM_COLOR nearFilm = tfcFilmXyz(nearThicknessNm, cosIncidence, false);
+  vec3 nearXyz = tfcFilmWhiteXyz(nearFilm);
 #ifdef TFC_PROBE
   gl_FragColor = vec4(nearXyz, nearThicknessNm);
   return;
 #endif
-  vec3 nearR = tfcApplyMatrix3(uXyzToLinearWorking, nearXyz);
   vec3 nearLight = tfcReflectedRadiance(reflect(-toEye, normal));
 #ifdef TFC_OPAQUE_INSIDE
   vec3 behind = vec3(0.0);
@@ -40,11 +55,11 @@ void main() {
   // The chord through a unit sphere at incidence θ has length 2 cos θ; the exit point's film is
   // met at the same θ from inside. (Object space = world space up to the sphere's scale.)
   vec3 farPoint = normalize(vSpherePoint - 2.0 * cosIncidence * toEye);
-  vec3 farR = tfcApplyMatrix3(uXyzToLinearWorking, tfcFilmXyz(tfcThicknessAt(farPoint), cosIncidence, true));
+  TFC_FILM_COLOR farFilm = tfcFilmXyz(tfcThicknessAt(farPoint), cosIncidence, true);
   // Seen from inside, the far wall's normal points inward (-farPoint); reflect() is sign-blind.
-  behind = farR * tfcReflectedRadiance(reflect(-toEye, farPoint)) + clamp(1.0 - farR, 0.0, 1.0) * behind;
+  behind = tfcWallRadiance(farFilm, tfcReflectedRadiance(reflect(-toEye, farPoint)), behind);
 #endif
-  vec3 color = uExposure * (nearR * nearLight + clamp(1.0 - nearR, 0.0, 1.0) * behind);
+  vec3 color = uExposure * tfcWallRadiance(nearFilm, nearLight, behind);
 #if TFC_HATCH_OUT_OF_GAMUT
   vec3 display = tfcApplyMatrix3(uXyzToLinearDisplay, uExposure * nearXyz);
   if (tfcOutsideGamut(display) && mod(gl_FragCoord.x + gl_FragCoord.y, 8.0) < 2.0) color = vec3(1.0, 0.0, 1.0);

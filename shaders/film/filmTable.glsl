@@ -45,8 +45,12 @@ bool tfcRowSeries(int y, out AirySeriesTerms t[TFC_FILM_CHANNELS], out float pat
 }
 #endif
 
+// The rows below the plane drawn (src/film/filmTablePass.ts): a film's environment matrix is three
+// tables one above the other, each filled under its plane's light (the light times a basis spectrum).
+uniform int uFilmTablePlaneRow;
+
 void main() {
-  ivec2 texel = ivec2(gl_FragCoord.xy);
+  ivec2 texel = ivec2(gl_FragCoord.xy) - ivec2(0, uFilmTablePlaneRow);
   int rows = int(uFilmTableRows);
   bool fromInside = texel.y >= rows;
   int row = fromInside ? texel.y - rows : texel.y;

@@ -11,7 +11,7 @@
 #include "transferMatrix.glsl"
 #endif
 
-vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
+TFC_FILM_COLOR tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
 #if defined(TFC_FILM_LAYERS)
   return tfcLayersBinnedXyz(uNOutside, fromInside, thicknessNm, cosIncidence);
 #elif defined(TFC_DISPERSIVE)

@@ -10,7 +10,7 @@
 #include "binnedIntegration.glsl"
 #include "filmSideOptics.glsl"
 
-vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
+TFC_FILM_COLOR tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
 #ifdef TFC_DISPERSIVE
   return tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, 0);
 #else

@@ -9,12 +9,18 @@
 #include <common>
 #include <iridescence_fragment>
 
-vec3 tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
+TFC_FILM_COLOR tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
   float na;
   vec2 nc;
   tfcFilmSides(fromInside, na, nc);
   vec3 baseF0 = vec3(IorToFresnel0(nc.x, 1.0));
-  return inverse(XYZ_TO_REC709) * evalIridescence(na, uNFilm.x, cosIncidence, thicknessNm, baseF0);
+  vec3 rgb = evalIridescence(na, uNFilm.x, cosIncidence, thicknessNm, baseF0);
+#ifdef TFC_ENVIRONMENT_MATRIX
+  // three's film is an RGB triple: its reflection of colour c is the product rgb c, per channel.
+  return inverse(XYZ_TO_REC709) * mat3(rgb.x, 0.0, 0.0, 0.0, rgb.y, 0.0, 0.0, 0.0, rgb.z);
+#else
+  return inverse(XYZ_TO_REC709) * rgb;
+#endif
 }
 
 #endif

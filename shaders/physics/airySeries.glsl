@@ -11,6 +11,7 @@
 #ifndef THIN_FILM_AIRY_SERIES
 #define THIN_FILM_AIRY_SERIES
 #include "filmReflectance.glsl"
+#include "environmentMatrix.glsl"
 
 // The truncation rule of airySeriesXyz (TypeScript): stop when the terms left are below
 // TFC_AIRY_SERIES_TOLERANCE of the white, when F runs off its table, or at TFC_AIRY_SERIES_MAX_ORDERS;
@@ -37,11 +38,23 @@ AirySeriesTerms tfcAirySeriesTerms(AiryTerms c) {
   return AirySeriesTerms(rab2 + g, tfcCMul(c.multiple, vec2(c.rab.x, -c.rab.y)) + g * c.roundTrip, c.roundTrip);
 }
 
+// H at texel p of each plane (TFC_ENVIRONMENT_MATRIX: the transforms of the light times each basis
+// spectrum, one above the other, 2 TFC_SPECTRAL_TRANSFORM_ROWS rows each), as the film's colour
+// (environmentMatrix.glsl): a vec3, or a mat3 of plane j's in column j.
+TFC_FILM_COLOR tfcTransformTexel(ivec2 p) {
+#ifdef TFC_ENVIRONMENT_MATRIX
+  ivec2 plane = ivec2(0, 2 * TFC_SPECTRAL_TRANSFORM_ROWS);
+  return mat3(texelFetch(uSpectralTransform, p, 0).xyz, texelFetch(uSpectralTransform, p + plane, 0).xyz, texelFetch(uSpectralTransform, p + 2 * plane, 0).xyz);
+#else
+  return texelFetch(uSpectralTransform, p, 0).xyz;
+#endif
+}
+
 // H at entry i, real and imaginary parts.
-void tfcTransformEntry(int i, out vec3 re, out vec3 im) {
+void tfcTransformEntry(int i, out TFC_FILM_COLOR re, out TFC_FILM_COLOR im) {
   ivec2 p = ivec2(i % TFC_SPECTRAL_TRANSFORM_WIDTH, i / TFC_SPECTRAL_TRANSFORM_WIDTH);
-  re = texelFetch(uSpectralTransform, p, 0).xyz;
-  im = texelFetch(uSpectralTransform, p + ivec2(0, TFC_SPECTRAL_TRANSFORM_ROWS), 0).xyz;
+  re = tfcTransformTexel(p);
+  im = tfcTransformTexel(p + ivec2(0, TFC_SPECTRAL_TRANSFORM_ROWS));
 }
 
 // The carrier e^{i2πσ0 x}, its phase reduced to turns before the 2π so float32 keeps its digits.
@@ -50,17 +63,17 @@ vec2 tfcTransformCarrier(float pathNm) {
 }
 
 // F(x) = H(x) carrier, H linear between entries; false past the table (F taken as 0).
-bool tfcTransformAt(float pathNm, vec2 carrier, out vec3 re, out vec3 im) {
+bool tfcTransformAt(float pathNm, vec2 carrier, out TFC_FILM_COLOR re, out TFC_FILM_COLOR im) {
   float pos = pathNm / float(TFC_SPECTRAL_TRANSFORM_STEP_NM);
   float first = floor(pos);
   if (first >= float(TFC_SPECTRAL_TRANSFORM_COUNT - 1)) return false;
   int i = int(first);
-  vec3 re0, im0, re1, im1;
+  TFC_FILM_COLOR re0, im0, re1, im1;
   tfcTransformEntry(i, re0, im0);
   tfcTransformEntry(i + 1, re1, im1);
   float f = pos - first;
-  vec3 hr = mix(re0, re1, f);
-  vec3 hi = mix(im0, im1, f);
+  TFC_FILM_COLOR hr = re0 + f * (re1 - re0);
+  TFC_FILM_COLOR hi = im0 + f * (im1 - im0);
   re = hr * carrier.x - hi * carrier.y;
   im = hr * carrier.y + hi * carrier.x;
   return true;
@@ -85,16 +98,16 @@ bool tfcAirySeriesConvergesAt(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
 }
 
 // X_j = C0 W_j + 2 Re(B sum q^(m-1) F_j(m x)), averaged over the channels.
-vec3 tfcAirySeriesSum(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
-  vec3 sumRe[TFC_FILM_CHANNELS];
-  vec3 sumIm[TFC_FILM_CHANNELS];
+TFC_FILM_COLOR tfcAirySeriesSum(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
+  TFC_FILM_COLOR sumRe[TFC_FILM_CHANNELS];
+  TFC_FILM_COLOR sumIm[TFC_FILM_CHANNELS];
   vec2 power[TFC_FILM_CHANNELS];
   float powerAbs[TFC_FILM_CHANNELS];
   float rho[TFC_FILM_CHANNELS];
   float leftScale[TFC_FILM_CHANNELS];
   for (int c = 0; c < TFC_FILM_CHANNELS; c++) {
-    sumRe[c] = vec3(0.0);
-    sumIm[c] = vec3(0.0);
+    sumRe[c] = TFC_FILM_COLOR(0.0);
+    sumIm[c] = TFC_FILM_COLOR(0.0);
     power[c] = vec2(1.0, 0.0);
     powerAbs[c] = 1.0;
     rho[c] = length(t[c].q);
@@ -107,7 +120,7 @@ vec3 tfcAirySeriesSum(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
     float left = 0.0;
     for (int c = 0; c < TFC_FILM_CHANNELS; c++) left = max(left, leftScale[c] * powerAbs[c]);
     if (left < TFC_AIRY_SERIES_TOLERANCE) break;
-    vec3 fr, fi;
+    TFC_FILM_COLOR fr, fi;
     if (!tfcTransformAt(float(m) * x, carrier, fr, fi)) break;
     carrier = tfcCMul(carrier, step);
     for (int c = 0; c < TFC_FILM_CHANNELS; c++) {
@@ -117,8 +130,8 @@ vec3 tfcAirySeriesSum(AirySeriesTerms t[TFC_FILM_CHANNELS], float x) {
       powerAbs[c] *= rho[c];
     }
   }
-  vec3 white = texelFetch(uSpectralTransform, ivec2(0), 0).xyz;
-  vec3 xyz = vec3(0.0);
+  TFC_FILM_COLOR white = tfcTransformTexel(ivec2(0));
+  TFC_FILM_COLOR xyz = TFC_FILM_COLOR(0.0);
   for (int c = 0; c < TFC_FILM_CHANNELS; c++) xyz += t[c].c0 * white + 2.0 * (t[c].b.x * sumRe[c] - t[c].b.y * sumIm[c]);
   return xyz / float(TFC_FILM_CHANNELS);
 }

@@ -7,6 +7,7 @@
 #ifndef THIN_FILM_SPECTRAL
 #define THIN_FILM_SPECTRAL
 #include "filmReflectance.glsl"
+#include "environmentMatrix.glsl"
 
 #ifndef TFC_SPECTRAL_BINS
 #define TFC_SPECTRAL_BINS 90
@@ -29,8 +30,23 @@ uniform sampler2D uSpectralBins;
 #ifndef TFC_LIGHT_LINES_MAX
 #define TFC_LIGHT_LINES_MAX 2
 #endif
-uniform vec4 uLightLines[TFC_LIGHT_LINES_MAX];
+uniform vec4 uLightLines[3 * TFC_LIGHT_LINES_MAX];
 uniform int uLightLineCount;
+
+// A bin's or a line's weights for the film's colour (environmentMatrix.glsl): each bin's R serves
+// every column of M, its weights a mat3 of plane p's weights in column p (rows 0, 2, 3 of
+// uSpectralBins; plane p's lines at uLightLines[p * TFC_LIGHT_LINES_MAX + i]).
+#ifdef TFC_ENVIRONMENT_MATRIX
+TFC_FILM_COLOR tfcBinWeight(int b) {
+  return mat3(texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz, texelFetch(uSpectralBins, ivec2(b, 2), 0).xyz, texelFetch(uSpectralBins, ivec2(b, 3), 0).xyz);
+}
+TFC_FILM_COLOR tfcLineWeight(int i) {
+  return mat3(uLightLines[i].xyz, uLightLines[TFC_LIGHT_LINES_MAX + i].xyz, uLightLines[2 * TFC_LIGHT_LINES_MAX + i].xyz);
+}
+#else
+TFC_FILM_COLOR tfcBinWeight(int b) { return texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz; }
+TFC_FILM_COLOR tfcLineWeight(int i) { return uLightLines[i].xyz; }
+#endif
 
 // R of one bin (binReflectance in the TypeScript): the closed-form mean over its phase window
 // [phase - halfWidth, phase + halfWidth] of the real phase, an absorbing film's attenuation
@@ -50,18 +66,18 @@ float tfcBinReflectance(FilmOptics o, float centerNm, float phase, float halfWid
 
 // extraHalfWidthPerInvNm widens each bin's phase window (in quadrature) by that × (nm / λ):
 // the table pass averages over a cell's thickness range with it.
-vec3 tfcBinnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
+TFC_FILM_COLOR tfcBinnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
   if (uLightLineCount > 0) {
-    vec3 lines = vec3(0.0);
+    TFC_FILM_COLOR lines = TFC_FILM_COLOR(0.0);
     for (int i = 0; i < TFC_LIGHT_LINES_MAX && i < uLightLineCount; i++) {
       float l = uLightLines[i].w;
-      lines += tfcBinReflectance(o, l, 6.283185307179586 * o.opticalPathNm.x / l, extraHalfWidthPerInvNm / l) * uLightLines[i].xyz;
+      lines += tfcBinReflectance(o, l, 6.283185307179586 * o.opticalPathNm.x / l, extraHalfWidthPerInvNm / l) * tfcLineWeight(i);
     }
     return lines;
   }
   const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
   float path = o.opticalPathNm.x;
-  vec3 xyz = vec3(0.0);
+  TFC_FILM_COLOR xyz = TFC_FILM_COLOR(0.0);
   for (int b = TFC_SPECTRAL_BIN_FIRST; b < TFC_SPECTRAL_BIN_END; b++) {
     float l1 = float(TFC_LAMBDA_MIN_NM) + float(b) * width;
     float l2 = l1 + width;
@@ -69,7 +85,7 @@ vec3 tfcBinnedXyz(FilmOptics o, float extraHalfWidthPerInvNm) {
     float sigma = 0.5 * (1.0 / l1 + 1.0 / l2) + spread.x;
     float center = 6.283185307179586 * path * sigma;
     float binHalf = 6.283185307179586 * path * spread.y;
-    xyz += tfcBinReflectance(o, 1.0 / sigma, center, length(vec2(binHalf, extraHalfWidthPerInvNm * sigma))) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
+    xyz += tfcBinReflectance(o, 1.0 / sigma, center, length(vec2(binHalf, extraHalfWidthPerInvNm * sigma))) * tfcBinWeight(b);
   }
   return xyz;
 }
@@ -146,14 +162,14 @@ DispersiveBin tfcDispersiveBin(int y, int b, float thicknessNm, bool fromInside,
 // src/physics/binnedIntegration.ts): each bin's Fresnel terms at ñ of its centre, its phase 2π Re Δ(λ)/λ
 // from the optical path at its two ends, linear in σ between them. `row`: the table row of
 // TFC_DISPERSIVE_ROWS (unused per fragment).
-vec3 tfcDispersiveBinnedXyz(bool fromInside, float thicknessNm, float cosIncidence, int row) {
+TFC_FILM_COLOR tfcDispersiveBinnedXyz(bool fromInside, float thicknessNm, float cosIncidence, int row) {
   const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
-  vec3 xyz = vec3(0.0);
+  TFC_FILM_COLOR xyz = TFC_FILM_COLOR(0.0);
   // A line source's lines: the media at each line's λ from their knots (the rows hold bins only).
   for (int i = 0; i < TFC_LIGHT_LINES_MAX && i < uLightLineCount; i++) {
     float l = uLightLines[i].w;
     float path = tfcBinPathPerNm(l, fromInside, cosIncidence) * thicknessNm;
-    xyz += tfcBinReflectance(tfcBinOptics(l, thicknessNm, fromInside, cosIncidence), l, 6.283185307179586 * path / l, 0.0) * uLightLines[i].xyz;
+    xyz += tfcBinReflectance(tfcBinOptics(l, thicknessNm, fromInside, cosIncidence), l, 6.283185307179586 * path / l, 0.0) * tfcLineWeight(i);
   }
   if (uLightLineCount > 0) return xyz;
   for (int b = TFC_SPECTRAL_BIN_FIRST; b < TFC_SPECTRAL_BIN_END; b++) {
@@ -166,7 +182,7 @@ vec3 tfcDispersiveBinnedXyz(bool fromInside, float thicknessNm, float cosInciden
     // φ at the two ends, linear in σ between them, over the light's window in σ (tfcBinnedXyz's).
     float slope = 6.283185307179586 * (low - high) / (1.0 / l1 - 1.0 / l2);
     vec2 spread = texelFetch(uSpectralBins, ivec2(b, 1), 0).xy;
-    xyz += tfcBinReflectance(d.optics, center, 3.141592653589793 * (low + high) + slope * spread.x, abs(slope) * spread.y) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
+    xyz += tfcBinReflectance(d.optics, center, 3.141592653589793 * (low + high) + slope * spread.x, abs(slope) * spread.y) * tfcBinWeight(b);
   }
   return xyz;
 }

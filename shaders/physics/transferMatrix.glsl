@@ -104,18 +104,18 @@ float tfcLayersReflectance(int bin, float lambdaNm, float nOutside, bool fromIns
 // a stack has no closed-form mean over a bin (docs/gpu.md#stacks-of-films says why one sample
 // per bin of the finer count holds the parity bound). A line source's lines: R at each line's λ,
 // the layers' ñ those of the bin it falls in (the stack's texture holds ñ per bin).
-vec3 tfcLayersBinnedXyz(float nOutside, bool fromInside, float fieldThicknessNm, float cosIncidence) {
+TFC_FILM_COLOR tfcLayersBinnedXyz(float nOutside, bool fromInside, float fieldThicknessNm, float cosIncidence) {
   const float width = float(TFC_LAMBDA_MAX_NM - TFC_LAMBDA_MIN_NM) / float(TFC_SPECTRAL_BINS);
-  vec3 xyz = vec3(0.0);
+  TFC_FILM_COLOR xyz = TFC_FILM_COLOR(0.0);
   for (int i = 0; i < TFC_LIGHT_LINES_MAX && i < uLightLineCount; i++) {
     float l = uLightLines[i].w;
     int bin = clamp(int((l - float(TFC_LAMBDA_MIN_NM)) / width), 0, TFC_SPECTRAL_BINS - 1);
-    xyz += tfcLayersReflectance(bin, l, nOutside, fromInside, fieldThicknessNm, cosIncidence) * uLightLines[i].xyz;
+    xyz += tfcLayersReflectance(bin, l, nOutside, fromInside, fieldThicknessNm, cosIncidence) * tfcLineWeight(i);
   }
   if (uLightLineCount > 0) return xyz;
   for (int b = TFC_SPECTRAL_BIN_FIRST; b < TFC_SPECTRAL_BIN_END; b++) {
     float center = float(TFC_LAMBDA_MIN_NM) + (float(b) + 0.5) * width;
-    xyz += tfcLayersReflectance(b, center, nOutside, fromInside, fieldThicknessNm, cosIncidence) * texelFetch(uSpectralBins, ivec2(b, 0), 0).xyz;
+    xyz += tfcLayersReflectance(b, center, nOutside, fromInside, fieldThicknessNm, cosIncidence) * tfcBinWeight(b);
   }
   return xyz;
 }

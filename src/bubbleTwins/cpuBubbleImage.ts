@@ -1,8 +1,10 @@
 import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../physics/colorConversions.ts';
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
-import { spectralBins, stackBinnedXyz } from '../physics/binnedIntegration.ts';
+import { stackBinnedXyz } from '../physics/binnedIntegration.ts';
+import { lightBins } from '../physics/environmentMatrix.ts';
 import { absorbsInBand } from '../physics/medium.ts';
-import { lightWeights } from '../physics/spectralWeights.ts';
+import { planeLights } from '../physics/spectralWeights.ts';
+import { filmPlanes } from '../settings/filmLight.ts';
 import { DEFAULT_FILM_QUALITY } from '../settings/filmQuality.ts';
 import { type ShownEnvironment, environmentRadiance, reflectedRadiance } from './environment.ts';
 import type { EnvironmentPixels } from '../bubbleMaterials/environmentMaps.ts';
@@ -42,26 +44,34 @@ const reflect = (d: Vec3, n: Vec3): Vec3 => {
   return [d[0] - k * n[0], d[1] - k * n[1], d[2] - k * n[2]];
 };
 
-type FilmColor = (thicknessNm: number, cosIncidence: number, fromInside: boolean) => Rgb;
+/**
+ * A film's colour in the working space (linear sRGB): R per channel (3 numbers) where the walls
+ * reflect the light's white, or its environment matrix M in the working space (9, row-major) where
+ * they reflect a coloured environment (filmPlanes), M's column j the film under the light times
+ * basis spectrum j.
+ */
+type FilmColorValue = readonly number[];
+type FilmColor = (thicknessNm: number, cosIncidence: number, fromInside: boolean) => FilmColorValue;
 
-/** The film's linear sRGB (eq 19 after eqs 1–18) at a thickness and cos θ_i, from the memoised lattice. */
+/** The film's colour (eq 19 after eqs 1–18) at a thickness and cos θ_i, from the memoised lattice. */
 function filmColorLattice(s: FilmSettings): FilmColor {
   const step = Math.max(MIN_THICKNESS_STEP_NM, maxFieldThicknessNm(s) / LATTICE_THICKNESSES);
-  const bins = spectralBins(lightWeights(s), DEFAULT_FILM_QUALITY.exactSpectralBins);
-  const cache = new Map<string, Rgb>();
-  const node = (k: number, j: number, fromInside: boolean): Rgb => {
+  const planes = planeLights(s, filmPlanes(s)).map((light) => lightBins(light, DEFAULT_FILM_QUALITY.exactSpectralBins));
+  const cache = new Map<string, FilmColorValue>();
+  const node = (k: number, j: number, fromInside: boolean): FilmColorValue => {
     const key = `${k}|${j}|${fromInside}`;
     const hit = cache.get(key);
     if (hit) return hit;
     const thicknessNm = Math.min(FILM_STACK_DOMAIN.thicknessNm.max, Math.max(0, s.thicknessNm + k * step));
     const angleDeg = j === COS_STEPS ? 0 : j === 0 ? 90 : (Math.acos(j / COS_STEPS) * 180) / Math.PI;
     const [nOutside, nInside] = fromInside ? [s.nInside, s.nOutside] : [s.nOutside, s.nInside];
-    const rgb = applyMatrix3(
-      XYZ_TO_LINEAR_SRGB,
-      stackBinnedXyz({ nOutside, nFilm: s.nFilm, nInside, thicknessNm, angleDeg }, s.polarization, bins),
+    const columns = planes.map((bins) =>
+      applyMatrix3(XYZ_TO_LINEAR_SRGB, stackBinnedXyz({ nOutside, nFilm: s.nFilm, nInside, thicknessNm, angleDeg }, s.polarization, bins)),
     );
-    cache.set(key, rgb);
-    return rgb;
+    // One plane: R per channel; three: M row by row (row i holds channel i of each column).
+    const value = columns.length === 1 ? columns[0]! : [0, 1, 2].flatMap((i) => columns.map((c) => c[i]!));
+    cache.set(key, value);
+    return value;
   };
   return (thicknessNm, cosIncidence, fromInside) => {
     const u = (thicknessNm - s.thicknessNm) / step;
@@ -72,8 +82,18 @@ function filmColorLattice(s: FilmSettings): FilmColor {
       fv = v - j;
     const corner = (dk: number, dj: number, w: number) => node(k + dk, j + dj, fromInside).map((c) => c * w);
     const parts = [corner(0, 0, (1 - fu) * (1 - fv)), corner(1, 0, fu * (1 - fv)), corner(0, 1, (1 - fu) * fv), corner(1, 1, fu * fv)];
-    return [0, 1, 2].map((i) => parts.reduce((sum, p) => sum + p[i]!, 0)) as unknown as Rgb;
+    return parts[0]!.map((_, i) => parts.reduce((sum, p) => sum + p[i]!, 0));
   };
+}
+
+/**
+ * A wall's light (tfcWallRadiance in bubble.frag.glsl): the film's reflection of `reflected` and its
+ * transmission of `transmitted`: R r + clamp(1 − R) t per channel, or M r + t − M t.
+ */
+function wallRadiance(film: FilmColorValue, reflected: Rgb, transmitted: Rgb): Rgb {
+  if (film.length === 3) return [0, 1, 2].map((i) => film[i]! * reflected[i]! + clamp01(1 - film[i]!) * transmitted[i]!) as unknown as Rgb;
+  const m = (i: number, c: Rgb) => film[3 * i]! * c[0] + film[3 * i + 1]! * c[1] + film[3 * i + 2]! * c[2];
+  return [0, 1, 2].map((i) => m(i, reflected) + transmitted[i]! - m(i, transmitted)) as unknown as Rgb;
 }
 
 /** The environment a still image shows: an HDR `env` needs its pixels (environmentMaps.ts), a uniform one its colour. */
@@ -132,7 +152,7 @@ export function cpuBubbleImage(
 function bubbleRadiance(s: FilmSettings, env: ShownEnvironment, film: FilmColor, eye: Vec3, dir: Vec3, t: number): Rgb {
   const p = normalize([eye[0] + t * dir[0], eye[1] + t * dir[1], eye[2] + t * dir[2]]);
   const cos = clamp01(Math.abs(dot(p, dir)));
-  const nearR = film(thicknessAt(p, s), cos, false);
+  const near = film(thicknessAt(p, s), cos, false);
   const nearLight = reflectedRadiance(reflect(dir, p), env);
   // An opaque inside (a metal) transmits nothing: no far wall, nothing behind.
   const opaque = absorbsInBand(s.nInside);
@@ -140,9 +160,7 @@ function bubbleRadiance(s: FilmSettings, env: ShownEnvironment, film: FilmColor,
   if (s.sides === 'both' && !opaque) {
     // The chord through a unit sphere at incidence θ has length 2 cos θ (toEye = −dir).
     const far = normalize([p[0] + 2 * cos * dir[0], p[1] + 2 * cos * dir[1], p[2] + 2 * cos * dir[2]]);
-    const farR = film(thicknessAt(far, s), cos, true);
-    const farLight = reflectedRadiance(reflect(dir, far), env);
-    behind = [0, 1, 2].map((i) => farR[i]! * farLight[i]! + clamp01(1 - farR[i]!) * behind[i]!) as unknown as Rgb;
+    behind = wallRadiance(film(thicknessAt(far, s), cos, true), reflectedRadiance(reflect(dir, far), env), behind);
   }
-  return [0, 1, 2].map((i) => nearR[i]! * nearLight[i]! + clamp01(1 - nearR[i]!) * behind[i]!) as unknown as Rgb;
+  return wallRadiance(near, nearLight, behind);
 }

@@ -3,6 +3,7 @@ import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { type Matrix3 as Rows3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmSettings } from '../settings/filmSettings.ts';
+import { filmPlanes } from '../settings/filmLight.ts';
 import type { FilmMethodInput } from '../methods/filmMethod.ts';
 import { FILM_METHOD_REGISTRY, FILM_METHODS, methodReads } from '../methods/methods.ts';
 import { withOptionFilms } from '../methods/filmStacks.ts';
@@ -28,7 +29,9 @@ import { type StackedSettings, releaseFilmStackTexture } from './filmStack.ts';
 
 export const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
-export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm' | 'nInside'> & StackedSettings;
+export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm' | 'nInside'> &
+  Partial<Pick<FilmSettings, 'env'>> &
+  StackedSettings;
 
 /** The defines each input of a method (src/methods/filmMethod.ts) brings, sized by the quality. */
 const INPUT_DEFINES: Readonly<Record<FilmMethodInput, (s: FilmColorSettings, q: FilmQuality) => Record<string, number>>> = {
@@ -46,7 +49,11 @@ const INPUT_DEFINES: Readonly<Record<FilmMethodInput, (s: FilmColorSettings, q: 
  */
 export function filmColorDefines(s: FilmColorSettings, q: FilmQuality): Record<string, number> {
   const inputs = FILM_METHOD_REGISTRY[s.mode].reads.map((input: FilmMethodInput) => INPUT_DEFINES[input](s, q));
-  return Object.assign({}, enumDefines('TFC_FILM_MODE', FILM_METHODS, s.mode), opaqueInsideDefines(s), ...inputs) as Record<string, number>;
+  const planes = filmPlanes(s) === 3 ? { TFC_ENVIRONMENT_MATRIX: 1 } : {};
+  return Object.assign({}, enumDefines('TFC_FILM_MODE', FILM_METHODS, s.mode), opaqueInsideDefines(s), planes, ...inputs) as Record<
+    string,
+    number
+  >;
 }
 
 /**
@@ -61,12 +68,13 @@ function updateFilmColorTextures(
 ): void {
   const u = m.uniforms;
   const bins = filmSpectralBins(s, q, q.exactSpectralBins);
-  if (methodReads(s.mode, 'spectralBins')) bindSpectralBins(u, s, bins, m);
+  const planes = filmPlanes(s);
+  if (methodReads(s.mode, 'spectralBins')) bindSpectralBins(u, s, bins, m, planes);
   else {
     releaseSpectralBinsTexture(m);
     u.uSpectralBins!.value = null;
   }
-  if (methodReads(s.mode, 'spectralTransform')) u.uSpectralTransform!.value = spectralTransformTexture(s, m);
+  if (methodReads(s.mode, 'spectralTransform')) u.uSpectralTransform!.value = spectralTransformTexture(s, m, planes);
   else {
     releaseSpectralTransformTexture(m);
     u.uSpectralTransform!.value = null;

@@ -18,7 +18,8 @@ import {
   spectralTransformTexture,
   spectralTransformWhenReady,
 } from './spectralTransformTexture.ts';
-import type { SpectralLight } from '../physics/spectralWeights.ts';
+import { type SpectralLight, planeLights } from '../physics/spectralWeights.ts';
+import { filmPlanes } from '../settings/filmLight.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
 
 /** Columns [from, to) of a grid. */
@@ -33,6 +34,9 @@ export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['
   const e = renderer.extensions;
   return precision === 'auto' && e.has('EXT_color_buffer_float') && e.has('OES_texture_float_linear') ? FloatType : HalfFloatType;
 }
+
+/** The rows a table of `grid` takes for `s`: 2 per grid row (from outside, from inside) in each colour plane (filmPlanes). */
+export const tableHeight = (s: FilmOptics, grid: Pick<FilmTableGrid, 'rows'>): number => 2 * grid.rows * filmPlanes(s);
 
 /** A target for a table, `height` texels high until the pass sizes (and types) it to the grid it draws. */
 export const tableTarget = (height: number): WebGLRenderTarget =>
@@ -55,6 +59,8 @@ export class FilmTablePass {
   private rows: { texture: DataTexture; dispersive: boolean };
   /** What the row terms were last computed for (dispersiveRowsKey of the film and the grid's rows). */
   private rowsFor = '';
+  /** Who holds each plane's light textures: one texture per holder (SharedTextures), three planes at most. */
+  private readonly planeHolders = [this, {}, {}] as const;
 
   constructor(private readonly quality: FilmQuality) {
     this.programs = new TablePassPrograms(quality);
@@ -81,7 +87,7 @@ export class FilmTablePass {
   /** What a build of `s` over `grids` is computed from, each asked by `light` (the light's transform) or `rows` (a dispersive film's row terms of a grid). */
   private inputs<T>(s: FilmOptics, grids: readonly FilmTableGrid[], light: (l: SpectralLight) => T, rows: (key: string) => T): T[] {
     const dispersive = fillGpu(s).dispersiveRows ? grids.map((g) => rows(dispersiveRowsKey(s, this.rowLayout(s, g)))) : [];
-    return [light(s), ...dispersive];
+    return [...planeLights(s, filmPlanes(s)).map((l) => light(l)), ...dispersive];
   }
 
   /** Whether the light's transform and, for a dispersive film, the row terms of each grid are at hand (each asked of its worker at once). */
@@ -96,7 +102,8 @@ export class FilmTablePass {
 
   /**
    * Runs the pass for `s` over `grid` in `target` (sized to it), over the column ranges [from, to) if
-   * given (the rest of the texture is kept), through `time`, which draws it and may time it.
+   * given (the rest of the texture is kept), through `time`, which draws it and may time it. A film
+   * in three colour planes (filmPlanes) is drawn three times, each plane in its rows under its light.
    */
   draw(
     renderer: WebGLRenderer,
@@ -111,11 +118,10 @@ export class FilmTablePass {
       target.dispose(); // reallocated at the new type on the next render
       target.texture.type = type;
     }
-    if (target.width !== grid.width || target.height !== 2 * grid.rows) target.setSize(grid.width, 2 * grid.rows);
+    const height = tableHeight(s, grid);
+    if (target.width !== grid.width || target.height !== height) target.setSize(grid.width, height);
     const material = this.programs.material(s);
     const u = material.uniforms;
-    bindSpectralBins(u, s, this.programs.bins(s), this);
-    u.uSpectralTransform!.value = spectralTransformTexture(s, this);
     // A stack of films is filled by its recursion per bin; a dispersive film is filled from the bins, with their terms per row (shaders/film/filmTable.glsl).
     this.updateRows(s, grid);
     u.uDispersiveRows!.value = this.rows.texture;
@@ -127,19 +133,26 @@ export class FilmTablePass {
     const previous = renderer.getRenderTarget();
     target.scissorTest = true;
     time(() => {
-      for (const [from, to] of columns ?? [[0, grid.width]]) {
-        target.scissor.set(from, 0, to - from, 2 * grid.rows);
-        renderer.setRenderTarget(target); // three takes the target's scissor as it binds it
-        this.fullscreen.render(renderer, material);
-      }
+      planeLights(s, filmPlanes(s)).forEach((light, p) => {
+        bindSpectralBins(u, light, this.programs.bins(s), this.planeHolders[p]!);
+        u.uSpectralTransform!.value = spectralTransformTexture(light, this.planeHolders[p]!);
+        u.uFilmTablePlaneRow!.value = p * 2 * grid.rows;
+        for (const [from, to] of columns ?? [[0, grid.width]]) {
+          target.scissor.set(from, p * 2 * grid.rows, to - from, 2 * grid.rows);
+          renderer.setRenderTarget(target); // three takes the target's scissor as it binds it
+          this.fullscreen.render(renderer, material);
+        }
+      });
     });
     renderer.setRenderTarget(previous);
   }
 
   /** Lets go of the light's textures: the pass reads them only while it draws, and a table built band by band keeps them until its last band. */
   releaseLight(): void {
-    releaseSpectralBinsTexture(this);
-    releaseSpectralTransformTexture(this);
+    for (const holder of this.planeHolders) {
+      releaseSpectralBinsTexture(holder);
+      releaseSpectralTransformTexture(holder);
+    }
     releaseFilmStackTexture(this);
   }
 
@@ -176,8 +189,10 @@ export class FilmTablePass {
     renderer.setRenderTarget(target); // three picks a program by its target (no tone mapping into a texture)
     const compiled = this.fullscreen.compileAsync(renderer, this.programs.material(s));
     renderer.setRenderTarget(previous);
-    spectralBinsTexture(s, this.programs.bins(s), this);
-    spectralTransformTexture(s, this);
+    planeLights(s, filmPlanes(s)).forEach((light, p) => {
+      spectralBinsTexture(light, this.programs.bins(s), this.planeHolders[p]!);
+      spectralTransformTexture(light, this.planeHolders[p]!);
+    });
     await compiled;
   }
 

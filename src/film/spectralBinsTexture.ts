@@ -3,19 +3,32 @@ import { type IlluminantSpec } from '../physics/illuminants.ts';
 import { MAX_LIGHT_LINES } from '../physics/lightLines.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { significantBins, spectralBins } from '../physics/binnedIntegration.ts';
-import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type SpectralLight, lightWeights, spectralWeights } from '../physics/spectralWeights.ts';
+import { lightBins } from '../physics/environmentMatrix.ts';
+import {
+  LAMBDA_MAX_NM,
+  LAMBDA_MIN_NM,
+  type SpectralLight,
+  lightWeights,
+  planeLights,
+  spectralWeights,
+} from '../physics/spectralWeights.ts';
 import { spectralLightKey } from './spectralTransformTexels.ts';
 
+/** The texture row of plane p's weights: row 1 holds the windows, which every plane shares (lightBins). */
+const weightsRow = (p: number) => (p === 0 ? 0 : p + 1);
+
 const shared = new SharedTextures((key) => {
-  const { light, count } = JSON.parse(key) as { light: SpectralLight; count: number };
-  const { weights, windows } = spectralBins(lightWeights(light), count);
-  // Row 0: each bin's weights; row 1: its light's σ̄ less the bin's middle σ, and half-width in σ.
-  const data = new Float32Array(4 * count * 2);
-  for (let b = 0; b < count; b++) {
-    data.set([weights[3 * b]!, weights[3 * b + 1]!, weights[3 * b + 2]!, 1], 4 * b);
-    data.set([windows[2 * b]!, windows[2 * b + 1]!, 0, 0], 4 * (count + b));
-  }
-  const texture = new DataTexture(data, count, 2, RGBAFormat, FloatType);
+  const { light, count, planes } = JSON.parse(key) as { light: SpectralLight; count: number; planes: 1 | 3 };
+  const bins = planeLights(light, planes).map((l) => lightBins(l, count));
+  const rows = planes === 1 ? 2 : 4;
+  const data = new Float32Array(4 * count * rows);
+  bins.forEach(({ weights }, p) => {
+    for (let b = 0; b < count; b++)
+      data.set([weights[3 * b]!, weights[3 * b + 1]!, weights[3 * b + 2]!, 1], 4 * (weightsRow(p) * count + b));
+  });
+  const { windows } = bins[0]!;
+  for (let b = 0; b < count; b++) data.set([windows[2 * b]!, windows[2 * b + 1]!, 0, 0], 4 * (count + b));
+  const texture = new DataTexture(data, count, rows, RGBAFormat, FloatType);
   texture.minFilter = texture.magFilter = NearestFilter;
   texture.needsUpdate = true;
   return texture;
@@ -24,27 +37,39 @@ const shared = new SharedTextures((key) => {
 /**
  * The bin weights ∫_bin I_in T x̄, ȳ, z̄ dλ / k (T the tint's spectrum) and each bin's window
  * (SpectralBins.windows) as a `count` × 2 float texture, from the reference (one source of truth),
- * for `holder`; shared by the holders of the same weights (SharedTextures).
+ * for `holder`; shared by the holders of the same weights (SharedTextures). With `planes` 3 (a
+ * film's environment matrix, shaders/physics/binnedIntegration.glsl's TFC_ENVIRONMENT_MATRIX) it is
+ * `count` × 4: row 0 the weights of the light times the red basis spectrum, row 1 the windows,
+ * rows 2 and 3 green's and blue's.
  */
-export const spectralBinsTexture = (light: SpectralLight, count: number, holder: object): DataTexture =>
-  shared.hold(`{"light":${spectralLightKey(light)},"count":${count}}`, holder);
+export const spectralBinsTexture = (light: SpectralLight, count: number, holder: object, planes: 1 | 3 = 1): DataTexture =>
+  shared.hold(`{"light":${spectralLightKey(light)},"count":${count},"planes":${planes}}`, holder);
 
 /** The uniforms shaders/physics/binnedIntegration.glsl declares for the bin weights and a line source's lines. */
 export const spectralBinsUniforms = () => ({
   uSpectralBins: { value: null as DataTexture | null },
-  uLightLines: { value: Array.from({ length: MAX_LIGHT_LINES }, () => new Vector4()) },
+  uLightLines: { value: Array.from({ length: 3 * MAX_LIGHT_LINES }, () => new Vector4()) },
   uLightLineCount: { value: 0 },
 });
 
 /**
  * Points `u` (spectralBinsUniforms) at the light's bin weights, held for `holder`, and at its lines
- * (none for a light with a spectrum): each line's weights p T(λ) x̄, ȳ, z̄(λ)/k and λ, from the reference.
+ * (none for a light with a spectrum): each line's weights p T(λ) x̄, ȳ, z̄(λ)/k and λ, from the
+ * reference; with `planes` 3, plane p's line i at p · TFC_LIGHT_LINES_MAX + i.
  */
-export function bindSpectralBins(u: ShaderMaterial['uniforms'], light: SpectralLight, count: number, holder: object): void {
-  u.uSpectralBins!.value = spectralBinsTexture(light, count, holder);
-  const lines = lightWeights(light).lines ?? [];
-  lines.forEach((l, i) => (u.uLightLines!.value as Vector4[])[i]!.set(l.x, l.y, l.z, l.nm));
-  u.uLightLineCount!.value = lines.length;
+export function bindSpectralBins(
+  u: ShaderMaterial['uniforms'],
+  light: SpectralLight,
+  count: number,
+  holder: object,
+  planes: 1 | 3 = 1,
+): void {
+  u.uSpectralBins!.value = spectralBinsTexture(light, count, holder, planes);
+  planeLights(light, planes).forEach((pl, p) => {
+    const lines = lightWeights(pl).lines ?? [];
+    lines.forEach((l, i) => (u.uLightLines!.value as Vector4[])[p * MAX_LIGHT_LINES + i]!.set(l.x, l.y, l.z, l.nm));
+    u.uLightLineCount!.value = lines.length;
+  });
 }
 
 /** `holder` needs no spectral bins texture any more. */

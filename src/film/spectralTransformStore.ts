@@ -3,10 +3,10 @@ import { type SpectralLight, lightWeights } from '../physics/spectralWeights.ts'
 import { spectralTransformTexels } from './spectralTransformTexels.ts';
 
 /**
- * The texels of the last light computed (0.85 MB), on this thread or in the worker
- * (spectralTransformWorker.ts): the table pass lets go of its texture after each build, and the
- * next build for the same light (an index changed) then uploads them again instead of computing
- * them again.
+ * The texels of the last three lights computed (0.85 MB each: a film's three colour planes), on
+ * this thread or in the worker (spectralTransformWorker.ts): the table pass lets go of its textures
+ * after each build, and the next build for the same light (an index changed) then uploads them
+ * again instead of computing them again.
  */
 const store = new WorkerTexels(
   () => new Worker(new URL('./spectralTransformWorker.ts', import.meta.url), { type: 'module' }),
@@ -14,7 +14,7 @@ const store = new WorkerTexels(
     return lightWeights(JSON.parse(key) as SpectralLight);
   },
   spectralTransformTexels,
-  1,
+  3,
 );
 
 /** The texels of the light with this key (spectralLightKey), computed on this thread unless at hand. */

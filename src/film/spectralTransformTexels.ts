@@ -7,7 +7,7 @@ export const SPECTRAL_TRANSFORM_ROWS = Math.ceil(SPECTRAL_TRANSFORM_COUNT / SPEC
 
 /** The light's key: lights with the same key have the same weights (settings holding a light give its own fields only). */
 export const spectralLightKey = (light: SpectralLight): string =>
-  JSON.stringify({ illuminant: light.illuminant, normalization: light.normalization, lightTint: light.lightTint });
+  JSON.stringify({ illuminant: light.illuminant, normalization: light.normalization, lightTint: light.lightTint, basis: light.basis });
 
 /**
  * The spectral transform (src/physics/spectralTransform.ts, an FFT) of a light's weights

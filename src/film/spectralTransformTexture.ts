@@ -3,11 +3,17 @@ import { SPECTRAL_TRANSFORM_CARRIER_PER_NM, SPECTRAL_TRANSFORM_COUNT, SPECTRAL_T
 import { AIRY_SERIES_MAX_ORDERS, AIRY_SERIES_TOLERANCE } from '../physics/airySeries.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { SPECTRAL_TRANSFORM_ROWS as ROWS, SPECTRAL_TRANSFORM_WIDTH as WIDTH, spectralLightKey } from './spectralTransformTexels.ts';
-import type { SpectralLight } from '../physics/spectralWeights.ts';
+import { type SpectralLight, planeLights } from '../physics/spectralWeights.ts';
 import { spectralTransformTexelsOf, spectralTransformTexelsReady, spectralTransformTexelsWhenReady } from './spectralTransformStore.ts';
 
+/** The key of a light's transform in `planes` colour planes: its plane lights' keys, one per line. */
+const planesKey = (light: SpectralLight, planes: 1 | 3): string => planeLights(light, planes).map(spectralLightKey).join('\n');
+
 const shared = new SharedTextures((key) => {
-  const texture = new DataTexture(spectralTransformTexelsOf(key), WIDTH, 2 * ROWS, RGBAFormat, FloatType);
+  const planes = key.split('\n').map(spectralTransformTexelsOf);
+  const data = new Float32Array(planes.reduce((n, p) => n + p.length, 0));
+  planes.reduce((offset, p) => (data.set(p, offset), offset + p.length), 0);
+  const texture = new DataTexture(data, WIDTH, 2 * ROWS * planes.length, RGBAFormat, FloatType);
   texture.minFilter = texture.magFilter = NearestFilter;
   texture.needsUpdate = true;
   return texture;
@@ -15,24 +21,27 @@ const shared = new SharedTextures((key) => {
 
 /**
  * The light's spectral transform (src/physics/spectralTransform.ts) as a float texture read by
- * shaders/physics/airySeries.glsl, for `holder`; computed on this thread if not at hand (~30 ms;
- * see spectralTransformReady) and shared by the holders of the same light (SharedTextures).
+ * shaders/physics/airySeries.glsl, for `holder`; computed on this thread if not at hand (~30 ms a
+ * plane; see spectralTransformReady) and shared by the holders of the same light (SharedTextures).
+ * In three colour planes (a film's environment matrix) the transforms of the light times each basis
+ * spectrum, one above the other.
  */
-export const spectralTransformTexture = (light: SpectralLight, holder: object): DataTexture => shared.hold(spectralLightKey(light), holder);
+export const spectralTransformTexture = (light: SpectralLight, holder: object, planes: 1 | 3 = 1): DataTexture =>
+  shared.hold(planesKey(light, planes), holder);
 
 /**
  * Whether `spectralTransformTexture` for the light would return at once (a texture held, or its
  * texels at hand); if not, they are being computed in a Web Worker (spectralTransformStore.ts).
  */
-export function spectralTransformReady(light: SpectralLight): boolean {
-  const key = spectralLightKey(light);
-  return shared.has(key) || spectralTransformTexelsReady(key);
+export function spectralTransformReady(light: SpectralLight, planes: 1 | 3 = 1): boolean {
+  const key = planesKey(light, planes);
+  return shared.has(key) || key.split('\n').every(spectralTransformTexelsReady);
 }
 
 /** A promise kept once `spectralTransformTexture` for the light would return at once: its texels computed in the Web Worker, or here where there is none. */
-export function spectralTransformWhenReady(light: SpectralLight): Promise<void> {
-  const key = spectralLightKey(light);
-  return shared.has(key) ? Promise.resolve() : spectralTransformTexelsWhenReady(key);
+export async function spectralTransformWhenReady(light: SpectralLight, planes: 1 | 3 = 1): Promise<void> {
+  const key = planesKey(light, planes);
+  if (!shared.has(key)) await Promise.all(key.split('\n').map(spectralTransformTexelsWhenReady));
 }
 
 export const releaseSpectralTransformTexture = (holder: object): void => shared.release(holder);

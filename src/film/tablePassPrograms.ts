@@ -31,6 +31,7 @@ export const filmTablePassUniforms = (): ShaderMaterial['uniforms'] => ({
   uAirySeriesRows: { value: null },
   uDispersiveRows: { value: null },
   uPolarization: { value: 0 },
+  uFilmTablePlaneRow: { value: 0 },
   ...filmMediaUniforms(),
   ...filmStackUniforms(),
   ...filmTableGridUniforms(),

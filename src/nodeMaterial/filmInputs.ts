@@ -50,7 +50,8 @@ type Uniforms = Record<string, { value: unknown }>;
 export function setFilmInputs(i: FilmInputs, u: Uniforms): void {
   const bins = u.uSpectralBins!.value as DataTexture | null;
   if (bins) i.weights.value = bins;
-  (u.uLightLines!.value as Vector4[]).forEach((line, k) => (i.lines.values.array[k] as Vector4).copy(line));
+  // The first plane's lines: the node film draws one plane (the light itself).
+  (i.lines.values.array as Vector4[]).forEach((line, k) => line.copy((u.uLightLines!.value as Vector4[])[k]!));
   i.lines.count.value = u.uLightLineCount!.value as number;
   const layers = u.uFilmLayers!.value as DataTexture | null;
   if (layers) i.layers.value = layers;

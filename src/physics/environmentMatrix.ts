@@ -12,7 +12,8 @@ import { type LightTint } from './lightTint.ts';
 import { type FilmStack } from './filmReflectance.ts';
 import { type Medium } from './medium.ts';
 import { type ColorOptions, filmXyz } from './spectralIntegration.ts';
-import { type Xyz } from './spectralWeights.ts';
+import { type SpectralLight, type Xyz, lightWeights } from './spectralWeights.ts';
+import { type SpectralBins, spectralBins } from './binnedIntegration.ts';
 
 /** The basis spectra as tints: the light times B_r, B_g, B_b. */
 const BASIS_TINTS: readonly LightTint[] = [
@@ -33,3 +34,16 @@ export const filmEnvironmentMatrix = (stack: FilmStack<Medium>, options: Omit<Co
 
 /** XYZ of the film's reflection of light of colour `c` (linear sRGB relative to the light's white): M · c. */
 export const reflectedXyz = (m: Matrix3, c: readonly [number, number, number]): Xyz => applyMatrix3(m, c);
+
+/**
+ * The bins of `light` (`count` of them) as the shaders integrate each colour plane: the weights of
+ * the light (times its basis spectrum, if it has one), each bin's phase window that of the light
+ * without the basis. A basis spectrum is smooth over a bin, so the window hardly moves with it, and
+ * sharing it lets one R per bin serve all three columns of M.
+ */
+export function lightBins(light: SpectralLight, count: number): SpectralBins {
+  const bins = spectralBins(lightWeights(light), count);
+  if (light.basis === undefined) return bins;
+  const { basis: _, ...whole } = light;
+  return { ...bins, windows: spectralBins(lightWeights(whole), count).windows };
+}

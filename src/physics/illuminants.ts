@@ -147,9 +147,16 @@ export function illuminantSpd(spec: IlluminantSpec): (lambdaNm: number) => numbe
  */
 export function tintSpectrum(tint: LightTint): (lambdaNm: number) => number {
   if (isWhiteTint(tint)) return () => 1;
-  const basis = [MALLETT2019_RED, MALLETT2019_GREEN, MALLETT2019_BLUE].map((t) => heldTable(t, MALLETT2019_START_NM, MALLETT2019_STEP_NM));
-  return (l) => tint[0] * basis[0]!(l) + tint[1] * basis[1]!(l) + tint[2] * basis[2]!(l);
+  const [r, g, b] = ([0, 1, 2] as const).map(basisSpectrum);
+  return (l) => tint[0] * r!(l) + tint[1] * g!(l) + tint[2] * b!(l);
 }
+
+/** Which of the basis spectra: 0 red, 1 green, 2 blue. */
+export type BasisIndex = 0 | 1 | 2;
+
+/** Basis spectrum j of Mallett and Yuksel's sRGB basis, as tintSpectrum reads it (the tint of colour e_j). */
+export const basisSpectrum = (j: BasisIndex): ((lambdaNm: number) => number) =>
+  heldTable([MALLETT2019_RED, MALLETT2019_GREEN, MALLETT2019_BLUE][j]!, MALLETT2019_START_NM, MALLETT2019_STEP_NM);
 
 /**
  * The light as a plot draws it on a 1 nm grid: its spectrum, or each line as a triangle 1 nm wide

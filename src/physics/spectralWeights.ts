@@ -1,5 +1,13 @@
 import { CIE1931_CMF_START_NM, CIE1931_CMF_STEP_NM, CIE1931_XBAR, CIE1931_YBAR, CIE1931_ZBAR } from './data/cie1931Cmf2deg.ts';
-import { type IlluminantSpec, illuminantKey, illuminantLines, illuminantSpd, tintSpectrum } from './illuminants.ts';
+import {
+  type BasisIndex,
+  type IlluminantSpec,
+  basisSpectrum,
+  illuminantKey,
+  illuminantLines,
+  illuminantSpd,
+  tintSpectrum,
+} from './illuminants.ts';
 import { type LightTint, WHITE_TINT, lightTintText } from './lightTint.ts';
 import { type SpectralLine } from './lightLines.ts';
 import { interpolateTable } from './tableInterpolation.ts';
@@ -62,13 +70,15 @@ const MAX_CACHED_WEIGHTS = 64;
 /**
  * The weights of eqs (15)–(18) for an illuminant, normalisation and tint (the last 64 used are
  * cached). `white` divides by the untinted light's Y, so a tint darkens as well as colours the light.
+ * `basis` j: the light times basis spectrum j as well (a column of environmentMatrix.ts's M).
  */
 export function spectralWeights(
   illuminant: IlluminantSpec,
   normalization: Normalization = 'white',
   tint: LightTint = WHITE_TINT,
+  basis: BasisIndex | null = null,
 ): SpectralWeights {
-  const key = `${illuminantKey(illuminant)}|${normalization}|${lightTintText(tint)}`;
+  const key = `${illuminantKey(illuminant)}|${normalization}|${lightTintText(tint)}|${basis ?? ''}`;
   const cached = weightsCache.get(key);
   if (cached) {
     weightsCache.delete(key); // most recently used last
@@ -76,23 +86,34 @@ export function spectralWeights(
     return cached;
   }
   const lines = illuminantLines(illuminant);
-  const t = tintSpectrum(tint);
+  const tinted = tintSpectrum(tint);
+  const b = basis === null ? null : basisSpectrum(basis);
+  const t = b === null ? tinted : (l: number) => tinted(l) * b(l);
   const w = lines === null ? spectrumWeights(illuminant, normalization, t) : lineWeights(lines, normalization, t);
   weightsCache.set(key, w);
   if (weightsCache.size > MAX_CACHED_WEIGHTS) weightsCache.delete(weightsCache.keys().next().value!);
   return w;
 }
 
-/** What a light's weights, and so its spectral transform and bins, depend on. */
+/**
+ * What a light's weights, and so its spectral transform and bins, depend on. `basis` j: the light
+ * times basis spectrum j, the light of column j of a film's environment matrix (a plane of its
+ * colour: environmentMatrix.ts); absent for the light itself.
+ */
 export interface SpectralLight {
   readonly illuminant: IlluminantSpec;
   readonly normalization: Normalization;
   readonly lightTint: LightTint;
+  readonly basis?: BasisIndex;
 }
 
-/** The weights of `light`: spectralWeights of its illuminant, normalisation and tint. */
+/** The weights of `light`: spectralWeights of its illuminant, normalisation, tint and basis. */
 export const lightWeights = (light: SpectralLight): SpectralWeights =>
-  spectralWeights(light.illuminant, light.normalization, light.lightTint);
+  spectralWeights(light.illuminant, light.normalization, light.lightTint, light.basis ?? null);
+
+/** The lights of a film's colour planes: the light itself (1), or the light times each basis spectrum (3). */
+export const planeLights = (light: SpectralLight, planes: 1 | 3): SpectralLight[] =>
+  planes === 1 ? [light] : ([0, 1, 2] as const).map((basis) => ({ ...light, basis }));
 
 /** The weights of a light with a spectrum, I_in T x̄, ȳ, z̄ / k at its 1 nm knots (T the tint's spectrum). */
 function spectrumWeights(illuminant: IlluminantSpec, normalization: Normalization, tint: (lambdaNm: number) => number): SpectralWeights {

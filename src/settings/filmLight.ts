@@ -1,4 +1,5 @@
 import { WHITE_TINT } from '../physics/lightTint.ts';
+import { environmentKind } from '../environments/environments.ts';
 import type { FilmSettings } from './filmSettings.ts';
 
 /**
@@ -11,3 +12,12 @@ export const DEFAULT_LIGHT = {
   polarization: 'unpolarized',
   normalization: 'white',
 } as const satisfies Pick<FilmSettings, 'illuminant' | 'lightTint' | 'polarization' | 'normalization'>;
+
+/**
+ * The colour planes a film is computed in: 3, its environment matrix M (physics/environmentMatrix.ts),
+ * where it reflects a coloured environment, so that each colour it reflects is an integral of two
+ * spectra; 1, its XYZ under the light, where it reflects only the light's white (`env=none`, or no
+ * environment named: a material).
+ */
+export const filmPlanes = (s: Partial<Pick<FilmSettings, 'env'>>): 1 | 3 =>
+  s.env === undefined || environmentKind(s.env) === 'none' ? 1 : 3;

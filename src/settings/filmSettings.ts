@@ -59,8 +59,13 @@ export interface FilmSettings extends FieldSettings {
   readonly exposure: number;
 }
 
-/** What a film's colour and its table depend on (src/film/): its media, its stack, its light and its method. */
+/**
+ * What a film's colour and its table depend on (src/film/): its media, its stack, its light and its
+ * method, and where it is shown in one, the environment (a coloured one is reflected through the
+ * film's environment matrix: filmPlanes in filmLight.ts).
+ */
 export type FilmOptics = Pick<
   FilmSettings,
   'nOutside' | 'nFilm' | 'nInside' | 'layers' | 'illuminant' | 'lightTint' | 'polarization' | 'normalization' | 'mode'
->;
+> &
+  Partial<Pick<FilmSettings, 'env'>>;

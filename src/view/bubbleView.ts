@@ -5,6 +5,7 @@ import { updateFieldUniforms } from '../fields/fields.ts';
 import { releaseFilmColorTextures } from '../film/filmColor.ts';
 import { createBackgroundMaterial, updateBackgroundMaterial } from '../bubbleMaterials/environmentMaterial.ts';
 import { spectralTransformReady } from '../film/spectralTransformTexture.ts';
+import { filmPlanes } from '../settings/filmLight.ts';
 import { methodReads } from '../methods/methods.ts';
 import { DEFAULT_SETTINGS } from '../settings/filmParameters.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../settings/filmQuality.ts';
@@ -91,7 +92,7 @@ export class BubbleView {
       environmentFailure: (env) => this.environments.failure(env),
       compilesInParallel: compilesInParallel(this.renderer),
       drawsDisplayP3: () => drawsDisplayP3(this.renderer),
-      lightReady: spectralTransformReady,
+      lightReady: (light) => spectralTransformReady(light, filmPlanes(light)),
       lightShown: this.frame && {
         illuminant: this.settings.illuminant,
         lightTint: this.settings.lightTint,

@@ -33,8 +33,8 @@ export interface FrameOffers {
   readonly environmentFailure: (env: HdrEnvironment) => string | null;
   /** Whether the GPU compiles programs without blocking the page (KHR_parallel_shader_compile). */
   readonly compilesInParallel: boolean;
-  /** Whether a light's spectral transform is at hand (asking starts it in a worker: src/film/spectralTransformTexture.ts). */
-  readonly lightReady: (light: FilmLight) => boolean;
+  /** Whether a light's spectral transform, in the film's colour planes for `env` (filmPlanes), is at hand (asking starts it in a worker: src/film/spectralTransformTexture.ts). */
+  readonly lightReady: (light: FilmLight & Partial<Pick<FilmSettings, 'env'>>) => boolean;
   /** The light of the frame drawn before (null: none drawn yet). */
   readonly lightShown: FilmLight | null;
   /** The device's pixels per CSS pixel. */

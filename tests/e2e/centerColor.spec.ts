@@ -2,7 +2,7 @@ import type { Page } from '@playwright/test';
 import { expect, test } from './fixtures.ts';
 import { parseSettings } from '../../src/settings/settingsQuery.ts';
 import { methodReads } from '../../src/methods/methods.ts';
-import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../../src/physics/colorConversions.ts';
+import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8 } from '../../src/physics/colorConversions.ts';
 import { showSettings } from './appSettings.ts';
 import { centrePixel } from './drawingBuffer.ts';
 import { MAX_CODE_DIFFERENCE, reference8, stackReference8, worstCodeDifference, xyzTo8 } from './referenceColor.ts';
@@ -25,9 +25,9 @@ import { STACK_PRESETS } from '../../src/physics/stackPresets.ts';
 
 const BASE = '/?field=uniform&env=none&sides=front&exposure=1&animate=0';
 
-/** Shows the view the URL `BASE&query` gives in the shared demo page and reads its centre (drawn in the same task), with whether the canvas is Display P3. */
-async function centre(page: Page, query: string, timeout?: number): Promise<{ rgb: number[]; displayIsP3: boolean }> {
-  const { settings, refusals } = parseSettings(`${BASE}&${query}`.slice(1));
+/** Shows the view the URL `base&query` gives in the shared demo page and reads its centre (drawn in the same task), with whether the canvas is Display P3. */
+async function centre(page: Page, query: string, timeout?: number, base = BASE): Promise<{ rgb: number[]; displayIsP3: boolean }> {
+  const { settings, refusals } = parseSettings(`${base}&${query}`.slice(1));
   expect(refusals).toEqual([]);
   await showSettings(page, settings, timeout);
   const rgb = await centrePixel(page);
@@ -97,6 +97,28 @@ test('under a tinted fluorescent light (FL2, lightTint 1,0.5,0.2) the centre pix
     expect(worstCodeDifference(expected, reference8({ thicknessNm: 600 }, 'FL2'))).toBeGreaterThan(5 * MAX_CODE_DIFFERENCE_TINT);
     console.log(`centre ${mode} FL2 tinted 1,0.5,0.2 600 nm: page ${rgb} reference ${expected}`);
     expect.soft(() => expectClose(rgb, expected, `600 nm under FL2 tinted 1,0.5,0.2, ${mode}`, MAX_CODE_DIFFERENCE_TINT)).not.toThrow();
+  }
+});
+
+test('in a uniform coloured room (env=color:0.9,0.3,0.1) a film on gold shows the reference under the light tinted by that colour, in table, fourier and exact', async ({
+  demoPage: page,
+}) => {
+  // The room is the only light, reflected as M · colour; on an opaque inside nothing is seen through the film, so the centre is
+  // the film under the light times the colour's spectrum: the reference's tinted integral, no matrix involved.
+  await page.setViewportSize({ width: 160, height: 120 });
+  const colour = [0.9, 0.3, 0.1] as const;
+  const room = BASE.replace('env=none', `env=color:${colour.join(',')}`);
+  for (const thicknessNm of [300, 450]) {
+    const stack = { nOutside: 1, nFilm: 1.38, nInside: 'Au' as Medium, thicknessNm, angleDeg: 0 };
+    const expected = xyzTo8(filmXyz(stack, { lightTint: colour }), XYZ_TO_LINEAR_SRGB);
+    // The product of two RGB triples, the film's colour times the room's, is far off: the spectral product is seen.
+    const product = applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz(stack)).map((v, i) => encode8(Math.min(1, Math.max(0, v * colour[i]!))));
+    expect(worstCodeDifference(expected, product)).toBeGreaterThan(2 * MAX_CODE_DIFFERENCE);
+    for (const mode of ['table', 'fourier', 'exact'] as const) {
+      const { rgb } = await centre(page, `thickness=${thicknessNm}&nFilm=1.38&nInside=Au&mode=${mode}`, undefined, room);
+      console.log(`centre ${mode} ${thicknessNm} nm on Au in the room ${colour}: page ${rgb} reference ${expected}`);
+      expect.soft(() => expectClose(rgb, expected, `${thicknessNm} nm on gold in a room of ${colour}, ${mode}`)).not.toThrow();
+    }
   }
 });
 

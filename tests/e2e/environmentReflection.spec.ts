@@ -2,7 +2,7 @@ import { expect, test } from '@playwright/test';
 import { XYZ_TO_LINEAR_SRGB, type Rgb, applyMatrix3, encode8 } from '../../src/physics/colorConversions.ts';
 import { SOAP_FILM_IN_AIR } from '../../src/physics/filmReflectance.ts';
 import { type Medium, mediumText } from '../../src/physics/medium.ts';
-import { filmXyz } from '../../src/physics/spectralIntegration.ts';
+import { filmEnvironmentMatrix, reflectedXyz } from '../../src/physics/environmentMatrix.ts';
 import { type ShownEnvironment, environmentRadiance } from '../../src/bubbleTwins/environment.ts';
 import { loadEnvironmentPixels } from '../../src/bubbleMaterials/environmentMaps.ts';
 import { type HdrEnvironment, environmentKind, isHdrEnvironment } from '../../src/environments/environments.ts';
@@ -13,10 +13,12 @@ import { MAX_CODE_DIFFERENCE, worstCodeDifference } from './referenceColor.ts';
 
 /**
  * Pixels of a uniform film (near wall only) in front of an environment, against values computed
- * here from src/physics (the reference film colour R at each pixel's θ_i, eqs 1–19) and the
- * environment's own TypeScript function (the procedural sky, or the HDR map decoded in Node):
- * on the bubble exposure · (R · L(mirror direction) + (1 − R) · L(straight through)), off it
- * exposure · L(straight through), each through the tone mapping's TypeScript twin. The bubble
+ * here from src/physics (the reference film's environment matrix M at each pixel's θ_i: each
+ * colour's reflection an integral of two spectra, eqs 1–19 with the light times the colour's
+ * spectrum) and the environment's own TypeScript function (the procedural sky, or the HDR map
+ * decoded in Node): on the bubble exposure · (M L(mirror direction) + L(straight through) −
+ * M L(straight through)), in linear sRGB, off it exposure · L(straight through), each through the
+ * tone mapping's TypeScript twin. The bubble
  * pixel sits above the centre, where the mirror direction climbs and the straight ray sees the
  * horizon, so the two terms differ; the background pixels sit on a grid across the view. Over an
  * opaque inside (a metal, here a constant gold-like ñ) the bubble pixel is exposure · R · L(mirror)
@@ -84,16 +86,15 @@ for (const c of CASES) {
         const p = [t * d[0], t * d[1], CAMERA_DISTANCE + t * d[2]] as [number, number, number];
         const cos = -(p[0] * d[0] + p[1] * d[1] + p[2] * d[2]);
         const mirror = p.map((n, k) => d[k]! + 2 * cos * n) as [number, number, number];
-        const R = applyMatrix3(
-          XYZ_TO_LINEAR_SRGB,
-          filmXyz(
-            { ...SOAP_FILM_IN_AIR, nInside: c.nInside, thicknessNm: THICKNESS_NM, angleDeg: (Math.acos(cos) * 180) / Math.PI },
-            { illuminant: 'D65' },
-          ),
+        const m = filmEnvironmentMatrix(
+          { ...SOAP_FILM_IN_AIR, nInside: c.nInside, thicknessNm: THICKNESS_NM, angleDeg: (Math.acos(cos) * 180) / Math.PI },
+          { illuminant: 'D65' },
         );
-        const reflected = environmentRadiance(mirror, env);
-        const behind = opaque ? [0, 0, 0] : environmentRadiance(d, env);
-        expected = shown([0, 1, 2].map((k) => R[k]! * reflected[k]! + Math.min(1, Math.max(0, 1 - R[k]!)) * behind[k]!) as unknown as Rgb);
+        const film = (light: Rgb) => applyMatrix3(XYZ_TO_LINEAR_SRGB, reflectedXyz(m, light));
+        const reflected = film(environmentRadiance(mirror, env));
+        const behind: Rgb = opaque ? [0, 0, 0] : environmentRadiance(d, env);
+        const kept = film(behind);
+        expected = shown([0, 1, 2].map((k) => reflected[k]! + behind[k]! - kept[k]!) as unknown as Rgb);
       } else {
         expected = shown(environmentRadiance(d, env));
       }

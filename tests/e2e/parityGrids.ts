@@ -117,7 +117,8 @@ export function compare(groups: readonly Group[], rendered: number[][][]): { fig
     const white = whiteXyz(g.illuminant, g.normalization);
     g.cases.forEach((c, ci) => {
       const shader = rendered[gi]![ci]! as unknown as Xyz;
-      const reference = filmXyz({ ...g, ...c }, g);
+      // A colour the film reflects is the light tinted by it: the tinted integral, computed without any matrix.
+      const reference = filmXyz({ ...g, ...c }, g.environmentColor ? { ...g, lightTint: g.environmentColor } : g);
       const label = `${JSON.stringify({ ...g, cases: undefined, ...c })} shader ${shader.map((v) => v.toFixed(5))} reference ${reference.map((v) => v.toFixed(5))}`;
       const d = deltaE00(shader, reference, white);
       if (![...shader, d].every(Number.isFinite)) nonFinite.push(label);

@@ -37,10 +37,12 @@ export function rowScene(renderer: WebGLRenderer, spec: BenchRowSpec): { view: B
   const view = new BubbleView(renderer, spec.quality);
   showFilm(view, spec.settings);
   if (!spec.reflections) {
-    // The model before environment reflections: reflectedRadiance (shaders/bubbleMaterials/environment.glsl) returns the light's white.
+    // The model before environment reflections: tfcReflectedRadiance (shaders/bubbleMaterials/environment.glsl) returns the light's white.
     const m = view.bubble.material;
     m.onBeforeCompile = (shader) => {
-      shader.fragmentShader = shader.fragmentShader.replace(/vec3 reflectedRadiance\(vec3 direction\) \{/, '$&\n  return vec3(1.0);');
+      const walls = /vec3 tfcReflectedRadiance\(vec3 direction\) \{/;
+      if (!walls.test(shader.fragmentShader)) throw new Error('rowScene: the bubble shader has no tfcReflectedRadiance to make white');
+      shader.fragmentShader = shader.fragmentShader.replace(walls, '$&\n  return vec3(1.0);');
     };
     m.customProgramCacheKey = () => 'walls reflect white';
   }

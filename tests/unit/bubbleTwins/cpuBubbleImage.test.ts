@@ -121,13 +121,17 @@ describe('the CPU still image of the bubble', () => {
     expect(pixel(image, 5, 5)).toEqual([encode8(g), encode8(g), encode8(g), 255]);
   });
 
-  it('over a metal the sphere is opaque: in a uniform environment it shows R · L, no far wall, nothing behind; the background stays L', () => {
-    const L = [0.9, 0.5, 0.3];
+  it('over a metal the sphere is opaque: in a uniform environment it shows M L (the film under L as a spectrum), no far wall, nothing behind; the background stays L', () => {
+    const L = [0.9, 0.5, 0.3] as const;
     const uniform: EnvironmentPixels = { width: 4, height: 2, rgba: Float32Array.from({ length: 32 }, (_, k) => [...L, 1][k & 3]!) };
     const s = film({ thicknessNm: 100, nFilm: 1.38, nInside: 'Au', sides: 'both', env: 'park', tonemap: 'none' });
     const image = cpuBubbleImage(s, SIZE, SIZE, uniform);
-    const r = applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz({ nOutside: 1, nFilm: 1.38, nInside: 'Au', thicknessNm: 100, angleDeg: 0 }));
-    const expected = r.map((v, i) => encode8(Math.min(1, Math.max(0, v * L[i]!))));
+    // The float64 film under the light tinted L: L's spectrum by the basis, no matrix involved.
+    const r = applyMatrix3(
+      XYZ_TO_LINEAR_SRGB,
+      filmXyz({ nOutside: 1, nFilm: 1.38, nInside: 'Au', thicknessNm: 100, angleDeg: 0 }, { lightTint: L }),
+    );
+    const expected = r.map((v) => encode8(Math.min(1, Math.max(0, v))));
     const centre = pixel(image, SIZE / 2, SIZE / 2);
     for (let i = 0; i < 3; i++)
       expect(Math.abs(centre[i]! - expected[i]!), `${centre} vs ${expected}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
