@@ -159,12 +159,17 @@ export const ROWS: readonly BenchRow[] = [
   ...FLOW_ROW_GRIDS.map((n) => ({ ...flowRow(n), ...(n === Math.max(...FLOW_ROW_GRIDS) && { smoke: false as const }) })),
   sceneStep('default table, front wall only', { sides: 'front' }),
   // What the environment costs: none reflects the light's white and draws no background; the
-  // default sky; each HDR map (three lookups a fragment, AgX).
+  // default sky; each HDR map (three lookups a fragment, AgX). A coloured one is reflected through the
+  // film's environment matrix.
   {
     ...sceneStep("default table, walls reflecting the light's white, sky behind (before: no environment reflections)", {}),
     reflections: false,
   },
   sceneStep('default table, env=none (no environment to reflect or show)', { env: 'none' }),
+  // The environment matrix's own cost: the walls show the same colours as env=none's, through M (three table planes, three lookups a wall), and a background.
+  sceneStep('default table, env=color:1,1,1 (a white room: the film as env=none, through its environment matrix)', {
+    env: { color: [1, 1, 1] },
+  }),
   ...HDR_ENVIRONMENTS.map((env) => sceneStep(`default table, env=${env} (HDR map reflected on both walls, AgX)`, { env })),
   // A dispersive film (water at 20 °C) in each mode, against the same modes' rows with n 1.33 above.
   { ...table({}, ', nFilm=water (150 bins, Fresnel per row and bin)'), settings: view('table', { nFilm: 'water' }) },

@@ -5,6 +5,7 @@ import { tableKey } from './filmTableKey.ts';
 import { type FilmTableGrid, bindFilmTable } from './filmTableGrid.ts';
 import { FilmTablePass, tableTarget } from './filmTablePass.ts';
 import type { ProgressiveTableBuild } from './progressiveTableBuild.ts';
+import { filmPlanes } from '../settings/filmLight.ts';
 
 export { tableKey };
 
@@ -33,8 +34,8 @@ const NO_GRID: FilmTableGrid = { width: 1, rows: 1, maxThicknessNm: 1 };
 export class FilmTable {
   private target: WebGLRenderTarget;
   private coarseTarget: WebGLRenderTarget;
-  /** What is shown: the settings' tableKey ('' for nothing), whether from the coarse texture, and its grid. */
-  private shown = { key: '', coarse: false, grid: NO_GRID };
+  /** What is shown: the settings' tableKey ('' for nothing), whether from the coarse texture, its grid and its colour planes (filmPlanes). */
+  private shown = { key: '', coarse: false, grid: NO_GRID, planes: 1 };
   /** Whether progressive updates wait for a new light's transform (the table shown is for other settings). */
   private waiting = false;
   private readonly pass: FilmTablePass;
@@ -70,6 +71,7 @@ export class FilmTable {
    */
   update(renderer: WebGLRenderer, s: FilmOptics, maxThicknessNm: number, progressive = false): boolean {
     const key = tableKey(s, maxThicknessNm);
+    const planes = filmPlanes(s);
     this.waiting = false;
     this.build?.poll();
     if (!progressive) {
@@ -78,19 +80,26 @@ export class FilmTable {
       const grid = this.pass.fullGrid(s, maxThicknessNm);
       this.pass.draw(renderer, s, this.target, grid, null);
       this.pass.releaseLight();
-      this.shown = { key, coarse: false, grid };
+      this.shown = { key, coarse: false, grid, planes };
       return true;
     }
     if (!this.build) throw new Error('FilmTable: a progressive update of a table made without progressive builds');
     if (key !== this.shown.key) {
-      // A table shown (the first is not waited for) stays until what it needs is at hand.
-      const coarse = this.build.begin(renderer, s, maxThicknessNm, this.coarseTarget, this.shown.key !== '');
+      // A table shown (the first is not waited for) stays until what it needs is at hand, unless it
+      // has other colour planes: the material drawn now looks up the new planes.
+      const coarse = this.build.begin(
+        renderer,
+        s,
+        maxThicknessNm,
+        this.coarseTarget,
+        this.shown.key !== '' && this.shown.planes === planes,
+      );
       this.waiting = coarse === null;
-      if (coarse) this.shown = { key, coarse: true, grid: coarse };
+      if (coarse) this.shown = { key, coarse: true, grid: coarse, planes };
       return coarse !== null;
     }
     const full = this.shown.coarse ? this.build.nextBand(renderer, this.target) : null;
-    if (full) this.shown = { key, coarse: false, grid: full };
+    if (full) this.shown = { key, coarse: false, grid: full, planes };
     return full !== null;
   }
 
@@ -127,7 +136,7 @@ export class FilmTable {
     this.coarseTarget = tableTarget(2);
     this.pass.invalidate();
     this.build?.invalidate();
-    this.shown = { key: '', coarse: false, grid: NO_GRID };
+    this.shown = { key: '', coarse: false, grid: NO_GRID, planes: 1 };
     this.waiting = false;
   }
 
