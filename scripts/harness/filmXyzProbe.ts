@@ -12,6 +12,7 @@ import { type FilmTableBinding, filmColorDefines, filmColorUniforms, updateFilmC
 import { type FilmQuality } from '../../src/settings/filmQuality.ts';
 import { DEFAULT_SETTINGS } from '../../src/settings/filmParameters.ts';
 import { WHITE_TINT } from '../../src/physics/lightTint.ts';
+import { filmPlanes } from '../../src/settings/filmLight.ts';
 import type { FilmSettings } from '../../src/settings/filmSettings.ts';
 import { filmTableLookupColumns } from '../../src/settings/filmTableLayout.ts';
 import { bindFilmTable } from '../../src/film/filmTableGrid.ts';
@@ -70,14 +71,14 @@ export class FilmXyzProbe {
    * a fraction of a full table's cost on a slow GPU.
    */
   private tableAround(quality: FilmQuality, s: FilmSettings, thicknessesNm: readonly number[]): FilmTableBinding {
-    const key = JSON.stringify(quality);
-    const table = this.tables.get(key) ?? { pass: new FilmTablePass(quality), target: tableTarget(2 * quality.table.rows) };
+    const key = JSON.stringify([quality, filmPlanes(s)]);
+    const table = this.tables.get(key) ?? { pass: new FilmTablePass(quality), target: tableTarget(2 * quality.table.rows, filmPlanes(s)) };
     this.tables.set(key, table);
     const grid = table.pass.fullGrid(s, maxFieldThicknessNm(s));
     const columns = filmTableLookupColumns(quality.table, thicknessesNm, grid.maxThicknessNm, grid.width);
     table.pass.draw(this.renderer, s, table.target, grid, columns);
     table.pass.releaseLight();
-    return { bind: (u) => bindFilmTable(u, table.target.texture, grid) };
+    return { bind: (u) => bindFilmTable(u, table.target.textures, grid) };
   }
 
   private renderGroup(g: ParityGroup, mode: ParityMode, quality: FilmQuality): number[][] {

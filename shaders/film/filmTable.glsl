@@ -45,12 +45,25 @@ bool tfcRowSeries(int y, out AirySeriesTerms t[TFC_FILM_CHANNELS], out float pat
 }
 #endif
 
-// The rows below the plane drawn (src/film/filmTablePass.ts): a film's environment matrix is three
-// tables one above the other, each filled under its plane's light (the light times a basis spectrum).
-uniform int uFilmTablePlaneRow;
+// What a texel holds: the film's XYZ, or with TFC_ENVIRONMENT_MATRIX its environment matrix, column j
+// in plane j (a target of three textures, written at once: each bin's R serves all three).
+layout(location = 0) out highp vec4 tfcTablePlane0;
+#ifdef TFC_ENVIRONMENT_MATRIX
+layout(location = 1) out highp vec4 tfcTablePlane1;
+layout(location = 2) out highp vec4 tfcTablePlane2;
+#endif
+void tfcWriteTexel(TFC_FILM_COLOR c) {
+#ifdef TFC_ENVIRONMENT_MATRIX
+  tfcTablePlane0 = vec4(c[0], 1.0);
+  tfcTablePlane1 = vec4(c[1], 1.0);
+  tfcTablePlane2 = vec4(c[2], 1.0);
+#else
+  tfcTablePlane0 = vec4(c, 1.0);
+#endif
+}
 
 void main() {
-  ivec2 texel = ivec2(gl_FragCoord.xy) - ivec2(0, uFilmTablePlaneRow);
+  ivec2 texel = ivec2(gl_FragCoord.xy);
   int rows = int(uFilmTableRows);
   bool fromInside = texel.y >= rows;
   int row = fromInside ? texel.y - rows : texel.y;
@@ -61,12 +74,12 @@ void main() {
 #ifdef TFC_OPAQUE_INSIDE
   // No light reaches the film from an opaque inside: the upper half stays black (never looked up).
   if (fromInside) {
-    gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0);
+    tfcWriteTexel(TFC_FILM_COLOR(0.0));
     return;
   }
 #endif
 #ifdef TFC_FILM_LAYERS
-  gl_FragColor = vec4(tfcLayersBinnedXyz(uNOutside, fromInside, thicknessNm, cosIncidence), 1.0);
+  tfcWriteTexel(tfcLayersBinnedXyz(uNOutside, fromInside, thicknessNm, cosIncidence));
   return;
 #endif
 #if TFC_TABLE_FILL == TFC_TABLE_FILL_SERIES && !defined(TFC_DISPERSIVE)
@@ -74,12 +87,12 @@ void main() {
   float pathPerNm;
   // At thickness 0 filmOptics decides (the bare interface, or the paper mode's eq 13), as in the reference.
   if (uLightLineCount == 0 && thicknessNm > 0.0 && tfcRowSeries(texel.y, terms, pathPerNm) && tfcAirySeriesConvergesAt(terms, pathPerNm * thicknessNm)) {
-    gl_FragColor = vec4(tfcAirySeriesSum(terms, pathPerNm * thicknessNm), 1.0);
+    tfcWriteTexel(tfcAirySeriesSum(terms, pathPerNm * thicknessNm));
     return;
   }
 #endif
 #ifdef TFC_DISPERSIVE
-  gl_FragColor = vec4(tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, texel.y), 1.0);
+  tfcWriteTexel(tfcDispersiveBinnedXyz(fromInside, thicknessNm, cosIncidence, texel.y));
 #else
   float na;
   vec2 nc;
@@ -87,6 +100,6 @@ void main() {
   FilmOptics o = tfcFilmOptics(na, uNFilm, nc, thicknessNm, cosIncidence);
   // Phase half-width of a cell at λ: 2π · Re(2 ñ_b cos θ_r) · (cell / 2) / λ = 2π · Re(Δ per nm) · cell / (2λ).
   float perNmPath = thicknessNm > 0.0 ? o.opticalPathNm.x / thicknessNm : tfcFilmPathPerNm(uNFilm, na, cosIncidence);
-  gl_FragColor = vec4(tfcBinnedXyz(o, 3.141592653589793 * perNmPath * cellNm), 1.0);
+  tfcWriteTexel(tfcBinnedXyz(o, 3.141592653589793 * perNmPath * cellNm));
 #endif
 }

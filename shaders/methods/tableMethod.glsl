@@ -1,5 +1,5 @@
 // `table` (src/methods/tableMethod.ts): the film's XYZ as one filtered lookup in the film table (its
-// environment matrix as three, with TFC_ENVIRONMENT_MATRIX)
+// environment matrix as three, one in each of the table's planes, with TFC_ENVIRONMENT_MATRIX)
 // (src/film/filmTable.ts builds it; filmTableLayout.glsl maps thickness and cos θ to its grid).
 #ifndef THIN_FILM_TABLE_METHOD
 #define THIN_FILM_TABLE_METHOD
@@ -7,6 +7,10 @@
 #include "filmTableGrid.glsl"
 #include "filmTableLayout.glsl"
 uniform sampler2D uFilmTable;
+#ifdef TFC_ENVIRONMENT_MATRIX
+uniform sampler2D uFilmTable1;
+uniform sampler2D uFilmTable2;
+#endif
 
 TFC_FILM_COLOR tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInside) {
   // Texel centres sit at the ends of the ranges (docs/gpu.md#texel-centres: otherwise visibly off).
@@ -16,10 +20,8 @@ TFC_FILM_COLOR tfcFilmXyzOf(float thicknessNm, float cosIncidence, bool fromInsi
   float rowOffset = fromInside ? uFilmTableRows : 0.0;
   vec2 texel = vec2(uv.x * (uFilmTableWidth - 1.0), rowOffset + uv.y * (uFilmTableRows - 1.0)) + 0.5;
 #ifdef TFC_ENVIRONMENT_MATRIX
-  // Plane j (the film under the light times basis spectrum j) above plane j - 1: three filtered
-  // lookups, each within its plane's rows, M's columns.
-  vec2 plane = vec2(0.0, 2.0 * uFilmTableRows);
-  return mat3(texture(uFilmTable, texel / size).xyz, texture(uFilmTable, (texel + plane) / size).xyz, texture(uFilmTable, (texel + 2.0 * plane) / size).xyz);
+  // Plane j, the film under the light times basis spectrum j, in its own texture: M's columns.
+  return mat3(texture(uFilmTable, texel / size).xyz, texture(uFilmTable1, texel / size).xyz, texture(uFilmTable2, texel / size).xyz);
 #else
   return texture(uFilmTable, texel / size).xyz;
 #endif

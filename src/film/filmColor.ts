@@ -18,7 +18,7 @@ import {
   spectralTransformUniforms,
 } from './spectralTransformTexture.ts';
 import { bindSpectralBins, releaseSpectralBinsTexture, spectralBinDefines, spectralBinsUniforms } from './spectralBinsTexture.ts';
-import { filmTableGridUniforms } from './filmTableGrid.ts';
+import { filmTableUniforms } from './filmTableGrid.ts';
 import { type StackedSettings, releaseFilmStackTexture } from './filmStack.ts';
 
 /**
@@ -97,8 +97,7 @@ export function releaseFilmColorTextures(m: object): void {
 export const filmColorUniforms = (): ShaderMaterial['uniforms'] => ({
   ...spectralBinsUniforms(),
   ...spectralTransformUniforms(),
-  uFilmTable: { value: null },
-  ...filmTableGridUniforms(),
+  ...filmTableUniforms(),
   ...filmMediaUniforms(),
   // shaders/film/filmWorkingSpace.glsl
   uXyzToLinearWorking: { value: matrix3(XYZ_TO_LINEAR_SRGB) },

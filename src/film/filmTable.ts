@@ -61,7 +61,7 @@ export class FilmTable {
 
   /** Points a material that looks the table up (the `table` method) at it. */
   bind(uniforms: ShaderMaterial['uniforms']): void {
-    bindFilmTable(uniforms, (this.shown.coarse ? this.coarseTarget : this.target).texture, this.shown.grid);
+    bindFilmTable(uniforms, (this.shown.coarse ? this.coarseTarget : this.target).textures, this.shown.grid);
   }
 
   /**
@@ -73,6 +73,7 @@ export class FilmTable {
     const key = tableKey(s, maxThicknessNm);
     const planes = filmPlanes(s);
     this.waiting = false;
+    if (key !== this.shown.key && planes !== this.target.textures.length) this.makeTargets(planes);
     this.build?.poll();
     if (!progressive) {
       this.build?.stop();
@@ -132,12 +133,20 @@ export class FilmTable {
    * does not own (a WebGL warning), for instance when a coarse grid of another size resizes a target.
    */
   invalidate(): void {
-    this.target = tableTarget(2 * this.quality.table.rows);
-    this.coarseTarget = tableTarget(2);
+    this.target = tableTarget(2 * this.quality.table.rows, this.target.textures.length === 3 ? 3 : 1);
+    this.coarseTarget = tableTarget(2, this.target.textures.length === 3 ? 3 : 1);
     this.pass.invalidate();
     this.build?.invalidate();
     this.shown = { key: '', coarse: false, grid: NO_GRID, planes: 1 };
     this.waiting = false;
+  }
+
+  /** Targets of `planes` textures (what is shown is about to be replaced: its planes differ). */
+  private makeTargets(planes: 1 | 3): void {
+    this.target.dispose();
+    this.coarseTarget.dispose();
+    this.target = tableTarget(2 * this.quality.table.rows, planes);
+    this.coarseTarget = tableTarget(2, planes);
   }
 
   dispose(): void {

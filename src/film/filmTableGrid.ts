@@ -25,8 +25,21 @@ export function setFilmTableGridUniforms(u: ShaderMaterial['uniforms'], grid: Fi
   u.uFilmTableRows!.value = grid.rows;
 }
 
-/** Points a material that looks a table up (the `table` method) at `table`, which holds `grid`. */
-export function bindFilmTable(u: ShaderMaterial['uniforms'], table: Texture, grid: FilmTableGrid): void {
-  u.uFilmTable!.value = table;
+/** The uniforms of a shader that looks the table up: its colour planes' textures (shaders/methods/tableMethod.glsl) and its grid. */
+export const filmTableUniforms = () => ({
+  uFilmTable: { value: null as Texture | null },
+  uFilmTable1: { value: null as Texture | null },
+  uFilmTable2: { value: null as Texture | null },
+  ...filmTableGridUniforms(),
+});
+
+/**
+ * Points a material that looks a table up (the `table` method) at `planes`, the table's colour
+ * planes (one, or three: shaders/methods/tableMethod.glsl), which hold `grid`.
+ */
+export function bindFilmTable(u: ShaderMaterial['uniforms'], planes: readonly Texture[], grid: FilmTableGrid): void {
+  u.uFilmTable!.value = planes[0];
+  u.uFilmTable1!.value = planes[1] ?? null;
+  u.uFilmTable2!.value = planes[2] ?? null;
   setFilmTableGridUniforms(u, grid);
 }

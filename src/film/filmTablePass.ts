@@ -18,7 +18,7 @@ import {
   spectralTransformTexture,
   spectralTransformWhenReady,
 } from './spectralTransformTexture.ts';
-import { type SpectralLight, planeLights } from '../physics/spectralWeights.ts';
+import type { SpectralLight } from '../physics/spectralWeights.ts';
 import { filmPlanes } from '../settings/filmLight.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
 
@@ -35,12 +35,18 @@ export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['
   return precision === 'auto' && e.has('EXT_color_buffer_float') && e.has('OES_texture_float_linear') ? FloatType : HalfFloatType;
 }
 
-/** The rows a table of `grid` takes for `s`: 2 per grid row (from outside, from inside) in each colour plane (filmPlanes). */
-export const tableHeight = (s: FilmOptics, grid: Pick<FilmTableGrid, 'rows'>): number => 2 * grid.rows * filmPlanes(s);
-
-/** A target for a table, `height` texels high until the pass sizes (and types) it to the grid it draws. */
-export const tableTarget = (height: number): WebGLRenderTarget =>
-  new WebGLRenderTarget(1, height, { format: RGBAFormat, minFilter: LinearFilter, magFilter: LinearFilter, depthBuffer: false });
+/**
+ * A target for a table in `planes` colour planes (filmPlanes: one texture each, written by one draw),
+ * `height` texels high until the pass sizes (and types) it to the grid it draws.
+ */
+export const tableTarget = (height: number, planes: 1 | 3 = 1): WebGLRenderTarget =>
+  new WebGLRenderTarget(1, height, {
+    format: RGBAFormat,
+    minFilter: LinearFilter,
+    magFilter: LinearFilter,
+    depthBuffer: false,
+    count: planes,
+  });
 
 /**
  * The table pass: shaders/film/filmTable.glsl drawn over a grid of the film table (or some of its
@@ -59,8 +65,6 @@ export class FilmTablePass {
   private rows: { texture: DataTexture; dispersive: boolean };
   /** What the row terms were last computed for (dispersiveRowsKey of the film and the grid's rows). */
   private rowsFor = '';
-  /** Who holds each plane's light textures: one texture per holder (SharedTextures), three planes at most. */
-  private readonly planeHolders = [this, {}, {}] as const;
 
   constructor(private readonly quality: FilmQuality) {
     this.programs = new TablePassPrograms(quality);
@@ -85,9 +89,14 @@ export class FilmTablePass {
   }
 
   /** What a build of `s` over `grids` is computed from, each asked by `light` (the light's transform) or `rows` (a dispersive film's row terms of a grid). */
-  private inputs<T>(s: FilmOptics, grids: readonly FilmTableGrid[], light: (l: SpectralLight) => T, rows: (key: string) => T): T[] {
+  private inputs<T>(
+    s: FilmOptics,
+    grids: readonly FilmTableGrid[],
+    light: (l: SpectralLight, planes: 1 | 3) => T,
+    rows: (key: string) => T,
+  ): T[] {
     const dispersive = fillGpu(s).dispersiveRows ? grids.map((g) => rows(dispersiveRowsKey(s, this.rowLayout(s, g)))) : [];
-    return [...planeLights(s, filmPlanes(s)).map((l) => light(l)), ...dispersive];
+    return [light(s, filmPlanes(s)), ...dispersive];
   }
 
   /** Whether the light's transform and, for a dispersive film, the row terms of each grid are at hand (each asked of its worker at once). */
@@ -103,7 +112,7 @@ export class FilmTablePass {
   /**
    * Runs the pass for `s` over `grid` in `target` (sized to it), over the column ranges [from, to) if
    * given (the rest of the texture is kept), through `time`, which draws it and may time it. A film
-   * in three colour planes (filmPlanes) is drawn three times, each plane in its rows under its light.
+   * in three colour planes (filmPlanes) needs a target of three textures (tableTarget), all drawn at once.
    */
   draw(
     renderer: WebGLRenderer,
@@ -113,15 +122,19 @@ export class FilmTablePass {
     columns: readonly TableColumns[] | null,
     time: (pass: () => void) => void = (pass) => pass(),
   ): void {
+    const planes = filmPlanes(s);
+    if (target.textures.length !== planes)
+      throw new Error(`FilmTablePass: a table in ${planes} colour planes drawn into a target of ${target.textures.length}`);
     const type = tableTexelType(renderer, this.quality.tablePrecision);
     if (target.texture.type !== type) {
       target.dispose(); // reallocated at the new type on the next render
-      target.texture.type = type;
+      for (const t of target.textures) t.type = type;
     }
-    const height = tableHeight(s, grid);
-    if (target.width !== grid.width || target.height !== height) target.setSize(grid.width, height);
+    if (target.width !== grid.width || target.height !== 2 * grid.rows) target.setSize(grid.width, 2 * grid.rows);
     const material = this.programs.material(s);
     const u = material.uniforms;
+    bindSpectralBins(u, s, this.programs.bins(s), this, planes);
+    u.uSpectralTransform!.value = spectralTransformTexture(s, this, planes);
     // A stack of films is filled by its recursion per bin; a dispersive film is filled from the bins, with their terms per row (shaders/film/filmTable.glsl).
     this.updateRows(s, grid);
     u.uDispersiveRows!.value = this.rows.texture;
@@ -133,26 +146,19 @@ export class FilmTablePass {
     const previous = renderer.getRenderTarget();
     target.scissorTest = true;
     time(() => {
-      planeLights(s, filmPlanes(s)).forEach((light, p) => {
-        bindSpectralBins(u, light, this.programs.bins(s), this.planeHolders[p]!);
-        u.uSpectralTransform!.value = spectralTransformTexture(light, this.planeHolders[p]!);
-        u.uFilmTablePlaneRow!.value = p * 2 * grid.rows;
-        for (const [from, to] of columns ?? [[0, grid.width]]) {
-          target.scissor.set(from, p * 2 * grid.rows, to - from, 2 * grid.rows);
-          renderer.setRenderTarget(target); // three takes the target's scissor as it binds it
-          this.fullscreen.render(renderer, material);
-        }
-      });
+      for (const [from, to] of columns ?? [[0, grid.width]]) {
+        target.scissor.set(from, 0, to - from, 2 * grid.rows);
+        renderer.setRenderTarget(target); // three takes the target's scissor as it binds it
+        this.fullscreen.render(renderer, material);
+      }
     });
     renderer.setRenderTarget(previous);
   }
 
   /** Lets go of the light's textures: the pass reads them only while it draws, and a table built band by band keeps them until its last band. */
   releaseLight(): void {
-    for (const holder of this.planeHolders) {
-      releaseSpectralBinsTexture(holder);
-      releaseSpectralTransformTexture(holder);
-    }
+    releaseSpectralBinsTexture(this);
+    releaseSpectralTransformTexture(this);
     releaseFilmStackTexture(this);
   }
 
@@ -189,10 +195,8 @@ export class FilmTablePass {
     renderer.setRenderTarget(target); // three picks a program by its target (no tone mapping into a texture)
     const compiled = this.fullscreen.compileAsync(renderer, this.programs.material(s));
     renderer.setRenderTarget(previous);
-    planeLights(s, filmPlanes(s)).forEach((light, p) => {
-      spectralBinsTexture(light, this.programs.bins(s), this.planeHolders[p]!);
-      spectralTransformTexture(light, this.planeHolders[p]!);
-    });
+    spectralBinsTexture(s, this.programs.bins(s), this, filmPlanes(s));
+    spectralTransformTexture(s, this, filmPlanes(s));
     await compiled;
   }
 

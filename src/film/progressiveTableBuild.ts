@@ -2,7 +2,7 @@ import type { WebGLRenderTarget, WebGLRenderer } from 'three';
 import type { FilmOptics } from '../settings/filmSettings.ts';
 import { filmFill } from '../methods/filmFills.ts';
 import type { FilmTableGrid } from './filmTableGrid.ts';
-import { type FilmTablePass, type TableColumns, tableHeight } from './filmTablePass.ts';
+import type { FilmTablePass, TableColumns } from './filmTablePass.ts';
 import { TableDrawTiming } from './tableDrawTiming.ts';
 import { type PassKind, TableBandBudget } from './tableBandBudget.ts';
 
@@ -41,7 +41,7 @@ export class ProgressiveTableBuild {
    */
   begin(renderer: WebGLRenderer, s: FilmOptics, maxThicknessNm: number, target: WebGLRenderTarget, mayWait: boolean): FilmTableGrid | null {
     const full = this.pass.fullGrid(s, maxThicknessNm);
-    const divisor = this.budget.coarseDivisor(passKind(s), full.width * tableHeight(s, full));
+    const divisor = this.budget.coarseDivisor(passKind(s), full.width * 2 * full.rows);
     const grid = {
       width: Math.max(2, Math.ceil(full.width / divisor)),
       rows: Math.max(2, Math.ceil(full.rows / divisor)),
@@ -61,7 +61,7 @@ export class ProgressiveTableBuild {
     const b = this.building;
     if (!b) return null;
     const from = b.columns;
-    b.columns += this.budget.bandColumns(passKind(b.s), tableHeight(b.s, b.grid), b.grid.width, b.grid.width - from);
+    b.columns += this.budget.bandColumns(passKind(b.s), 2 * b.grid.rows, b.grid.width, b.grid.width - from);
     const last = b.columns === b.grid.width;
     if (last) this.building = null;
     this.draw(renderer, b.s, target, b.grid, [from, b.columns]);
@@ -72,7 +72,7 @@ export class ProgressiveTableBuild {
   }
 
   private draw(renderer: WebGLRenderer, s: FilmOptics, target: WebGLRenderTarget, grid: FilmTableGrid, columns: TableColumns): void {
-    const texels = (columns[1] - columns[0]) * tableHeight(s, grid);
+    const texels = (columns[1] - columns[0]) * 2 * grid.rows;
     this.pass.draw(renderer, s, target, grid, [columns], this.timing.timed(renderer, passKind(s), texels, target, columns[0]));
   }
 

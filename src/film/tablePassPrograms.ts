@@ -1,4 +1,6 @@
-import { ShaderMaterial } from 'three';
+import { GLSL3, ShaderMaterial } from 'three';
+import type { FilmSettings } from '../settings/filmSettings.ts';
+import { filmPlanes } from '../settings/filmLight.ts';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { enumConstants } from '../gpu/enumDefines.ts';
 import { FULLSCREEN_VERTEX } from '../gpu/fullscreenPass.ts';
@@ -17,8 +19,8 @@ import { KEPT_PASSES, TABLE_PASS_NAME } from './keptPasses.ts';
 import { spectralBinDefines, spectralBinsUniforms } from './spectralBinsTexture.ts';
 import { airySeriesDefines, spectralTransformUniforms } from './spectralTransformTexture.ts';
 
-/** The media that pick the table pass's program (the outside's index is a uniform), or a stack of films. */
-export type PassMedia = Pick<FilmMedia, 'nFilm' | 'nInside'> & StackedSettings;
+/** The media that pick the table pass's program (the outside's index is a uniform), or a stack of films, and the colour planes (filmPlanes) it writes. */
+export type PassMedia = Pick<FilmMedia, 'nFilm' | 'nInside'> & StackedSettings & Partial<Pick<FilmSettings, 'env'>>;
 
 /**
  * The uniforms shaders/film/filmTable.glsl declares: the light's textures, the per-row terms
@@ -31,7 +33,6 @@ export const filmTablePassUniforms = (): ShaderMaterial['uniforms'] => ({
   uAirySeriesRows: { value: null },
   uDispersiveRows: { value: null },
   uPolarization: { value: 0 },
-  uFilmTablePlaneRow: { value: 0 },
   ...filmMediaUniforms(),
   ...filmStackUniforms(),
   ...filmTableGridUniforms(),
@@ -44,6 +45,7 @@ const tablePass = (): ShaderMaterial =>
     uniforms: filmTablePassUniforms(),
     vertexShader: FULLSCREEN_VERTEX,
     fragmentShader: filmShaderSource('filmTable.glsl'),
+    glslVersion: GLSL3, // its outputs are its own: a texel in each colour plane
   });
 
 /**
@@ -66,6 +68,7 @@ export class TablePassPrograms {
     return {
       ...filmMediaDefines(media),
       ...filmStackDefines(media),
+      ...(filmPlanes(media) === 3 && { TFC_ENVIRONMENT_MATRIX: 1 }),
       TFC_POLARIZATION_UNIFORM: 1,
       ...enumConstants('TFC_POLARIZATION', POLARIZATIONS),
       ...spectralBinDefines(bins, this.quality.spectralTailTolerance),

@@ -41,6 +41,8 @@ test('fourier with a dispersive film draws with the table and says why; the URL 
       // The grid the table binds: one texel until a table is built.
       const bound = {
         uFilmTable: { value: null },
+        uFilmTable1: { value: null },
+        uFilmTable2: { value: null },
         uTableMaxThicknessNm: { value: 0 },
         uFilmTableWidth: { value: 0 },
         uFilmTableRows: { value: 0 },

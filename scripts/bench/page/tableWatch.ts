@@ -4,13 +4,13 @@
  * once took, from the update's start until a pixel of the table is read back (the GPU done with
  * it, the pass's compile included).
  */
-import { FloatType, type Texture, WebGLRenderTarget, type WebGLRenderer } from 'three';
+import { FloatType, WebGLRenderTarget, type WebGLRenderer } from 'three';
 import type { FilmTable } from '../../../src/film/filmTable.ts';
-import { filmTableGridUniforms } from '../../../src/film/filmTableGrid.ts';
+import { filmTableUniforms } from '../../../src/film/filmTableGrid.ts';
 
 /** Waits for the GPU to finish the table `table` binds: a 1-pixel read of its render target. */
 function readTablePixel(renderer: WebGLRenderer, table: FilmTable): void {
-  const uniforms = { uFilmTable: { value: null as Texture | null }, ...filmTableGridUniforms() };
+  const uniforms = filmTableUniforms();
   table.bind(uniforms);
   const texture = uniforms.uFilmTable.value;
   const target = texture?.renderTarget;
