@@ -30,6 +30,7 @@ export const PANEL_CHANGES: readonly (readonly [string, string, string, string])
   ['inside medium', EN['panel.insideMedium'], 'Au', 'constant'],
   ['n film', named('nFilm'), '1.4', '1.33'],
   ['light', named('illuminant'), 'D93', 'D65'],
+  ['tint', EN['panel.tintGreen'], '0.5', '1'],
   ['polarisation', named('polarization'), 's', 'unpolarized'],
   ['range', named('thicknessRangeNm'), '1200', '800'],
   ['field', named('field'), 'drainage', 'swirl'],
