@@ -3,8 +3,8 @@ import { type NumberDomain, isInDomain, parseDecimal } from '../input/validate.t
 /**
  * A uniform coloured environment (`env=color:R,G,B`): the same radiance L(ω) = (R, G, B) from every
  * direction, linear sRGB relative to the light's white. A room of one colour, for teaching: the
- * walls reflect it in every mirror direction and it shows behind, so the film's reflectance R is
- * seen multiplied by one known colour (docs/physics.md#environments). Its checks and text here;
+ * walls reflect it in every mirror direction and it shows behind, so the film is seen reflecting one
+ * known colour, as a spectrum (docs/physics.md#environments). Its checks and text here;
  * the environments' registry (environments.ts) takes it as the one environment given by parameters.
  */
 export type EnvironmentColor = readonly [number, number, number];
