@@ -70,7 +70,15 @@ async function renderGroup(renderer: WebGPURenderer, g: ParityGroup, mode: NodeP
   g.inputs.forEach(([thicknessNm, cosIncidence], i) => data.set([thicknessNm, cosIncidence, 0, 0], 4 * i));
   cases.value = floatRow(count, data);
   caseCount.value = count;
-  const s: FilmSettings = { ...DEFAULT_SETTINGS, ...g, field: 'uniform', thicknessNm: Math.max(...g.inputs.map(([d]) => d)), mode };
+  // env none: the node film computes the film's XYZ, one colour plane (filmPlanes), as a material's film does.
+  const s: FilmSettings = {
+    ...DEFAULT_SETTINGS,
+    ...g,
+    env: 'none',
+    field: 'uniform',
+    thicknessNm: Math.max(...g.inputs.map(([d]) => d)),
+    mode,
+  };
   updateFilmColorUniforms(holder, { ...s, mode: 'exact' }, q, null);
   setFilmInputs(inputs, holder.uniforms);
   nOutside.value = s.nOutside;
