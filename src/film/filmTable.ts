@@ -1,4 +1,5 @@
 import type { ShaderMaterial, WebGLRenderTarget, WebGLRenderer } from 'three';
+import type { PlaneCount } from '../physics/spectralWeights.ts';
 import type { FilmQuality } from '../settings/filmQuality.ts';
 import type { FilmOptics } from '../settings/filmSettings.ts';
 import { tableKey } from './filmTableKey.ts';
@@ -142,7 +143,7 @@ export class FilmTable {
   }
 
   /** Targets of `planes` textures (what is shown is about to be replaced: its planes differ). */
-  private makeTargets(planes: 1 | 3): void {
+  private makeTargets(planes: PlaneCount): void {
     this.target.dispose();
     this.coarseTarget.dispose();
     this.target = tableTarget(2 * this.quality.table.rows, planes);

@@ -18,7 +18,7 @@ import {
   spectralTransformTexture,
   spectralTransformWhenReady,
 } from './spectralTransformTexture.ts';
-import type { SpectralLight } from '../physics/spectralWeights.ts';
+import type { SpectralLight, PlaneCount } from '../physics/spectralWeights.ts';
 import { filmPlanes } from '../settings/filmLight.ts';
 import { TablePassPrograms } from './tablePassPrograms.ts';
 
@@ -39,7 +39,7 @@ export function tableTexelType(renderer: WebGLRenderer, precision: FilmQuality['
  * A target for a table in `planes` colour planes (filmPlanes: one texture each, written by one draw),
  * `height` texels high until the pass sizes (and types) it to the grid it draws.
  */
-export const tableTarget = (height: number, planes: 1 | 3 = 1): WebGLRenderTarget =>
+export const tableTarget = (height: number, planes: PlaneCount = 1): WebGLRenderTarget =>
   new WebGLRenderTarget(1, height, {
     format: RGBAFormat,
     minFilter: LinearFilter,
@@ -92,7 +92,7 @@ export class FilmTablePass {
   private inputs<T>(
     s: FilmOptics,
     grids: readonly FilmTableGrid[],
-    light: (l: SpectralLight, planes: 1 | 3) => T,
+    light: (l: SpectralLight, planes: PlaneCount) => T,
     rows: (key: string) => T,
   ): T[] {
     const dispersive = fillGpu(s).dispersiveRows ? grids.map((g) => rows(dispersiveRowsKey(s, this.rowLayout(s, g)))) : [];

@@ -11,6 +11,7 @@ import {
   lightWeights,
   planeLights,
   spectralWeights,
+  type PlaneCount,
 } from '../physics/spectralWeights.ts';
 import { spectralLightKey } from './spectralTransformTexels.ts';
 
@@ -18,7 +19,7 @@ import { spectralLightKey } from './spectralTransformTexels.ts';
 const weightsRow = (p: number) => (p === 0 ? 0 : p + 1);
 
 const shared = new SharedTextures((key) => {
-  const { light, count, planes } = JSON.parse(key) as { light: SpectralLight; count: number; planes: 1 | 3 };
+  const { light, count, planes } = JSON.parse(key) as { light: SpectralLight; count: number; planes: PlaneCount };
   const bins = planeLights(light, planes).map((l) => lightBins(l, count));
   const rows = planes === 1 ? 2 : 4;
   const data = new Float32Array(4 * count * rows);
@@ -42,7 +43,7 @@ const shared = new SharedTextures((key) => {
  * `count` × 4: row 0 the weights of the light times the red basis spectrum, row 1 the windows,
  * rows 2 and 3 green's and blue's.
  */
-export const spectralBinsTexture = (light: SpectralLight, count: number, holder: object, planes: 1 | 3 = 1): DataTexture =>
+export const spectralBinsTexture = (light: SpectralLight, count: number, holder: object, planes: PlaneCount = 1): DataTexture =>
   shared.hold(`{"light":${spectralLightKey(light)},"count":${count},"planes":${planes}}`, holder);
 
 /** The uniforms shaders/physics/binnedIntegration.glsl declares for the bin weights and a line source's lines. */
@@ -62,7 +63,7 @@ export function bindSpectralBins(
   light: SpectralLight,
   count: number,
   holder: object,
-  planes: 1 | 3 = 1,
+  planes: PlaneCount = 1,
 ): void {
   u.uSpectralBins!.value = spectralBinsTexture(light, count, holder, planes);
   planeLights(light, planes).forEach((pl, p) => {

@@ -3,11 +3,11 @@ import { SPECTRAL_TRANSFORM_CARRIER_PER_NM, SPECTRAL_TRANSFORM_COUNT, SPECTRAL_T
 import { AIRY_SERIES_MAX_ORDERS, AIRY_SERIES_TOLERANCE } from '../physics/airySeries.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { SPECTRAL_TRANSFORM_ROWS as ROWS, SPECTRAL_TRANSFORM_WIDTH as WIDTH, spectralLightKey } from './spectralTransformTexels.ts';
-import { type SpectralLight, planeLights } from '../physics/spectralWeights.ts';
+import { type SpectralLight, planeLights, type PlaneCount } from '../physics/spectralWeights.ts';
 import { spectralTransformTexelsOf, spectralTransformTexelsReady, spectralTransformTexelsWhenReady } from './spectralTransformStore.ts';
 
 /** The key of a light's transform in `planes` colour planes: its plane lights' keys, one per line. */
-const planesKey = (light: SpectralLight, planes: 1 | 3): string => planeLights(light, planes).map(spectralLightKey).join('\n');
+const planesKey = (light: SpectralLight, planes: PlaneCount): string => planeLights(light, planes).map(spectralLightKey).join('\n');
 
 const shared = new SharedTextures((key) => {
   const planes = key.split('\n').map(spectralTransformTexelsOf);
@@ -26,20 +26,21 @@ const shared = new SharedTextures((key) => {
  * In three colour planes (a film's environment matrix) the transforms of the light times each basis
  * spectrum, one above the other.
  */
-export const spectralTransformTexture = (light: SpectralLight, holder: object, planes: 1 | 3 = 1): DataTexture =>
+export const spectralTransformTexture = (light: SpectralLight, holder: object, planes: PlaneCount = 1): DataTexture =>
   shared.hold(planesKey(light, planes), holder);
 
 /**
  * Whether `spectralTransformTexture` for the light would return at once (a texture held, or its
  * texels at hand); if not, they are being computed in a Web Worker (spectralTransformStore.ts).
  */
-export function spectralTransformReady(light: SpectralLight, planes: 1 | 3 = 1): boolean {
+export function spectralTransformReady(light: SpectralLight, planes: PlaneCount = 1): boolean {
   const key = planesKey(light, planes);
-  return shared.has(key) || key.split('\n').every(spectralTransformTexelsReady);
+  // Each plane asked of the worker at once: not one after another.
+  return shared.has(key) || key.split('\n').map(spectralTransformTexelsReady).every(Boolean);
 }
 
 /** A promise kept once `spectralTransformTexture` for the light would return at once: its texels computed in the Web Worker, or here where there is none. */
-export async function spectralTransformWhenReady(light: SpectralLight, planes: 1 | 3 = 1): Promise<void> {
+export async function spectralTransformWhenReady(light: SpectralLight, planes: PlaneCount = 1): Promise<void> {
   const key = planesKey(light, planes);
   if (!shared.has(key)) await Promise.all(key.split('\n').map(spectralTransformTexelsWhenReady));
 }

@@ -111,8 +111,11 @@ export interface SpectralLight {
 export const lightWeights = (light: SpectralLight): SpectralWeights =>
   spectralWeights(light.illuminant, light.normalization, light.lightTint, light.basis ?? null);
 
+/** How many colour planes a film is computed in: its XYZ (1), or its environment matrix, a column per basis spectrum (3). */
+export type PlaneCount = 1 | 3;
+
 /** The lights of a film's colour planes: the light itself (1), or the light times each basis spectrum (3). */
-export const planeLights = (light: SpectralLight, planes: 1 | 3): SpectralLight[] =>
+export const planeLights = (light: SpectralLight, planes: PlaneCount): SpectralLight[] =>
   planes === 1 ? [light] : ([0, 1, 2] as const).map((basis) => ({ ...light, basis }));
 
 /** The weights of a light with a spectrum, I_in T x̄, ȳ, z̄ / k at its 1 nm knots (T the tint's spectrum). */

@@ -1,4 +1,5 @@
 import { WHITE_TINT } from '../physics/lightTint.ts';
+import type { PlaneCount } from '../physics/spectralWeights.ts';
 import { environmentKind } from '../environments/environments.ts';
 import type { FilmSettings } from './filmSettings.ts';
 
@@ -19,5 +20,5 @@ export const DEFAULT_LIGHT = {
  * spectra; 1, its XYZ under the light, where it reflects only the light's white (`env=none`, or no
  * environment named: a material).
  */
-export const filmPlanes = (s: Partial<Pick<FilmSettings, 'env'>>): 1 | 3 =>
+export const filmPlanes = (s: Partial<Pick<FilmSettings, 'env'>>): PlaneCount =>
   s.env === undefined || environmentKind(s.env) === 'none' ? 1 : 3;
