@@ -15,7 +15,7 @@ import { WHITE_TINT } from '../../src/physics/lightTint.ts';
 import { filmPlanes } from '../../src/settings/filmLight.ts';
 import type { FilmSettings } from '../../src/settings/filmSettings.ts';
 import { filmTableLookupColumns } from '../../src/settings/filmTableLayout.ts';
-import { bindFilmTable } from '../../src/film/filmTableGrid.ts';
+import { bindFilmTable, filmTablePlanesUniforms } from '../../src/film/filmTableGrid.ts';
 import { filmStackUniforms } from '../../src/film/filmStack.ts';
 import { FilmTablePass, tableTarget } from '../../src/film/filmTablePass.ts';
 import { floatRowTexture, renderFloatRow } from '../../src/gpu/floatRow.ts';
@@ -57,7 +57,13 @@ export class FilmXyzProbe {
     if (hit) return hit;
     const m = new ShaderMaterial({
       defines,
-      uniforms: { uInputs: { value: null }, uReflectedColor: { value: new Vector3() }, ...filmColorUniforms(), ...filmStackUniforms() },
+      uniforms: {
+        uInputs: { value: null },
+        uReflectedColor: { value: new Vector3() },
+        ...filmColorUniforms(),
+        ...filmTablePlanesUniforms(),
+        ...filmStackUniforms(),
+      },
       vertexShader: FULLSCREEN_VERTEX,
       fragmentShader: FRAGMENT,
     });

@@ -10,6 +10,7 @@ import { setDefines } from '../gpu/materialDefines.ts';
 import { shaderSource } from '../gpu/shaderSource.ts';
 import { type FilmTableBinding, filmColorDefines, filmColorUniforms, matrix3, updateFilmColorUniforms } from '../film/filmColor.ts';
 import { filmStackUniforms } from '../film/filmStack.ts';
+import { filmTablePlanesUniforms } from '../film/filmTableGrid.ts';
 import { environmentDefines, environmentUniforms, updateEnvironmentUniforms } from './environmentMaterial.ts';
 
 /** The compile-time switches: a shader holds only the mode, field, sides and options in use. */
@@ -29,6 +30,7 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
     defines: bubbleDefines(s, q),
     uniforms: {
       ...filmColorUniforms(),
+      ...filmTablePlanesUniforms(),
       ...filmStackUniforms(),
       ...thicknessFieldUniforms(),
       ...environmentUniforms(),

@@ -25,12 +25,16 @@ export function setFilmTableGridUniforms(u: ShaderMaterial['uniforms'], grid: Fi
   u.uFilmTableRows!.value = grid.rows;
 }
 
-/** The uniforms of a shader that looks the table up: its colour planes' textures (shaders/methods/tableMethod.glsl) and its grid. */
+/** The uniforms of a shader that looks the table up (shaders/methods/tableMethod.glsl): its texture and its grid. */
 export const filmTableUniforms = () => ({
   uFilmTable: { value: null as Texture | null },
+  ...filmTableGridUniforms(),
+});
+
+/** The textures of a table's second and third colour planes, for a shader that may look up a film's environment matrix (the bubble's). */
+export const filmTablePlanesUniforms = () => ({
   uFilmTable1: { value: null as Texture | null },
   uFilmTable2: { value: null as Texture | null },
-  ...filmTableGridUniforms(),
 });
 
 /**
@@ -39,7 +43,6 @@ export const filmTableUniforms = () => ({
  */
 export function bindFilmTable(u: ShaderMaterial['uniforms'], planes: readonly Texture[], grid: FilmTableGrid): void {
   u.uFilmTable!.value = planes[0];
-  u.uFilmTable1!.value = planes[1] ?? null;
-  u.uFilmTable2!.value = planes[2] ?? null;
+  if (planes.length === 3) [u.uFilmTable1!.value, u.uFilmTable2!.value] = planes.slice(1);
   setFilmTableGridUniforms(u, grid);
 }

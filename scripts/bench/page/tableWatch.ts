@@ -6,11 +6,11 @@
  */
 import { FloatType, WebGLRenderTarget, type WebGLRenderer } from 'three';
 import type { FilmTable } from '../../../src/film/filmTable.ts';
-import { filmTableUniforms } from '../../../src/film/filmTableGrid.ts';
+import { filmTablePlanesUniforms, filmTableUniforms } from '../../../src/film/filmTableGrid.ts';
 
 /** Waits for the GPU to finish the table `table` binds: a 1-pixel read of its render target. */
 function readTablePixel(renderer: WebGLRenderer, table: FilmTable): void {
-  const uniforms = filmTableUniforms();
+  const uniforms = { ...filmTableUniforms(), ...filmTablePlanesUniforms() };
   table.bind(uniforms);
   const texture = uniforms.uFilmTable.value;
   const target = texture?.renderTarget;
