@@ -19,14 +19,17 @@ export async function compileFramePrograms(
   meshes: readonly Object3D[],
   others: readonly (Promise<unknown> | null)[],
 ): Promise<void> {
-  // A context lost while they compile has none of these programs: the compile after its restore checks its own.
-  let lost = false;
+  // A context lost (or lost and restored) while they compile, or lost as they start, has none of these
+  // programs, and the programs three lists may be the lost context's, whose names the restored one
+  // gives to other objects: the compile after its restore checks its own.
+  let lost = renderer.getContext().isContextLost();
   const onLost = () => (lost = true);
-  renderer.domElement.addEventListener('webglcontextlost', onLost);
+  const canvas = renderer.domElement;
+  for (const event of ['webglcontextlost', 'webglcontextrestored']) canvas.addEventListener(event, onLost);
   try {
     await Promise.all([...meshes.map((mesh) => renderer.compileAsync(mesh, camera, scene)), ...others]);
   } finally {
-    renderer.domElement.removeEventListener('webglcontextlost', onLost);
+    for (const event of ['webglcontextlost', 'webglcontextrestored']) canvas.removeEventListener(event, onLost);
   }
   if (!lost && !renderer.debug.checkShaderErrors) for (const failure of linkFailures(renderer)) console.error(failure);
 }
