@@ -16,12 +16,13 @@ interface FakeProgram {
 }
 
 /** A renderer with parallel compile (three's own check off) holding `programs`, whose compileAsync resolves when `finish` is called. */
-function fakeRenderer(programs: { name: string; program: FakeProgram }[]) {
+function fakeRenderer(programs: { name: string; program: FakeProgram }[], lost = false) {
   const canvas = new EventTarget();
   const asked: FakeProgram[] = [];
   let finish = () => {};
   const gl = {
     LINK_STATUS,
+    isContextLost: () => lost,
     getProgramParameter: (program: FakeProgram, parameter: number) => {
       asked.push(program);
       return parameter === LINK_STATUS ? program.linked : null;
@@ -77,15 +78,25 @@ describe('compileFramePrograms', () => {
     expect(again).toEqual([]);
   });
 
-  it('asks nothing of a context lost while the programs compiled', async () => {
-    const { renderer, canvas, asked, finish } = fakeRenderer([{ name: 'tfcBubble', program: { linked: false, log: 'stale' } }]);
-    const said = await reported(async () => {
-      const done = compile(renderer);
-      canvas.dispatchEvent(new Event('webglcontextlost'));
-      finish();
-      await done;
+  // A lost context's programs, or a restored one's list holding them: their names may be the new context's other objects.
+  for (const [when, event, lostAtStart] of [
+    ['lost while the programs compiled', 'webglcontextlost', false],
+    ['restored while the programs compiled', 'webglcontextrestored', false],
+    ['lost as the compile started', null, true],
+  ] as const) {
+    it(`asks nothing of a context ${when}`, async () => {
+      const { renderer, canvas, asked, finish } = fakeRenderer(
+        [{ name: 'tfcBubble', program: { linked: false, log: 'stale' } }],
+        lostAtStart,
+      );
+      const said = await reported(async () => {
+        const done = compile(renderer);
+        if (event) canvas.dispatchEvent(new Event(event));
+        finish();
+        await done;
+      });
+      expect(said).toEqual([]);
+      expect(asked).toEqual([]);
     });
-    expect(said).toEqual([]);
-    expect(asked).toEqual([]);
-  });
+  }
 });
