@@ -33,10 +33,10 @@ const NO_GRID: FilmTableGrid = { width: 1, rows: 1, maxThicknessNm: 1 };
  * update needs the table made with its progressive builds (ProgressiveBuilds).
  */
 export class FilmTable {
-  private target: WebGLRenderTarget;
-  private coarseTarget: WebGLRenderTarget;
-  /** What is shown: the settings' tableKey ('' for nothing), whether from the coarse texture, its grid and its colour planes (filmPlanes). */
-  private shown = { key: '', coarse: false, grid: NO_GRID, planes: 1 };
+  private target!: WebGLRenderTarget;
+  private coarseTarget!: WebGLRenderTarget;
+  /** What is shown: the settings' tableKey ('' for nothing), whether from the coarse texture, and its grid (its colour planes: the targets'). */
+  private shown = { key: '', coarse: false, grid: NO_GRID };
   /** Whether progressive updates wait for a new light's transform (the table shown is for other settings). */
   private waiting = false;
   private readonly pass: FilmTablePass;
@@ -48,8 +48,7 @@ export class FilmTable {
   ) {
     this.pass = new FilmTablePass(quality);
     this.build = progressive?.(this.pass) ?? null;
-    this.target = tableTarget(2 * quality.table.rows);
-    this.coarseTarget = tableTarget(2);
+    this.newTargets(1);
   }
 
   /**
@@ -73,8 +72,9 @@ export class FilmTable {
   update(renderer: WebGLRenderer, s: FilmOptics, maxThicknessNm: number, progressive = false): boolean {
     const key = tableKey(s, maxThicknessNm);
     const planes = filmPlanes(s);
+    const samePlanes = planes === this.target.textures.length;
     this.waiting = false;
-    if (key !== this.shown.key && planes !== this.target.textures.length) this.makeTargets(planes);
+    if (key !== this.shown.key && !samePlanes) this.makeTargets(planes);
     this.build?.poll();
     if (!progressive) {
       this.build?.stop();
@@ -82,26 +82,20 @@ export class FilmTable {
       const grid = this.pass.fullGrid(s, maxThicknessNm);
       this.pass.draw(renderer, s, this.target, grid, null);
       this.pass.releaseLight();
-      this.shown = { key, coarse: false, grid, planes };
+      this.shown = { key, coarse: false, grid };
       return true;
     }
     if (!this.build) throw new Error('FilmTable: a progressive update of a table made without progressive builds');
     if (key !== this.shown.key) {
       // A table shown (the first is not waited for) stays until what it needs is at hand, unless it
       // has other colour planes: the material drawn now looks up the new planes.
-      const coarse = this.build.begin(
-        renderer,
-        s,
-        maxThicknessNm,
-        this.coarseTarget,
-        this.shown.key !== '' && this.shown.planes === planes,
-      );
+      const coarse = this.build.begin(renderer, s, maxThicknessNm, this.coarseTarget, this.shown.key !== '' && samePlanes);
       this.waiting = coarse === null;
-      if (coarse) this.shown = { key, coarse: true, grid: coarse, planes };
+      if (coarse) this.shown = { key, coarse: true, grid: coarse };
       return coarse !== null;
     }
     const full = this.shown.coarse ? this.build.nextBand(renderer, this.target) : null;
-    if (full) this.shown = { key, coarse: false, grid: full, planes };
+    if (full) this.shown = { key, coarse: false, grid: full };
     return full !== null;
   }
 
@@ -134,11 +128,10 @@ export class FilmTable {
    * does not own (a WebGL warning), for instance when a coarse grid of another size resizes a target.
    */
   invalidate(): void {
-    this.target = tableTarget(2 * this.quality.table.rows, this.target.textures.length === 3 ? 3 : 1);
-    this.coarseTarget = tableTarget(2, this.target.textures.length === 3 ? 3 : 1);
+    this.newTargets(this.target.textures.length as PlaneCount);
     this.pass.invalidate();
     this.build?.invalidate();
-    this.shown = { key: '', coarse: false, grid: NO_GRID, planes: 1 };
+    this.shown = { key: '', coarse: false, grid: NO_GRID };
     this.waiting = false;
   }
 
@@ -146,6 +139,11 @@ export class FilmTable {
   private makeTargets(planes: PlaneCount): void {
     this.target.dispose();
     this.coarseTarget.dispose();
+    this.newTargets(planes);
+  }
+
+  /** New targets of `planes` textures, the old ones let go (disposed by the caller, or a lost context's). */
+  private newTargets(planes: PlaneCount): void {
     this.target = tableTarget(2 * this.quality.table.rows, planes);
     this.coarseTarget = tableTarget(2, planes);
   }
