@@ -15,15 +15,27 @@
 
 uniform mat3 uXyzToLinearDisplay;   // XYZ -> the display's linear space, for the gamut test
 
+#ifdef TFC_ENVIRONMENT_MATRIX
+// The light's tint t (linear sRGB relative to the light's white): of each colour c the walls reflect
+// they reflect t c, through M (the film's matrix under the untinted light), so a change of tint is a
+// change of this uniform alone.
+uniform vec3 uLightTint;
+
+// The film's XYZ under the light, its tint included (what the probe reads and the gamut test tests).
+vec3 tfcFilmLightXyz(mat3 m) { return m * uLightTint; }
+#else
+vec3 tfcFilmLightXyz(vec3 xyz) { return xyz; }
+#endif
+
 // A wall's light: its film's reflection of `reflected` (the light from its mirror direction) and its
-// transmission of `transmitted`, in the working space. Where the walls reflect the light's white
-// (TFC_ENVIRONMENT_NONE), the film's XYZ gives R per channel and T = 1 - R; in a coloured environment
-// its environment matrix (TFC_ENVIRONMENT_MATRIX) gives each colour c as M c, an integral of two
-// spectra, and c - M c through the wall, the light the film does not reflect.
+// transmission of `transmitted`, in the working space. Where the walls reflect the untinted light's
+// white (TFC_ENVIRONMENT_NONE), the film's XYZ gives R per channel and T = 1 - R; in a coloured
+// environment or a tinted light its environment matrix (TFC_ENVIRONMENT_MATRIX) gives each colour c
+// as M t c, an integral of two spectra, and c - M c through the wall, the light the film does not reflect.
 vec3 tfcWallRadiance(TFC_FILM_COLOR film, vec3 reflected, vec3 transmitted) {
 #ifdef TFC_ENVIRONMENT_MATRIX
   mat3 m = uXyzToLinearWorking * film;
-  return m * reflected + transmitted - m * transmitted;
+  return m * (uLightTint * reflected) + transmitted - m * transmitted;
 #else
   vec3 r = tfcApplyMatrix3(uXyzToLinearWorking, film);
   return r * reflected + clamp(1.0 - r, 0.0, 1.0) * transmitted;
@@ -40,7 +52,7 @@ void main() {
   float cosIncidence = clamp(abs(dot(normal, toEye)), 0.0, 1.0);
   float nearThicknessNm = tfcThicknessAt(vSpherePoint);
   TFC_FILM_COLOR nearFilm = tfcFilmXyz(nearThicknessNm, cosIncidence, false);
-  vec3 nearXyz = tfcFilmWhiteXyz(nearFilm);
+  vec3 nearXyz = tfcFilmLightXyz(nearFilm);
 #ifdef TFC_PROBE
   gl_FragColor = vec4(nearXyz, nearThicknessNm);
   return;

@@ -9,13 +9,10 @@
 
 #ifdef TFC_ENVIRONMENT_MATRIX
 #define TFC_FILM_COLOR mat3
-// The film's XYZ under the light itself: the basis sums to 1.
-vec3 tfcFilmWhiteXyz(mat3 m) { return m * vec3(1.0); }
 // XYZ of the film's reflection of light of colour c: M c.
 vec3 tfcReflectedXyz(mat3 m, vec3 c) { return m * c; }
 #else
 #define TFC_FILM_COLOR vec3
-vec3 tfcFilmWhiteXyz(vec3 xyz) { return xyz; }
 #endif
 
 #endif

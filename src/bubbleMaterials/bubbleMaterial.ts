@@ -1,4 +1,4 @@
-import { type DataTexture, type Matrix3, ShaderMaterial } from 'three';
+import { type DataTexture, type Matrix3, ShaderMaterial, Vector3 } from 'three';
 import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { type FilmSettings, SIDES } from '../settings/filmSettings.ts';
@@ -35,6 +35,8 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
       ...thicknessFieldUniforms(),
       ...environmentUniforms(),
       uXyzToLinearDisplay: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
+      /** The light's tint, a colour the film's environment matrix maps (bubble.frag.glsl; read only in three planes: filmPlanes). */
+      uLightTint: { value: new Vector3(1, 1, 1) },
     },
     vertexShader: shaderSource('bubble.vert.glsl'),
     fragmentShader: thicknessFieldSource() + shaderSource('bubble.frag.glsl'),
@@ -59,5 +61,6 @@ export function updateBubbleUniforms(
   updateFilmColorUniforms(m, s, q, table);
   updateFieldUniforms(u, s, field);
   updateEnvironmentUniforms(m, s, environmentMap);
+  (u.uLightTint!.value as Vector3).set(...s.lightTint);
   (u.uXyzToLinearDisplay!.value as Matrix3).set(...(displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB));
 }

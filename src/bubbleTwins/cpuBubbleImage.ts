@@ -4,6 +4,7 @@ import { stackBinnedXyz } from '../physics/binnedIntegration.ts';
 import { lightBins } from '../physics/environmentMatrix.ts';
 import { absorbsInBand } from '../physics/medium.ts';
 import { planeLights } from '../physics/spectralWeights.ts';
+import type { LightTint } from '../physics/lightTint.ts';
 import { filmPlanes } from '../settings/filmLight.ts';
 import { DEFAULT_FILM_QUALITY } from '../settings/filmQuality.ts';
 import { type ShownEnvironment, environmentRadiance, reflectedRadiance } from './environment.ts';
@@ -46,9 +47,9 @@ const reflect = (d: Vec3, n: Vec3): Vec3 => {
 
 /**
  * A film's colour in the working space (linear sRGB): R per channel (3 numbers) where the walls
- * reflect the light's white, or its environment matrix M in the working space (9, row-major) where
- * they reflect a coloured environment (filmPlanes), M's column j the film under the light times
- * basis spectrum j.
+ * reflect the untinted light's white, or its environment matrix M in the working space (9, row-major)
+ * where they reflect a coloured environment or a tinted light (filmPlanes), M's column j the film
+ * under the untinted light times basis spectrum j.
  */
 type FilmColorValue = readonly number[];
 type FilmColor = (thicknessNm: number, cosIncidence: number, fromInside: boolean) => FilmColorValue;
@@ -88,12 +89,14 @@ function filmColorLattice(s: FilmSettings): FilmColor {
 
 /**
  * A wall's light (tfcWallRadiance in bubble.frag.glsl): the film's reflection of `reflected` and its
- * transmission of `transmitted`: R r + clamp(1 − R) t per channel, or M r + t − M t.
+ * transmission of `transmitted`: R r + clamp(1 − R) t per channel, or M (tint r) + t − M t (the
+ * untinted light's white has one plane, so only a matrix meets a tint).
  */
-function wallRadiance(film: FilmColorValue, reflected: Rgb, transmitted: Rgb): Rgb {
+function wallRadiance(film: FilmColorValue, reflected: Rgb, transmitted: Rgb, tint: LightTint): Rgb {
   if (film.length === 3) return [0, 1, 2].map((i) => film[i]! * reflected[i]! + clamp01(1 - film[i]!) * transmitted[i]!) as unknown as Rgb;
-  const m = (i: number, c: Rgb) => film[3 * i]! * c[0] + film[3 * i + 1]! * c[1] + film[3 * i + 2]! * c[2];
-  return [0, 1, 2].map((i) => m(i, reflected) + transmitted[i]! - m(i, transmitted)) as unknown as Rgb;
+  const m = (i: number, c: readonly number[]) => film[3 * i]! * c[0]! + film[3 * i + 1]! * c[1]! + film[3 * i + 2]! * c[2]!;
+  const lit = reflected.map((c, i) => c * tint[i]!);
+  return [0, 1, 2].map((i) => m(i, lit) + transmitted[i]! - m(i, transmitted)) as unknown as Rgb;
 }
 
 /** The environment a still image shows: an HDR `env` needs its pixels (environmentMaps.ts), a uniform one its colour. */
@@ -160,7 +163,7 @@ function bubbleRadiance(s: FilmSettings, env: ShownEnvironment, film: FilmColor,
   if (s.sides === 'both' && !opaque) {
     // The chord through a unit sphere at incidence θ has length 2 cos θ (toEye = −dir).
     const far = normalize([p[0] + 2 * cos * dir[0], p[1] + 2 * cos * dir[1], p[2] + 2 * cos * dir[2]]);
-    behind = wallRadiance(film(thicknessAt(far, s), cos, true), reflectedRadiance(reflect(dir, far), env), behind);
+    behind = wallRadiance(film(thicknessAt(far, s), cos, true), reflectedRadiance(reflect(dir, far), env), behind, s.lightTint);
   }
-  return wallRadiance(near, nearLight, behind);
+  return wallRadiance(near, nearLight, behind, s.lightTint);
 }

@@ -10,6 +10,7 @@ import {
   type SpectralLight,
   lightWeights,
   planeLights,
+  planesLight,
   spectralWeights,
   type PlaneCount,
 } from '../physics/spectralWeights.ts';
@@ -44,7 +45,7 @@ const shared = new SharedTextures((key) => {
  * rows 2 and 3 green's and blue's.
  */
 export const spectralBinsTexture = (light: SpectralLight, count: number, holder: object, planes: PlaneCount = 1): DataTexture =>
-  shared.hold(`{"light":${spectralLightKey(light)},"count":${count},"planes":${planes}}`, holder);
+  shared.hold(`{"light":${spectralLightKey(planesLight(light, planes))},"count":${count},"planes":${planes}}`, holder);
 
 /** The uniforms shaders/physics/binnedIntegration.glsl declares for the bin weights and a line source's lines. */
 export const spectralBinsUniforms = () => ({

@@ -114,9 +114,17 @@ export const lightWeights = (light: SpectralLight): SpectralWeights =>
 /** How many colour planes a film is computed in: its XYZ (1), or its environment matrix, a column per basis spectrum (3). */
 export type PlaneCount = 1 | 3;
 
-/** The lights of a film's colour planes: the light itself (1), or the light times each basis spectrum (3). */
+/**
+ * The light a film's colour planes are computed under: the light itself for its XYZ (1); the untinted
+ * light for its environment matrix (3), which takes a tint t as one more colour it maps (M t), so
+ * that a change of tint changes no plane.
+ */
+export const planesLight = (light: SpectralLight, planes: PlaneCount): SpectralLight =>
+  planes === 1 ? light : { ...light, lightTint: WHITE_TINT };
+
+/** The lights of a film's colour planes: the light itself (1), or the untinted light times each basis spectrum (3). */
 export const planeLights = (light: SpectralLight, planes: PlaneCount): SpectralLight[] =>
-  planes === 1 ? [light] : ([0, 1, 2] as const).map((basis) => ({ ...light, basis }));
+  planes === 1 ? [light] : ([0, 1, 2] as const).map((basis) => ({ ...planesLight(light, planes), basis }));
 
 /** The weights of a light with a spectrum, I_in T x̄, ȳ, z̄ / k at its 1 nm knots (T the tint's spectrum). */
 function spectrumWeights(illuminant: IlluminantSpec, normalization: Normalization, tint: (lambdaNm: number) => number): SpectralWeights {

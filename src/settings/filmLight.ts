@@ -1,4 +1,4 @@
-import { WHITE_TINT } from '../physics/lightTint.ts';
+import { WHITE_TINT, isWhiteTint } from '../physics/lightTint.ts';
 import type { PlaneCount } from '../physics/spectralWeights.ts';
 import { environmentKind } from '../environments/environments.ts';
 import type { FilmSettings } from './filmSettings.ts';
@@ -16,9 +16,12 @@ export const DEFAULT_LIGHT = {
 
 /**
  * The colour planes a film is computed in: 3, its environment matrix M (physics/environmentMatrix.ts),
- * where it reflects a coloured environment, so that each colour it reflects is an integral of two
- * spectra; 1, its XYZ under the light, where it reflects only the light's white (`env=none`, or no
- * environment named: a material).
+ * where its walls reflect a coloured environment or a tinted light, so that each colour it reflects
+ * is an integral of two spectra and a tint is a colour M maps (a change of tint changes no plane);
+ * 1, its XYZ under the light, where it reflects only the untinted light's white (`env=none`). A
+ * film with no environment named (a material's) keeps one plane and computes it under the tinted light.
  */
-export const filmPlanes = (s: Partial<Pick<FilmSettings, 'env'>>): PlaneCount =>
-  s.env === undefined || environmentKind(s.env) === 'none' ? 1 : 3;
+export const filmPlanes = (s: Partial<Pick<FilmSettings, 'env' | 'lightTint'>>): PlaneCount => {
+  if (s.env === undefined) return 1;
+  return environmentKind(s.env) === 'none' && isWhiteTint(s.lightTint ?? WHITE_TINT) ? 1 : 3;
+};
