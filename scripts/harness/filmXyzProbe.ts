@@ -106,7 +106,9 @@ export class FilmXyzProbe {
       table = this.tableAround(quality, settings, thicknessesNm);
     }
     updateFilmColorUniforms(m, { lightTint: WHITE_TINT, ...g, ...environmentOf(g), mode }, quality, table);
-    (u.uReflectedColor!.value as Vector3).fromArray(g.environmentColor ?? [1, 1, 1]);
+    // What the bubble's walls reflect through M: the room's colour (the light's white without one) times the tint.
+    const tint = g.lightTint ?? WHITE_TINT;
+    (u.uReflectedColor!.value as Vector3).fromArray((g.environmentColor ?? WHITE_TINT).map((c, i) => c * tint[i]!));
     const out = renderFloatRow(this.renderer, m, g.inputs.length);
     inputTexture.dispose();
     return g.inputs.map((_, i) => [out[4 * i]!, out[4 * i + 1]!, out[4 * i + 2]!]);

@@ -7,6 +7,7 @@ import { deltaE00 } from '../../src/physics/colorDifference.ts';
 import { POLARIZATIONS, type Polarization } from '../../src/physics/filmReflectance.ts';
 import type { FilmIndex } from '../../src/physics/filmIndex.ts';
 import type { IlluminantSpec } from '../../src/physics/illuminants.ts';
+import { type LightTint, WHITE_TINT } from '../../src/physics/lightTint.ts';
 import { cosDeg } from '../../src/physics/snell.ts';
 import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 import { type Xyz } from '../../src/physics/spectralWeights.ts';
@@ -117,8 +118,10 @@ export function compare(groups: readonly Group[], rendered: number[][][]): { fig
     const white = whiteXyz(g.illuminant, g.normalization);
     g.cases.forEach((c, ci) => {
       const shader = rendered[gi]![ci]! as unknown as Xyz;
-      // A colour the film reflects is the light tinted by it: the tinted integral, computed without any matrix.
-      const reference = filmXyz({ ...g, ...c }, g.environmentColor ? { ...g, lightTint: g.environmentColor } : g);
+      // A colour the film reflects (the room's times the tint) is the light tinted by it: the tinted integral, computed without any matrix.
+      const tint = g.lightTint ?? WHITE_TINT;
+      const reflected = g.environmentColor ? { lightTint: g.environmentColor.map((v, i) => v * tint[i]!) as unknown as LightTint } : {};
+      const reference = filmXyz({ ...g, ...c }, { ...g, ...reflected });
       const label = `${JSON.stringify({ ...g, cases: undefined, ...c })} shader ${shader.map((v) => v.toFixed(5))} reference ${reference.map((v) => v.toFixed(5))}`;
       const d = deltaE00(shader, reference, white);
       if (![...shader, d].every(Number.isFinite)) nonFinite.push(label);
