@@ -142,7 +142,11 @@ describe('the CPU still image of the bubble', () => {
     const c = [0.4, 0.9, 0.8] as const;
     const cases = [
       [film({ thicknessNm: 600, lightTint: t }), { ...SOAP_FILM_IN_AIR, thicknessNm: 600 }, t],
-      [film({ thicknessNm: 300, nFilm: 1.38, nInside: 'Au', sides: 'both', lightTint: t }), { nOutside: 1, nFilm: 1.38, nInside: 'Au', thicknessNm: 300 }, t],
+      [
+        film({ thicknessNm: 300, nFilm: 1.38, nInside: 'Au', sides: 'both', lightTint: t }),
+        { nOutside: 1, nFilm: 1.38, nInside: 'Au', thicknessNm: 300 },
+        t,
+      ],
       [
         film({ thicknessNm: 300, nFilm: 1.38, nInside: 'Au', sides: 'both', lightTint: t, env: { color: c }, tonemap: 'none' }),
         { nOutside: 1, nFilm: 1.38, nInside: 'Au', thicknessNm: 300 },
@@ -152,12 +156,16 @@ describe('the CPU still image of the bubble', () => {
     for (const [s, stack, tint] of cases) {
       const xyz = filmXyz({ ...stack, angleDeg: 0 }, { lightTint: tint as unknown as readonly [number, number, number] });
       const expected = applyMatrix3(XYZ_TO_LINEAR_SRGB, xyz).map((v) => encode8(Math.min(1, Math.max(0, v))));
-      const untinted = applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz({ ...stack, angleDeg: 0 })).map((v) => encode8(Math.min(1, Math.max(0, v))));
+      const untinted = applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz({ ...stack, angleDeg: 0 })).map((v) =>
+        encode8(Math.min(1, Math.max(0, v))),
+      );
       // The tint is seen: the untinted film is far from the expected colour.
       expect(Math.max(...expected.map((v, i) => Math.abs(v - untinted[i]!)))).toBeGreaterThan(10 * MAX_CODE_DIFFERENCE);
       const centre = pixel(cpuBubbleImage(s, SIZE, SIZE), SIZE / 2, SIZE / 2);
       for (let i = 0; i < 3; i++)
-        expect(Math.abs(centre[i]! - expected[i]!), `${JSON.stringify(stack)} tint ${tint}: ${centre} vs ${expected}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+        expect(Math.abs(centre[i]! - expected[i]!), `${JSON.stringify(stack)} tint ${tint}: ${centre} vs ${expected}`).toBeLessThanOrEqual(
+          MAX_CODE_DIFFERENCE,
+        );
     }
   });
 });
