@@ -16,10 +16,9 @@
 uniform mat3 uXyzToLinearDisplay;   // XYZ -> the display's linear space, for the gamut test
 
 #ifdef TFC_ENVIRONMENT_MATRIX
-// The light's tint t (linear sRGB relative to the light's white): of each colour c the walls reflect
-// they reflect t c, through M (the film's matrix under the untinted light), so a change of tint is a
-// change of this uniform alone.
-uniform vec3 uLightTint;
+// The light's tint t: of each colour c the walls reflect they reflect t c, through M (the film's
+// matrix under the untinted light), so a change of tint is a change of this uniform alone.
+#include "filmLightTint.glsl"
 
 // The film's XYZ under the light, its tint included (what the probe reads and the gamut test tests).
 vec3 tfcFilmLightXyz(mat3 m) { return m * uLightTint; }

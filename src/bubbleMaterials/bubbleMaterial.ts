@@ -1,4 +1,4 @@
-import { type DataTexture, type Matrix3, ShaderMaterial, Vector3 } from 'three';
+import { type DataTexture, type Matrix3, ShaderMaterial } from 'three';
 import { XYZ_TO_LINEAR_DISPLAY_P3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { type FilmSettings, SIDES } from '../settings/filmSettings.ts';
@@ -11,6 +11,7 @@ import { shaderSource } from '../gpu/shaderSource.ts';
 import { type FilmTableBinding, filmColorDefines, filmColorUniforms, matrix3, updateFilmColorUniforms } from '../film/filmColor.ts';
 import { filmStackUniforms } from '../film/filmStack.ts';
 import { filmTablePlanesUniforms } from '../film/filmTableGrid.ts';
+import { lightTintUniforms, setLightTintUniform } from '../film/filmLightTint.ts';
 import { environmentDefines, environmentUniforms, updateEnvironmentUniforms } from './environmentMaterial.ts';
 
 /** The compile-time switches: a shader holds only the mode, field, sides and options in use. */
@@ -35,8 +36,7 @@ export function createBubbleMaterial(s: FilmSettings, q: FilmQuality): ShaderMat
       ...thicknessFieldUniforms(),
       ...environmentUniforms(),
       uXyzToLinearDisplay: { value: matrix3(XYZ_TO_LINEAR_SRGB) },
-      /** The light's tint, a colour the film's environment matrix maps (bubble.frag.glsl; read only in three planes: filmPlanes). */
-      uLightTint: { value: new Vector3(1, 1, 1) },
+      ...lightTintUniforms(),
     },
     vertexShader: shaderSource('bubble.vert.glsl'),
     fragmentShader: thicknessFieldSource() + shaderSource('bubble.frag.glsl'),
@@ -61,6 +61,6 @@ export function updateBubbleUniforms(
   updateFilmColorUniforms(m, s, q, table);
   updateFieldUniforms(u, s, field);
   updateEnvironmentUniforms(m, s, environmentMap);
-  (u.uLightTint!.value as Vector3).set(...s.lightTint);
+  setLightTintUniform(u, s.lightTint);
   (u.uXyzToLinearDisplay!.value as Matrix3).set(...(displayIsP3 ? XYZ_TO_LINEAR_DISPLAY_P3 : XYZ_TO_LINEAR_SRGB));
 }

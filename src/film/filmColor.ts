@@ -2,7 +2,7 @@ import { Matrix3, type ShaderMaterial } from 'three';
 import { POLARIZATIONS } from '../physics/filmReflectance.ts';
 import { type Matrix3 as Rows3, XYZ_TO_LINEAR_SRGB } from '../physics/colorConversions.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
-import type { FilmSettings } from '../settings/filmSettings.ts';
+import type { FilmOptics, FilmSettings } from '../settings/filmSettings.ts';
 import { filmPlanes } from '../settings/filmLight.ts';
 import type { FilmMethodInput } from '../methods/filmMethod.ts';
 import { FILM_METHOD_REGISTRY, FILM_METHODS, methodReads } from '../methods/methods.ts';
@@ -31,6 +31,7 @@ export const matrix3 = (rows: Rows3) => new Matrix3().set(...rows);
 
 export type FilmColorSettings = Pick<FilmSettings, 'mode' | 'polarization' | 'nFilm' | 'nInside'> &
   Partial<Pick<FilmSettings, 'env'>> &
+  Pick<FilmOptics, 'sceneEnvironment'> &
   StackedSettings;
 
 /** The defines each input of a method (src/methods/filmMethod.ts) brings, sized by the quality. */

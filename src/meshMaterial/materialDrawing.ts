@@ -3,7 +3,7 @@
  * first time a material is made spectral: the film's shader written into three's, its program
  * key, its table and the light's textures, and the data they are computed from (the CIE tables).
  */
-import { type MeshPhysicalMaterial, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
+import { type MeshPhysicalMaterial, type Scene, type WebGLProgramParametersWithUniforms, type WebGLRenderer } from 'three';
 import { filmColorUniforms, releaseFilmColorTextures, updateFilmColorUniforms } from '../film/filmColor.ts';
 import { filmStackUniforms } from '../film/filmStack.ts';
 import { spectralTransformWhenReady } from '../film/spectralTransformTexture.ts';
@@ -13,7 +13,17 @@ import { methodReads } from '../methods/methods.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { restoresOf } from './contextRestores.ts';
-import { type MaterialFilmSettings, drawnFilmSettings, filmDefinesOf, filmKeyOf, followMetal, metalOf } from './materialFilm.ts';
+import {
+  type MaterialFilmSettings,
+  drawnFilmSettings,
+  filmDefinesOf,
+  filmKeyOf,
+  followEnvironment,
+  followMetal,
+  metalOf,
+} from './materialFilm.ts';
+import { filmTablePlanesUniforms } from '../film/filmTableGrid.ts';
+import { lightTintUniforms, setLightTintUniform } from '../film/filmLightTint.ts';
 import { spectralFragmentShader } from './spectralFragmentShader.ts';
 import { type SpectralFilm, warnOnce } from './spectralFilm.ts';
 
@@ -25,11 +35,12 @@ const tables = new SharedTextures((key) => new FilmTable((JSON.parse(key) as { q
 const tableRestores = new WeakMap<FilmTable, number>();
 
 /**
- * The film with its uniforms (filmColor.glsl's and the stack's), made once per material. The film
- * itself holds the light's textures (filmColor.ts's holder), so that its release lets them go.
+ * The film with its uniforms (filmColor.glsl's, the stack's, and in a scene with an environment the
+ * table's other planes and the light's tint), made once per material. The film itself holds the
+ * light's textures (filmColor.ts's holder), so that its release lets them go.
  */
 const withUniforms = (film: SpectralFilm): SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> } => {
-  film.uniforms ??= { ...filmColorUniforms(), ...filmStackUniforms() };
+  film.uniforms ??= { ...filmColorUniforms(), ...filmStackUniforms(), ...filmTablePlanesUniforms(), ...lightTintUniforms() };
   return film as SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> };
 };
 
@@ -62,7 +73,9 @@ function update(film: SpectralFilm, m: MeshPhysicalMaterial, renderer: WebGLRend
     tableRestores.set(held.table, restores);
     held.table.update(renderer, s, held.maxThicknessNm);
   }
-  updateFilmColorUniforms(withUniforms(film), s, o.quality, film.table);
+  const holder = withUniforms(film);
+  updateFilmColorUniforms(holder, s, o.quality, film.table);
+  setLightTintUniform(holder.uniforms, s.lightTint);
 }
 
 /**
@@ -92,11 +105,12 @@ export function compileFilm(m: MeshPhysicalMaterial, film: SpectralFilm, shader:
 }
 
 /**
- * Brings the film up to date before three draws `m` (onBeforeRender): everything the film needs
- * is built before the draw, so the frame shows the settled film.
+ * Brings the film up to date before three draws `m` in `scene` (onBeforeRender): everything the
+ * film needs is built before the draw, so the frame shows the settled film.
  */
-export function drawFilm(m: MeshPhysicalMaterial, film: SpectralFilm, renderer: WebGLRenderer): void {
+export function drawFilm(m: MeshPhysicalMaterial, film: SpectralFilm, renderer: WebGLRenderer, scene: Scene): void {
   followMetal(m, film);
+  followEnvironment(m, film, m.envMap ?? scene.environment);
   if (m.iridescence > 0) update(film, m, renderer);
 }
 

@@ -9,7 +9,7 @@ import { drawnFilmMethod } from '../settings/drawnFilm.ts';
 import type { MessageKey } from '../i18n/en.ts';
 import { type CheckedOptions } from './spectralIridescenceOptions.ts';
 import { type Limit, clampWithWarning, filmParametersOf, onColourMetal } from './materialParameters.ts';
-import { type SpectralFilm, warnOnce } from './spectralFilm.ts';
+import { type SpectralFilm, filmOf, warnOnce } from './spectralFilm.ts';
 
 /** The film a material draws: its optics, and the thickness its table reaches. */
 export type MaterialFilmSettings = FilmOptics & { readonly thicknessNm: number };
@@ -74,13 +74,23 @@ export function metalOf(m: MeshPhysicalMaterial, o: CheckedOptions): SampledInde
 /** What lies under the film in place of three's ior: `base`, or the metal from the base colour, or null. */
 const baseOf = (m: MeshPhysicalMaterial, o: CheckedOptions): Medium | null => o.base ?? metalOf(m, o);
 
+/** Whether the film of `m` was last drawn in a scene with an environment (SpectralFilm.sceneEnvironment). */
+const sceneEnvironmentOf = (m: MeshPhysicalMaterial): boolean => filmOf(m)?.sceneEnvironment ?? false;
+
 /**
- * The GLSL defines of the film (filmColor.glsl's, for the mode). The film is `film` (a medium) or
- * three's iridescenceIOR, a number; the base is `base` (a medium), the metal, or three's ior, a number.
+ * The GLSL defines of the film (filmColor.glsl's, for the mode and its colour planes). The film is
+ * `film` (a medium) or three's iridescenceIOR, a number; the base is `base` (a medium), the metal,
+ * or three's ior, a number.
  */
 export const filmDefinesOf = (m: MeshPhysicalMaterial, o: CheckedOptions): Record<string, number> =>
   filmColorDefines(
-    { ...o, mode: drawnModeOf(o), nFilm: o.film ?? SOAP_FILM_IN_AIR.nFilm, nInside: baseOf(m, o) ?? SOAP_FILM_IN_AIR.nInside },
+    {
+      ...o,
+      mode: drawnModeOf(o),
+      nFilm: o.film ?? SOAP_FILM_IN_AIR.nFilm,
+      nInside: baseOf(m, o) ?? SOAP_FILM_IN_AIR.nInside,
+      sceneEnvironment: sceneEnvironmentOf(m),
+    },
     o.quality,
   );
 
@@ -108,7 +118,18 @@ export function drawnFilmSettings(m: MeshPhysicalMaterial, film: SpectralFilm): 
   );
   const { notice } = drawnMethodOf(o);
   if (notice) warnOnce(film, notice.key, `mode ${o.mode}: ${insteadReason(notice.key)}; drawn with mode ${s.mode}`);
-  return s;
+  return { ...s, sceneEnvironment: film.sceneEnvironment };
+}
+
+/**
+ * Follows the scene's environment from draw to draw (`environment`: the one three lights the
+ * material with, its envMap or the scene's): its coming or going changes the film's colour planes,
+ * and so its program.
+ */
+export function followEnvironment(m: MeshPhysicalMaterial, film: SpectralFilm, environment: unknown): void {
+  const has = environment !== null && environment !== undefined;
+  if (film.sceneEnvironment !== has) m.needsUpdate = true;
+  film.sceneEnvironment = has;
 }
 
 /**

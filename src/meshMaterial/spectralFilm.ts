@@ -20,6 +20,12 @@ export interface SpectralFilm {
   readonly warned: Set<string>;
   /** metalStateOf at the last draw: a change three cannot see (metalness, the base colour) may need a new program */
   drawnMetal: string | null;
+  /**
+   * Whether the last draw's scene had an environment (three's scene.environment, or the
+   * material's envMap), whose light the film reflects through its environment matrix (the WebGL
+   * entry's drawing; the WebGPU entry's film has none)
+   */
+  sceneEnvironment: boolean;
   /** The film's part of the program key, given by the entry's drawing once it is loaded (before, the program holds three's film). */
   programKey?: (m: MeshPhysicalMaterial, o: CheckedOptions) => string;
 }
@@ -31,6 +37,7 @@ export const newFilm = (options: CheckedOptions): SpectralFilm => ({
   table: null,
   warned: new Set(),
   drawnMetal: null,
+  sceneEnvironment: false,
 });
 
 const films = new WeakMap<Material, SpectralFilm>();

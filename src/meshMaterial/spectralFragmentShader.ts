@@ -24,7 +24,18 @@ const SPECTRAL_F0 = (lobe: Lobe) =>
 type Lobe = 'Dielectric' | 'Metallic';
 
 /** The includes of three's physical fragment shader the film is written into. */
-const FILM_INCLUDES = ['#include <iridescence_fragment>', '#include <lights_fragment_begin>'] as const;
+const FILM_INCLUDES = ['#include <iridescence_fragment>', '#include <lights_fragment_begin>', '#include <lights_fragment_end>'] as const;
+
+/**
+ * After three's indirect light, in a scene with an environment: its light through the film's matrix
+ * in place of three's product per channel (shaders/meshMaterial/spectralIridescence.glsl,
+ * tfcEnvironmentThroughMatrix), for the film's lobe and weight.
+ */
+const ENVIRONMENT_THROUGH_MATRIX = (
+  lobe: Lobe,
+) => `#if defined( USE_IRIDESCENCE ) && defined( TFC_ENVIRONMENT_MATRIX ) && defined( RE_IndirectSpecular )
+	reflectedLight.indirectSpecular += tfcEnvironmentThroughMatrix( radiance, iblIrradiance, material.dfg, material.iridescenceF0${lobe}, material.iridescence * ${lobe === 'Metallic' ? 'material.metalness' : '( 1.0 - material.metalness )'} );
+#endif`;
 
 /** Why the film could not be written into a fragment shader: what is missing, in words a warning can quote. */
 export interface MissingFilmLines {
@@ -33,9 +44,10 @@ export interface MissingFilmLines {
 
 /**
  * three's physical fragment shader `fragment` with the spectral film written in: our GLSL after
- * three's iridescence declarations, and three's lights_fragment_begin with the film's lobe
- * replaced (its value and its F0) — the dielectric lobe, or over a metal from the base colour
- * (docs/material.md#a-metal-from-its-colour) the metallic one. Where the shader (a user's edit)
+ * three's iridescence declarations, three's lights_fragment_begin with the film's lobe replaced
+ * (its value and its F0) — the dielectric lobe, or over a metal from the base colour
+ * (docs/material.md#a-metal-from-its-colour) the metallic one — and after lights_fragment_end the
+ * environment's light through the film's matrix. Where the shader (a user's edit)
  * or three's chunk (another three.js release) lacks a line the edit needs, what is missing.
  */
 export function spectralFragmentShader(fragment: string, metal: boolean): string | MissingFilmLines {
@@ -48,5 +60,6 @@ export function spectralFragmentShader(fragment: string, metal: boolean): string
   if (missingLine !== undefined) return { missing: `${missingLine} (in three.js's lights_fragment_begin)` };
   return fragment
     .replace(FILM_INCLUDES[0], `${FILM_INCLUDES[0]}\n#ifdef USE_IRIDESCENCE\n${shaderSource('spectralIridescence.glsl')}\n#endif`)
-    .replace(FILM_INCLUDES[1], begin.replace(film, SPECTRAL_FILM).replace(THREE_F0(lobe), SPECTRAL_F0(lobe)));
+    .replace(FILM_INCLUDES[1], begin.replace(film, SPECTRAL_FILM).replace(THREE_F0(lobe), SPECTRAL_F0(lobe)))
+    .replace(FILM_INCLUDES[2], `${FILM_INCLUDES[2]}\n${ENVIRONMENT_THROUGH_MATRIX(lobe)}`);
 }

@@ -35,7 +35,7 @@ function hook(m: MeshPhysicalMaterial, film: SpectralFilm): void {
     onBeforeCompile: (shader) => loadedDrawing()?.compileFilm(m, film, shader),
     // One program per distinct film configuration and user edit (three would otherwise key it by onBeforeCompile's text alone).
     customProgramCacheKey: (userKey) => `spectral-iridescence ${loadedDrawing()?.filmKeyOf(m, film.options) ?? 'loading'} ${userKey}`,
-    onBeforeRender: (renderer) => loadedDrawing()?.drawFilm(m, film, renderer),
+    onBeforeRender: (renderer, scene) => loadedDrawing()?.drawFilm(m, film, renderer, scene),
   });
   const loaded = loadedDrawing();
   if (loaded) film.programKey = loaded.filmKeyOf;

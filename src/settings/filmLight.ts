@@ -1,7 +1,7 @@
 import { WHITE_TINT, isWhiteTint } from '../physics/lightTint.ts';
 import type { PlaneCount } from '../physics/spectralWeights.ts';
 import { environmentKind } from '../environments/environments.ts';
-import type { FilmSettings } from './filmSettings.ts';
+import type { FilmOptics, FilmSettings } from './filmSettings.ts';
 
 /**
  * The light and colour a film is seen in unless asked otherwise: the schema's defaults
@@ -16,12 +16,14 @@ export const DEFAULT_LIGHT = {
 
 /**
  * The colour planes a film is computed in: 3, its environment matrix M (physics/environmentMatrix.ts),
- * where its walls reflect a coloured environment or a tinted light, so that each colour it reflects
- * is an integral of two spectra and a tint is a colour M maps (a change of tint changes no plane);
- * 1, its XYZ under the light, where it reflects only the untinted light's white (`env=none`). A
- * film with no environment named (a material's) keeps one plane and computes it under the tinted light.
+ * where it reflects a coloured environment or a tinted light, so that each colour it reflects is an
+ * integral of two spectra and a tint is a colour M maps (a change of tint changes no plane); 1, its
+ * XYZ under the light, where it reflects only the untinted light's white (`env=none`). A material's
+ * film (no `env`) has three where its scene has an environment (`sceneEnvironment`: three's
+ * scene.environment or the material's envMap), whose light it reflects through M, and one otherwise,
+ * computed under the tinted light.
  */
-export const filmPlanes = (s: Partial<Pick<FilmSettings, 'env' | 'lightTint'>>): PlaneCount => {
-  if (s.env === undefined) return 1;
+export const filmPlanes = (s: Partial<Pick<FilmSettings, 'env' | 'lightTint'> & Pick<FilmOptics, 'sceneEnvironment'>>): PlaneCount => {
+  if (s.env === undefined) return s.sceneEnvironment === true ? 3 : 1;
   return environmentKind(s.env) === 'none' && isWhiteTint(s.lightTint ?? WHITE_TINT) ? 1 : 3;
 };

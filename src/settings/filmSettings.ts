@@ -62,10 +62,11 @@ export interface FilmSettings extends FieldSettings {
 /**
  * What a film's colour and its table depend on (src/film/): its media, its stack, its light and its
  * method, and where it is shown in one, the environment (a coloured one is reflected through the
- * film's environment matrix: filmPlanes in filmLight.ts).
+ * film's environment matrix: filmPlanes in filmLight.ts); for a material's film, whether its scene
+ * has an environment, which it reflects through that matrix too.
  */
 export type FilmOptics = Pick<
   FilmSettings,
   'nOutside' | 'nFilm' | 'nInside' | 'layers' | 'illuminant' | 'lightTint' | 'polarization' | 'normalization' | 'mode'
 > &
-  Partial<Pick<FilmSettings, 'env'>>;
+  Partial<Pick<FilmSettings, 'env'>> & { readonly sceneEnvironment?: boolean };

@@ -1,12 +1,13 @@
 import { expect, test } from '@playwright/test';
 import type { WebGLInfo } from 'three';
-import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference } from './referenceColor.ts';
+import { MAX_CODE_DIFFERENCE, reference8, worstCodeDifference, xyzTo8 } from './referenceColor.ts';
 import { PHYSICAL_MATERIAL_CODES } from '../tolerances.ts';
 import { watchProblems } from './pageWatch.ts';
 import type { FilmCase } from './harness/filmCaseScene.ts';
 import { FILM_STACK_DOMAIN } from '../../src/physics/filmReflectance.ts';
 import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
-import { srgbDecode } from '../../src/physics/colorConversions.ts';
+import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, srgbDecode } from '../../src/physics/colorConversions.ts';
+import { filmXyz } from '../../src/physics/spectralIntegration.ts';
 import { type Medium } from '../../src/physics/medium.ts';
 import { WEBGPU_ENTRY } from '../../src/meshMaterial/nodeRendererWarning.ts';
 
@@ -59,6 +60,35 @@ test('the spectral iridescence on three.js meshes: reference colour, glTF, the p
       );
     }
   }
+
+  // In a uniform coloured room (scene.environment) the film reflects the room's light through its
+  // environment matrix: the reference under the light tinted by that colour, a spectrum, where
+  // three's lighting would take the film's colour times the room's per channel.
+  const room = [0.9, 0.3, 0.1] as const;
+  let productOff = 0;
+  for (const c of CASES) {
+    const stack = { thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm: c.nFilm, nInside: insideOf(c) };
+    const expected = xyzTo8(filmXyz(stack, { lightTint: room }), XYZ_TO_LINEAR_SRGB);
+    const product = applyMatrix3(XYZ_TO_LINEAR_SRGB, filmXyz(stack)).map((v, i) => encode8(Math.min(1, Math.max(0, v * room[i]!))));
+    productOff = Math.max(productOff, worstCodeDifference(product, expected));
+    for (const mode of ['table', 'fourier', 'exact'] as const) {
+      const { spectral, threes } = await page.evaluate(([c, room, mode]) => window.materialHarness!.roomPixels(c, room, { mode }), [
+        c,
+        room,
+        mode,
+      ] as const);
+      console.log(
+        `${JSON.stringify(c)} ${mode} in a room of ${room}: ${spectral}, reference ${expected}, RGB product ${product}, three's ${threes}`,
+      );
+      expect(
+        worstCodeDifference(spectral, expected),
+        `${JSON.stringify(c)} ${mode} in a room of ${room}: ${spectral} vs ${expected}`,
+      ).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
+    }
+  }
+
+  // The product of RGB triples is told apart from the spectral product here.
+  expect(productOff).toBeGreaterThan(3 * MAX_CODE_DIFFERENCE);
 
   // The same film written as KHR_materials_iridescence by GLTFExporter, loaded by GLTFLoader, upgraded with one call.
   const gltf = await page.evaluate((c) => window.materialHarness!.gltfPixel(c), CASES[0]!);

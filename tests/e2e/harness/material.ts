@@ -64,6 +64,42 @@ function filmPixel(c: FilmCase, options: SpectralIridescenceOptions): number[] {
   return pixel;
 }
 
+/**
+ * The rooms' environments, each made once for the page: three's PMREM of each new environment
+ * texture, made and disposed draw after draw, leaves the texture units counted up (three r187 warns
+ * of more than the GPU has after a few dozen), so a room is one texture however often it is drawn.
+ */
+const rooms = new Map<string, DataTexture>();
+
+/**
+ * The centre pixel of a film case through the spectral material in a uniform room of `room` (linear
+ * RGB from every direction: scene.environment), and with three's own film: the light it reflects
+ * is the room's alone.
+ */
+function roomPixels(
+  c: FilmCase,
+  room: readonly [number, number, number],
+  options: SpectralIridescenceOptions,
+): { spectral: number[]; threes: number[] } {
+  const key = room.join();
+  const lit =
+    rooms.get(key) ??
+    rooms
+      .set(
+        key,
+        environment(() => room),
+      )
+      .get(key)!;
+  const pixel = (material: MeshPhysicalMaterial) => {
+    const { scene, camera } = filmScene(c, material);
+    scene.environment = lit;
+    const drawn = centre(draw(scene, camera));
+    disposeAll(scene);
+    return drawn;
+  };
+  return { spectral: pixel(spectralIridescence(filmMaterial(c), options)), threes: pixel(filmMaterial(c)) };
+}
+
 /** The centre pixel of the film case written to glTF (GLTFExporter), loaded back (GLTFLoader) and upgraded with one call. */
 async function gltfPixel(c: FilmCase): Promise<{ pixel: number[]; upgraded: number; extension: boolean }> {
   const { scene: source, box } = filmScene(c, filmMaterial(c));
@@ -228,6 +264,7 @@ async function contextRestorePixels(c: FilmCase): Promise<{ before: number[]; af
 window.materialHarness = {
   readyPixels,
   filmPixel,
+  roomPixels,
   gltfPixel,
   againstPhysical,
   programCounts,
@@ -242,6 +279,7 @@ declare global {
     materialHarness?: {
       readyPixels: typeof readyPixels;
       filmPixel: typeof filmPixel;
+      roomPixels: typeof roomPixels;
       gltfPixel: typeof gltfPixel;
       againstPhysical: typeof againstPhysical;
       programCounts: typeof programCounts;

@@ -8,7 +8,7 @@
  * way beside their own code (tests/unit/gpuFilmDynamics/flowUniforms.test.ts, tests/unit/film/tablePassPrograms.test.ts).
  */
 import { readFileSync, readdirSync } from 'node:fs';
-import { MeshPhysicalMaterial, ShaderLib, type ShaderMaterial } from 'three';
+import { MeshPhysicalMaterial, Scene, ShaderLib, type ShaderMaterial, Texture } from 'three';
 import { describe, expect, it } from 'vitest';
 import { createBubbleMaterial } from '../../../src/bubbleMaterials/bubbleMaterial.ts';
 import { createBackgroundMaterial, environmentDefines } from '../../../src/bubbleMaterials/environmentMaterial.ts';
@@ -101,28 +101,34 @@ describe('uniform sets', () => {
     expectDeclaredAreSet(declaredByConfiguration(materials), Object.keys(materials[0]!.uniforms));
   });
 
-  it("the spectral iridescence adds to three's shader the uniforms it declares there, for every mode, kind of medium and stack", async () => {
+  it("the spectral iridescence adds to three's shader the uniforms it declares there, for every mode, kind of medium and stack, in a scene with an environment and without", async () => {
     // The film's drawing is a chunk of its own: loaded here, the materials' programs hold the film (else three's).
     await loadDrawing();
     const threes = declaredUniforms(ShaderLib.physical.fragmentShader);
     const declared: string[][] = [];
     let set: string[] = [];
-    for (const mode of MODES)
-      for (const media of [...MEDIA, ...STACKS]) {
-        const layers = 'layers' in media ? media.layers : [];
-        const m = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }), {
-          mode,
-          film: media.nFilm,
-          base: media.nInside,
-          layers,
-        });
-        const shader = { fragmentShader: ShaderLib.physical.fragmentShader, vertexShader: '', uniforms: {}, defines: {} };
-        m.onBeforeCompile(shader as never, null as never);
-        // What three defines for a physical material with iridescence, beside the film's own defines.
-        const defines = { STANDARD: '', PHYSICAL: '', USE_IRIDESCENCE: '', ...shader.defines };
-        declared.push(declaredUniforms(preprocessed(shader.fragmentShader, defines)).filter((n) => !threes.includes(n)));
-        set = Object.keys(shader.uniforms);
-      }
+    const lit = new Scene();
+    lit.environment = new Texture();
+    for (const scene of [new Scene(), lit])
+      for (const mode of MODES)
+        for (const media of [...MEDIA, ...STACKS]) {
+          const layers = 'layers' in media ? media.layers : [];
+          // Drawn first in `exact` (which reads no table, so no renderer is needed), the film follows the scene's environment.
+          const m = spectralIridescence(new MeshPhysicalMaterial({ iridescence: 1 }), {
+            mode: 'exact',
+            film: media.nFilm,
+            base: media.nInside,
+            layers,
+          });
+          m.onBeforeRender(null as never, scene, null as never, null as never, null as never, null as never);
+          (m as MeshPhysicalMaterial & { mode: string }).mode = mode;
+          const shader = { fragmentShader: ShaderLib.physical.fragmentShader, vertexShader: '', uniforms: {}, defines: {} };
+          m.onBeforeCompile(shader as never, null as never);
+          // What three defines for a physical material with iridescence, beside the film's own defines.
+          const defines = { STANDARD: '', PHYSICAL: '', USE_IRIDESCENCE: '', ...shader.defines };
+          declared.push(declaredUniforms(preprocessed(shader.fragmentShader, defines)).filter((n) => !threes.includes(n)));
+          set = Object.keys(shader.uniforms);
+        }
     expect(declared.every((names) => names.length > 0)).toBe(true);
     expectDeclaredAreSet(declared, set);
   });

@@ -3,7 +3,7 @@
  * made, copied, or to have onBeforeCompile run on a shader object): hooks chained, program keys,
  * clone and copy, options as properties, the one-object constructor, and the quality's checks.
  */
-import { MeshPhysicalMaterial, ShaderLib } from 'three';
+import { MeshPhysicalMaterial, Scene, ShaderLib, Texture, type Vector3 } from 'three';
 import { beforeAll, describe, expect, it, vi } from 'vitest';
 import { loadDrawing } from '../../../src/meshMaterial/spectralDrawing.ts';
 import { spectralIridescence, whenSpectralReady } from '../../../src/meshMaterial/spectralIridescence.ts';
@@ -81,7 +81,7 @@ describe("the user's hooks", () => {
     const calls: unknown[] = [];
     m.onBeforeRender = (renderer) => void calls.push(renderer);
     spectralIridescence(m);
-    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    m.onBeforeRender(null as never, new Scene(), null as never, null as never, null as never, null as never);
     expect(calls).toEqual([null]);
   });
 });
@@ -194,7 +194,7 @@ describe('a base under the film', () => {
     const shader = shaderObject();
     m.onBeforeCompile(shader as never, null as never);
     expect(shader.defines).toMatchObject({ TFC_OPAQUE_INSIDE: 1, TFC_DISPERSIVE: 1 });
-    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    m.onBeforeRender(null as never, new Scene(), null as never, null as never, null as never, null as never);
     const uniforms = shader.uniforms as Record<string, { value: number[] }>;
     // Gold at the sodium D line (589.3 nm) lies between Johnson & Christy's 548.6 nm (0.43 + 2.455i) and 582.1 nm (0.29 + 2.863i) rows… and the next, 616.8 nm (0.21 + 3.272i).
     const [n, k] = uniforms.uNInside!.value;
@@ -209,7 +209,7 @@ describe('a film medium in place of iridescenceIOR', () => {
     const shader = shaderObject();
     m.onBeforeCompile(shader as never, null as never);
     expect(shader.defines).toMatchObject({ TFC_OPAQUE_INSIDE: 1, TFC_DISPERSIVE: 1 });
-    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    m.onBeforeRender(null as never, new Scene(), null as never, null as never, null as never, null as never);
     // Sarkar et al.'s rows at 580 nm (2.149843) and 590 nm (2.145621) bracket the D line, 589.3 nm.
     const [n, k] = (shader.uniforms as Record<string, { value: number[] }>).uNFilm!.value;
     expect(n! > 2.145621 && n! < 2.149843 && k === 0).toBe(true);
@@ -223,7 +223,7 @@ describe('a film medium in place of iridescenceIOR', () => {
 
 describe('a metal from its base colour', () => {
   const draw = (m: MeshPhysicalMaterial) =>
-    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    m.onBeforeRender(null as never, new Scene(), null as never, null as never, null as never, null as never);
 
   it("puts the spectral film on the metallic lobe, over an opaque metal from color, and keeps three's dielectric one", () => {
     const m = new ThinFilmMaterial({ iridescenceIOR: 1.38, mode: 'fourier', metalness: 1, color: 0xffc356 });
@@ -254,6 +254,46 @@ describe('a metal from its base colour', () => {
         parameterOf(() => (m.edgeTint = bad as never)),
         String(bad),
       ).toBe('edgeTint');
+  });
+});
+
+describe("a scene's environment", () => {
+  const drawIn = (m: MeshPhysicalMaterial, scene: Scene) =>
+    m.onBeforeRender(null as never, scene, null as never, null as never, null as never, null as never);
+  const compiled = (m: MeshPhysicalMaterial) => {
+    const shader = shaderObject();
+    m.onBeforeCompile(shader as never, null as never);
+    return shader;
+  };
+
+  it("is reflected through the film's matrix: drawn in a scene with one, a new program with three planes and the light after three's; without, one plane again", () => {
+    const m = new ThinFilmMaterial({ mode: 'fourier', lightTint: [1, 0.5, 0.2] });
+    const lit = new Scene();
+    lit.environment = new Texture();
+    drawIn(m, new Scene());
+    const plain = compiled(m);
+    expect(plain.defines).not.toHaveProperty('TFC_ENVIRONMENT_MATRIX');
+    const [version, key] = [m.version, m.customProgramCacheKey()];
+    drawIn(m, lit);
+    expect(m.version).toBeGreaterThan(version);
+    expect(m.customProgramCacheKey()).not.toBe(key);
+    const matrix = compiled(m);
+    expect(matrix.defines).toHaveProperty('TFC_ENVIRONMENT_MATRIX', 1);
+    expect(matrix.fragmentShader).toContain('reflectedLight.indirectSpecular += tfcEnvironmentThroughMatrix( radiance, iblIrradiance');
+    // Its tint is a uniform then (the planes are the untinted light's), its table's three planes too.
+    drawIn(m, lit);
+    const u = matrix.uniforms as Record<string, { value: unknown }>;
+    expect((u.uLightTint!.value as Vector3).toArray()).toEqual([1, 0.5, 0.2]);
+    expect(u).toHaveProperty('uFilmTable2');
+    // The material's own envMap counts as the scene's.
+    const version2 = m.version;
+    m.envMap = new Texture();
+    drawIn(m, new Scene());
+    expect(m.version).toBe(version2);
+    m.envMap = null;
+    drawIn(m, new Scene());
+    expect(m.version).toBeGreaterThan(version2);
+    expect(m.customProgramCacheKey()).toBe(key);
   });
 });
 

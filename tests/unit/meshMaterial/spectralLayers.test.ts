@@ -3,7 +3,7 @@
  * the demo's `layers` is, carried by clone and JSON; `exact` runs the stack's recursion over the
  * base, a method with none for a stack (`fourier`) gives way to the table.
  */
-import { MaterialLoader, ShaderLib } from 'three';
+import { MaterialLoader, Scene, ShaderLib } from 'three';
 import { beforeAll, describe, expect, it, vi } from 'vitest';
 import { loadDrawing } from '../../../src/meshMaterial/spectralDrawing.ts';
 import { ThinFilmMaterial } from '../../../src/meshMaterial/thinFilmMaterial.ts';
@@ -49,7 +49,7 @@ describe('a stack of films in the spectral material', () => {
     const shader = shaderObject();
     m.onBeforeCompile(shader as never, null as never);
     expect(shader.defines).toMatchObject({ TFC_FILM_LAYERS: 1 });
-    m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+    m.onBeforeRender(null as never, new Scene(), null as never, null as never, null as never, null as never);
     const u = shader.uniforms as Record<string, { value: unknown }>;
     expect(u.uFilmLayerCount!.value).toBe(2);
     expect(u.uFilmLayers!.value).not.toBeNull();

@@ -13,6 +13,7 @@ import {
   MeshPhysicalMaterial,
   ObjectLoader,
   ShaderChunk,
+  Scene,
   ShaderLib,
   type Texture,
 } from 'three';
@@ -41,7 +42,7 @@ const compile = (m: Material) => {
   return shader;
 };
 /** onBeforeRender as three calls it before drawing `m` (null renderer: no table is drawn outside table mode). */
-const draw = (m: Material) => m.onBeforeRender(null as never, null as never, null as never, null as never, null as never, null as never);
+const draw = (m: Material) => m.onBeforeRender(null as never, new Scene(), null as never, null as never, null as never, null as never);
 /** The film's own GLSL function, written in once per shader. */
 const FILM_FUNCTION = 'vec3 tfcSpectralIridescence(';
 /** Whether a compiled fragment shader holds the spectral film in place of three's. */
