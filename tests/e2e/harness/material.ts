@@ -73,31 +73,20 @@ const rooms = new Map<string, DataTexture>();
 
 /**
  * The centre pixel of a film case through the spectral material in a uniform room of `room` (linear
- * RGB from every direction: scene.environment), and with three's own film: the light it reflects
- * is the room's alone.
+ * RGB from every direction: scene.environment), the only light it reflects.
  */
-function roomPixels(
-  c: FilmCase,
-  room: readonly [number, number, number],
-  options: SpectralIridescenceOptions,
-): { spectral: number[]; threes: number[] } {
+function roomPixel(c: FilmCase, room: readonly [number, number, number], options: SpectralIridescenceOptions): number[] {
   const key = room.join();
-  const lit =
-    rooms.get(key) ??
-    rooms
-      .set(
-        key,
-        environment(() => room),
-      )
-      .get(key)!;
-  const pixel = (material: MeshPhysicalMaterial) => {
-    const { scene, camera } = filmScene(c, material);
-    scene.environment = lit;
-    const drawn = centre(draw(scene, camera));
-    disposeAll(scene);
-    return drawn;
-  };
-  return { spectral: pixel(spectralIridescence(filmMaterial(c), options)), threes: pixel(filmMaterial(c)) };
+  if (!rooms.has(key))
+    rooms.set(
+      key,
+      environment(() => room),
+    );
+  const { scene, camera } = filmScene(c, spectralIridescence(filmMaterial(c), options));
+  scene.environment = rooms.get(key)!;
+  const pixel = centre(draw(scene, camera));
+  disposeAll(scene);
+  return pixel;
 }
 
 /** The centre pixel of the film case written to glTF (GLTFExporter), loaded back (GLTFLoader) and upgraded with one call. */
@@ -264,7 +253,7 @@ async function contextRestorePixels(c: FilmCase): Promise<{ before: number[]; af
 window.materialHarness = {
   readyPixels,
   filmPixel,
-  roomPixels,
+  roomPixel,
   gltfPixel,
   againstPhysical,
   programCounts,
@@ -279,7 +268,7 @@ declare global {
     materialHarness?: {
       readyPixels: typeof readyPixels;
       filmPixel: typeof filmPixel;
-      roomPixels: typeof roomPixels;
+      roomPixel: typeof roomPixel;
       gltfPixel: typeof gltfPixel;
       againstPhysical: typeof againstPhysical;
       programCounts: typeof programCounts;
