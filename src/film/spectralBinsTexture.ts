@@ -17,7 +17,7 @@ import {
 import { spectralLightKey } from './spectralTransformTexels.ts';
 
 /** The texture row of plane p's weights: row 1 holds the windows, which every plane shares (lightBins). */
-const weightsRow = (p: number) => (p === 0 ? 0 : p + 1);
+export const weightsRow = (p: number) => (p === 0 ? 0 : p + 1);
 
 const shared = new SharedTextures((key) => {
   const { light, count, planes } = JSON.parse(key) as { light: SpectralLight; count: number; planes: PlaneCount };

@@ -21,9 +21,9 @@ export interface SpectralFilm {
   /** metalStateOf at the last draw: a change three cannot see (metalness, the base colour) may need a new program */
   drawnMetal: string | null;
   /**
-   * Whether the last draw's scene had an environment (three's scene.environment, or the
-   * material's envMap), whose light the film reflects through its environment matrix (the WebGL
-   * entry's drawing; the WebGPU entry's film has none)
+   * Whether the film is drawn in a scene with an environment (three's scene.environment, or the
+   * material's envMap or envNode), whose light it reflects through its environment matrix: noted
+   * at each draw by the WebGL entry, at each program build by the WebGPU entry
    */
   sceneEnvironment: boolean;
   /** The film's part of the program key, given by the entry's drawing once it is loaded (before, the program holds three's film). */

@@ -6,7 +6,9 @@
  */
 import { If, Loop, clamp, float, int, ivec2, length, select, textureLoad, vec2, vec3 } from 'three/tsl';
 import { type Node, type TextureNode, type UniformArrayNode, type UniformNode } from 'three/webgpu';
-import { LAMBDA_MAX_NM, LAMBDA_MIN_NM } from '../physics/spectralWeights.ts';
+import { LAMBDA_MAX_NM, LAMBDA_MIN_NM, type PlaneCount } from '../physics/spectralWeights.ts';
+import { MAX_LIGHT_LINES } from '../physics/lightLines.ts';
+import { weightsRow } from '../film/spectralBinsTexture.ts';
 import { type FloatNode } from './complex.ts';
 import {
   type AiryTerms,
@@ -27,7 +29,8 @@ export interface SpectralBinNodes {
 
 /**
  * A line source's lines (src/physics/lightLines.ts): `count` of them (0: the light has a spectrum
- * and the bins integrate it), each (p x̄, ȳ, z̄(λ)/k, λ in nm); spectralBinsTexture.ts sets both.
+ * and the bins integrate it), each (p x̄, ȳ, z̄(λ)/k, λ in nm), a set per colour plane (plane p's
+ * line i at p · MAX_LIGHT_LINES + i); spectralBinsTexture.ts sets both.
  */
 export interface LightLineNodes {
   readonly values: UniformArrayNode<'vec4'>;
@@ -45,28 +48,39 @@ export interface Bin {
 /**
  * Σ over the visited bins of `reflectance(bin)` × the bin's weight; under a line source, Σ over its
  * lines instead, each a bin of no width [λ, λ] (its phase window none) in the bin it falls in (whose
- * index a stack's texture reads) times the line's weight, as binnedIntegration.glsl sums them.
+ * index a stack's texture reads) times the line's weight, as binnedIntegration.glsl sums them. In
+ * `planes` colour planes (3: the columns of the film's environment matrix, each bin's R once for
+ * all three, each with its own weights: src/film/spectralBinsTexture.ts's rows and lines).
  */
-export function binSum(bins: SpectralBinNodes, lines: LightLineNodes, reflectance: (bin: Bin) => FloatNode): Node<'vec3'> {
+export function binSumPlanes(
+  bins: SpectralBinNodes,
+  lines: LightLineNodes,
+  reflectance: (bin: Bin) => FloatNode,
+  planes: PlaneCount,
+): Node<'vec3'>[] {
   const width = (LAMBDA_MAX_NM - LAMBDA_MIN_NM) / bins.count;
-  const xyz = vec3(0, 0, 0).toVar();
+  const sums = Array.from({ length: planes }, () => vec3(0, 0, 0).toVar());
   If(lines.count.greaterThan(0), () => {
     Loop({ start: int(0), end: lines.count, type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
-      const line = lines.values.element(i);
-      const nm = line.w.toVar();
+      const nm = lines.values.element(i).w.toVar();
       const index = int(clamp(nm.sub(LAMBDA_MIN_NM).div(width), 0, bins.count - 1));
-      xyz.addAssign(line.xyz.mul(reflectance({ index, low: nm, high: nm, center: nm })));
+      const r = reflectance({ index, low: nm, high: nm, center: nm }).toVar();
+      sums.forEach((sum, p) => sum.addAssign(lines.values.element(i.add(p * MAX_LIGHT_LINES)).xyz.mul(r)));
     });
   }).Else(() => {
     Loop({ start: int(bins.first), end: int(bins.end), type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
       const low = float(i).mul(width).add(LAMBDA_MIN_NM).toVar();
       const high = low.add(width);
-      const bin = { index: i, low, high, center: low.add(width / 2) };
-      xyz.addAssign(textureLoad(bins.weights, ivec2(i, int(0))).xyz.mul(reflectance(bin)));
+      const r = reflectance({ index: i, low, high, center: low.add(width / 2) }).toVar();
+      sums.forEach((sum, p) => sum.addAssign(textureLoad(bins.weights, ivec2(i, int(weightsRow(p)))).xyz.mul(r)));
     });
   });
-  return xyz;
+  return sums;
 }
+
+/** binSumPlanes in one plane: the film's XYZ under the light. */
+export const binSum = (bins: SpectralBinNodes, lines: LightLineNodes, reflectance: (bin: Bin) => FloatNode): Node<'vec3'> =>
+  binSumPlanes(bins, lines, reflectance, 1)[0]!;
 
 /**
  * R of one bin: the closed-form mean over its phase window [phase − halfWidth, phase + halfWidth],
@@ -94,14 +108,20 @@ export function binnedXyz(
   lines: LightLineNodes,
   o: FilmOptics,
   extraHalfWidthPerInvNm: FloatNode = float(0),
-): Node<'vec3'> {
+  planes: PlaneCount = 1,
+): Node<'vec3'>[] {
   const path = o.opticalPathNm;
-  return binSum(bins, lines, ({ low, high, center }) => {
-    const inverseLow = float(1).div(low);
-    const inverseHigh = float(1).div(high);
-    const phase = path.x.mul(Math.PI).mul(inverseLow.add(inverseHigh));
-    const binHalf = path.x.mul(Math.PI).mul(inverseLow.sub(inverseHigh));
-    const extra = extraHalfWidthPerInvNm.mul(2).div(low.add(high));
-    return binReflectance(o, center, phase, length(vec2(binHalf, extra)));
-  });
+  return binSumPlanes(
+    bins,
+    lines,
+    ({ low, high, center }) => {
+      const inverseLow = float(1).div(low);
+      const inverseHigh = float(1).div(high);
+      const phase = path.x.mul(Math.PI).mul(inverseLow.add(inverseHigh));
+      const binHalf = path.x.mul(Math.PI).mul(inverseLow.sub(inverseHigh));
+      const extra = extraHalfWidthPerInvNm.mul(2).div(low.add(high));
+      return binReflectance(o, center, phase, length(vec2(binHalf, extra)));
+    },
+    planes,
+  );
 }

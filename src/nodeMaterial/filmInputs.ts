@@ -31,8 +31,9 @@ export interface FilmInputs {
 export const filmInputs = (): FilmInputs => ({
   weights: uniformTexture(floatRow(1)),
   lines: {
+    // A set of lines per colour plane (binSumPlanes).
     values: uniformArray(
-      Array.from({ length: MAX_LIGHT_LINES }, () => new Vector4()),
+      Array.from({ length: 3 * MAX_LIGHT_LINES }, () => new Vector4()),
       'vec4',
     ),
     count: uniform(0, 'int'),
@@ -50,7 +51,6 @@ type Uniforms = Record<string, { value: unknown }>;
 export function setFilmInputs(i: FilmInputs, u: Uniforms): void {
   const bins = u.uSpectralBins!.value as DataTexture | null;
   if (bins) i.weights.value = bins;
-  // The first plane's lines: the node film draws one plane (the light itself).
   (i.lines.values.array as Vector4[]).forEach((line, k) => line.copy((u.uLightLines!.value as Vector4[])[k]!));
   i.lines.count.value = u.uLightLineCount!.value as number;
   const layers = u.uFilmLayers!.value as DataTexture | null;

@@ -1,5 +1,6 @@
 /**
- * The `table` method for the node material: a half-float texture of the film's XYZ over
+ * The `table` method for the node material: a half-float texture of the film's XYZ (or of one
+ * column of its environment matrix: a table per column, `basis`) over
  * (thickness 0..max, cos θ_i 0..1) for light from outside, laid out as the quality's table says
  * (filmTableLayout.ts), filled on the GPU (filmTableFill.ts): by compute into a storage texture on
  * WebGPURenderer's WebGPU backend (filmTableCompute.ts), by a render pass into a render target on
@@ -18,6 +19,8 @@ import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } f
 import { uniformField } from '../fields/uniformField.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
+import { type BasisIndex } from '../physics/illuminants.ts';
+import { planeLights } from '../physics/spectralWeights.ts';
 import { type MaterialFilmSettings } from '../meshMaterial/materialFilm.ts';
 import { filmTableWidth } from '../settings/filmTableLayout.ts';
 import { type FloatNode } from './complex.ts';
@@ -54,7 +57,11 @@ export class NodeFilmTable {
   /** by backend: compute (true) or the render pass (false); a renderer of each may draw the material */
   private readonly fills = new Map<boolean, Filled>();
 
-  constructor(readonly quality: FilmQuality) {}
+  /** `basis` j: the table of the film's environment matrix's column j (the untinted light times basis spectrum j); null: its XYZ under the light. */
+  constructor(
+    readonly quality: FilmQuality,
+    private readonly basis: BasisIndex | null = null,
+  ) {}
 
   /** The film's XYZ at a thickness and cos θ_i: one filtered lookup of the texture its renderer's backend fills, texel centres at the ends of the ranges (docs/gpu.md#texel-centres). */
   lookup(thicknessNm: FloatNode, cosIncidence: FloatNode): Node<'vec3'> {
@@ -124,7 +131,7 @@ export class NodeFilmTable {
     };
     const max = this.grid.maxThicknessNm;
     const setInputs = () => {
-      this.weights.value = spectralBinsTexture(s, count, this);
+      this.weights.value = spectralBinsTexture(this.basis === null ? s : planeLights(s, 3)[this.basis]!, count, this);
       const maxThicknessNm = tableMaxThicknessNm(s);
       // The width resolves the fringes of the film (or of a stack's films that follow the thickness): FilmTablePass.fullGrid's.
       const index = fillGpu(s).fieldIndex(s, count);

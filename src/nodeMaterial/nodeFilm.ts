@@ -3,9 +3,16 @@
  * (src/meshMaterial/spectralFilm.ts): its TSL inputs and its table, brought up to the material
  * before each render; and the lighting model that draws its film.
  */
-import { type MeshPhysicalMaterial } from 'three';
+import { type MeshPhysicalMaterial, type Vector3 } from 'three';
 import { clamp, float, ior, iridescenceIOR, vec2 } from 'three/tsl';
-import { MeshPhysicalNodeMaterial, type NodeBuilder, type PhysicalLightingModel, type Renderer } from 'three/webgpu';
+import {
+  MeshPhysicalNodeMaterial,
+  type Node,
+  type NodeBuilder,
+  type PhysicalLightingModel,
+  type Renderer,
+  type UniformNode,
+} from 'three/webgpu';
 import { updateFilmColorUniforms } from '../film/filmColor.ts';
 import { filmSpectralBins } from '../film/filmFillGpu.ts';
 import { spectralBinDefines } from '../film/spectralBinsTexture.ts';
@@ -26,17 +33,24 @@ import { type CheckedOptions } from '../meshMaterial/spectralIridescenceOptions.
 import { type FloatNode } from './complex.ts';
 import { type FilmInputs, setFilmInputs } from './filmInputs.ts';
 import { channelsOf } from './filmReflectance.ts';
-import { type FilmNodes, filmXyz, xyzToLinearWorking } from './filmColor.ts';
+import { type FilmNodes, filmPlanesXyz, xyzToLinearWorking } from './filmColor.ts';
 import { type FillFilm, NodeFilmTable } from './filmTable.ts';
 import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
 import { FilmUpdateNode } from './filmUpdateNode.ts';
-import { SpectralLightingModel } from './spectralLightingModel.ts';
+import { type FilmColor, SpectralLightingModel, matrixTimes } from './spectralLightingModel.ts';
+import { filmPlanes } from '../settings/filmLight.ts';
+import { type PlaneCount } from '../physics/spectralWeights.ts';
 
-/** A spectral node film: the shared record, its TSL inputs, its table (null until `table` is drawn), the renderer that drew it last. */
+/**
+ * A spectral node film: the shared record, its TSL inputs, its tables (none until `table` is drawn;
+ * one, or three in a scene with an environment: the columns of its environment matrix), the light's
+ * tint (a colour that matrix maps), the renderer that drew it last.
+ */
 export interface NodeFilm {
   readonly film: SpectralFilm;
   readonly inputs: FilmInputs;
-  table: NodeFilmTable | null;
+  tables: NodeFilmTable[];
+  readonly tint: UniformNode<'vec3', Vector3>;
   renderer: Renderer | null;
 }
 
@@ -90,8 +104,9 @@ export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Rende
   const film = f.film as SpectralFilm & { uniforms: NonNullable<SpectralFilm['uniforms']> };
   updateFilmColorUniforms(film, { ...s, mode: 'exact' }, o.quality, null);
   setFilmInputs(f.inputs, film.uniforms);
+  f.tint.value.fromArray(s.lightTint);
   if (renderer) f.renderer = renderer;
-  if (renderer && f.table && drawsTable(m, s)) f.table.update(renderer, s, fillFilm(f, s));
+  if (renderer && drawsTable(m, s)) for (const table of f.tables) table.update(renderer, s, fillFilm(f, s));
 }
 
 /**
@@ -101,17 +116,21 @@ export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Rende
  */
 export async function prepareNodeFilm(f: NodeFilm, m: PhysicalMaterial): Promise<void> {
   const s = drawnFilmSettings(physical(m), f.film);
-  if (f.renderer && f.table && drawsTable(m, s)) await f.table.prepare(f.renderer, s, fillFilm(f, s));
+  const renderer = f.renderer;
+  if (renderer && drawsTable(m, s)) await Promise.all(f.tables.map((table) => table.prepare(renderer, s, fillFilm(f, s))));
 }
 
-/** The film's XYZ by `exact` on the material: three's iridescenceIOR and ior (clamped to the film's domain) unless the options name the media. */
+/**
+ * The film's XYZ by `exact` on the material, in its colour planes: three's iridescenceIOR and ior
+ * (clamped to the film's domain) unless the options name the media.
+ */
 function exactXyz(f: NodeFilm, m: PhysicalMaterial, s: MaterialFilmSettings, thicknessNm: FloatNode, cosIncidence: FloatNode) {
   const o = f.film.options;
   const q = o.quality;
   const bins = spectralBinDefines(filmSpectralBins(s, q, q.exactSpectralBins), q.spectralTailTolerance);
   const d = FILM_STACK_DOMAIN;
   const three = (n: FloatNode, domain: { min: number; max: number }) => vec2(clamp(n, domain.min, domain.max), 0);
-  return filmXyz(
+  return filmPlanesXyz(
     {
       ...sharedNodes(f, s),
       channels: channelsOf(s.polarization),
@@ -126,15 +145,16 @@ function exactXyz(f: NodeFilm, m: PhysicalMaterial, s: MaterialFilmSettings, thi
     },
     thicknessNm,
     cosIncidence,
+    filmPlanes(s),
   );
 }
 
-/** The film's table for its quality, made again when the quality changes. */
-function tableOf(f: NodeFilm): NodeFilmTable {
+/** The film's tables for its quality and colour planes (a column of its environment matrix each, or its XYZ), made again when either changes. */
+function tablesOf(f: NodeFilm, planes: PlaneCount): NodeFilmTable[] {
   const quality = f.film.options.quality;
-  if (f.table && JSON.stringify(f.table.quality) === JSON.stringify(quality)) return f.table;
-  f.table?.dispose();
-  return (f.table = new NodeFilmTable(quality));
+  if (f.tables.length === planes && JSON.stringify(f.tables[0]!.quality) === JSON.stringify(quality)) return f.tables;
+  for (const table of f.tables) table.dispose();
+  return (f.tables = planes === 1 ? [new NodeFilmTable(quality)] : ([0, 1, 2] as const).map((j) => new NodeFilmTable(quality, j)));
 }
 
 const nodeFilms = new WeakMap<object, NodeFilm>();
@@ -155,11 +175,21 @@ export function setupLightingModel(this: MeshPhysicalNodeMaterial, builder: Node
   const m = builder.material as PhysicalMaterial;
   const f = nodeFilms.get(m);
   if (!f || !filmOf(m) || !three.iridescence) return three;
+  // The environment three lights the material with (setupEnvironment's): the film reflects it through its matrix.
+  const environment = this.envNode ?? (this as { envMap?: unknown }).envMap ?? (builder as { environmentNode?: unknown }).environmentNode;
+  f.film.sceneEnvironment = environment !== null && environment !== undefined;
   const s = drawnFilmSettings(physical(m), f.film);
-  const table = drawsTable(m, s) ? tableOf(f) : null;
-  const filmRgb = (thicknessNm: FloatNode, cosIncidence: FloatNode) => {
-    const xyz = table ? table.lookup(thicknessNm, cosIncidence) : exactXyz(f, m, s, thicknessNm, cosIncidence);
-    return new FilmUpdateNode(xyzToLinearWorking(xyz), (renderer) => updateNodeFilm(f, m, renderer)) as never;
+  const planes = filmPlanes(s);
+  const tables = drawsTable(m, s) ? tablesOf(f, planes) : null;
+  const film = (thicknessNm: FloatNode, cosIncidence: FloatNode): FilmColor => {
+    const columns = (tables ? tables.map((t) => t.lookup(thicknessNm, cosIncidence)) : exactXyz(f, m, s, thicknessNm, cosIncidence)).map(
+      xyzToLinearWorking,
+    );
+    const update = (rgb: Node<'vec3'>) => new FilmUpdateNode(rgb, (renderer) => updateNodeFilm(f, m, renderer)) as never;
+    if (planes === 1) return { rgb: update(columns[0]!), matrix: null };
+    const matrix = columns.map((c) => c.toVar());
+    // Under the light itself, three's per-channel film: M t.
+    return { rgb: update(matrixTimes(matrix, f.tint)), matrix: { columns: matrix, tint: f.tint } };
   };
-  return new SpectralLightingModel(three, filmRgb, metalOf(physical(m), f.film.options) !== null);
+  return new SpectralLightingModel(three, film, metalOf(physical(m), f.film.options) !== null);
 }

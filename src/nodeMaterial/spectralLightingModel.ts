@@ -10,6 +10,7 @@
 import {
   DFGLUT,
   clamp,
+  iridescence,
   iridescenceThickness,
   metalness,
   mix,
@@ -23,8 +24,22 @@ import { type Node, type NodeBuilder, PhysicalLightingModel } from 'three/webgpu
 import { FILM_STACK_DOMAIN } from '../physics/filmReflectance.ts';
 import { type FloatNode } from './complex.ts';
 
-/** The film's linear RGB reflectance at a thickness (nm) and n·v, as nodes. */
-export type FilmRgb = (thicknessNm: FloatNode, cosIncidence: FloatNode) => Node<'vec3'>;
+/**
+ * The film at a fragment, as nodes: its linear RGB reflectance under the light (three's per-channel
+ * film), and in a scene with an environment its environment matrix in the working space (its
+ * columns) with the light's tint t, so that rgb = M t.
+ */
+export interface FilmColor {
+  readonly rgb: Node<'vec3'>;
+  readonly matrix: { readonly columns: readonly Node<'vec3'>[]; readonly tint: Node<'vec3'> } | null;
+}
+
+/** The film at a thickness (nm) and n·v. */
+export type FilmAt = (thicknessNm: FloatNode, cosIncidence: FloatNode) => FilmColor;
+
+/** M v for a matrix given by its columns. */
+export const matrixTimes = (columns: readonly Node<'vec3'>[], v: Node<'vec3'>): Node<'vec3'> =>
+  columns[0]!.mul(v.x).add(columns[1]!.mul(v.y)).add(columns[2]!.mul(v.z));
 
 /** The fields of three's film this model replaces. */
 const FIELDS = ['iridescenceFresnel', 'iridescenceF0Dielectric', 'iridescenceF0Metallic'] as const;
@@ -55,12 +70,17 @@ const mixOperands = (node: Node): readonly [Node<'vec3'>, Node<'vec3'>] | null =
 
 export class SpectralLightingModel extends PhysicalLightingModel {
   private readonly three: Partial<Record<Field, Node>> = {};
-  private spectral: { readonly fresnel: Node<'vec3'>; readonly f0: Node<'vec3'> } | null = null;
+  private spectral: {
+    readonly fresnel: Node<'vec3'>;
+    readonly f0: Node<'vec3'>;
+    readonly dfg: Node<'vec2'>;
+    readonly matrix: FilmColor['matrix'];
+  } | null = null;
 
-  /** `filmRgb`: the film; `metallic`: it lies on the metal of the base colour (the metallic lobe), else it is the dielectric lobe. */
+  /** `filmAt`: the film; `metallic`: it lies on the metal of the base colour (the metallic lobe), else it is the dielectric lobe. */
   constructor(
     three: PhysicalLightingModel,
-    private readonly filmRgb: FilmRgb,
+    private readonly filmAt: FilmAt,
     private readonly metallic: boolean,
   ) {
     super(
@@ -86,10 +106,36 @@ export class SpectralLightingModel extends PhysicalLightingModel {
   override start(builder: NodeBuilder): void {
     const dotNVi = normalView.dot(positionViewDirection).clamp();
     const d = FILM_STACK_DOMAIN.thicknessNm;
-    const fresnel = this.filmRgb(clamp(iridescenceThickness, d.min, d.max), dotNVi).toVar('spectralFilm');
-    const dfg = DFGLUT({ roughness, dotNV: dotNVi }) as unknown as Node<'vec2'>;
-    this.spectral = { fresnel, f0: spectralF0(fresnel, dfg, specularF90).toVar('spectralFilmF0') };
+    const film = this.filmAt(clamp(iridescenceThickness, d.min, d.max), dotNVi);
+    const fresnel = film.rgb.toVar('spectralFilm');
+    const dfg = (DFGLUT({ roughness, dotNV: dotNVi }) as unknown as Node<'vec2'>).toVar('spectralFilmDfg');
+    this.spectral = { fresnel, f0: spectralF0(fresnel, dfg, specularF90).toVar('spectralFilmF0'), dfg, matrix: film.matrix };
     super.start(builder);
+  }
+
+  /**
+   * three's image-based specular light, and in a scene with an environment what its light L gains
+   * when the film reflects it as a spectrum: M (t L) in place of three's (M t) L, for the film's
+   * lobe and weight, L the prefiltered radiance mixed with the irradiance / π in the share three
+   * gives multiple scattering (Ems Favg); the twin of tfcEnvironmentThroughMatrix in
+   * shaders/meshMaterial/spectralIridescence.glsl, which says why (docs/material.md#light).
+   */
+  override indirectSpecular(builder: NodeBuilder): void {
+    super.indirectSpecular(builder);
+    const spectral = this.spectral;
+    if (!spectral?.matrix) return;
+    const { radiance, iblIrradiance, reflectedLight } = builder.context as {
+      radiance: Node<'vec3'>;
+      iblIrradiance: Node<'vec3'>;
+      reflectedLight: { indirectSpecular: Node<'vec3'> };
+    };
+    const { columns, tint } = spectral.matrix;
+    const ems = spectral.dfg.x.add(spectral.dfg.y).oneMinus();
+    const favg = spectral.f0.add(spectral.f0.oneMinus().div(21)).dot(vec3(1 / 3, 1 / 3, 1 / 3));
+    const light = mix(radiance, iblIrradiance.div(Math.PI), clamp(ems.mul(favg), 0, 1)).toVar();
+    const weight = iridescence.mul(this.metallic ? metalness : metalness.oneMinus());
+    const gain = matrixTimes(columns, tint.mul(light)).sub(matrixTimes(columns, tint).mul(light));
+    reflectedLight.indirectSpecular.addAssign(gain.mul(weight));
   }
 
   private field(field: Field): Node | null {

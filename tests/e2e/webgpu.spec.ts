@@ -7,6 +7,7 @@ import {
   caseReference8,
   nodeParity,
   optionChanges,
+  roomPixels,
   nodePixels,
   openHarness,
   tableFillCalls,
@@ -44,6 +45,7 @@ test("the WebGPU entry on WebGPURenderer's WebGL2 backend draws the WebGL entry'
       );
     expect(worstCodeDifference(node[i]!.exact!, caseReference8(c)), `${label}: ${node[i]!.exact}`).toBeLessThanOrEqual(MAX_CODE_DIFFERENCE);
   });
+  await roomPixels(page);
   await optionChanges(page);
   await tableFillCalls(page, 'webgl');
   await nodeParity(page, 'exact');

@@ -7,6 +7,7 @@ import {
   caseReference8,
   nodeParity,
   optionChanges,
+  roomPixels,
   nodePixels,
   openHarness,
   tableFillCalls,
@@ -33,6 +34,7 @@ test("the WebGPU entry on WebGPURenderer's WebGPU backend draws the reference's 
         MAX_CODE_DIFFERENCE,
       );
   });
+  await roomPixels(page);
   await optionChanges(page);
   await tableFillCalls(page, 'webgpu');
   await nodeParity(page, 'exact');

@@ -7,7 +7,7 @@
 import { methodReads } from '../../src/methods/methods.ts';
 import { type Page, expect } from '@playwright/test';
 import { type LinearRgb, artistMetalMedium } from '../../src/physics/artistMetal.ts';
-import { XYZ_TO_LINEAR_SRGB, srgbDecode } from '../../src/physics/colorConversions.ts';
+import { XYZ_TO_LINEAR_SRGB, applyMatrix3, encode8, srgbDecode } from '../../src/physics/colorConversions.ts';
 import { type Medium } from '../../src/physics/medium.ts';
 import { parseLayers } from '../../src/physics/stackText.ts';
 import { type ResolvedLayer } from '../../src/physics/stackFilms.ts';
@@ -48,7 +48,15 @@ export const PIXEL_CASES: readonly (readonly [FilmCase, SpectralIridescenceOptio
 ];
 
 /** The float64 reference's 8-bit colour of a pixel case (the film over the metal of its colour, or the stack's). */
-export function caseReference8([c, o]: readonly [FilmCase, SpectralIridescenceOptions]): number[] {
+export const caseReference8 = (pixelCase: readonly [FilmCase, SpectralIridescenceOptions]): number[] =>
+  xyzTo8(caseXyz(pixelCase), XYZ_TO_LINEAR_SRGB);
+
+/** The float64 reference's linear sRGB of a pixel case, unclipped. */
+const caseLinear = (pixelCase: readonly [FilmCase, SpectralIridescenceOptions]): readonly number[] =>
+  applyMatrix3(XYZ_TO_LINEAR_SRGB, caseXyz(pixelCase));
+
+/** The float64 reference's XYZ of a pixel case. */
+function caseXyz([c, o]: readonly [FilmCase, SpectralIridescenceOptions]) {
   const illuminant = o.illuminant ?? 'D65';
   const metal = (hex: number): Medium => {
     const rgb = [16, 8, 0].map((shift) => srgbDecode(((hex >> shift) & 0xff) / 255)) as unknown as LinearRgb;
@@ -59,9 +67,9 @@ export function caseReference8([c, o]: readonly [FilmCase, SpectralIridescenceOp
   const color = { illuminant, polarization: o.polarization ?? 'unpolarized', lightTint: o.lightTint } as const;
   if (typeof o.layers === 'string') {
     const films = parseLayers('layers', o.layers) as readonly ResolvedLayer[];
-    return xyzTo8(layersXyz({ nOutside: 1, films, nInside, angleDeg: c.angleDeg }, color), XYZ_TO_LINEAR_SRGB);
+    return layersXyz({ nOutside: 1, films, nInside, angleDeg: c.angleDeg }, color);
   }
-  return xyzTo8(filmXyz({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm, nInside }, color), XYZ_TO_LINEAR_SRGB);
+  return filmXyz({ thicknessNm: c.thicknessNm, angleDeg: c.angleDeg, nOutside: 1, nFilm, nInside }, color);
 }
 
 /** Opens the harness on WebGPURenderer's `backend` (loadOnBackend: loaded again where a fresh browser's WebGPU found no adapter). */
@@ -103,6 +111,34 @@ export async function nodePixels(page: Page, wiring: boolean) {
 }
 
 /**
+ * In a uniform coloured room (scene.environment) the node material reflects the room's light
+ * through the film's environment matrix: the reference under the light tinted by that colour, in
+ * `table` and `exact`, for a soap film, a high-index film and a film on a gold-coloured metal. The
+ * product of RGB triples is told apart there.
+ */
+export async function roomPixels(page: Page): Promise<void> {
+  const room = [0.9, 0.3, 0.1] as const;
+  let productOff = 0;
+  for (const [c] of [PIXEL_CASES[0]!, PIXEL_CASES[1]!, PIXEL_CASES[4]!]) {
+    const expected = caseReference8([c, { lightTint: room }]);
+    const product = caseLinear([c, {}]).map((v, i) => encode8(Math.min(1, Math.max(0, v * room[i]!))));
+    productOff = Math.max(productOff, worstCodeDifference(product, expected));
+    for (const mode of ['table', 'exact'] as const) {
+      const pixel = await page.evaluate(([c, room, mode]) => window.webgpuHarness!.nodePixel(c, 'node', { mode }, room), [
+        c,
+        room,
+        mode,
+      ] as const);
+      console.log(`node ${mode} ${JSON.stringify(c)} in a room of ${room}: ${pixel.codes}, reference ${expected}, RGB product ${product}`);
+      expect(worstCodeDifference(pixel.codes, expected), `${mode} ${JSON.stringify(c)}: ${pixel.codes} vs ${expected}`).toBeLessThanOrEqual(
+        MAX_CODE_DIFFERENCE,
+      );
+    }
+  }
+  expect(productOff).toBeGreaterThan(3 * MAX_CODE_DIFFERENCE);
+}
+
+/**
  * One material's options changed between frames (a light, a method, a polarisation): each frame
  * draws what a material made with those options draws.
  */
@@ -127,8 +163,10 @@ export async function optionChanges(page: Page): Promise<void> {
 
 /**
  * The table is filled by compute on the WebGPU backend and by a render pass on WebGL2: a `table`
- * material's first frame takes one compute call (WebGPU) or one render call (WebGL2) more than an
- * `exact` material's; its second frame, which draws the table it holds, as many as exact's.
+ * material's first frame takes a compute call (WebGPU) or a render call (WebGL2) per table more
+ * than an `exact` material's, three in the film case's scene (it has an environment, reflected
+ * through the film's matrix: a table per column); its second frame, which draws the tables it
+ * holds, as many as exact's.
  */
 export async function tableFillCalls(page: Page, backend: 'webgpu' | 'webgl'): Promise<void> {
   const [c] = PIXEL_CASES[0]!;
@@ -136,7 +174,7 @@ export async function tableFillCalls(page: Page, backend: 'webgpu' | 'webgl'): P
     const h = window.webgpuHarness!;
     return [await h.frameCalls(c, { mode: 'exact' }), await h.frameCalls(c, { mode: 'table' })];
   }, c);
-  const fill = backend === 'webgpu' ? { compute: 1, render: 0 } : { compute: 0, render: 1 };
+  const fill = backend === 'webgpu' ? { compute: 3, render: 0 } : { compute: 0, render: 3 };
   expect(table[0]).toEqual({ compute: exact[0]!.compute + fill.compute, render: exact[0]!.render + fill.render });
   expect(table[1]).toEqual(exact[1]);
 }

@@ -13,6 +13,7 @@ import {
   NoToneMapping,
   RenderTarget,
   type Scene,
+  type Texture,
   WebGLRenderTarget,
 } from 'three';
 import { float } from 'three/tsl';
@@ -22,7 +23,7 @@ import { spectralIridescence, whenSpectralReady } from '../../../src/nodeMateria
 import { encode8 } from '../../../src/physics/colorConversions.ts';
 import { DEFAULT_FILM_QUALITY, type FilmQuality } from '../../../src/settings/filmQuality.ts';
 import type { ParityGroup } from '../../../scripts/harness/parityCase.ts';
-import { type FilmCase, disposeAll, filmMaterial, filmScene } from './filmCaseScene.ts';
+import { type FilmCase, disposeAll, environment, filmMaterial, filmScene } from './filmCaseScene.ts';
 import { type NodeParityMode, renderNodeFilmXyz } from '../../../scripts/harness/nodeFilmProbe.ts';
 
 const SIZE = 64;
@@ -69,15 +70,30 @@ async function drawCentre(scene: Scene, camera: Camera): Promise<{ linear: numbe
   return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
 }
 
-/** The centre pixel of film case `c` on WebGPURenderer: linear RGB read back, and as 8-bit sRGB. */
+/** Uniform rooms, each one environment texture for the page (three makes its PMREM once). */
+const rooms = new Map<string, Texture>();
+
+/**
+ * The centre pixel of film case `c` on WebGPURenderer: linear RGB read back, and as 8-bit sRGB; in
+ * a uniform room of `room` (linear RGB from every direction: scene.environment) where one is given.
+ */
 async function nodePixel(
   c: FilmCase,
   kind: Kind,
   options: SpectralIridescenceOptions = {},
+  room: readonly [number, number, number] | null = null,
 ): Promise<{ linear: number[]; codes: number[] }> {
   const material = materialOf(c, kind, options);
   if (kind !== 'three') await whenSpectralReady(material);
   const { scene, camera } = filmScene(c, material);
+  if (room) {
+    if (!rooms.has(room.join()))
+      rooms.set(
+        room.join(),
+        environment(() => room),
+      );
+    scene.environment = rooms.get(room.join())!;
+  }
   const pixel = await drawCentre(scene, camera);
   disposeAll(scene);
   return pixel;
