@@ -55,7 +55,7 @@ function passFor(s: FilmSettings, mode: NodeParityMode, q: FilmQuality, film: Om
   const material = new NodeMaterial();
   material.fragmentNode = Fn(() => {
     const c = textureLoad(cases, ivec2(int(uv().x.mul(caseCount)), int(0)));
-    const xyz = methodReads(mode, 'table') ? tableFor(q).lookup(c.x, c.y) : filmXyz(nodes, c.x, c.y);
+    const xyz = methodReads(mode, 'table') ? tableFor(q).lookups(c.x, c.y)[0]! : filmXyz(nodes, c.x, c.y);
     return vec4(xyz, float(1));
   })();
   const pass = { quad: new QuadMesh(material), material };

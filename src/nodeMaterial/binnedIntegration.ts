@@ -19,12 +19,17 @@ import {
   weightedSum,
 } from './filmReflectance.ts';
 
-/** The bins as the program holds them (spectralBinDefines): their count, the ones visited (first ≤ b < end), their weights. */
+/**
+ * The bins as the program holds them (spectralBinDefines): their count, the ones visited (first ≤
+ * b < end), their weights; `plane`: the colour plane a sum in one plane takes its weights and lines
+ * from (a table's texel's, whose texture holds the planes one above the other), else the first.
+ */
 export interface SpectralBinNodes {
   readonly count: number;
   readonly first: number;
   readonly end: number;
   readonly weights: TextureNode;
+  readonly plane?: Node<'int'>;
 }
 
 /**
@@ -60,19 +65,22 @@ export function binSumPlanes(
 ): Node<'vec3'>[] {
   const width = (LAMBDA_MAX_NM - LAMBDA_MIN_NM) / bins.count;
   const sums = Array.from({ length: planes }, () => vec3(0, 0, 0).toVar());
+  // Plane p's weights row (spectralBinsTexture.ts's weightsRow) and its first line, or bins.plane's.
+  const planeOf = (p: number): Node<'int'> => (planes === 1 && bins.plane ? bins.plane : int(p));
+  const row = (p: number) => (planes === 1 && bins.plane ? select(bins.plane.equal(0), int(0), bins.plane.add(1)) : int(weightsRow(p)));
   If(lines.count.greaterThan(0), () => {
     Loop({ start: int(0), end: lines.count, type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
       const nm = lines.values.element(i).w.toVar();
       const index = int(clamp(nm.sub(LAMBDA_MIN_NM).div(width), 0, bins.count - 1));
       const r = reflectance({ index, low: nm, high: nm, center: nm }).toVar();
-      sums.forEach((sum, p) => sum.addAssign(lines.values.element(i.add(p * MAX_LIGHT_LINES)).xyz.mul(r)));
+      sums.forEach((sum, p) => sum.addAssign(lines.values.element(i.add(planeOf(p).mul(MAX_LIGHT_LINES))).xyz.mul(r)));
     });
   }).Else(() => {
     Loop({ start: int(bins.first), end: int(bins.end), type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
       const low = float(i).mul(width).add(LAMBDA_MIN_NM).toVar();
       const high = low.add(width);
       const r = reflectance({ index: i, low, high, center: low.add(width / 2) }).toVar();
-      sums.forEach((sum, p) => sum.addAssign(textureLoad(bins.weights, ivec2(i, int(weightsRow(p)))).xyz.mul(r)));
+      sums.forEach((sum, p) => sum.addAssign(textureLoad(bins.weights, ivec2(i, row(p))).xyz.mul(r)));
     });
   });
   return sums;

@@ -1,6 +1,6 @@
 /**
- * The `table` method for the node material: a half-float texture of the film's XYZ (or of one
- * column of its environment matrix: a table per column, `basis`) over
+ * The `table` method for the node material: a half-float texture of the film's XYZ (or of the
+ * three columns of its environment matrix, one grid above the other, filled at once) over
  * (thickness 0..max, cos θ_i 0..1) for light from outside, laid out as the quality's table says
  * (filmTableLayout.ts), filled on the GPU (filmTableFill.ts): by compute into a storage texture on
  * WebGPURenderer's WebGPU backend (filmTableCompute.ts), by a render pass into a render target on
@@ -19,8 +19,7 @@ import { releaseSpectralBinsTexture, spectralBinDefines, spectralBinsTexture } f
 import { uniformField } from '../fields/uniformField.ts';
 import { type FilmQuality } from '../settings/filmQuality.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
-import { type BasisIndex } from '../physics/illuminants.ts';
-import { planeLights } from '../physics/spectralWeights.ts';
+import { type PlaneCount } from '../physics/spectralWeights.ts';
 import { type MaterialFilmSettings } from '../meshMaterial/materialFilm.ts';
 import { filmTableWidth } from '../settings/filmTableLayout.ts';
 import { type FloatNode } from './complex.ts';
@@ -49,7 +48,7 @@ interface Filled {
 }
 
 export class NodeFilmTable {
-  private readonly grid: TableGrid = { width: uniform(1), rows: uniform(1), maxThicknessNm: uniform(1) };
+  private readonly grid: TableGrid = { width: uniform(1), rows: uniform(1), maxThicknessNm: uniform(1), planes: uniform(1) };
   /** the bin weights of the table's integral (its own count: the quality's table.spectralBins for a film of constant media) */
   private readonly weights = texture(floatRow(1));
   /** the weights of s and p in the fill (channelsFor) */
@@ -57,20 +56,28 @@ export class NodeFilmTable {
   /** by backend: compute (true) or the render pass (false); a renderer of each may draw the material */
   private readonly fills = new Map<boolean, Filled>();
 
-  /** `basis` j: the table of the film's environment matrix's column j (the untinted light times basis spectrum j); null: its XYZ under the light. */
+  /** `planes`: the film's XYZ (1), or the three columns of its environment matrix, one grid above the other in the one texture. */
   constructor(
     readonly quality: FilmQuality,
-    private readonly basis: BasisIndex | null = null,
-  ) {}
+    readonly planes: PlaneCount = 1,
+  ) {
+    this.grid.planes.value = planes;
+  }
 
-  /** The film's XYZ at a thickness and cos θ_i: one filtered lookup of the texture its renderer's backend fills, texel centres at the ends of the ranges (docs/gpu.md#texel-centres). */
-  lookup(thicknessNm: FloatNode, cosIncidence: FloatNode): Node<'vec3'> {
+  /**
+   * The film's colour planes at a thickness and cos θ_i: one filtered lookup per plane of the
+   * texture its renderer's backend fills, texel centres at the ends of each plane's ranges
+   * (docs/gpu.md#texel-centres), so no lookup reads a texel of another plane.
+   */
+  lookups(thicknessNm: FloatNode, cosIncidence: FloatNode): Node<'vec3'>[] {
     const { width, rows, maxThicknessNm } = this.grid;
-    return Fn((builder) => {
-      const at = tableUv(this.quality.table, thicknessNm, cosIncidence, maxThicknessNm);
-      const texel = vec2(at.x.mul(width.sub(1)).add(0.5), at.y.mul(rows.sub(1)).add(0.5));
-      return texture(this.filledBy(builder.renderer).fill.texture, texel.div(vec2(width, rows))).xyz;
-    })();
+    return Array.from({ length: this.planes }, (_, p) =>
+      Fn((builder) => {
+        const at = tableUv(this.quality.table, thicknessNm, cosIncidence, maxThicknessNm);
+        const texel = vec2(at.x.mul(width.sub(1)).add(0.5), at.y.mul(rows.sub(1)).add(0.5).add(rows.mul(p)));
+        return texture(this.filledBy(builder.renderer).fill.texture, texel.div(vec2(width, rows.mul(this.planes)))).xyz;
+      })(),
+    );
   }
 
   /** Whether the table holds the film of `s` (the key of what it depends on), on a backend that draws it. */
@@ -124,14 +131,14 @@ export class NodeFilmTable {
     const count = filmSpectralBins(s, q, q.table.spectralBins);
     const bins = spectralBinDefines(count, q.spectralTailTolerance);
     const channels = this.channelsFor(s.polarization);
-    const nodes: FilmNodes = {
+    const nodes = (plane: Node<'int'>): FilmNodes => ({
       ...film,
       channels,
-      bins: { count, first: bins.TFC_SPECTRAL_BIN_FIRST!, end: bins.TFC_SPECTRAL_BIN_END!, weights: this.weights },
-    };
+      bins: { count, first: bins.TFC_SPECTRAL_BIN_FIRST!, end: bins.TFC_SPECTRAL_BIN_END!, weights: this.weights, plane },
+    });
     const max = this.grid.maxThicknessNm;
     const setInputs = () => {
-      this.weights.value = spectralBinsTexture(this.basis === null ? s : planeLights(s, 3)[this.basis]!, count, this);
+      this.weights.value = spectralBinsTexture(s, count, this, this.planes);
       const maxThicknessNm = tableMaxThicknessNm(s);
       // The width resolves the fringes of the film (or of a stack's films that follow the thickness): FilmTablePass.fullGrid's.
       const index = fillGpu(s).fieldIndex(s, count);
@@ -143,7 +150,7 @@ export class NodeFilmTable {
     };
     return {
       program: JSON.stringify([film.fill, channels.kinds, bins]),
-      xyz: (u, v) => filmXyz(nodes, tableThicknessNm(q.table, u, max), tableCosIncidence(q.table, v)),
+      xyz: (u, v, plane) => filmXyz(nodes(plane), tableThicknessNm(q.table, u, max), tableCosIncidence(q.table, v)),
       setInputs,
     };
   }

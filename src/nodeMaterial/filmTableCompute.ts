@@ -1,10 +1,10 @@
 /**
  * The node film's table filled by compute (WebGPURenderer's WebGPU backend): one invocation per
- * texel writes the texel's XYZ into a half-float storage texture (rgba16float: a storage format of
+ * texel, of every colour plane, writes the texel's XYZ into a half-float storage texture (rgba16float: a storage format of
  * core WebGPU, and filterable on every adapter, so the lookup samples it with linear filtering).
  */
 import { HalfFloatType, type Texture } from 'three';
-import { Fn, float, instanceIndex, textureStore, uint, uvec2, vec4 } from 'three/tsl';
+import { Fn, float, instanceIndex, int, textureStore, uint, uvec2, vec4 } from 'three/tsl';
 import { type ComputeNode, type Renderer, StorageTexture } from 'three/webgpu';
 import { type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
 import { KeptPrograms } from './keptPrograms.ts';
@@ -32,11 +32,11 @@ export class TableCompute implements TableFill {
 
   fill(renderer: Renderer, program: string, xyz: TexelXyz): void {
     const width = this.grid.width.value;
-    const rows = this.grid.rows.value;
+    const height = this.grid.rows.value * this.grid.planes.value;
     // a 2D texture's depth is 1 (three's types ask for one)
-    this.storage.setSize(width, rows, 1);
+    this.storage.setSize(width, height, 1);
     const node = this.kernelFor(program, xyz);
-    node.count = width * rows;
+    node.count = width * height;
     void renderer.compute(node);
   }
 
@@ -48,12 +48,13 @@ export class TableCompute implements TableFill {
   /** The compute node of the program (kept for the last programs). */
   private kernelFor(program: string, xyz: TexelXyz): ComputeNode {
     const { width, rows } = this.grid;
-    // Invocation i is texel (i mod width, i div width); its (u, v) its column and row over the last ones.
+    // Invocation i is texel (i mod width, i div width), in the plane y div rows; its (u, v) its column and row over the last ones.
     return this.kernels.of(program, () =>
       Fn(() => {
         const x = instanceIndex.mod(uint(width));
         const y = instanceIndex.div(uint(width));
-        const value = xyz(float(x).div(width.sub(1)), float(y).div(rows.sub(1)));
+        const plane = y.div(uint(rows));
+        const value = xyz(float(x).div(width.sub(1)), float(y.sub(plane.mul(uint(rows)))).div(rows.sub(1)), int(plane));
         textureStore(this.storage, uvec2(x, y), vec4(value, 1)).toWriteOnly();
       })().compute(1),
     );

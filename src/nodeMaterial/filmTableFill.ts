@@ -1,6 +1,6 @@
 /**
  * What fills the node film's table on the GPU (filmTable.ts): a texture of the grid's texels, each
- * the film's XYZ at the texel's thickness and angle. On WebGPURenderer's WebGPU backend a compute
+ * the film's XYZ (or a column of its environment matrix) at the texel's thickness and angle. On WebGPURenderer's WebGPU backend a compute
  * pass fills a storage texture (filmTableCompute.ts); on its WebGL2 backend, which has no compute,
  * a render pass draws a quad into a render target (filmTablePass.ts). Both are half float, which
  * the lookup filters on every backend.
@@ -9,15 +9,20 @@ import { type Texture } from 'three';
 import { type Node, type Renderer, type UniformNode } from 'three/webgpu';
 import { type FloatNode } from './complex.ts';
 
-/** The grid the table holds: texels along thickness, rows, the thickness of its last column. */
+/**
+ * The grid the table holds: texels along thickness, rows, the thickness of its last column, and
+ * its colour planes (its XYZ, or the three columns of its environment matrix), one grid above the
+ * other in one texture (rows × planes high).
+ */
 export interface TableGrid {
   readonly width: UniformNode<'float', number>;
   readonly rows: UniformNode<'float', number>;
   readonly maxThicknessNm: UniformNode<'float', number>;
+  readonly planes: UniformNode<'float', number>;
 }
 
-/** The XYZ of the texel at (u, v): u, v in [0, 1] run from the first to the last texel centre. */
-export type TexelXyz = (u: FloatNode, v: FloatNode) => Node<'vec3'>;
+/** The XYZ of the texel at (u, v) of colour plane `plane`: u, v in [0, 1] run from the first to the last texel centre of its grid. */
+export type TexelXyz = (u: FloatNode, v: FloatNode, plane: Node<'int'>) => Node<'vec3'>;
 
 export interface TableFill {
   /** The texture filled, at the grid's size: the lookup samples it with the GPU's linear filtering. */

@@ -1,6 +1,6 @@
 /**
  * The node film's table filled by a render pass (WebGPURenderer's WebGL2 backend, which has no
- * compute): a quad over a half-float render target whose fragment is the texel's XYZ, its (u, v)
+ * compute): a quad over a half-float render target (every colour plane's grid) whose fragment is the texel's XYZ, its (u, v)
  * from the fragment's centre. The quad is a mesh of its own with a clip-space vertex node, not
  * three's QuadMesh (whose render swaps in a vertex node of its own), so that compileAsync builds
  * the very program the fill draws with.
@@ -15,7 +15,7 @@ import {
   RenderTarget,
   type Texture,
 } from 'three';
-import { Fn, positionGeometry, uv, vec4 } from 'three/tsl';
+import { Fn, floor, int, positionGeometry, uv, vec4 } from 'three/tsl';
 import { NodeMaterial, type Renderer } from 'three/webgpu';
 import { type OffFrameBuild, type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
 import { KeptPrograms } from './keptPrograms.ts';
@@ -42,7 +42,7 @@ export class TablePass implements TableFill {
   }
 
   fill(renderer: Renderer, program: string, xyz: TexelXyz): void {
-    this.target.setSize(this.grid.width.value, this.grid.rows.value);
+    this.target.setSize(this.grid.width.value, this.grid.rows.value * this.grid.planes.value);
     this.onTarget(renderer, () =>
       renderer.render(
         this.passes.of(program, () => this.quad(xyz)),
@@ -78,14 +78,19 @@ export class TablePass implements TableFill {
     }
   }
 
-  /** A quad whose fragment at the texel's centre, less half a texel, over the texels between the first and last centres, is `xyz` there. */
+  /**
+   * A quad whose fragment at the texel's centre, less half a texel, over the texels between the
+   * first and last centres of its plane's grid (the planes one above the other), is `xyz` there.
+   */
   private quad(xyz: TexelXyz): Mesh<BufferGeometry, NodeMaterial> {
-    const { width, rows } = this.grid;
+    const { width, rows, planes } = this.grid;
     const material = new NodeMaterial();
     material.vertexNode = vec4(positionGeometry.xy, 0, 1);
-    material.fragmentNode = Fn(() =>
-      vec4(xyz(uv().x.mul(width).sub(0.5).div(width.sub(1)), uv().y.mul(rows).sub(0.5).div(rows.sub(1))), 1),
-    )();
+    material.fragmentNode = Fn(() => {
+      const texelRow = uv().y.mul(rows.mul(planes)).sub(0.5).toVar();
+      const plane = floor(texelRow.add(0.5).div(rows)).toVar();
+      return vec4(xyz(uv().x.mul(width).sub(0.5).div(width.sub(1)), texelRow.sub(plane.mul(rows)).div(rows.sub(1)), int(plane)), 1);
+    })();
     const quad = new Mesh(quadGeometry, material);
     quad.frustumCulled = false;
     return quad;

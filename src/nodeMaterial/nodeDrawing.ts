@@ -21,7 +21,7 @@ export { setupLightingModel } from './nodeFilm.ts';
 export function startNodeFilm(m: PhysicalMaterial, film: SpectralFilm): void {
   film.uniforms = { ...filmColorUniforms(), ...filmStackUniforms() };
   film.programKey = nodeProgramKey;
-  const f: NodeFilm = { film, inputs: filmInputs(), tables: [], tint: uniform(new Vector3(1, 1, 1)), renderer: null };
+  const f: NodeFilm = { film, inputs: filmInputs(), table: null, tint: uniform(new Vector3(1, 1, 1)), renderer: null };
   addNodeFilm(m, f);
   updateNodeFilm(f, m, null);
   m.needsUpdate = true;
@@ -36,11 +36,11 @@ export const drawsNodeFilm = (m: PhysicalMaterial): boolean => nodeFilmOf(m) !==
 /** Done when `m`'s next draw builds no program on this thread (prepareNodeFilm); `m` is drawn by this entry's film. */
 export const nodeFilmReady = (m: PhysicalMaterial): Promise<void> => prepareNodeFilm(nodeFilmOf(m)!, m);
 
-/** Lets `m`'s film go: its share of the light's textures, and its tables. */
+/** Lets `m`'s film go: its share of the light's textures, and its table. */
 export function releaseNodeFilm(m: PhysicalMaterial): void {
   const f = nodeFilmOf(m);
   if (!f) return;
   releaseFilmColorTextures(f.film);
-  for (const table of f.tables) table.dispose();
-  f.tables = [];
+  f.table?.dispose();
+  f.table = null;
 }

@@ -42,14 +42,14 @@ import { filmPlanes } from '../settings/filmLight.ts';
 import { type PlaneCount } from '../physics/spectralWeights.ts';
 
 /**
- * A spectral node film: the shared record, its TSL inputs, its tables (none until `table` is drawn;
- * one, or three in a scene with an environment: the columns of its environment matrix), the light's
- * tint (a colour that matrix maps), the renderer that drew it last.
+ * A spectral node film: the shared record, its TSL inputs, its table (null until `table` is drawn;
+ * in a scene with an environment, of the columns of its environment matrix), the light's tint (a
+ * colour that matrix maps), the renderer that drew it last.
  */
 export interface NodeFilm {
   readonly film: SpectralFilm;
   readonly inputs: FilmInputs;
-  tables: NodeFilmTable[];
+  table: NodeFilmTable | null;
   readonly tint: UniformNode<'vec3', Vector3>;
   renderer: Renderer | null;
 }
@@ -106,7 +106,7 @@ export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Rende
   setFilmInputs(f.inputs, film.uniforms);
   f.tint.value.fromArray(s.lightTint);
   if (renderer) f.renderer = renderer;
-  if (renderer && drawsTable(m, s)) for (const table of f.tables) table.update(renderer, s, fillFilm(f, s));
+  if (renderer && f.table && drawsTable(m, s)) f.table.update(renderer, s, fillFilm(f, s));
 }
 
 /**
@@ -116,8 +116,7 @@ export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Rende
  */
 export async function prepareNodeFilm(f: NodeFilm, m: PhysicalMaterial): Promise<void> {
   const s = drawnFilmSettings(physical(m), f.film);
-  const renderer = f.renderer;
-  if (renderer && drawsTable(m, s)) await Promise.all(f.tables.map((table) => table.prepare(renderer, s, fillFilm(f, s))));
+  if (f.renderer && f.table && drawsTable(m, s)) await f.table.prepare(f.renderer, s, fillFilm(f, s));
 }
 
 /**
@@ -149,12 +148,12 @@ function exactXyz(f: NodeFilm, m: PhysicalMaterial, s: MaterialFilmSettings, thi
   );
 }
 
-/** The film's tables for its quality and colour planes (a column of its environment matrix each, or its XYZ), made again when either changes. */
-function tablesOf(f: NodeFilm, planes: PlaneCount): NodeFilmTable[] {
+/** The film's table for its quality and colour planes, made again when either changes. */
+function tableOf(f: NodeFilm, planes: PlaneCount): NodeFilmTable {
   const quality = f.film.options.quality;
-  if (f.tables.length === planes && JSON.stringify(f.tables[0]!.quality) === JSON.stringify(quality)) return f.tables;
-  for (const table of f.tables) table.dispose();
-  return (f.tables = planes === 1 ? [new NodeFilmTable(quality)] : ([0, 1, 2] as const).map((j) => new NodeFilmTable(quality, j)));
+  if (f.table && f.table.planes === planes && JSON.stringify(f.table.quality) === JSON.stringify(quality)) return f.table;
+  f.table?.dispose();
+  return (f.table = new NodeFilmTable(quality, planes));
 }
 
 const nodeFilms = new WeakMap<object, NodeFilm>();
@@ -180,9 +179,9 @@ export function setupLightingModel(this: MeshPhysicalNodeMaterial, builder: Node
   f.film.sceneEnvironment = environment !== null && environment !== undefined;
   const s = drawnFilmSettings(physical(m), f.film);
   const planes = filmPlanes(s);
-  const tables = drawsTable(m, s) ? tablesOf(f, planes) : null;
+  const table = drawsTable(m, s) ? tableOf(f, planes) : null;
   const film = (thicknessNm: FloatNode, cosIncidence: FloatNode): FilmColor => {
-    const columns = (tables ? tables.map((t) => t.lookup(thicknessNm, cosIncidence)) : exactXyz(f, m, s, thicknessNm, cosIncidence)).map(
+    const columns = (table ? table.lookups(thicknessNm, cosIncidence) : exactXyz(f, m, s, thicknessNm, cosIncidence)).map(
       xyzToLinearWorking,
     );
     const update = (rgb: Node<'vec3'>) => new FilmUpdateNode(rgb, (renderer) => updateNodeFilm(f, m, renderer)) as never;
