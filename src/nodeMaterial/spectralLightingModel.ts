@@ -134,7 +134,8 @@ export class SpectralLightingModel extends PhysicalLightingModel {
     const favg = spectral.f0.add(spectral.f0.oneMinus().div(21)).dot(vec3(1 / 3, 1 / 3, 1 / 3));
     const light = mix(radiance, iblIrradiance.div(Math.PI), clamp(ems.mul(favg), 0, 1)).toVar();
     const weight = iridescence.mul(this.metallic ? metalness : metalness.oneMinus());
-    const gain = matrixTimes(columns, tint.mul(light)).sub(matrixTimes(columns, tint).mul(light));
+    // three's film, `fresnel`, is M t already.
+    const gain = matrixTimes(columns, tint.mul(light)).sub(spectral.fresnel.mul(light));
     reflectedLight.indirectSpecular.addAssign(gain.mul(weight));
   }
 

@@ -25,11 +25,12 @@ export async function compileFramePrograms(
   let lost = renderer.getContext().isContextLost();
   const onLost = () => (lost = true);
   const canvas = renderer.domElement;
-  for (const event of ['webglcontextlost', 'webglcontextrestored']) canvas.addEventListener(event, onLost);
+  const events = ['webglcontextlost', 'webglcontextrestored'] as const;
+  for (const event of events) canvas.addEventListener(event, onLost);
   try {
     await Promise.all([...meshes.map((mesh) => renderer.compileAsync(mesh, camera, scene)), ...others]);
   } finally {
-    for (const event of ['webglcontextlost', 'webglcontextrestored']) canvas.removeEventListener(event, onLost);
+    for (const event of events) canvas.removeEventListener(event, onLost);
   }
   if (!lost && !renderer.debug.checkShaderErrors) for (const failure of linkFailures(renderer)) console.error(failure);
 }
