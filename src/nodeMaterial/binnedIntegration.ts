@@ -16,7 +16,7 @@ import {
   meanChannelReflectance,
   reflectanceAt,
   roundTripAttenuation,
-  weightedSum,
+  channelSum,
 } from './filmReflectance.ts';
 
 /**
@@ -55,7 +55,9 @@ export interface Bin {
  * lines instead, each a bin of no width [λ, λ] (its phase window none) in the bin it falls in (whose
  * index a stack's texture reads) times the line's weight, as binnedIntegration.glsl sums them. In
  * `planes` colour planes (3: the columns of the film's environment matrix, each bin's R once for
- * all three, each with its own weights: src/film/spectralBinsTexture.ts's rows and lines).
+ * all three, each with its own weights: src/film/spectralBinsTexture.ts's rows and lines). One
+ * loop serves bins and lines, the step's wavelengths and weights chosen at its start, so that the
+ * graph holds `reflectance` once: three builds a program in time proportional to its graph.
  */
 export function binSumPlanes(
   bins: SpectralBinNodes,
@@ -68,19 +70,32 @@ export function binSumPlanes(
   // Plane p's weights row (spectralBinsTexture.ts's weightsRow) and its first line, or bins.plane's.
   const planeOf = (p: number): Node<'int'> => (planes === 1 && bins.plane ? bins.plane : int(p));
   const row = (p: number) => (planes === 1 && bins.plane ? select(bins.plane.equal(0), int(0), bins.plane.add(1)) : int(weightsRow(p)));
-  If(lines.count.greaterThan(0), () => {
-    Loop({ start: int(0), end: lines.count, type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
-      const nm = lines.values.element(i).w.toVar();
-      const index = int(clamp(nm.sub(LAMBDA_MIN_NM).div(width), 0, bins.count - 1));
-      const r = reflectance({ index, low: nm, high: nm, center: nm }).toVar();
-      sums.forEach((sum, p) => sum.addAssign(lines.values.element(i.add(planeOf(p).mul(MAX_LIGHT_LINES))).xyz.mul(r)));
+  const byLines = lines.count.greaterThan(0);
+  const start = select(byLines, int(0), int(bins.first));
+  const end = select(byLines, lines.count, int(bins.end));
+  Loop({ start, end, type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
+    const low = float(0).toVar();
+    const high = float(0).toVar();
+    const index = int(0).toVar();
+    If(byLines, () => {
+      const nm = lines.values.element(i).w;
+      low.assign(nm);
+      high.assign(nm);
+      index.assign(int(clamp(nm.sub(LAMBDA_MIN_NM).div(width), 0, bins.count - 1)));
+    }).Else(() => {
+      low.assign(float(i).mul(width).add(LAMBDA_MIN_NM));
+      high.assign(low.add(width));
+      index.assign(i);
     });
-  }).Else(() => {
-    Loop({ start: int(bins.first), end: int(bins.end), type: 'int', condition: '<' }, ({ i }: { i: Node<'int'> }) => {
-      const low = float(i).mul(width).add(LAMBDA_MIN_NM).toVar();
-      const high = low.add(width);
-      const r = reflectance({ index: i, low, high, center: low.add(width / 2) }).toVar();
-      sums.forEach((sum, p) => sum.addAssign(textureLoad(bins.weights, ivec2(i, row(p))).xyz.mul(r)));
+    const r = reflectance({ index, low, high, center: low.add(high).mul(0.5) }).toVar();
+    sums.forEach((sum, p) => {
+      const weight = vec3(0, 0, 0).toVar();
+      If(byLines, () => {
+        weight.assign(lines.values.element(i.add(planeOf(p).mul(MAX_LIGHT_LINES))).xyz);
+      }).Else(() => {
+        weight.assign(textureLoad(bins.weights, ivec2(i, row(p))).xyz);
+      });
+      sum.addAssign(weight.mul(r));
     });
   });
   return sums;
@@ -99,10 +114,7 @@ export function binReflectance(o: FilmOptics, centerNm: FloatNode, phase: FloatN
   const path = o.opticalPathNm;
   const a = roundTripAttenuation(path, centerNm).toVar();
   const attenuated = (c: AiryTerms): AiryTerms => ({ rab: c.rab, multiple: c.multiple.mul(a), roundTrip: c.roundTrip.mul(a) });
-  const mean = weightedSum(
-    o.weights,
-    o.channels.map((c) => meanChannelReflectance(attenuated(c), phase, halfWidth)),
-  );
+  const mean = channelSum(o, (c) => meanChannelReflectance(attenuated(c), phase, halfWidth));
   return select(path.x.equal(0).and(path.y.notEqual(0)), reflectanceAt(o, centerNm), mean);
 }
 

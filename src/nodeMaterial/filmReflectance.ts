@@ -4,10 +4,11 @@
  * the channels are unrolled here, each R weighted by a node (a constant where the polarisation is
  * the program's, a uniform where the table's fill takes s and p in one program).
  */
-import { If, abs, atan, atanh, clamp, cos, exp, float, min, select, sin, sqrt, vec2 } from 'three/tsl';
+import { If, Loop, abs, atan, atanh, clamp, cos, exp, float, int, min, select, sin, sqrt, vec2 } from 'three/tsl';
+import { type Node } from 'three/webgpu';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type ComplexNode, type FloatNode, cAbs2, cDiv, cExpI, cIsZero, cMul } from './complex.ts';
-import { type InterfaceCoefficients, fresnelCoefficients } from './fresnel.ts';
+import { type InterfaceCoefficients, fresnelCoefficients, interfaceBothWays } from './fresnel.ts';
 import { refractedCos } from './snell.ts';
 
 /** A channel's kind: 0 = s, 1 = p, 2 = the paper's average of the amplitudes (eqs 4, 8). */
@@ -51,6 +52,28 @@ export interface FilmOptics {
   readonly opticalPathNm: ComplexNode;
 }
 
+/**
+ * Σ weight × `each(channel)` over the film's channels, in a loop whose step picks its channel's
+ * terms, so that the graph holds `each` once (three builds a program in time proportional to its
+ * graph); one channel is `each` of it alone.
+ */
+export function channelSum(o: Pick<FilmOptics, 'channels' | 'weights'>, each: (c: AiryTerms) => FloatNode): FloatNode {
+  const [first, ...rest] = o.channels;
+  if (rest.length === 0) return each(first!).mul(o.weights[0]!);
+  const sum = float(0).toVar();
+  Loop(o.channels.length, ({ i }: { i: Node<'int'> }) => {
+    const pick = <T extends Node>(of: (k: number) => T): T =>
+      rest.reduce<T>((picked, _, k) => select(i.equal(int(k + 1)), of(k + 1), picked) as T, of(0));
+    const c = {
+      rab: pick((k) => o.channels[k]!.rab),
+      multiple: pick((k) => o.channels[k]!.multiple),
+      roundTrip: pick((k) => o.channels[k]!.roundTrip),
+    };
+    sum.addAssign(each(c).mul(pick((k) => o.weights[k]!)));
+  });
+  return sum;
+}
+
 /** (r, t) of one interface for a channel kind. */
 export function channelOf(c: InterfaceCoefficients, kind: ChannelKind): { readonly r: ComplexNode; readonly t: ComplexNode } {
   if (kind === 0) return { r: c.rs, t: c.ts };
@@ -79,8 +102,7 @@ export function filmOptics(
   const cosI = refractedCos(na, nOutside, cosIncidence).toVar();
   const cosR = refractedCos(nFilm, nOutside, cosIncidence).toVar();
   const cosT = refractedCos(nInside, nOutside, cosIncidence).toVar();
-  const ab = fresnelCoefficients(na, cosI, nFilm, cosR);
-  const ba = fresnelCoefficients(nFilm, cosR, na, cosI);
+  const { forward: ab, backward: ba } = interfaceBothWays(na, cosI, nFilm, cosR);
   const bc = fresnelCoefficients(nFilm, cosR, nInside, cosT);
   const ac = fresnelCoefficients(na, cosI, nInside, cosT);
   const bare = thicknessNm.equal(0);
@@ -109,10 +131,7 @@ export function reflectanceAt(o: FilmOptics, lambdaNm: FloatNode): FloatNode {
   const z = cExpI(o.opticalPathNm.mul(float(2 * Math.PI).div(lambdaNm))).toVar();
   return min(
     1,
-    weightedSum(
-      o.weights,
-      o.channels.map((c) => channelReflectance(c, z)),
-    ),
+    channelSum(o, (c) => channelReflectance(c, z)),
   );
 }
 
@@ -138,17 +157,13 @@ export function meanChannelReflectance(c: AiryTerms, phaseCenter: FloatNode, hal
       mean.assign(a0.add(sinc.mul(2).mul(ab.x.mul(cos(phaseCenter)).sub(ab.y.mul(sin(phaseCenter))))));
     })
     .ElseIf(w.lessThan(float(1).sub(sqrt(rho2)).mul(0.5)), () => {
-      const at = (phase: FloatNode) => channelReflectance(c, cExpI(vec2(phase, 0)));
-      mean.assign(
-        clamp(
-          at(phaseCenter.sub(w))
-            .add(at(phaseCenter).mul(4))
-            .add(at(phaseCenter.add(w)))
-            .div(6),
-          0,
-          1,
-        ),
-      );
+      // Simpson's weights 1, 4, 1 at φ0 − w, φ0, φ0 + w, in a loop: eq (13) once in the graph.
+      const sum = float(0).toVar();
+      Loop(3, ({ i }: { i: Node<'int'> }) => {
+        const phase = phaseCenter.add(w.mul(float(i.sub(1))));
+        sum.addAssign(channelReflectance(c, cExpI(vec2(phase, 0))).mul(select(i.equal(1), float(4), float(1))));
+      });
+      mean.assign(clamp(sum.div(6), 0, 1));
     })
     .Else(() => {
       mean.assign(resonantMean(c, { a0, ab, rho2, sinc }, phaseCenter, w));
