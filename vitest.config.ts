@@ -7,6 +7,29 @@ import { defineConfig } from 'vitest/config';
 // the hooks that compute what a file's tests share (a film simulated for 10⁴ steps), not Vitest's 10 s.
 // A worker per core: Vitest's default keeps one core for itself, which on a 2-core machine leaves
 // one worker and the other core mostly idle (its own work is little beside the tests').
+const UNIT_TESTS = 'tests/unit/**/*.test.ts';
+
+// The files that read a module's state as a fresh import leaves it (the material's drawing not
+// yet loaded, a store before its first Worker) or swap globals for a module's import: each in
+// modules of its own. Every other file shares its worker's modules with the files run before it,
+// which halves the suite's time (importing three, the physics and the app once per worker rather
+// than once per file); they keep no state that another file reads.
+const FRESH_MODULES = [
+  'tests/unit/meshMaterial/spectralDrawing.test.ts',
+  'tests/unit/nodeMaterial/spectralNodeMaterial.test.ts',
+  'tests/unit/film/dispersiveRowsWorker.test.ts',
+  'tests/unit/film/spectralTransformWorker.test.ts',
+  'tests/unit/plots/interferenceScaleStore.test.ts',
+];
+
 export default defineConfig({
-  test: { include: ['tests/unit/**/*.test.ts'], testTimeout: 60_000, hookTimeout: 60_000, maxWorkers: availableParallelism() },
+  test: {
+    testTimeout: 60_000,
+    hookTimeout: 60_000,
+    maxWorkers: availableParallelism(),
+    projects: [
+      { extends: true, test: { name: 'shared', include: [UNIT_TESTS], exclude: FRESH_MODULES, isolate: false } },
+      { extends: true, test: { name: 'fresh', include: FRESH_MODULES } },
+    ],
+  },
 });
