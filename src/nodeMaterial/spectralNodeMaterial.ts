@@ -29,7 +29,9 @@ function setupLightingModel(this: MeshPhysicalNodeMaterial, builder: NodeBuilder
 /**
  * The film's hooks on `m`: its lighting model (enumerable, so a classic material's node copy
  * takes it) and its part of the program key ('loading' until the drawing is here, whose arrival
- * moves the material's version).
+ * moves the material's version). The key names the material: three shares one program among
+ * materials of equal keys, and with it the nodes built for the first of them, whose film's
+ * uniforms and table are that material's alone.
  */
 function hook(m: PhysicalMaterial, film: SpectralFilm): void {
   // eslint-disable-next-line @typescript-eslint/unbound-method -- called on `m` below
@@ -39,7 +41,7 @@ function hook(m: PhysicalMaterial, film: SpectralFilm): void {
     customProgramCacheKey: {
       configurable: true,
       writable: true,
-      value: () => `${userKey.call(m)} spectral-iridescence ${nodeDrawing.loaded()?.nodeFilmKey(m, film) ?? 'loading'}`,
+      value: () => `${userKey.call(m)} spectral-iridescence ${m.uuid} ${nodeDrawing.loaded()?.nodeFilmKey(m, film) ?? 'loading'}`,
     },
   });
 }

@@ -19,7 +19,7 @@ describe('the WebGPU entry, before its drawing is loaded', () => {
     const entry = await import('../../../src/nodeMaterial/spectralNodeMaterial.ts');
     const m = entry.spectralIridescence(film(), { mode: 'exact' });
     const [version, key] = [m.version, m.customProgramCacheKey()];
-    expect(key).toMatch(/spectral-iridescence loading$/);
+    expect(key).toMatch(/spectral-iridescence \S+ loading$/);
     m.polarization = 's';
     await entry.whenSpectralReady(m);
     expect(m.version).toBeGreaterThan(version);
@@ -73,6 +73,14 @@ describe('the WebGPU entry', () => {
     const exactKey = m.customProgramCacheKey();
     m.polarization = 'p';
     expect(m.customProgramCacheKey()).not.toBe(exactKey);
+  });
+
+  it("keys each material's program apart, even where two hold the same options and the same 0/1 reduction of three's numbers", () => {
+    // three shares the nodes built for the first material of a key among all of that key; the
+    // film's uniforms and table are nodes of that build, so a shared key would draw the second
+    // material with the first's film (iridescenceIOR 1.8 drawn as 1.33).
+    const [a, b] = [1.33, 1.8].map((n) => spectralIridescence(new MeshPhysicalNodeMaterial({ iridescence: 1, iridescenceIOR: n })));
+    expect(a!.customProgramCacheKey()).not.toBe(b!.customProgramCacheKey());
   });
 
   it("upgrades a loaded scene's iridescent physical materials, classic or node, and gives a classic one the lighting model its node copy takes", () => {
