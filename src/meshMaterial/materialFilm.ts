@@ -107,10 +107,10 @@ export const filmKeyOf = (m: MeshPhysicalMaterial, o: CheckedOptions): string =>
 /**
  * The film as both entries draw it now, inside three's render (which must not throw): a parameter
  * out of its domain clamped, with a warning; where the method cannot draw the film or its light,
- * the one drawn in its place, said once.
+ * the one drawn in its place, said once. `o`: the options drawn (the film's, unless a program
+ * still draws the ones it was built for).
  */
-export function drawnFilmSettings(m: MeshPhysicalMaterial, film: SpectralFilm): MaterialFilmSettings {
-  const o = film.options;
+export function drawnFilmSettings(m: MeshPhysicalMaterial, film: SpectralFilm, o: CheckedOptions = film.options): MaterialFilmSettings {
   const s = filmSettingsOf(
     m,
     o,

@@ -28,6 +28,12 @@ export interface SpectralFilm {
   sceneEnvironment: boolean;
   /** The film's part of the program key, given by the entry's drawing once it is loaded (before, the program holds three's film). */
   programKey?: (m: MeshPhysicalMaterial, o: CheckedOptions) => string;
+  /**
+   * Where the entry builds a changed program off the frame (the WebGPU entry): called once the
+   * film holds its new options; true where it builds the program and moves the version once it is
+   * built, false where the version is to move now (three then builds it at the next draw).
+   */
+  programAhead?: (m: MeshPhysicalMaterial) => boolean;
 }
 
 /** A film record with `options`, before its entry's drawing gives it uniforms, a table and a program key. */
@@ -69,8 +75,9 @@ export function warnOnce(film: SpectralFilm, cause: string, message: string): vo
 export function setOptions(m: MeshPhysicalMaterial, film: SpectralFilm, options: CheckedOptions): void {
   // Before the entry's drawing is loaded, the program holds three's film: the drawing's arrival moves the version anyway.
   const keyOf = film.programKey;
-  if (keyOf && keyOf(m, film.options) !== keyOf(m, options)) m.needsUpdate = true;
+  const programChanges = keyOf !== undefined && keyOf(m, film.options) !== keyOf(m, options);
   film.options = options;
+  if (programChanges && !film.programAhead?.(m)) m.needsUpdate = true;
 }
 
 /** An option of a spectral material. */

@@ -1,14 +1,15 @@
 /**
- * A node that passes its input through and calls `refresh` with the renderer before each render
- * that draws it: the film's per-frame work (its uniforms, textures and table brought up to the
- * material), which WebGPURenderer runs as a node's updateBefore (it calls no material's onBeforeRender).
+ * A node that passes its input through and calls `refresh` with the frame (its renderer, object,
+ * camera, scene and material) before each render that draws it: the film's per-frame work (its
+ * uniforms, textures and table brought up to the material), which WebGPURenderer runs as a node's
+ * updateBefore (it calls no material's onBeforeRender).
  */
-import { Node, type NodeFrame, NodeUpdateType, type Renderer } from 'three/webgpu';
+import { Node, type NodeFrame, NodeUpdateType } from 'three/webgpu';
 
 export class FilmUpdateNode extends Node {
   constructor(
     private readonly input: Node,
-    private readonly refresh: (renderer: Renderer) => void,
+    private readonly refresh: (frame: NodeFrame) => void,
   ) {
     super('vec3');
     this.updateBeforeType = NodeUpdateType.RENDER;
@@ -19,7 +20,7 @@ export class FilmUpdateNode extends Node {
   }
 
   override updateBefore(frame: NodeFrame): boolean {
-    if (frame.renderer) this.refresh(frame.renderer);
+    if (frame.renderer) this.refresh(frame);
     return true;
   }
 }

@@ -11,17 +11,28 @@ import { uniform } from 'three/tsl';
 import { filmInputs } from './filmInputs.ts';
 import { type NodeFilm, addNodeFilm, nodeFilmOf, nodeProgramKey, prepareNodeFilm, updateNodeFilm } from './nodeFilm.ts';
 import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
+import { buildAhead, newAhead } from './programAhead.ts';
 
 export { setupLightingModel } from './nodeFilm.ts';
 
 /**
  * Starts drawing `film` on `m`: its uniforms and TSL inputs, brought up to the material, and its
- * program key from here on; the material's version moves, so the next render builds the film.
+ * program key from here on, a changed program built ahead once it has been drawn; the material's
+ * version moves, so the next render builds the film.
  */
 export function startNodeFilm(m: PhysicalMaterial, film: SpectralFilm): void {
   film.uniforms = { ...filmColorUniforms(), ...filmStackUniforms() };
   film.programKey = nodeProgramKey;
-  const f: NodeFilm = { film, inputs: filmInputs(), table: null, tint: uniform(new Vector3(1, 1, 1)), renderer: null };
+  const f: NodeFilm = {
+    film,
+    inputs: filmInputs(),
+    table: null,
+    tint: uniform(new Vector3(1, 1, 1)),
+    renderer: null,
+    lastDraw: null,
+    ahead: newAhead(),
+  };
+  film.programAhead = () => buildAhead(f, m);
   addNodeFilm(m, f);
   updateNodeFilm(f, m, null);
   m.needsUpdate = true;

@@ -9,6 +9,7 @@ import {
   MeshPhysicalNodeMaterial,
   type Node,
   type NodeBuilder,
+  type NodeFrame,
   type PhysicalLightingModel,
   type Renderer,
   type UniformNode,
@@ -37,6 +38,7 @@ import { type FilmNodes, filmPlanesXyz, xyzToLinearWorking } from './filmColor.t
 import { type FillFilm, NodeFilmTable } from './filmTable.ts';
 import { type PhysicalMaterial, physical } from './physicalMaterial.ts';
 import { FilmUpdateNode } from './filmUpdateNode.ts';
+import { type Ahead, type LastDraw, isStandIn, materialBuilt, noteDraw, retireAt, retireFor } from './programAhead.ts';
 import { type FilmColor, SpectralLightingModel, matrixTimes } from './spectralLightingModel.ts';
 import { filmPlanes } from '../settings/filmLight.ts';
 import { type PlaneCount } from '../physics/spectralWeights.ts';
@@ -44,7 +46,8 @@ import { type PlaneCount } from '../physics/spectralWeights.ts';
 /**
  * A spectral node film: the shared record, its TSL inputs, its table (null until `table` is drawn;
  * in a scene with an environment, of the columns of its environment matrix), the light's tint (a
- * colour that matrix maps), the renderer that drew it last.
+ * colour that matrix maps), the renderer that drew it last, where it was last drawn, and the
+ * program it builds ahead (programAhead.ts).
  */
 export interface NodeFilm {
   readonly film: SpectralFilm;
@@ -52,6 +55,8 @@ export interface NodeFilm {
   table: NodeFilmTable | null;
   readonly tint: UniformNode<'vec3', Vector3>;
   renderer: Renderer | null;
+  lastDraw: LastDraw | null;
+  readonly ahead: Ahead;
 }
 
 /**
@@ -93,10 +98,12 @@ const fillFilm = (f: NodeFilm, s: MaterialFilmSettings): FillFilm => ({
   nInside: f.inputs.nInside,
 });
 
-/** Brings the film's uniforms, inputs and table up to the material, the table drawn with `renderer`. */
-export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Renderer | null): void {
-  const o = f.film.options;
-  const s = drawnFilmSettings(physical(m), f.film);
+/**
+ * Brings the film's uniforms, inputs and table up to the material, the table drawn with
+ * `renderer`; `o`: the options drawn (the film's, unless its program still draws those it was built for).
+ */
+export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Renderer | null, o: CheckedOptions = f.film.options): void {
+  const s = drawnFilmSettings(physical(m), f.film, o);
   if (methodReads(s.mode, 'spectralTransform'))
     warnOnce(f.film, 'series', `mode ${s.mode} is drawn from the table on WebGPURenderer (its series per fragment is WebGLRenderer's)`);
   followMetal(physical(m), f.film);
@@ -111,10 +118,11 @@ export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Rende
 
 /**
  * Builds off the frame the programs the film's next draw needs that its last one did not (the
- * table's fill for a new film): done when that draw builds none on this thread. A film not drawn
+ * material's, built ahead, and the table's fill for a new film): done when that draw builds none on this thread. A film not drawn
  * yet has none built: its first draw builds them.
  */
 export async function prepareNodeFilm(f: NodeFilm, m: PhysicalMaterial): Promise<void> {
+  await f.ahead.building;
   const s = drawnFilmSettings(physical(m), f.film);
   if (f.renderer && f.table && drawsTable(m, s)) await f.table.prepare(f.renderer, s, fillFilm(f, s));
 }
@@ -148,11 +156,15 @@ function exactXyz(f: NodeFilm, m: PhysicalMaterial, s: MaterialFilmSettings, thi
   );
 }
 
-/** The film's table for its quality and colour planes, made again when either changes. */
-function tableOf(f: NodeFilm, planes: PlaneCount): NodeFilmTable {
+/**
+ * The film's table for its quality and colour planes, made again when either changes; the one it
+ * replaces is let go at the first draw by the program of `token`, which reads the new one.
+ */
+function tableOf(f: NodeFilm, planes: PlaneCount, token: object): NodeFilmTable {
   const quality = f.film.options.quality;
   if (f.table && f.table.planes === planes && JSON.stringify(f.table.quality) === JSON.stringify(quality)) return f.table;
-  f.table?.dispose();
+  const replaced = f.table;
+  if (replaced) retireAt(f, token, () => replaced.dispose());
   return (f.table = new NodeFilmTable(quality, planes));
 }
 
@@ -171,20 +183,34 @@ export const nodeFilmOf = (m: object): NodeFilm | undefined => nodeFilms.get(m);
  */
 export function setupLightingModel(this: MeshPhysicalNodeMaterial, builder: NodeBuilder): PhysicalLightingModel {
   const three: PhysicalLightingModel = MeshPhysicalNodeMaterial.prototype.setupLightingModel.call(this);
-  const m = builder.material as PhysicalMaterial;
+  const m = materialBuilt(builder.material);
   const f = nodeFilms.get(m);
   if (!f || !filmOf(m) || !three.iridescence) return three;
+  // This program, named: what waits for its first draw of the material (a stand-in's, a table replaced).
+  const token = {};
+  if (isStandIn(builder.material)) retireAt(f, token, () => builder.material.dispose());
   // The environment three lights the material with (setupEnvironment's): the film reflects it through its matrix.
   const environment = this.envNode ?? (this as { envMap?: unknown }).envMap ?? (builder as { environmentNode?: unknown }).environmentNode;
   f.film.sceneEnvironment = environment !== null && environment !== undefined;
   const s = drawnFilmSettings(physical(m), f.film);
   const planes = filmPlanes(s);
-  const table = drawsTable(m, s) ? tableOf(f, planes) : null;
+  const table = drawsTable(m, s) ? tableOf(f, planes, token) : null;
+  // The options this program draws: the film's while they key it, else (a program built ahead
+  // for them) the last it drew, until the material's version moves to the new one.
+  const builtKey = nodeProgramKey(physical(m), f.film.options);
+  let drawn = f.film.options;
+  const refresh = (frame: NodeFrame) => {
+    if (isStandIn(frame.material)) return;
+    noteDraw(f, frame);
+    retireFor(f, token);
+    if (nodeProgramKey(physical(m), f.film.options) === builtKey) drawn = f.film.options;
+    updateNodeFilm(f, m, frame.renderer, drawn);
+  };
   const film = (thicknessNm: FloatNode, cosIncidence: FloatNode): FilmColor => {
     const columns = (table ? table.lookups(thicknessNm, cosIncidence) : exactXyz(f, m, s, thicknessNm, cosIncidence)).map(
       xyzToLinearWorking,
     );
-    const update = (rgb: Node<'vec3'>) => new FilmUpdateNode(rgb, (renderer) => updateNodeFilm(f, m, renderer)) as never;
+    const update = (rgb: Node<'vec3'>) => new FilmUpdateNode(rgb, (frame) => refresh(frame)) as never;
     if (planes === 1) return { rgb: update(columns[0]!), matrix: null };
     const matrix = columns.map((c) => c.toVar());
     // Under the light itself, three's per-channel film: M t.

@@ -17,7 +17,7 @@ import {
   WebGLRenderTarget,
 } from 'three';
 import { float } from 'three/tsl';
-import { MeshPhysicalNodeMaterial, WebGPURenderer } from 'three/webgpu';
+import { MeshPhysicalNodeMaterial, NodeBuilder, WebGPURenderer } from 'three/webgpu';
 import { type SpectralIridescenceOptions } from '../../../src/meshMaterial/spectralIridescenceOptions.ts';
 import { spectralIridescence, whenSpectralReady } from '../../../src/nodeMaterial/spectralNodeMaterial.ts';
 import { encode8 } from '../../../src/physics/colorConversions.ts';
@@ -99,19 +99,36 @@ async function nodePixel(
   return pixel;
 }
 
-/** The centre pixels of one node material of film case `c`, drawn as made and after each change of its options in turn: 8-bit codes. */
-async function changedPixels(c: FilmCase, changes: readonly SpectralIridescenceOptions[]): Promise<number[][]> {
+/** Programs three has built in one piece (NodeBuilder.build, inside a render or compute) since the page loaded; compileAsync builds by buildAsync. */
+let builtInPlace = 0;
+// three's types leave out the builder's build(); it is NodeBuilder.prototype.build in r187.
+const builder = NodeBuilder.prototype as unknown as { build: (this: unknown) => unknown };
+const build = builder.build;
+builder.build = function (this: unknown) {
+  builtInPlace++;
+  return build.call(this);
+};
+
+/**
+ * The centre pixels of one node material of film case `c`, drawn as made and after each change of
+ * its options in turn (8-bit codes), and the programs built in one piece after its first frame.
+ */
+async function changedPixels(
+  c: FilmCase,
+  changes: readonly SpectralIridescenceOptions[],
+): Promise<{ codes: number[][]; builtInPlace: number }> {
   const material = materialOf(c, 'node', {});
   const { scene, camera } = filmScene(c, material);
-  const out = [(await drawCentre(scene, camera)).codes];
+  const codes = [(await drawCentre(scene, camera)).codes];
+  const before = builtInPlace;
   for (const change of changes) {
     Object.assign(material, change);
     // as a user is told to: a change may need a program built off the frame first
     await whenSpectralReady(material);
-    out.push((await drawCentre(scene, camera)).codes);
+    codes.push((await drawCentre(scene, camera)).codes);
   }
   disposeAll(scene);
-  return out;
+  return { codes, builtInPlace: builtInPlace - before };
 }
 
 /**
