@@ -118,8 +118,8 @@ export function updateNodeFilm(f: NodeFilm, m: PhysicalMaterial, renderer: Rende
 
 /**
  * Builds off the frame the programs the film's next draw needs that its last one did not (the
- * material's, built ahead, and the table's fill for a new film): done when that draw builds none on this thread. A film not drawn
- * yet has none built: its first draw builds them.
+ * material's, built ahead, and the table's fill for a new film): done when that draw builds none
+ * on this thread. A film not drawn yet has none built: its first draw builds them.
  */
 export async function prepareNodeFilm(f: NodeFilm, m: PhysicalMaterial): Promise<void> {
   await f.ahead.building;

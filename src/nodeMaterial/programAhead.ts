@@ -83,23 +83,29 @@ export function buildAhead(f: NodeFilm, m: PhysicalMaterial): boolean {
   return true;
 }
 
-/** Builds stand-ins until one holds the material's options as they are when it is done; then moves the material's version. */
+/**
+ * Builds stand-ins until one holds the material's options as they are when it is done; then moves
+ * the material's version (also where a build failed: three then builds the program at the next draw).
+ */
 async function buildUntilCurrent(f: NodeFilm, m: PhysicalMaterial, draw: LastDraw): Promise<void> {
-  do {
-    f.ahead.again = false;
-    const standIn = standInFor(m);
-    const proxy = draw.object.clone(false) as Object3D & { material: Material };
-    proxy.material = standIn;
-    // compileAsync takes the render target as it starts (three's precompilation state), synchronously.
-    const previous = draw.renderer.getRenderTarget();
-    draw.renderer.setRenderTarget(draw.target);
-    const compiled = draw.renderer.compileAsync(proxy, draw.camera, draw.scene);
-    draw.renderer.setRenderTarget(previous);
-    await compiled;
-    // A stand-in overtaken by a later change goes with its program; the last one stays until the material draws its program.
-    if (f.ahead.again) standIn.dispose();
-  } while (f.ahead.again);
-  m.needsUpdate = true;
+  try {
+    do {
+      f.ahead.again = false;
+      const standIn = standInFor(m);
+      const proxy = draw.object.clone(false) as Object3D & { material: Material };
+      proxy.material = standIn;
+      // compileAsync takes the render target as it starts (three's precompilation state), synchronously.
+      const previous = draw.renderer.getRenderTarget();
+      draw.renderer.setRenderTarget(draw.target);
+      const compiled = draw.renderer.compileAsync(proxy, draw.camera, draw.scene);
+      draw.renderer.setRenderTarget(previous);
+      await compiled;
+      // A stand-in overtaken by a later change goes with its program; the last one stays until the material draws its program.
+      if (f.ahead.again) standIn.dispose();
+    } while (f.ahead.again);
+  } finally {
+    m.needsUpdate = true;
+  }
 }
 
 /**
