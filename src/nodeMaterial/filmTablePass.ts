@@ -19,6 +19,7 @@ import { Fn, floor, int, positionGeometry, uv, vec4 } from 'three/tsl';
 import { NodeMaterial, type Renderer } from 'three/webgpu';
 import { type OffFrameBuild, type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
 import { KeptPrograms } from './keptPrograms.ts';
+import { nextTask } from './nextTask.ts';
 
 /** The quad: three's QuadMesh's triangle over clip space and its uv (v = 0 at the top), and the camera it is drawn with (the vertex node ignores it). */
 const quadGeometry = new BufferGeometry()
@@ -57,7 +58,10 @@ export class TablePass implements TableFill {
       this.passes.build(
         program,
         () => this.quad(xyz),
-        (quad) => this.onTarget(renderer, () => renderer.compileAsync(quad, quadCamera)),
+        async (quad) => {
+          await nextTask();
+          return this.onTarget(renderer, () => renderer.compileAsync(quad, quadCamera));
+        },
       ),
     isBuilt: (program) => this.passes.isBuilt(program),
   };
