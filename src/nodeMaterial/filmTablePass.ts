@@ -19,7 +19,6 @@ import { Fn, floor, int, positionGeometry, uv, vec4 } from 'three/tsl';
 import { NodeMaterial, type Renderer } from 'three/webgpu';
 import { type OffFrameBuild, type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
 import { KeptPrograms } from './keptPrograms.ts';
-import { nextTask } from './nextTask.ts';
 
 /** The quad: three's QuadMesh's triangle over clip space and its uv (v = 0 at the top), and the camera it is drawn with (the vertex node ignores it). */
 const quadGeometry = new BufferGeometry()
@@ -59,7 +58,9 @@ export class TablePass implements TableFill {
         program,
         () => this.quad(xyz),
         async (quad) => {
-          await nextTask();
+          // In a task of its own, not inside the render that found the fill missing: compileAsync
+          // runs its first stage at once, which would make that render's task as long as both.
+          await new Promise((resolve) => setTimeout(resolve, 0));
           return this.onTarget(renderer, () => renderer.compileAsync(quad, quadCamera));
         },
       ),

@@ -203,7 +203,8 @@ export function setupLightingModel(this: MeshPhysicalNodeMaterial, builder: Node
     if (isStandIn(frame.material)) return;
     noteDraw(f, frame);
     retireFor(f, token);
-    if (nodeProgramKey(physical(m), f.film.options) === builtKey) drawn = f.film.options;
+    // The key is computed only for options not drawn yet, not every frame.
+    if (f.film.options !== drawn && nodeProgramKey(physical(m), f.film.options) === builtKey) drawn = f.film.options;
     updateNodeFilm(f, m, frame.renderer, drawn);
   };
   const film = (thicknessNm: FloatNode, cosIncidence: FloatNode): FilmColor => {
