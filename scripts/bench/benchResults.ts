@@ -46,7 +46,7 @@ export interface BenchResults {
 }
 
 /** The fields that may be null (not measured, or not applicable), or hold entries that may be. */
-const NULLABLE = new Set(['tableBuildMs', 'errors', 'elementGzipBytes', 'frames', 'changeToFrameMs', 'gridN']);
+const NULLABLE = new Set(['tableBuildMs', 'errors', 'elementGzipBytes', 'frames', 'changeToFrameMs', 'gridN', 'turns']);
 
 /**
  * Every number under `value` that is not finite, every undefined, and every null but in NULLABLE,
@@ -67,7 +67,7 @@ function nonFinite(value: unknown, path: string, key: string, parentKey: string)
  */
 export function resultProblems(
   r: BenchResults,
-  rowOf: (rowName: string) => Pick<BenchRow, 'kind' | 'measuresError' | 'timesChanges'>,
+  rowOf: (rowName: string) => Pick<BenchRow, 'kind' | 'measuresError' | 'timesChanges' | 'takesTurnsWith'>,
   expect: { readonly materials: boolean; readonly node: boolean; readonly flowSpeed: boolean },
 ): string[] {
   const problems = r.failures.map((f) => `${f.stage} threw: ${f.message}`);
@@ -101,8 +101,10 @@ export function resultProblems(
       if (r.plan.flowSpeed.grids.some((n) => !grids.includes(n))) problems.push(`no ${name} figures at every grid of the plan`);
     }
   for (const row of r.rows) {
-    const { kind, measuresError, timesChanges } = rowOf(row.name);
+    const { kind, measuresError, timesChanges, takesTurnsWith } = rowOf(row.name);
     if (row.frames[0] == null) problems.push(`${row.name}: no frame time at the first size`);
+    if (takesTurnsWith !== undefined && row.turns?.frames[0] == null)
+      problems.push(`${row.name}: no frame time of the view taking turns with it (${takesTurnsWith}) at the first size`);
     if (measuresError && row.errors === null) problems.push(`${row.name}: no error columns, though the row measures error`);
     if (!measuresError && row.errors !== null) problems.push(`${row.name}: error columns, though the row measures no error`);
     if (row.errors !== null && row.errors.length !== 2) problems.push(`${row.name}: ${row.errors.length} error grids, not 2`);

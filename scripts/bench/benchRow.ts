@@ -2,12 +2,32 @@ import type { FilmQuality } from '../../src/settings/filmQuality.ts';
 import type { FilmSettings } from '../../src/settings/filmSettings.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 
+export type EarlierModel = 'whiteWalls' | 'rgbProduct';
+
+/** What each earlier model draws, as the tables name it. */
+export const EARLIER_MODELS: Record<EarlierModel, string> = {
+  whiteWalls: "the walls reflecting the light's white",
+  rgbProduct:
+    "the sky reflected and let through as an RGB product: the film's XYZ times the sky's colour (one table plane, one lookup a wall)",
+};
+
 /** One row of the benchmark as the page runs it (scripts/bench/page/benchPage.ts). */
 export interface BenchRowSpec {
   /** `bubble`: the demo's view with these settings; `textured`: the same scene with a plain textured sphere instead */
   readonly kind: 'bubble' | 'textured';
-  /** false: the walls reflect the light's white whatever the environment (the model before environment reflections), to time what they add */
-  readonly reflections: boolean;
+  /**
+   * An earlier model of the bubble's light, to time what the present one adds: `whiteWalls`, the walls
+   * reflect the light's white whatever the environment (before environment reflections); `rgbProduct`,
+   * the walls reflect and let through the sky as the film's XYZ times its RGB (one table plane, before
+   * the film's environment matrix); null: today's
+   */
+  readonly earlierModel: EarlierModel | null;
+  /**
+   * An earlier model whose view of the same settings (a second view on the same renderer) draws a
+   * frame before each of this row's, timed apart: frames taking turns, so that a busy machine's
+   * noise hits both alike and their ratio holds (BenchRowResult.turns); null: none
+   */
+  readonly takesTurnsWith: EarlierModel | null;
   /** whether the changes are timed */
   readonly timesChanges: boolean;
   readonly settings: FilmSettings;
@@ -46,6 +66,8 @@ export interface BenchRowResult {
    * outlasts the budget)
    */
   readonly changeToFrameMs: readonly (number | null)[];
+  /** the earlier model's view, where the row takes turns with one: its frame per size (as `frames`) */
+  readonly turns: { readonly model: EarlierModel; readonly frames: readonly (FrameTime | null)[] } | null;
   /** per grid of the spec, per case: XYZ */
   readonly xyz: readonly number[][][];
 }

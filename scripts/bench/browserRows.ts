@@ -39,7 +39,8 @@ export class RowLane {
     try {
       const result = await page.evaluate((spec) => window.benchRow!(spec), {
         kind: row.kind,
-        reflections: row.reflections ?? true,
+        earlierModel: row.earlierModel ?? null,
+        takesTurnsWith: row.takesTurnsWith ?? null,
         timesChanges: row.timesChanges ?? true,
         settings: row.settings,
         quality: this.plan.smoke ? smokeQuality(row.quality) : row.quality,

@@ -13,12 +13,15 @@ import { cubeSphereGrid } from '../../src/physics/filmDynamics/cubeSphereGrid.ts
 import { flowNumbers } from '../../src/physics/filmDynamics/flowNumbers.ts';
 import { validateFlowParameters } from '../../src/physics/filmDynamics/flowParameters.ts';
 import { timeStep } from '../../src/physics/filmDynamics/timeStep.ts';
+import type { EarlierModel } from './benchRow.ts';
 
 export interface BenchRow {
   readonly name: string;
   readonly kind: 'bubble' | 'textured';
-  /** false: the walls reflect the light's white (BenchRowSpec) */
-  readonly reflections?: false;
+  /** an earlier model of the bubble's light (BenchRowSpec) */
+  readonly earlierModel?: EarlierModel;
+  /** an earlier model whose frames take turns with the row's (BenchRowSpec) */
+  readonly takesTurnsWith?: EarlierModel;
   /** false: its changes are not timed (a row that changes only the scene around the default table, whose changes that row times) */
   readonly timesChanges?: false;
   readonly settings: FilmSettings;
@@ -163,10 +166,15 @@ export const ROWS: readonly BenchRow[] = [
   // film's environment matrix.
   {
     ...sceneStep("default table, walls reflecting the light's white, sky behind (before: no environment reflections)", {}),
-    reflections: false,
+    earlierModel: 'whiteWalls',
+  },
+  // The film's environment matrix against the film's XYZ times the sky's RGB (one table plane, one lookup a wall), frames taking turns.
+  {
+    ...sceneStep("default table, the sky through the film's environment matrix (three table planes, three lookups a wall)", {}),
+    takesTurnsWith: 'rgbProduct',
   },
   sceneStep('default table, env=none (no environment to reflect or show)', { env: 'none' }),
-  // The environment matrix's own cost: the walls show the same colours as env=none's, through M (three table planes, three lookups a wall), and a background.
+  // A uniform white room: the walls show env=none's film colours, through M (three table planes, three lookups a wall), and a background.
   sceneStep('default table, env=color:1,1,1 (a white room: the film as env=none, through its environment matrix)', {
     env: { color: [1, 1, 1] },
   }),

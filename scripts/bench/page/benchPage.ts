@@ -8,7 +8,6 @@
  * the renderer as the first found it.
  */
 import { WebGLRenderer } from 'three';
-import type { BubbleView } from '../../../src/view/bubbleView.ts';
 import { createBubbleRenderer } from '../../../src/view/bubbleRenderer.ts';
 import { FilmXyzProbe } from '../../harness/filmXyzProbe.ts';
 import { loadEnvironmentPixels } from '../../../src/bubbleMaterials/environmentMaps.ts';
@@ -25,7 +24,8 @@ import {
 } from '../benchRow.ts';
 import type { FlowSpeedPlan } from '../flowSpeed.ts';
 import { gpuFlowSpeed } from './gpuFlowSpeed.ts';
-import { rowScene, showFilm } from './rowScene.ts';
+import { type RowScene, rowScene } from './rowScene.ts';
+import { RowViews, drawAndWait } from './rowViews.ts';
 import { TableWatch } from './tableWatch.ts';
 import { median } from '../median.ts';
 import { methodReads } from '../../../src/methods/methods.ts';
@@ -63,32 +63,19 @@ function leftOnRenderer(): string | null {
   return left.programs > 0 || left.geometries > 0 || left.textures > sharedTextures ? JSON.stringify(left) : null;
 }
 
-/** The pixel each frame reads back. */
-const readBack = new Uint8Array(4);
-
-/** Draws the view's frame and waits for the GPU to finish it: one pixel read back. */
-function drawAndWait(view: BubbleView): void {
-  const gl = view.renderer.getContext();
-  view.render();
-  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, readBack);
-}
-
-/** Draws the view's next frame and returns its time (ms). */
+/** Draws the views' next frame and returns the row's time (ms). */
 type TimedFrame = () => number;
 
-/** The row's film as last shown (showFilm): the frames move its time on, the changes change it. */
+/** The row's film as last shown: the frames move its time on, the changes change it. */
 interface ShownFilm {
   film: FilmSettings;
 }
 
-/** The view's frames from the film's time on, the animated field moving 1/60 s a frame as in the demo's loop. */
-function animatedFrames(view: BubbleView, shown: ShownFilm): TimedFrame {
+/** The views' frames from the film's time on, the animated field moving 1/60 s a frame as in the demo's loop. */
+function animatedFrames(views: RowViews, shown: ShownFilm): TimedFrame {
   return () => {
-    const started = performance.now();
     shown.film = { ...shown.film, timeSeconds: shown.film.timeSeconds + 1 / 60 };
-    showFilm(view, shown.film);
-    drawAndWait(view);
-    return performance.now() - started;
+    return views.frame(shown.film);
   };
 }
 
@@ -100,16 +87,16 @@ const pixels = ([w, h]: readonly [number, number]) => w * h;
  * fitted from that frame and one at a quarter of the pixels (fittedFrameMs): a slow row's full frame
  * (tens of seconds of per-fragment bins on a CPU rasteriser) is not drawn.
  */
-function fittedFrame(view: BubbleView, spec: BenchRowSpec, size: readonly [number, number], frame: TimedFrame): FrameTime | null {
+function fittedFrame(views: RowViews, spec: BenchRowSpec, size: readonly [number, number], frame: TimedFrame): FrameTime | null {
   const [small, larger] = fitSizes(size);
-  view.resize(...small);
+  views.resize(small);
   // Over the threshold, a second frame confirms it (the faster of the two): on a busy machine one
   // frame of a fast row can come late.
   const overThreshold = (ms: number) => (ms * pixels(size)) / pixels(small) > FIT_OVER_BUDGET * spec.frameBudgetMs;
   let smallMs = frame();
   if (overThreshold(smallMs)) smallMs = Math.min(smallMs, frame());
   if (!overThreshold(smallMs)) return null;
-  view.resize(...larger);
+  views.resize(larger);
   const largerMs = frame();
   const fittedMs = fittedFrameMs(
     [
@@ -126,7 +113,7 @@ function fittedFrame(view: BubbleView, spec: BenchRowSpec, size: readonly [numbe
 }
 
 /** After a first frame at the size within the budget (`firstMs`): up to 3 warm-up frames, then up to `frames` timed ones within the budget. */
-function drawnFrame(spec: BenchRowSpec, firstMs: number, frame: TimedFrame): FrameTime {
+function drawnFrame(spec: BenchRowSpec, firstMs: number, frame: TimedFrame): { medianMs: number; count: number } {
   const warm = [firstMs];
   while (warm.length < Math.min(3, spec.frames)) warm.push(frame());
   const count = Math.max(Math.min(3, spec.frames), Math.min(spec.frames, Math.floor(spec.frameBudgetMs / Math.min(...warm))));
@@ -134,31 +121,36 @@ function drawnFrame(spec: BenchRowSpec, firstMs: number, frame: TimedFrame): Fra
   return { medianMs: median(times), count };
 }
 
+/** Per size, the row's frame time and the turns' (null without turns, or where the row's is not drawn in full). */
+interface FrameTimes {
+  readonly frames: (FrameTime | null)[];
+  readonly turns: (FrameTime | null)[];
+}
+
 /**
  * The frame time per size, fitted (fittedFrame) or drawn (drawnFrame). A frame over the budget,
  * timed or fitted, is its own measurement, and the larger sizes are not timed (null): each would
  * cost more than it.
  */
-function frameTimes(view: BubbleView, spec: BenchRowSpec, frame: TimedFrame): (FrameTime | null)[] {
-  const frames: (FrameTime | null)[] = [];
+function frameTimes(views: RowViews, spec: BenchRowSpec, frame: TimedFrame): FrameTimes {
+  const out: FrameTimes = { frames: [], turns: [] };
   let slow = false;
   for (const size of spec.sizes) {
-    if (slow) {
-      frames.push(null);
-      continue;
-    }
-    const fitted = fittedFrame(view, spec, size, frame);
-    if (fitted) {
+    const fitted = slow ? null : fittedFrame(views, spec, size, frame);
+    if (slow || fitted) {
       slow = true;
-      frames.push(fitted);
+      out.frames.push(fitted);
+      out.turns.push(null);
       continue;
     }
-    view.resize(...size);
+    views.resize(size);
     const firstMs = frame();
     slow = firstMs > spec.frameBudgetMs;
-    frames.push(slow ? { medianMs: firstMs, count: 1 } : drawnFrame(spec, firstMs, frame));
+    const drawn = slow ? { medianMs: firstMs, count: 1 } : drawnFrame(spec, firstMs, frame);
+    out.frames.push(drawn);
+    out.turns.push(slow ? null : views.turnFrame(drawn.count));
   }
-  return frames;
+  return out;
 }
 
 /**
@@ -168,8 +160,8 @@ function frameTimes(view: BubbleView, spec: BenchRowSpec, frame: TimedFrame): (F
  * (the median). None (null) for the textured sphere, which shows no film, for a row that does not
  * time them, and for a row whose frame alone outlasts the budget.
  */
-function changeTimes(view: BubbleView, spec: BenchRowSpec, firstSizeMs: number, shown: ShownFilm): (number | null)[] {
-  view.resize(...spec.sizes[0]!);
+function changeTimes(scene: RowScene, spec: BenchRowSpec, firstSizeMs: number, shown: ShownFilm): (number | null)[] {
+  scene.view.resize(...spec.sizes[0]!);
   const changesTimed = spec.kind === 'bubble' && spec.timesChanges && firstSizeMs <= spec.frameBudgetMs;
   return CHANGES.map(({ values }) => {
     if (!changesTimed) return null;
@@ -179,9 +171,9 @@ function changeTimes(view: BubbleView, spec: BenchRowSpec, firstSizeMs: number, 
       for (const [i, v] of values(spec.settings).entries()) {
         const started = performance.now();
         shown.film = { ...shown.film, ...v };
-        showFilm(view, shown.film);
+        scene.show(shown.film);
         if (i > 0 && !(spec.changesBack && spentMs < spec.frameBudgetMs)) continue; // drawn with the next change
-        drawAndWait(view);
+        drawAndWait(scene);
         times.push(performance.now() - started);
         spentMs += times.at(-1)!;
       }
@@ -193,21 +185,30 @@ function changeTimes(view: BubbleView, spec: BenchRowSpec, firstSizeMs: number, 
  * The row's figures but its error grids: the first frame (from `originMs`), the frames per size,
  * the changes.
  */
-function timeView(view: BubbleView, spec: BenchRowSpec, originMs: number): Omit<BenchRowResult, 'xyz'> {
+function timeView(views: RowViews, spec: BenchRowSpec, originMs: number): Omit<BenchRowResult, 'xyz'> {
   // The first frame, small: the program's compile and the table's build, without a slow row's
   // full-size fragment cost, which the timed frames then measure once each.
-  view.resize(...FIRST_FRAME_SIZE);
-  const table = new TableWatch(view.table);
-  drawAndWait(view);
+  views.resize(FIRST_FRAME_SIZE);
+  const table = new TableWatch(views.own.view.table);
+  drawAndWait(views.own);
   const firstFrameMs = performance.now() - originMs;
   const tableBuildMs = methodReads(spec.settings.mode, 'table') && spec.kind === 'bubble' ? table.firstBuildMs : null;
+  // The view taking turns: its compile and build, untimed (the second in the page, it would share the first's).
+  if (views.turns) drawAndWait(views.turns);
   const buildsBefore = table.builds;
   const shown: ShownFilm = { film: spec.settings };
-  const frames = frameTimes(view, spec, animatedFrames(view, shown));
+  const { frames, turns } = frameTimes(views, spec, animatedFrames(views, shown));
   const rebuildsWhileAnimating = table.builds - buildsBefore;
   table.stop();
-  const changeToFrameMs = changeTimes(view, spec, frames[0]!.medianMs, shown);
-  return { firstFrameMs, tableBuildMs, rebuildsWhileAnimating, frames, changeToFrameMs };
+  const changeToFrameMs = changeTimes(views.own, spec, frames[0]!.medianMs, shown);
+  return {
+    firstFrameMs,
+    tableBuildMs,
+    rebuildsWhileAnimating,
+    frames,
+    changeToFrameMs,
+    turns: spec.takesTurnsWith === null ? null : { model: spec.takesTurnsWith, frames: turns },
+  };
 }
 
 window.benchRow = async (spec: BenchRowSpec) => {
@@ -217,12 +218,15 @@ window.benchRow = async (spec: BenchRowSpec) => {
   const originMs = rowsRun++ === 0 ? 0 : performance.now();
   // An HDR environment is fetched first, so the view shows it from its first frame.
   if (isHdrEnvironment(spec.settings.env)) await loadEnvironmentPixels(spec.settings.env);
-  const scene = rowScene(renderer, spec);
+  const views = new RowViews(
+    rowScene(renderer, spec),
+    spec.takesTurnsWith === null ? null : rowScene(renderer, { ...spec, earlierModel: spec.takesTurnsWith }),
+  );
   let timed: Omit<BenchRowResult, 'xyz'>;
   try {
-    timed = timeView(scene.view, spec, originMs);
+    timed = timeView(views, spec, originMs);
   } finally {
-    scene.dispose();
+    views.dispose();
   }
   const left = leftOnRenderer();
   if (left) throw new Error(`the row left ${left} on the page's renderer`);

@@ -1,10 +1,25 @@
 /** A benchmark row's scene: the demo's BubbleView with the row's settings and quality, and the plain textured sphere in the bubble's place for the floor rows. */
-import { DataTexture, Mesh, MeshBasicMaterial, RGBAFormat, SRGBColorSpace, type WebGLRenderer } from 'three';
+import {
+  DataTexture,
+  Mesh,
+  MeshBasicMaterial,
+  RGBAFormat,
+  SRGBColorSpace,
+  type ShaderMaterial,
+  SphereGeometry,
+  type WebGLRenderer,
+} from 'three';
+import {
+  createBackgroundMaterial,
+  environmentDefines,
+  updateBackgroundMaterial,
+} from '../../../src/bubbleMaterials/environmentMaterial.ts';
+import { environmentKind } from '../../../src/environments/environments.ts';
 import { BubbleView } from '../../../src/view/bubbleView.ts';
 import { resolveFrame } from '../../../src/view/drawnFrame.ts';
 import type { FilmSettings } from '../../../src/settings/filmSettings.ts';
 import { AUTO } from '../../../src/settings/parameterRow.ts';
-import type { BenchRowSpec } from '../benchRow.ts';
+import type { BenchRowSpec, EarlierModel } from '../benchRow.ts';
 
 /** A 256² sRGB texture for the floor row: the sphere then costs one texture fetch per pixel. */
 function checkerTexture(): DataTexture {
@@ -32,20 +47,54 @@ export function showFilm(view: BubbleView, film: FilmSettings): void {
   view.show({ ...frame, film: { ...frame.film, mode: film.mode } });
 }
 
-/** The row's view on `renderer`, and the textured sphere standing in for the bubble (the floor rows); `dispose` frees all of it. */
-export function rowScene(renderer: WebGLRenderer, spec: BenchRowSpec): { view: BubbleView; dispose: () => void } {
-  const view = new BubbleView(renderer, spec.quality);
-  showFilm(view, spec.settings);
-  if (!spec.reflections) {
-    // The model before environment reflections: tfcReflectedRadiance (shaders/bubbleMaterials/environment.glsl) returns the light's white.
-    const m = view.bubble.material;
+/**
+ * Draws the bubble by an earlier model of its light (BenchRowSpec.earlierModel), patched into its
+ * program: `whiteWalls`, tfcReflectedRadiance (shaders/bubbleMaterials/environment.glsl) returns the
+ * light's white; `rgbProduct`, in the sky, the film is shown as without an environment (one table
+ * plane, its XYZ: the walls' RGB product) and its program gets the sky's TFC_ENVIRONMENT, with a sky
+ * behind it as the view draws one. Returns the film the view is shown and what the model added to the scene.
+ */
+function earlierModel(
+  view: BubbleView,
+  model: EarlierModel,
+  film: FilmSettings,
+): { shown: (film: FilmSettings) => FilmSettings; added: Mesh<SphereGeometry, ShaderMaterial> | null } {
+  const m = view.bubble.material;
+  m.customProgramCacheKey = () => model;
+  if (model === 'whiteWalls') {
     m.onBeforeCompile = (shader) => {
       const walls = /vec3 tfcReflectedRadiance\(vec3 direction\) \{/;
       if (!walls.test(shader.fragmentShader)) throw new Error('rowScene: the bubble shader has no tfcReflectedRadiance to make white');
       shader.fragmentShader = shader.fragmentShader.replace(walls, '$&\n  return vec3(1.0);');
     };
-    m.customProgramCacheKey = () => 'walls reflect white';
+    return { shown: (f) => f, added: null };
   }
+  if (environmentKind(film.env) !== 'sky') throw new Error('rowScene: the RGB product is drawn in the sky');
+  const sky = { env: 'sky', envRotationDeg: 0, exposure: film.exposure } as const;
+  m.onBeforeCompile = (shader) => {
+    shader.defines = { ...shader.defines, ...environmentDefines(sky) };
+  };
+  const background = new Mesh(new SphereGeometry(50, 64, 32), createBackgroundMaterial());
+  updateBackgroundMaterial(background.material, sky, null);
+  view.scene.add(background);
+  return { shown: (f) => ({ ...f, env: 'none' }), added: background };
+}
+
+/** A row's view, how a film is shown in it (showFilm, through the row's earlier model), and what frees all of it. */
+export interface RowScene {
+  readonly view: BubbleView;
+  show(film: FilmSettings): void;
+  dispose(): void;
+}
+
+/** The row's view on `renderer`, and the textured sphere standing in for the bubble (the floor rows). */
+export function rowScene(renderer: WebGLRenderer, spec: Pick<BenchRowSpec, 'kind' | 'earlierModel' | 'settings' | 'quality'>): RowScene {
+  const view = new BubbleView(renderer, spec.quality);
+  const earlier = spec.earlierModel === null ? null : earlierModel(view, spec.earlierModel, spec.settings);
+  const show = (film: FilmSettings) => showFilm(view, earlier ? earlier.shown(film) : film);
+  show(spec.settings);
+  if (spec.earlierModel === 'rgbProduct' && view.bubble.material.defines.TFC_ENVIRONMENT_MATRIX !== undefined)
+    throw new Error('rowScene: the RGB product is drawn from one table plane');
   const sphere = spec.kind === 'textured' ? new MeshBasicMaterial({ map: checkerTexture() }) : null;
   if (sphere) {
     view.bubble.visible = false;
@@ -53,11 +102,14 @@ export function rowScene(renderer: WebGLRenderer, spec: BenchRowSpec): { view: B
   }
   return {
     view,
+    show,
     // The bubble's material goes with the view, and its onBeforeCompile with it.
     dispose: () => {
       view.dispose();
       sphere?.map?.dispose();
       sphere?.dispose();
+      earlier?.added?.geometry.dispose();
+      earlier?.added?.material.dispose();
     },
   };
 }

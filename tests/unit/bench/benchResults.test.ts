@@ -20,6 +20,7 @@ const row = (name: string, more: Partial<MeasuredRow> = {}): MeasuredRow => ({
   rebuildsWhileAnimating: 0,
   frames: [{ medianMs: 60, count: 30 }],
   changeToFrameMs: name === 'floor' ? [null, null, null, null] : [300, 310, 320, 330],
+  turns: null,
   errors: null,
   seconds: 12,
   ...more,
@@ -80,6 +81,25 @@ describe('bench results check', () => {
       'no demo figures',
       'no defaultView figures',
     ]);
+  });
+
+  it("a row taking turns with an earlier model has that view's frame time at the first size, finite", () => {
+    const turnsOf = (name: string) => ({
+      ...measures(name),
+      ...(name === 'matrix' && { measuresError: false, takesTurnsWith: 'rgbProduct' as const }),
+    });
+    const turns = { model: 'rgbProduct' as const, frames: [{ medianMs: 50, count: 20 }] };
+    expect(resultProblems(results([...good, row('matrix', { turns })]), turnsOf, NONE)).toEqual([
+      'no demo figures',
+      'no defaultView figures',
+    ]);
+    expect(resultProblems(results([...good, row('matrix')]), turnsOf, NONE)).toContain(
+      'matrix: no frame time of the view taking turns with it (rgbProduct) at the first size',
+    );
+    const nan = { ...turns, frames: [{ medianMs: NaN, count: 20 }] };
+    expect(resultProblems(results([...good, row('matrix', { turns: nan })]), turnsOf, NONE)).toContain(
+      'results.rows.2.turns.frames.0.medianMs is NaN',
+    );
   });
 
   it('error columns exist exactly where a row measures error', () => {

@@ -5,7 +5,15 @@ import { RowLane } from '../../../scripts/bench/browserRows.ts';
 import type { BenchRowResult } from '../../../scripts/bench/benchRow.ts';
 import { ROWS } from '../../../scripts/bench/rows.ts';
 
-const RESULT: BenchRowResult = { firstFrameMs: 1, tableBuildMs: null, rebuildsWhileAnimating: 0, frames: [], changeToFrameMs: [], xyz: [] };
+const RESULT: BenchRowResult = {
+  firstFrameMs: 1,
+  tableBuildMs: null,
+  rebuildsWhileAnimating: 0,
+  frames: [],
+  changeToFrameMs: [],
+  turns: null,
+  xyz: [],
+};
 
 /** A browser whose pages run rows without drawing: each page's rows in order, `failing` rows throwing. */
 function fakeBrowser(failing: ReadonlySet<number> = new Set()) {
