@@ -99,13 +99,17 @@ export function copySpectralFilm(target: MeshPhysicalMaterial, source: Material)
 
 /**
  * The options as properties (SpectralIridescenceProperties), one accessor pair per name of
- * OPTION_NAMES, on `target`: ThinFilmMaterial's prototype, or an upgraded material itself.
+ * OPTION_NAMES, on `target`: ThinFilmMaterial's prototype, or an upgraded material itself. Not
+ * enumerable: WebGPURenderer keys a node material's programs by its enumerable properties' values
+ * too, where the film's program key (customProgramCacheKey) already names what the program holds;
+ * a light changed in `table` would otherwise give the same program a new key, built again in one
+ * piece for the next object that draws the material.
  */
 export function defineOptionProperties(target: object): void {
   for (const name of OPTION_NAMES)
     Object.defineProperty(target, name, {
       configurable: true,
-      enumerable: true,
+      enumerable: false,
       get(this: MeshPhysicalMaterial) {
         return spectralOption(this, name);
       },

@@ -110,8 +110,8 @@ async function buildUntilCurrent(f: NodeFilm, m: PhysicalMaterial, draw: LastDra
 
 /**
  * A material that three keys, builds and lights as `m` with its present options: of `m`'s class,
- * holding `m`'s own properties (three's key lists them in their order; the film's hooks and option
- * properties among them, as values) and `m`'s program key. Not a clone: three's copy of a physical
+ * holding `m`'s own properties (three's key lists them in their order; the film's hooks among them,
+ * as values) and `m`'s program key. Not a clone: three's copy of a physical
  * node material reads its deprecated iridescenceThicknessRange, which warns.
  */
 function standInFor(m: PhysicalMaterial): PhysicalMaterial {

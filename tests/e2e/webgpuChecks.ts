@@ -141,7 +141,8 @@ export async function roomPixels(page: Page): Promise<void> {
 /**
  * One material's options changed between frames (a light, a method, a polarisation): each frame
  * draws what a material made with those options draws, and no change builds a program in one piece
- * inside a render (a new program is built ahead, stage by stage, by three's compileAsync).
+ * inside a render (a new program is built ahead, stage by stage, by three's compileAsync), not
+ * even where a second object draws the material for the first time meanwhile.
  */
 export async function optionChanges(page: Page): Promise<void> {
   const [c] = PIXEL_CASES[1]!;

@@ -110,19 +110,28 @@ builder.build = function (this: unknown) {
 };
 
 /**
- * The centre pixels of one node material of film case `c`, drawn as made and after each change of
- * its options in turn (8-bit codes), and the programs built in one piece after its first frame.
+ * The centre pixels of one node material of film case `c`, drawn once its film is ready and after
+ * each change of its options in turn (8-bit codes), and the programs built in one piece after that.
+ * While a change's program may be built ahead, a second object with the material is drawn too (its
+ * first draw: a render object three makes then, which takes the material's program key then), and
+ * taken away again.
  */
 async function changedPixels(
   c: FilmCase,
   changes: readonly SpectralIridescenceOptions[],
 ): Promise<{ codes: number[][]; builtInPlace: number }> {
   const material = materialOf(c, 'node', {});
-  const { scene, camera } = filmScene(c, material);
+  const { scene, camera, box } = filmScene(c, material);
+  await drawCentre(scene, camera);
+  await whenSpectralReady(material);
   const codes = [(await drawCentre(scene, camera)).codes];
   const before = builtInPlace;
   for (const change of changes) {
     Object.assign(material, change);
+    const second = box.clone();
+    scene.add(second);
+    await drawCentre(scene, camera);
+    scene.remove(second);
     // as a user is told to: a change may need a program built off the frame first
     await whenSpectralReady(material);
     codes.push((await drawCentre(scene, camera)).codes);
