@@ -24,7 +24,7 @@ export interface BenchRowSpec {
   readonly earlierModel: EarlierModel | null;
   /**
    * An earlier model whose view of the same settings (a second view on the same renderer) draws a
-   * frame before each of this row's, timed apart: frames taking turns, so that a busy machine's
+   * frame with each of this row's (before and after it in turn), timed apart: frames taking turns, so that a busy machine's
    * noise hits both alike and their ratio holds (BenchRowResult.turns); null: none
    */
   readonly takesTurnsWith: EarlierModel | null;

@@ -71,7 +71,7 @@ const turnsNotes = (rows: readonly MeasuredRow[], plan: BenchPlan): string[] =>
   rows.flatMap((r) =>
     r.turns
       ? [
-          `${r.name}, against ${EARLIER_MODELS[r.turns.model]}, frames taking turns: ${plan.sizes.map(([w, h], i) => `${ratio(r.frames[i]?.medianMs, r.turns!.frames[i]?.medianMs)} at ${w}×${h}`).join(', ')} (the earlier model's view drawn before each of the row's frames, in the same page, each timed apart).`,
+          `${r.name}, against ${EARLIER_MODELS[r.turns.model]}, frames taking turns: ${plan.sizes.map(([w, h], i) => `${ratio(r.frames[i]?.medianMs, r.turns!.frames[i]?.medianMs)} at ${w}×${h}`).join(', ')} (the earlier model's view drawn with each of the row's frames, before and after it in turn, in the same page, each timed apart).`,
         ]
       : [],
   );

@@ -1,7 +1,8 @@
 /**
  * A row's views as its frames draw them: the row's own, and where the row takes turns with an
- * earlier model (BenchRowSpec.takesTurnsWith) that model's view of the same film, drawn before each
- * of the row's frames and timed apart, so that a busy machine's noise hits both alike.
+ * earlier model (BenchRowSpec.takesTurnsWith) that model's view of the same film, drawn with each
+ * of the row's frames (before it and after it in turn) and timed apart, so that a busy machine's
+ * noise hits both alike.
  */
 import type { FilmSettings } from '../../../src/settings/filmSettings.ts';
 import type { FrameTime } from '../benchRow.ts';
@@ -29,6 +30,8 @@ function timedFrame(scene: RowScene, film: FilmSettings): number {
 export class RowViews {
   /** The turns' frame times since the last resize. */
   private turnTimes: number[] = [];
+  /** Whether the turns' view drew first in the last frame. */
+  private turnsFirst = false;
 
   constructor(
     readonly own: RowScene,
@@ -41,10 +44,15 @@ export class RowViews {
     this.turnTimes = [];
   }
 
-  /** Draws `film`: the turns' view first (its time kept), then the row's; the row's frame, ms. */
+  /** Draws `film` in both views (the turns' time kept), which goes first alternating from frame to frame; the row's frame, ms. */
   frame(film: FilmSettings): number {
-    if (this.turns) this.turnTimes.push(timedFrame(this.turns, film));
-    return timedFrame(this.own, film);
+    const turns = this.turns;
+    if (!turns) return timedFrame(this.own, film);
+    this.turnsFirst = !this.turnsFirst;
+    if (this.turnsFirst) this.turnTimes.push(timedFrame(turns, film));
+    const ownMs = timedFrame(this.own, film);
+    if (!this.turnsFirst) this.turnTimes.push(timedFrame(turns, film));
+    return ownMs;
   }
 
   /** The turns' frame at this size, as the row's is timed: the median of its last `count` frames; null without turns. */
