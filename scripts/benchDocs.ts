@@ -48,7 +48,7 @@ Frame times on a shared CPU are noisy even as ratios to the floor measured in th
 the rows whose name holds one of the texts (the floor always runs); a text that names no row, or an unknown flag, stops it
 with exit status 2 and the list of rows and flags. A row whose frame outlasts the frame budget is timed for one frame at
 the first size only, without its changes (a frame far over it is fitted from two smaller ones instead of drawn); stderr has a line per row with the time left. \`npm run bench:smoke\` (part
-of \`npm test\`) runs every figure and every kind of row once (not the costlier variants of a row), tiny, two at a time beside the builds and the demo page, and fails if one throws or is missing or not finite; its
+of \`npm test\`) runs every figure and every kind of row once (not the costlier variants of a row; each panel change there and back once), tiny, two at a time beside the builds and the demo page, and fails if one throws or is missing or not finite; its
 results go to \`.scratch/\`. The bench serves the pages itself: a Vite dev server on port ${FULL_PLAN.devPort} and a
 vite preview of the build on ${FULL_PLAN.previewPort} (the smoke ${SMOKE_PLAN.devPort} and ${SMOKE_PLAN.previewPort}; \`--port <port>\` moves
 them to that port and the next).

@@ -26,7 +26,8 @@ export interface BenchPlan {
   /** the sphere of the node figures on WebGPURenderer (nodeFigures.ts): its size, and the frames timed per material and backend */
   readonly node: NodeFiguresPlan;
   /** the built demo's viewport, and how long after a panel change's frame in full its tasks are still counted */
-  readonly demo: { readonly width: number; readonly height: number; readonly windowMs: number };
+  /** the built demo page: its size, how long each panel change's frame is watched after, and whether each change is made there and back twice (the second time's programs) or once */
+  readonly demo: { readonly width: number; readonly height: number; readonly windowMs: number; readonly panelTwice: boolean };
   /** the built demo's default view against the swirl: their size, how long each animates, and how long the governor's settling is left out of the frame interval */
   readonly defaultView: DefaultViewPlan;
   /** the flowing film's simulation speed, on the GPU and in the twin (flowSpeed.ts) */
@@ -71,7 +72,7 @@ export const FULL_PLAN: BenchPlan = {
   gridStride: 1,
   materials: { width: 1280, height: 720, frames: 10 },
   node: { width: 1280, height: 720, frames: 10, quality: DEFAULT_FILM_QUALITY },
-  demo: { width: 1280, height: 720, windowMs: 1000 },
+  demo: { width: 1280, height: 720, windowMs: 1000, panelTwice: true },
   defaultView: { width: 1280, height: 720, seconds: 30, settlingMs: 3000, firstFrameLoads: 5 },
   flowSpeed: { grids: [64, 128], warmUpSteps: 3, batchSteps: 4, batches: 5 },
   concurrency: 1,
@@ -92,7 +93,7 @@ export const SMOKE_PLAN: BenchPlan = {
   gridStride: 64,
   materials: { width: 160, height: 90, frames: 1 },
   node: { width: 160, height: 90, frames: 1, quality: smokeQuality(DEFAULT_FILM_QUALITY) },
-  demo: { width: 320, height: 180, windowMs: 100 },
+  demo: { width: 320, height: 180, windowMs: 100, panelTwice: false },
   defaultView: { width: 320, height: 180, seconds: 1, settlingMs: 500, firstFrameLoads: 1 },
   flowSpeed: { grids: [8, 16], warmUpSteps: 1, batchSteps: 1, batches: 1 },
   concurrency: 2,

@@ -46,7 +46,7 @@ export interface BenchResults {
 }
 
 /** The fields that may be null (not measured, or not applicable), or hold entries that may be. */
-const NULLABLE = new Set(['tableBuildMs', 'errors', 'elementGzipBytes', 'frames', 'changeToFrameMs', 'gridN', 'turns']);
+const NULLABLE = new Set(['tableBuildMs', 'errors', 'elementGzipBytes', 'frames', 'changeToFrameMs', 'gridN', 'turns', 'second']);
 
 /**
  * Every number under `value` that is not finite, every undefined, and every null but in NULLABLE,
@@ -95,6 +95,8 @@ export function resultProblems(
   if (expect.materials && r.materials === null) problems.push('no materials figures');
   if (expect.node && r.node === null) problems.push('no node figures (WebGPURenderer)');
   if (r.node) problems.push(...nodeProblems(r.node));
+  if (r.plan.demo.panelTwice && r.demo?.panel.some((c) => c.programs.second === null))
+    problems.push('a panel change not made a second time, though the plan makes each twice');
   if (expect.flowSpeed)
     for (const [name, speeds] of Object.entries({ 'flow GPU': r.flowGpu, 'flow twin': r.flowTwin })) {
       const grids = speeds?.map((s) => s.gridN) ?? [];

@@ -122,7 +122,7 @@ async function countOneSecond(page: Page): Promise<FrameCounts> {
 export async function openDemo(
   browser: Browser,
   url: string,
-  how: DemoPlan,
+  how: Pick<DemoPlan, 'width' | 'height'>,
   /** what each animation frame also runs, from the first (JavaScript source, a statement; `t` is the frame's time) */
   eachFrame = '',
   readBack = true,
@@ -155,7 +155,7 @@ export async function demoPageFigures(browser: Browser, baseUrl: string, how: De
     ),
   );
   await still.page.locator('.lil-gui.lil-root > .lil-title').click(); // the panel starts closed on a small view
-  const panel = await panelChanges(still.page, how.windowMs);
+  const panel = await panelChanges(still.page, how.windowMs, how.panelTwice);
   await still.page.close();
   const { page, firstFrameMs, firstCompleteFrameMs } = await openDemo(browser, `${baseUrl}/?${SWIRL_VIEW}`, how);
   const animating = await countOneSecond(page);

@@ -8,15 +8,15 @@ import { EN } from '../../src/i18n/en.ts';
 import { labelKey } from '../../src/settings/parameterRow.ts';
 import { median } from './median.ts';
 
-/** One panel change made there, back, there again and back again in a still page. */
+/** One panel change made there, back, there again and back again in a still page (the smoke: there and back). */
 export interface PanelChangeFigures {
-  /** programs linked by the first change there, by the first way back (to settings already shown), and by the second change there and back */
-  readonly programs: { readonly first: number; readonly back: number; readonly second: number };
-  /** the main thread's long tasks (over 50 ms) from the input to a frame after the first one in full, over all four: how many, and the longest (ms, 0 for none) */
+  /** programs linked by the first change there, by the first way back (to settings already shown), and by the second change there and back (null: made once) */
+  readonly programs: { readonly first: number; readonly back: number; readonly second: number | null };
+  /** the main thread's long tasks (over 50 ms) from the input to a frame after the first one in full, over all runs: how many, and the longest (ms, 0 for none) */
   readonly longTasks: { readonly count: number; readonly maxMs: number };
   /** the table's texels drawn by the first change there (coarse table and bands) */
   readonly texels: number;
-  /** input → the first frame shown in full, plots included, median of the four, ms */
+  /** input → the first frame shown in full, plots included, median of the runs, ms */
   readonly fullMs: number;
 }
 
@@ -107,24 +107,24 @@ async function measureChange(page: Page, name: string, value: string, windowMs: 
   );
 }
 
-/** A change's figures from its four runs: there, back, there again, back again. */
+/** A change's figures from its runs: there, back, and where made twice there again, back again. */
 function changeFigures(runs: readonly ChangeCost[]): PanelChangeFigures {
   const tasks = runs.flatMap((r) => r[1]);
   return {
-    programs: { first: runs[0]![0], back: runs[1]![0], second: runs[2]![0] + runs[3]![0] },
+    programs: { first: runs[0]![0], back: runs[1]![0], second: runs.length > 2 ? runs[2]![0] + runs[3]![0] : null },
     longTasks: { count: tasks.length, maxMs: Math.max(0, ...tasks) },
     texels: runs[0]![2],
     fullMs: median(runs.map((r) => r[3])),
   };
 }
 
-/** Each change of PANEL_CHANGES in a still page with its panel open, each run waited for as measureChange says. */
-export async function panelChanges(page: Page, windowMs: number): Promise<PanelChangeFigures[]> {
+/** Each change of PANEL_CHANGES in a still page with its panel open, there and back (`twice`: then again), each run waited for as measureChange says. */
+export async function panelChanges(page: Page, windowMs: number, twice: boolean): Promise<PanelChangeFigures[]> {
   await countTableTexels(page);
   const figures: PanelChangeFigures[] = [];
   for (const [, name, value, back] of PANEL_CHANGES) {
     const runs: ChangeCost[] = [];
-    for (const v of [value, back, value, back]) runs.push(await measureChange(page, name, v, windowMs));
+    for (const v of twice ? [value, back, value, back] : [value, back]) runs.push(await measureChange(page, name, v, windowMs));
     figures.push(changeFigures(runs));
   }
   await page.evaluate(() => Reflect.deleteProperty((window as unknown as PanelWindow).bubbleView.renderer, 'render'));

@@ -102,6 +102,30 @@ describe('bench results check', () => {
     );
   });
 
+  it('each panel change made a second time where the plan makes it twice (the full run), once in the smoke', () => {
+    const change = (second: number | null) => ({
+      programs: { first: 1, back: 0, second },
+      longTasks: { count: 0, maxMs: 0 },
+      texels: 100,
+      fullMs: 500,
+    });
+    const counts = { frames: 60, tableBuilds: 0 };
+    const demo = (second: number | null) => ({
+      firstFrameMs: 900,
+      firstCompleteFrameMs: 1000,
+      still: counts,
+      animating: counts,
+      canvasHidden: counts,
+      pageHidden: counts,
+      panel: [change(0), change(second)],
+      parallelCompile: true,
+    });
+    const twice = 'a panel change not made a second time, though the plan makes each twice';
+    expect(resultProblems(results(good, { demo: demo(null) }), measures, NONE)).toContain(twice);
+    expect(resultProblems(results(good, { demo: demo(0) }), measures, NONE)).not.toContain(twice);
+    expect(resultProblems(results(good, { plan: SMOKE_PLAN, demo: demo(null) }), measures, NONE)).toEqual(['no defaultView figures']);
+  });
+
   it('error columns exist exactly where a row measures error', () => {
     const problems = resultProblems(results([row('floor', { errors: [stats, stats] }), row('table')]), measures, NONE);
     expect(problems).toContain('floor: error columns, though the row measures no error');
