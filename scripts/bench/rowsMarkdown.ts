@@ -19,14 +19,17 @@ export interface MeasuredRow extends Omit<BenchRowResult, 'xyz'> {
 const ms = (v: number) => (v >= 100 ? v.toFixed(0) : v.toFixed(1));
 const stats = (s: DeltaStats | undefined) => (s ? `${s.max.toFixed(2)} / ${s.p99.toFixed(2)} / ${s.mean.toFixed(3)}` : '—');
 
+/** `a` as a multiple of `b`; — where either is missing. */
+const ratio = (a: number | null | undefined, b: number | null | undefined) => (a != null && b ? `${(a / b).toFixed(2)}×` : '—');
+
 /** A row's cells; `turn`: the line of the view taking turns with it, which has only frames. */
 function rowCells(r: MeasuredRow, floor: MeasuredRow, plan: BenchPlan, turn = false): string[] {
   const frames = r.frames.map((f, i) => {
     if (f === null) return 'not timed';
     const floorMs = floor.frames[i]?.medianMs;
-    const ratio = floorMs === undefined ? '' : ` (${(f.medianMs / floorMs).toFixed(2)}×)`;
-    if ('fittedFrom' in f) return `≈${ms(f.medianMs)}${ratio} [fitted]`;
-    return `${ms(f.medianMs)}${ratio}${f.count < plan.frames ? ` [${f.count}]` : ''}`;
+    const vsFloor = floorMs === undefined ? '' : ` (${ratio(f.medianMs, floorMs)})`;
+    if ('fittedFrom' in f) return `≈${ms(f.medianMs)}${vsFloor} [fitted]`;
+    return `${ms(f.medianMs)}${vsFloor}${f.count < plan.frames ? ` [${f.count}]` : ''}`;
   });
   const table = r.tableBuildMs === null ? '—' : ms(r.tableBuildMs);
   const timed = r.changeToFrameMs.filter((c): c is number => c !== null);
@@ -63,8 +66,6 @@ const turnCells = (r: MeasuredRow, t: NonNullable<MeasuredRow['turns']>, floor: 
     plan,
     true,
   );
-
-const ratio = (a: number | null | undefined, b: number | null | undefined) => (a && b ? `${(a / b).toFixed(2)}×` : '—');
 
 /** Per row taking turns: its frame against the earlier model's at each size. */
 const turnsNotes = (rows: readonly MeasuredRow[], plan: BenchPlan): string[] =>

@@ -42,10 +42,10 @@ export const materialBuilt = (m: Material): PhysicalMaterial => standIns.get(m) 
 /** Whether `m` is a stand-in (whose draws are builds ahead, not the material's). */
 export const isStandIn = (m: Material | null): boolean => m !== null && standIns.has(m);
 
-/** Notes where `m` was drawn, from a frame of its own draw (not of a stand-in's build). */
+/** Notes where the material was drawn, from a frame of its own draw (the caller leaves out a stand-in's builds). */
 export function noteDraw(f: NodeFilm, frame: NodeFrame): void {
   const { renderer, object, camera, scene } = frame;
-  if (!renderer || !object || !camera || !scene || isStandIn(frame.material)) return;
+  if (!renderer || !object || !camera || !scene) return;
   f.lastDraw = { renderer, object, camera, scene, target: renderer.getRenderTarget() };
 }
 
