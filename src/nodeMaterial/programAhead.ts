@@ -42,11 +42,23 @@ export const materialBuilt = (m: Material): PhysicalMaterial => standIns.get(m) 
 /** Whether `m` is a stand-in (whose draws are builds ahead, not the material's). */
 export const isStandIn = (m: Material | null): boolean => m !== null && standIns.has(m);
 
+/**
+ * Each render target a spectral material was drawn into, and whether it has been disposed since
+ * (a target drawn into again is live again): a build ahead into a disposed one would compile
+ * against attachments three has let go.
+ */
+const targetDisposed = new WeakMap<RenderTarget, boolean>();
+
 /** Notes where the material was drawn, from a frame of its own draw (the caller leaves out a stand-in's builds). */
 export function noteDraw(f: NodeFilm, frame: NodeFrame): void {
   const { renderer, object, camera, scene } = frame;
   if (!renderer || !object || !camera || !scene) return;
-  f.lastDraw = { renderer, object, camera, scene, target: renderer.getRenderTarget() };
+  const target = renderer.getRenderTarget();
+  if (target) {
+    if (!targetDisposed.has(target)) target.addEventListener('dispose', () => targetDisposed.set(target, true));
+    targetDisposed.set(target, false);
+  }
+  f.lastDraw = { renderer, object, camera, scene, target };
 }
 
 /** Releases, once, what waits for the program of `token` to draw the material. */
@@ -69,12 +81,13 @@ export function retireAt(f: NodeFilm, token: object, release: () => void): void 
 
 /**
  * Builds `m`'s program for its options now off the frame, where it has been drawn: true; false
- * where it has not (its first draw builds it, as any first draw does), so that the caller moves
- * the version at once.
+ * where it has not (its first draw builds it, as any first draw does), or where the target it was
+ * last drawn into has been disposed since (three keys a program by its target's kind, and the next
+ * draw, wherever it is, builds it), so that the caller moves the version at once.
  */
 export function buildAhead(f: NodeFilm, m: PhysicalMaterial): boolean {
   const draw = f.lastDraw;
-  if (!draw) return false;
+  if (!draw || (draw.target !== null && targetDisposed.get(draw.target) === true)) return false;
   if (f.ahead.building) {
     f.ahead.again = true;
     return true;

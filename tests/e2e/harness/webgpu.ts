@@ -58,15 +58,20 @@ function materialOf(c: FilmCase, kind: Kind, options: SpectralIridescenceOptions
   return spectralIridescence(m, options);
 }
 
-/** The centre pixel of `scene` drawn by WebGPURenderer into a float target: linear RGB, and as 8-bit sRGB. */
-async function drawCentre(scene: Scene, camera: Camera): Promise<{ linear: number[]; codes: number[] }> {
+const floatTarget = () => new RenderTarget(SIZE, SIZE, { type: FloatType });
+
+/**
+ * The centre pixel of `scene` drawn by WebGPURenderer into a float target: linear RGB, and as
+ * 8-bit sRGB. The target is `kept` (the caller's, drawn into again) or one made for this draw.
+ */
+async function drawCentre(scene: Scene, camera: Camera, kept: RenderTarget | null = null): Promise<{ linear: number[]; codes: number[] }> {
   const r = renderer!;
-  const target = new RenderTarget(SIZE, SIZE, { type: FloatType });
+  const target = kept ?? floatTarget();
   r.setRenderTarget(target);
   r.render(scene, camera);
   r.setRenderTarget(null);
   const texels = (await r.readRenderTargetPixelsAsync(target, SIZE / 2, SIZE / 2, 1, 1)) as Float32Array;
-  target.dispose();
+  if (!kept) target.dispose();
   return { linear: [...texels.slice(0, 3)], codes: codes(texels) };
 }
 
@@ -112,9 +117,10 @@ builder.build = function (this: unknown) {
 /**
  * The centre pixels of one node material of film case `c`, drawn once its film is ready and after
  * each change of its options in turn (8-bit codes), and the programs built in one piece after that.
- * While a change's program may be built ahead, a second object with the material is drawn too (its
- * first draw: a render object three makes then, which takes the material's program key then), and
- * taken away again.
+ * All into one target, as a render loop draws (a program is built ahead for the target the
+ * material was last drawn into, unless that has been disposed since). While a change's program may
+ * be built ahead, a second object with the material is drawn too (its first draw: a render object
+ * three makes then, which takes the material's program key then), and taken away again.
  */
 async function changedPixels(
   c: FilmCase,
@@ -122,20 +128,22 @@ async function changedPixels(
 ): Promise<{ codes: number[][]; builtInPlace: number }> {
   const material = materialOf(c, 'node', {});
   const { scene, camera, box } = filmScene(c, material);
-  await drawCentre(scene, camera);
+  const target = floatTarget();
+  await drawCentre(scene, camera, target);
   await whenSpectralReady(material);
-  const codes = [(await drawCentre(scene, camera)).codes];
+  const codes = [(await drawCentre(scene, camera, target)).codes];
   const before = builtInPlace;
   for (const change of changes) {
     Object.assign(material, change);
     const second = box.clone();
     scene.add(second);
-    await drawCentre(scene, camera);
+    await drawCentre(scene, camera, target);
     scene.remove(second);
     // as a user is told to: a change may need a program built off the frame first
     await whenSpectralReady(material);
-    codes.push((await drawCentre(scene, camera)).codes);
+    codes.push((await drawCentre(scene, camera, target)).codes);
   }
+  target.dispose();
   disposeAll(scene);
   return { codes, builtInPlace: builtInPlace - before };
 }
