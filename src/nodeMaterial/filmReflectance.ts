@@ -9,6 +9,7 @@ import { type Node } from 'three/webgpu';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type ComplexNode, type FloatNode, cAbs2, cDiv, cExpI, cIsZero, cMul } from './complex.ts';
 import { type InterfaceCoefficients, fresnelCoefficients, interfaceBothWays } from './fresnel.ts';
+import { shaderFunction } from './shaderFunction.ts';
 import { refractedCos } from './snell.ts';
 
 /** A channel's kind: 0 = s, 1 = p, 2 = the paper's average of the amplitudes (eqs 4, 8). */
@@ -120,11 +121,21 @@ export function filmOptics(
   return { channels, weights, opticalPathNm: cMul(nFilm, cosR).mul(thicknessNm.mul(2)).toVar() };
 }
 
+/** A channel's Airy terms as a function's parameters, and back. */
+const AIRY_TERMS = [
+  ['rab', 'vec2'],
+  ['multiple', 'vec2'],
+  ['roundTrip', 'vec2'],
+] as const;
+
 /** One channel's R, eq (13) squared, at the round-trip phase factor z = e^{iφ}. */
-export function channelReflectance(c: AiryTerms, z: ComplexNode): FloatNode {
-  const series = cDiv(cMul(c.multiple, z), vec2(1, 0).sub(cMul(c.roundTrip, z)));
-  return cAbs2(c.rab.add(select(cIsZero(c.multiple), vec2(0, 0), series)));
-}
+const channelReflectanceFn = shaderFunction('tfcChannelR', 'float', [...AIRY_TERMS, ['z', 'vec2']], (rab, multiple, roundTrip, z) => {
+  const series = cDiv(cMul(multiple, z), vec2(1, 0).sub(cMul(roundTrip, z)));
+  return cAbs2(rab.add(select(cIsZero(multiple), vec2(0, 0), series)));
+});
+
+/** One channel's R, eq (13) squared, at the round-trip phase factor z = e^{iφ}. */
+export const channelReflectance = (c: AiryTerms, z: ComplexNode): FloatNode => channelReflectanceFn(c.rab, c.multiple, c.roundTrip, z);
 
 /** R at one wavelength, eqs (11), (13), (14), the channels' weighted sum. */
 export function reflectanceAt(o: FilmOptics, lambdaNm: FloatNode): FloatNode {
@@ -141,35 +152,44 @@ export function reflectanceAt(o: FilmOptics, lambdaNm: FloatNode): FloatNode {
  * narrower than the resonance (w < (1 − ρ)/2) averaged by Simpson's rule on eq (13) itself
  * (docs/gpu.md#float32-limits).
  */
-export function meanChannelReflectance(c: AiryTerms, phaseCenter: FloatNode, halfWidth: FloatNode): FloatNode {
-  const alpha = c.rab;
-  const beta = c.multiple.sub(cMul(c.rab, c.roundTrip));
-  const a0 = cAbs2(alpha).add(cAbs2(beta)).toVar();
-  const ab = cMul(vec2(alpha.x, alpha.y.negate()), beta).toVar();
-  const rho2 = cAbs2(c.roundTrip).toVar();
-  const w = halfWidth;
-  const sinc = select(w.equal(0), float(1), sin(w).div(w)).toVar();
-  const mean = float(0).toVar();
-  If(cIsZero(c.multiple), () => {
-    mean.assign(cAbs2(alpha));
-  })
-    .ElseIf(rho2.equal(0), () => {
-      mean.assign(a0.add(sinc.mul(2).mul(ab.x.mul(cos(phaseCenter)).sub(ab.y.mul(sin(phaseCenter))))));
+const meanChannelReflectanceFn = shaderFunction(
+  'tfcMeanChannelR',
+  'float',
+  [...AIRY_TERMS, ['phaseCenter', 'float'], ['halfWidth', 'float']],
+  (rab, multiple, roundTrip, phaseCenter, w) => {
+    const c = { rab, multiple, roundTrip };
+    const alpha = rab;
+    const beta = multiple.sub(cMul(rab, roundTrip));
+    const a0 = cAbs2(alpha).add(cAbs2(beta)).toVar();
+    const ab = cMul(vec2(alpha.x, alpha.y.negate()), beta).toVar();
+    const rho2 = cAbs2(roundTrip).toVar();
+    const sinc = select(w.equal(0), float(1), sin(w).div(w)).toVar();
+    const mean = float(0).toVar();
+    If(cIsZero(multiple), () => {
+      mean.assign(cAbs2(alpha));
     })
-    .ElseIf(w.lessThan(float(1).sub(sqrt(rho2)).mul(0.5)), () => {
-      // Simpson's weights 1, 4, 1 at φ0 − w, φ0, φ0 + w, in a loop: eq (13) once in the graph.
-      const sum = float(0).toVar();
-      Loop(3, ({ i }: { i: Node<'int'> }) => {
-        const phase = phaseCenter.add(w.mul(float(i.sub(1))));
-        sum.addAssign(channelReflectance(c, cExpI(vec2(phase, 0))).mul(select(i.equal(1), float(4), float(1))));
+      .ElseIf(rho2.equal(0), () => {
+        mean.assign(a0.add(sinc.mul(2).mul(ab.x.mul(cos(phaseCenter)).sub(ab.y.mul(sin(phaseCenter))))));
+      })
+      .ElseIf(w.lessThan(float(1).sub(sqrt(rho2)).mul(0.5)), () => {
+        // Simpson's weights 1, 4, 1 at φ0 − w, φ0, φ0 + w, in a loop: eq (13) once in the function.
+        const sum = float(0).toVar();
+        Loop(3, ({ i }: { i: Node<'int'> }) => {
+          const phase = phaseCenter.add(w.mul(float(i.sub(1))));
+          sum.addAssign(channelReflectance(c, cExpI(vec2(phase, 0))).mul(select(i.equal(1), float(4), float(1))));
+        });
+        mean.assign(clamp(sum.div(6), 0, 1));
+      })
+      .Else(() => {
+        mean.assign(resonantMean(c, { a0, ab, rho2, sinc }, phaseCenter, w));
       });
-      mean.assign(clamp(sum.div(6), 0, 1));
-    })
-    .Else(() => {
-      mean.assign(resonantMean(c, { a0, ab, rho2, sinc }, phaseCenter, w));
-    });
-  return mean;
-}
+    return mean;
+  },
+);
+
+/** The mean of one channel's R over phases [φ0 − w, φ0 + w] (meanChannelReflectanceFn). */
+export const meanChannelReflectance = (c: AiryTerms, phaseCenter: FloatNode, halfWidth: FloatNode): FloatNode =>
+  meanChannelReflectanceFn(c.rab, c.multiple, c.roundTrip, phaseCenter, halfWidth);
 
 /** The closed form of meanChannelReflectance away from d = 0 and outside the narrow-window guard. */
 function resonantMean(

@@ -6,6 +6,7 @@
  */
 import { select, sqrt, vec2 } from 'three/tsl';
 import { type ComplexNode, type FloatNode, cDiv, cMul, cSqrt } from './complex.ts';
+import { shaderFunction } from './shaderFunction.ts';
 
 /** cos θ in a transparent medium of real index n. */
 function realRefractedCos(n: FloatNode, nOutside: FloatNode, cosIncidence: FloatNode): ComplexNode {
@@ -15,10 +16,19 @@ function realRefractedCos(n: FloatNode, nOutside: FloatNode, cosIncidence: Float
 }
 
 /** cos θ in a medium of index ñ = vec2(n, k) for light from a transparent n_a at cos θ_i. */
-export function refractedCos(n: ComplexNode, nOutside: FloatNode, cosIncidence: FloatNode): ComplexNode {
-  const nCosIncidence = nOutside.mul(cosIncidence);
-  const square = cMul(n.sub(vec2(nOutside, 0)), n.add(vec2(nOutside, 0))).add(vec2(nCosIncidence.mul(nCosIncidence), 0));
-  const root = cSqrt(square);
-  const absorbing = cDiv(select(root.y.lessThan(0), root.negate(), root), n);
-  return select(n.y.equal(0), realRefractedCos(n.x, nOutside, cosIncidence), absorbing);
-}
+export const refractedCos = shaderFunction(
+  'tfcRefractedCos',
+  'vec2',
+  [
+    ['n', 'vec2'],
+    ['nOutside', 'float'],
+    ['cosIncidence', 'float'],
+  ],
+  (n, nOutside, cosIncidence) => {
+    const nCosIncidence = nOutside.mul(cosIncidence);
+    const square = cMul(n.sub(vec2(nOutside, 0)), n.add(vec2(nOutside, 0))).add(vec2(nCosIncidence.mul(nCosIncidence), 0));
+    const root = cSqrt(square);
+    const absorbing = cDiv(select(root.y.lessThan(0), root.negate(), root), n);
+    return select(n.y.equal(0), realRefractedCos(n.x, nOutside, cosIncidence), absorbing);
+  },
+);

@@ -15,6 +15,7 @@ import { FILM_LAYER } from '../film/filmStack.ts';
 import { type ComplexNode, type FloatNode, cAbs2, cDiv, cExpI, cIsZero, cMul } from './complex.ts';
 import { type Channels, channelOf, weightedSum } from './filmReflectance.ts';
 import { fresnelCoefficients, interfaceBothWays } from './fresnel.ts';
+import { shaderFunction } from './shaderFunction.ts';
 import { refractedCos } from './snell.ts';
 import { texelFloat, texelVec2 } from './texelRecords.ts';
 
@@ -35,17 +36,31 @@ function stackRow(stack: StackNodes, row: Node<'int'>, bin: Node<'int'>, fieldTh
 }
 
 /** One step of the recursion for one channel: Γ_j from Γ_{j+1}; r_{j,j+1} where no light crosses (the numerator exactly 0). */
-function rouardStep(
+const rouardStepFn = shaderFunction(
+  'tfcRouardStep',
+  'vec2',
+  [
+    ['rForward', 'vec2'],
+    ['tForward', 'vec2'],
+    ['rBackward', 'vec2'],
+    ['tBackward', 'vec2'],
+    ['gammaInner', 'vec2'],
+    ['z', 'vec2'],
+  ],
+  (rForward, tForward, rBackward, tBackward, gammaInner, z) => {
+    const echo = cMul(gammaInner, z).toVar();
+    const multiple = cMul(cMul(tForward, tBackward), echo).toVar();
+    const step = rForward.add(cDiv(multiple, vec2(1, 0).sub(cMul(rBackward, echo))));
+    return select(cIsZero(multiple), rForward, step);
+  },
+);
+
+const rouardStep = (
   forward: { r: ComplexNode; t: ComplexNode },
   backward: { r: ComplexNode; t: ComplexNode },
   gammaInner: ComplexNode,
   z: ComplexNode,
-): ComplexNode {
-  const echo = cMul(gammaInner, z).toVar();
-  const multiple = cMul(cMul(forward.t, backward.t), echo);
-  const step = forward.r.add(cDiv(multiple, vec2(1, 0).sub(cMul(backward.r, echo))));
-  return select(cIsZero(multiple), forward.r, step);
-}
+): ComplexNode => rouardStepFn(forward.r, forward.t, backward.r, backward.t, gammaInner, z);
 
 /** R of the stack at bin `bin` (centre λ), light from the outside n_a, the channels' weighted sum. */
 export function layersReflectance(
