@@ -3,7 +3,7 @@
  * the TSL film (src/nodeMaterial/) on WebGPURenderer, into a float target, read back; one draw per
  * group, one texel per case, no colour conversion. `exact` evaluates the film per texel; `table`
  * looks it up in the node material's own table (NodeFilmTable), built over the group's largest
- * thickness. The twin of scripts/harness/filmXyzProbe.ts for the GLSL.
+ * thickness, in only the columns the group's lookups read. The twin of scripts/harness/filmXyzProbe.ts for the GLSL.
  */
 import { methodReads } from '../../src/methods/methods.ts';
 import { FloatType, RenderTarget } from 'three';
@@ -94,7 +94,12 @@ async function renderGroup(renderer: WebGPURenderer, g: ParityGroup, mode: NodeP
   if (methodReads(mode, 'table')) {
     // A table filled before fills another film once that film's program is built off the frame.
     await tableFor(q).prepare(renderer, s, film);
-    tableFor(q).update(renderer, s, film);
+    tableFor(q).updateAround(
+      renderer,
+      s,
+      film,
+      g.inputs.map(([d]) => d),
+    );
   }
   const target = new RenderTarget(count, 1, { type: FloatType, depthBuffer: false });
   renderer.setRenderTarget(target);

@@ -21,7 +21,7 @@ import { type FilmQuality } from '../settings/filmQuality.ts';
 import { type Polarization } from '../physics/filmReflectance.ts';
 import { type PlaneCount } from '../physics/spectralWeights.ts';
 import { type MaterialFilmSettings } from '../meshMaterial/materialFilm.ts';
-import { filmTableWidth } from '../settings/filmTableLayout.ts';
+import { filmTableLookupColumns, filmTableWidth } from '../settings/filmTableLayout.ts';
 import { type FloatNode } from './complex.ts';
 import { type FilmNodes, filmXyz } from './filmColor.ts';
 import { floatRow } from './filmInputs.ts';
@@ -103,8 +103,22 @@ export class NodeFilmTable {
       return;
     }
     plan.setInputs();
-    filled.fill.fill(renderer, plan.program, plan.xyz);
+    filled.fill.fill(renderer, plan.program, plan.xyz, null);
     filled.builtKey = key;
+  }
+
+  /**
+   * Fills, for `s`, only the columns that looking the table up at these thicknesses reads (a
+   * lookup blends two neighbouring columns), the rest left undefined: those films' colours at a
+   * fraction of a whole table's cost (the parity probe's); the table then holds no film.
+   */
+  updateAround(renderer: Renderer, s: MaterialFilmSettings, film: FillFilm, thicknessesNm: readonly number[]): void {
+    const filled = this.filledBy(renderer);
+    const plan = this.fillOf(s, film);
+    plan.setInputs();
+    const columns = filmTableLookupColumns(this.quality.table, thicknessesNm, this.grid.maxThicknessNm.value, this.grid.width.value);
+    filled.fill.fill(renderer, plan.program, plan.xyz, columns);
+    filled.builtKey = '';
   }
 
   /** Builds, off the frame, the program that fills the table for `s` where it holds another film: done when `update` fills it at once. */

@@ -9,6 +9,9 @@ import { type Texture } from 'three';
 import { type Node, type Renderer, type UniformNode } from 'three/webgpu';
 import { type FloatNode } from './complex.ts';
 
+/** Columns [from, to) of the grid. */
+export type TableColumns = readonly [number, number];
+
 /**
  * The grid the table holds: texels along thickness, rows, the thickness of its last column, and
  * its colour planes (its XYZ, or the three columns of its environment matrix), one grid above the
@@ -28,11 +31,12 @@ export interface TableFill {
   /** The texture filled, at the grid's size: the lookup samples it with the GPU's linear filtering. */
   readonly texture: Texture;
   /**
-   * Fills every texel of the grid (its size as the grid's uniforms hold it) with `xyz`, by
-   * `renderer`; `program` names xyz's program: the same name, the same program. A program not
-   * built yet is built here, on this thread.
+   * Fills the texels of the grid (its size as the grid's uniforms hold it) with `xyz`, by
+   * `renderer`: every column, or only `columns` (each [from, to), the rest left as they were);
+   * `program` names xyz's program: the same name, the same program. A program not built yet is
+   * built here, on this thread.
    */
-  fill(renderer: Renderer, program: string, xyz: TexelXyz): void;
+  fill(renderer: Renderer, program: string, xyz: TexelXyz, columns: readonly TableColumns[] | null): void;
   /** How the fill builds a program ahead of its use, off the frame; none where it builds each in place. */
   readonly offFrame: OffFrameBuild | null;
   dispose(): void;

@@ -17,7 +17,7 @@ import {
 } from 'three';
 import { Fn, floor, int, positionGeometry, uv, vec4 } from 'three/tsl';
 import { NodeMaterial, type Renderer } from 'three/webgpu';
-import { type OffFrameBuild, type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
+import { type OffFrameBuild, type TableColumns, type TableFill, type TableGrid, type TexelXyz } from './filmTableFill.ts';
 import { KeptPrograms } from './keptPrograms.ts';
 
 /** The quad: three's QuadMesh's triangle over clip space and its uv (v = 0 at the top), and the camera it is drawn with (the vertex node ignores it). */
@@ -41,14 +41,19 @@ export class TablePass implements TableFill {
     return this.target.texture;
   }
 
-  fill(renderer: Renderer, program: string, xyz: TexelXyz): void {
-    this.target.setSize(this.grid.width.value, this.grid.rows.value * this.grid.planes.value);
-    this.onTarget(renderer, () =>
-      renderer.render(
-        this.passes.of(program, () => this.quad(xyz)),
-        quadCamera,
-      ),
-    );
+  fill(renderer: Renderer, program: string, xyz: TexelXyz, columns: readonly TableColumns[] | null): void {
+    const height = this.grid.rows.value * this.grid.planes.value;
+    this.target.setSize(this.grid.width.value, height);
+    const quad = this.passes.of(program, () => this.quad(xyz));
+    // Columns by the target's scissor, one draw per range.
+    this.target.scissorTest = columns !== null;
+    this.onTarget(renderer, () => {
+      for (const [from, to] of columns ?? [[0, this.grid.width.value]]) {
+        this.target.scissor.set(from, 0, to - from, height);
+        renderer.render(quad, quadCamera);
+      }
+    });
+    this.target.scissorTest = false;
   }
 
   readonly offFrame: OffFrameBuild = {
