@@ -3,7 +3,8 @@
  * browser) and on its WebGPU backend (in a launch of its own, which has WebGPU and no WebGL2:
  * scripts/chromium.ts): the frame of a sphere with three.js's node iridescence and with the
  * spectral film (`table`, `exact`) against the same material without iridescence, the film's ΔE00
- * over the error grids (and three.js's node iridescence's, the whole material's pixels), and the main thread's long tasks from each option change to its frame.
+ * over the error grids (and three.js's node iridescence's, the whole material's pixels), and the main thread's long tasks from each option change to its frame
+ * (from a trace of the page: each task's wall time and the thread's own time in it).
  */
 import { type Browser, chromium } from '@playwright/test';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
@@ -12,10 +13,18 @@ import { webgpuLaunchOptions } from '../chromium.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import { loadOnBackend } from '../harness/webgpuAdapter.ts';
 import { type GridError, filmsGridError, gridError } from './errorGrids.ts';
-import { NODE_BACKENDS, NODE_GRID_MODES, NODE_OPTION_CHANGES, type NodeBackend, type NodeMaterialName } from './nodeMaterials.ts';
+import {
+  NODE_BACKENDS,
+  NODE_GRID_MODES,
+  NODE_OPTION_CHANGES,
+  type NodeBackend,
+  type NodeMaterialName,
+  changeMarks,
+} from './nodeMaterials.ts';
 import { openPage } from './openPage.ts';
 import type { NodeFrameTime } from './page/nodeBench.ts';
 import { LONG_TASK_MS } from './panelChanges.ts';
+import { TRACE_CATEGORIES, type TracedTask, tasksBetweenMarks } from './traceTasks.ts';
 
 export interface NodeFiguresPlan {
   readonly width: number;
@@ -29,6 +38,8 @@ export interface NodeFiguresPlan {
 export interface NodeChangeFigures {
   /** the longest task, ms (0 for none over LONG_TASK_MS) */
   readonly longestMs: number;
+  /** the main thread's own time in that task, ms (0 for none): the rest it waited or was not scheduled (traceTasks.ts) */
+  readonly longestThreadMs: number;
   /** tasks over LONG_TASK_MS */
   readonly over: number;
   /** the change → its frame drawn with the film ready, ms */
@@ -89,14 +100,20 @@ async function backendFigures(
     }
     const threes = await page.evaluate((g) => window.nodeBench!.threeGridXyz(g), grids);
     const threeGridErrors = grids.map((g, i) => filmsGridError(g, reference[i]!, threes[i]!));
-    const costs = await page.evaluate(([w, h, q]) => window.nodeBench!.optionChanges(w, h, q), size);
-    if (costs.length !== NODE_OPTION_CHANGES.length)
-      throw new Error(`the page made ${costs.length} changes, not ${NODE_OPTION_CHANGES.length}`);
-    const changes = costs.map(({ longTasksMs, toFrameMs }) => ({
-      longestMs: Math.max(0, ...longTasksMs),
-      over: longTasksMs.filter((ms) => ms > LONG_TASK_MS).length,
-      toFrameMs,
-    }));
+    await browser.startTracing(page, { categories: TRACE_CATEGORIES });
+    const toFrameMs = await page.evaluate(([w, h, q]) => window.nodeBench!.optionChanges(w, h, q), size);
+    const trace = (await browser.stopTracing()).toString();
+    if (toFrameMs.length !== NODE_OPTION_CHANGES.length)
+      throw new Error(`the page made ${toFrameMs.length} changes, not ${NODE_OPTION_CHANGES.length}`);
+    const tasks = tasksBetweenMarks(
+      trace,
+      NODE_OPTION_CHANGES.map((_, i) => changeMarks(i)),
+      LONG_TASK_MS,
+    );
+    const changes = tasks.map((long, i) => {
+      const longest = long.reduce<TracedTask | null>((a, t) => (a && a.wallMs >= t.wallMs ? a : t), null);
+      return { longestMs: longest?.wallMs ?? 0, longestThreadMs: longest?.threadMs ?? 0, over: long.length, toFrameMs: toFrameMs[i]! };
+    });
     return { backend, frames, gridErrors, threeGridErrors, changes };
   } finally {
     await page.close();

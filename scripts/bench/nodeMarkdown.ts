@@ -49,12 +49,12 @@ export function nodeMarkdown(n: NodeFigures): string {
   const changes = NODE_OPTION_CHANGES.map(([what], i) =>
     row(
       i === 0
-        ? `option changes on the \`table\` sphere, one after another, each drawn until whenSpectralReady resolves: the main thread's longest task and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); change → that frame: ${what}`
+        ? `option changes on the \`table\` sphere, one after another, each drawn until whenSpectralReady resolves: the main thread's longest task (in brackets, the thread's own time in it: the rest it waited on the GPU process or was not scheduled) and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); change → that frame: ${what}`
         : `… ${what}`,
       b,
       (f) => {
         const c = f.changes[i]!;
-        return `${c.longestMs.toFixed(0)} ms, ${c.over} over; ${ms(c.toFrameMs)} ms`;
+        return `${c.longestMs.toFixed(0)} ms (${c.longestThreadMs.toFixed(0)}), ${c.over} over; ${ms(c.toFrameMs)} ms`;
       },
     ),
   );

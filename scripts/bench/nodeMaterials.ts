@@ -31,3 +31,6 @@ export const NODE_OPTION_CHANGES: readonly (readonly [string, SpectralIridescenc
   ['mode exact → table', { mode: 'table' }],
   ['film medium iridescenceIOR 1.33 → water', { film: 'water' }],
 ];
+
+/** The page's performance marks around option change `i`: made, and its frame drawn (nodeFigures.ts reads the tasks between them from a trace). */
+export const changeMarks = (i: number): readonly [string, string] => [`option change ${i}`, `option change ${i} drawn`];

@@ -2,8 +2,8 @@
  * The node figures' page (scripts/bench/nodeFigures.ts): three.js's WebGPURenderer on the backend
  * asked for, and on it the sphere's frame times with each material (nodeScene.ts), the WebGPU
  * entry's film over the error grids (scripts/harness/nodeFilmProbe.ts) and three.js's node
- * iridescence over them (the whole material: scripts/harness/materialGridScene.ts), and the main
- * thread's long tasks from each option change of a spectral material to its frame drawn.
+ * iridescence over them (the whole material: scripts/harness/materialGridScene.ts), and each option
+ * change of a spectral material to its frame drawn, marked for a trace of its tasks.
  */
 import { FloatType, NoToneMapping, RenderTarget } from 'three';
 import { MeshPhysicalNodeMaterial, WebGPURenderer } from 'three/webgpu';
@@ -12,21 +12,8 @@ import { type DrawRow, gridMaterialParameters, gridXyz } from '../../harness/mat
 import { type NodeParityMode, renderNodeFilmXyz } from '../../harness/nodeFilmProbe.ts';
 import type { ParityGroup } from '../../harness/parityCase.ts';
 import { median } from '../median.ts';
-import { NODE_MATERIAL_NAMES, NODE_OPTION_CHANGES, type NodeBackend, type NodeMaterialName } from '../nodeMaterials.ts';
+import { NODE_MATERIAL_NAMES, NODE_OPTION_CHANGES, type NodeBackend, type NodeMaterialName, changeMarks } from '../nodeMaterials.ts';
 import { nodeScene } from './nodeScene.ts';
-
-/** Every long task of the main thread since the page loaded: [start, duration], ms. */
-const longTasks: [number, number][] = [];
-const observer = new PerformanceObserver((list) => {
-  for (const e of list.getEntries()) longTasks.push([e.startTime, e.duration]);
-});
-observer.observe({ type: 'longtask', buffered: true });
-
-/**
- * How long after a change's frame its long tasks are taken: Chromium queues a long task's entry
- * after the task ends, and delivers it to the observer in a later task.
- */
-const ENTRY_DELIVERY_MS = 200;
 
 let renderer: WebGPURenderer | null = null;
 
@@ -76,29 +63,24 @@ async function frameTimes(
   }
 }
 
-/** One option change's cost: the long tasks' durations (ms) from the change to its frame drawn, and that time (ms). */
-export interface ChangeCost {
-  readonly longTasksMs: number[];
-  readonly toFrameMs: number;
-}
-
-/** Each of NODE_OPTION_CHANGES in turn on the `table` sphere, once it is ready: drawn until the film is ready, then once more. */
-async function optionChanges(width: number, height: number, quality: FilmQuality): Promise<ChangeCost[]> {
+/**
+ * Each of NODE_OPTION_CHANGES in turn on the `table` sphere, once it is ready: drawn until the film
+ * is ready, then once more; the change → that frame, ms. The change and its frame are marked
+ * (changeMarks), so that a trace of the page tells its tasks.
+ */
+async function optionChanges(width: number, height: number, quality: FilmQuality): Promise<number[]> {
   const s = nodeScene(renderer!, width, height, quality);
   try {
     await s.drawReady('table');
-    const costs: ChangeCost[] = [];
-    for (const [, change] of NODE_OPTION_CHANGES) {
-      const changedAt = performance.now();
+    const toFrameMs: number[] = [];
+    for (const [i, [, change]] of NODE_OPTION_CHANGES.entries()) {
+      const [made, drawn] = changeMarks(i);
+      const changedAt = performance.mark(made).startTime;
       Object.assign(s.materials.table, change);
       await s.drawReady('table');
-      const drawnAt = performance.now();
-      await new Promise((resolve) => setTimeout(resolve, ENTRY_DELIVERY_MS));
-      for (const e of observer.takeRecords()) longTasks.push([e.startTime, e.duration]);
-      const longTasksMs = longTasks.filter(([t, ms]) => t + ms > changedAt && t < drawnAt).map(([, ms]) => ms);
-      costs.push({ longTasksMs, toFrameMs: drawnAt - changedAt });
+      toFrameMs.push(performance.mark(drawn).startTime - changedAt);
     }
-    return costs;
+    return toFrameMs;
   } finally {
     s.dispose();
   }
