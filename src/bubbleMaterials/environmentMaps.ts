@@ -10,7 +10,8 @@ import {
   RGBAFormat,
 } from 'three';
 import { EXRLoader } from 'three/addons/loaders/EXRLoader.js';
-import { type HdrEnvironment, mapSource } from '../environments/environments.ts';
+import { type HdrEnvironment } from '../environments/environments.ts';
+import { mapSource } from '../environments/hdrMaps.ts';
 import { SharedTextures } from '../gpu/sharedTextures.ts';
 
 /** An equirectangular radiance map: RGBA float texels, row 0 at the bottom (v = 0 looks straight down). */

@@ -15,27 +15,25 @@ import {
 export const ENVIRONMENT_KINDS = ['none', 'sky', 'map', 'color'] as const;
 export type EnvironmentKind = (typeof ENVIRONMENT_KINDS)[number];
 
-/** A module holding an HDR map as a base64 data URL of an EXR (512 × 256, linear Rec. 709). */
-export type MapSource = () => Promise<{ readonly default: string }>;
-
-/** An environment: its kind, and for a map where it comes from. */
-export type EnvironmentEntry = { readonly kind: 'none' | 'sky' } | { readonly kind: 'map'; readonly source: MapSource };
-
-const map = (source: MapSource) => ({ kind: 'map', source }) as const;
+/** An environment: its kind. */
+export interface EnvironmentEntry {
+  readonly kind: Exclude<EnvironmentKind, 'color'>;
+}
 
 /**
  * Every environment, by its name in the URL (`env=`): the one place an environment is registered.
- * `none` is black (the film lit by the light's white: the reference views), `sky` procedural; the
- * maps are CC0 equirectangular EXRs from @pmndrs/assets, each its own dynamic import, so a page
- * fetches only the one it shows. Its label is the message `choice.env.<name>` in each catalogue.
+ * `none` is black (the film lit by the light's white: the reference views), `sky` procedural; a
+ * `map` is an HDR map, whose source hdrMaps.ts gives (apart, so that what only asks what an
+ * environment is, a material's film say, brings no map into a build). Its label is the message
+ * `choice.env.<name>` in each catalogue.
  */
 export const ENVIRONMENT_REGISTRY = {
   sky: { kind: 'sky' },
   none: { kind: 'none' },
-  park: map(() => import('@pmndrs/assets/hdri/park.exr.js')),
-  sunset: map(() => import('@pmndrs/assets/hdri/sunset.exr.js')),
-  studio: map(() => import('@pmndrs/assets/hdri/studio.exr.js')),
-  city: map(() => import('@pmndrs/assets/hdri/city.exr.js')),
+  park: { kind: 'map' },
+  sunset: { kind: 'map' },
+  studio: { kind: 'map' },
+  city: { kind: 'map' },
 } as const satisfies Record<string, EnvironmentEntry>;
 
 /** An environment by its name in the registry. */
@@ -67,9 +65,6 @@ export const isHdrEnvironment = (env: Environment): env is HdrEnvironment => env
 /** The colour of a uniform environment, or null for one of the registry's. */
 export const environmentColor = (env: Environment): EnvironmentColor | null => (isNamed(env) ? null : env.color);
 export const HDR_ENVIRONMENTS = ENVIRONMENTS.filter(isHdrEnvironment);
-
-/** Where an HDR environment's map comes from. */
-export const mapSource = (env: HdrEnvironment): MapSource => ENVIRONMENT_REGISTRY[env].source;
 
 /** The environment shown in place of an HDR one until its map arrives, or when it fails to load. */
 export const STAND_IN_ENVIRONMENT = 'sky' satisfies Environment;

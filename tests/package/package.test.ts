@@ -5,9 +5,9 @@
  * project of its own would install three from the registry).
  */
 import { execFileSync } from 'node:child_process';
-import { copyFileSync, mkdtempSync, mkdirSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { copyFileSync, mkdtempSync, mkdirSync, readFileSync, readdirSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, describe, expect, it } from 'vitest';
 import { XYZ_TO_LINEAR_SRGB, applyMatrix3 } from '../../src/physics/colorConversions.ts';
@@ -102,4 +102,30 @@ describe('the packed library in a fresh project', () => {
     },
     PACK_TIMEOUT_MS,
   );
+
+  // Reads the dist-lib/ the test above built (a file's tests run in order).
+  it("the material entries reach no HDR environment's map: a user's build of either emits none", () => {
+    const lib = join(ROOT, 'dist-lib');
+    /** The files `file` imports, statically, dynamically or as a worker's URL (the built modules' relative specifiers). */
+    const importsOf = (file: string): string[] =>
+      [...readFileSync(join(lib, file), 'utf8').matchAll(/(?:from|import\s*\(?|new URL\()\s*["'](\.\/[^"']+)["']/g)].map((m) =>
+        join(dirname(file), m[1]!),
+      );
+    for (const entry of ['material.js', 'webgpu.js']) {
+      const reached = new Set<string>();
+      const visit = (file: string): void => {
+        if (reached.has(file)) return;
+        reached.add(file);
+        if (file.endsWith('.js')) importsOf(file).forEach(visit);
+      };
+      visit(entry);
+      expect(reached.size, entry).toBeGreaterThan(2);
+      expect(
+        [...reached].filter((f) => /\.exr/.test(f)),
+        entry,
+      ).toEqual([]);
+    }
+    // What the check looks for is there to find: the element, which draws the environments, reaches the maps.
+    expect(readdirSync(lib).filter((f) => /\.exr/.test(f)).length).toBeGreaterThan(0);
+  });
 });
