@@ -12,11 +12,8 @@ import { type Node } from 'three/webgpu';
 /** The shader types the film's functions take and return. */
 type ShaderType = 'float' | 'vec2' | 'vec4';
 
-/** The node of a shader type. */
-type NodeOf<T extends ShaderType> = Node<T>;
-
 /** The nodes of a list of shader types. */
-type NodesOf<A extends readonly ShaderType[]> = { readonly [K in keyof A]: NodeOf<A[K]> };
+type NodesOf<A extends readonly ShaderType[]> = { readonly [K in keyof A]: Node<A[K]> };
 
 /**
  * `body` as the shader function `name` of parameters `inputs` (name, type) returning `returns`;
@@ -26,12 +23,12 @@ export function shaderFunction<const A extends readonly ShaderType[], R extends 
   name: string,
   returns: R,
   inputs: { readonly [K in keyof A]: readonly [string, A[K]] },
-  body: (...args: NodesOf<A>) => NodeOf<R>,
-): (...args: NodesOf<A>) => NodeOf<R> {
+  body: (...args: NodesOf<A>) => Node<R>,
+): (...args: NodesOf<A>) => Node<R> {
   const fn = Fn((args: readonly Node[]) => body(...(args as unknown as NodesOf<A>))).setLayout({
     name,
     type: returns,
     inputs: inputs.map(([input, type]) => ({ name: input, type })),
   });
-  return (...args) => (fn as unknown as (...a: readonly Node[]) => NodeOf<R>)(...args);
+  return (...args) => (fn as unknown as (...a: readonly Node[]) => Node<R>)(...args);
 }
