@@ -1,10 +1,9 @@
 /**
  * `tsx scripts/inParallel.ts <npm script>...`: runs the named npm scripts at once, each one's
  * output printed whole when it ends (so that the outputs do not interleave), and exits with the
- * first non-zero status among them (0 if all pass). `npm test` runs its checks that are not tests
- * this way (`npm run checks`): the type check, ESLint and Prettier each keep one core busy, so on
- * a 2-core machine they fill both cores instead of one (docs/testing.md). Tests, which wait for
- * the machine with time limits, run one stage at a time.
+ * first non-zero status among them (0 if all pass). `npm run checks` runs the type check, ESLint
+ * and Prettier this way, and `npm test` the checks, the unit tests and the packed library's test:
+ * each alone leaves a core idle for much of its time, so together they fill both (docs/testing.md).
  */
 import { spawn } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
