@@ -71,7 +71,7 @@ export const FULL_PLAN: BenchPlan = {
   changesBack: true,
   gridStride: 1,
   materials: { width: 1280, height: 720, frames: 10 },
-  node: { width: 1280, height: 720, frames: 10, quality: DEFAULT_FILM_QUALITY },
+  node: { width: 1280, height: 720, frames: 10, quality: DEFAULT_FILM_QUALITY, changesAlsoAt: [[320, 180]] },
   demo: { width: 1280, height: 720, windowMs: 1000, panelTwice: true },
   defaultView: { width: 1280, height: 720, seconds: 30, settlingMs: 3000, firstFrameLoads: 5 },
   flowSpeed: { grids: [64, 128], warmUpSteps: 3, batchSteps: 4, batches: 5 },
@@ -92,7 +92,7 @@ export const SMOKE_PLAN: BenchPlan = {
   // ~60 films of each error grid, every thickness and angle range still met: enough to show the error columns run and are finite.
   gridStride: 64,
   materials: { width: 160, height: 90, frames: 1 },
-  node: { width: 160, height: 90, frames: 1, quality: smokeQuality(DEFAULT_FILM_QUALITY) },
+  node: { width: 160, height: 90, frames: 1, quality: smokeQuality(DEFAULT_FILM_QUALITY), changesAlsoAt: [] },
   demo: { width: 320, height: 180, windowMs: 100, panelTwice: false },
   defaultView: { width: 320, height: 180, seconds: 1, settlingMs: 500, firstFrameLoads: 1 },
   flowSpeed: { grids: [8, 16], warmUpSteps: 1, batchSteps: 1, batches: 1 },

@@ -6,7 +6,7 @@
  * over the error grids (and three.js's node iridescence's, the whole material's pixels), and the main thread's long tasks from each option change to its frame
  * (from a trace of the page: each task's wall time and the thread's own time in it).
  */
-import { type Browser, chromium } from '@playwright/test';
+import { type Browser, type Page, chromium } from '@playwright/test';
 import type { Xyz } from '../../src/physics/spectralWeights.ts';
 import type { FilmQuality } from '../../src/settings/filmQuality.ts';
 import { webgpuLaunchOptions } from '../chromium.ts';
@@ -32,6 +32,12 @@ export interface NodeFiguresPlan {
   readonly frames: number;
   /** the spectral materials' and the error grids' film quality */
   readonly quality: FilmQuality;
+  /**
+   * Sizes the option changes are also made at, besides the frames' (width × height): a small one
+   * shows the material's own tasks where a CPU rasteriser draws the sphere's frame well within
+   * LONG_TASK_MS (a task that waits on the GPU process waits for the frame it is drawing).
+   */
+  readonly changesAlsoAt: readonly (readonly [number, number])[];
 }
 
 /** One option change of NODE_OPTION_CHANGES: the main thread's long tasks (over LONG_TASK_MS) from the change to its frame drawn. */
@@ -46,6 +52,14 @@ export interface NodeChangeFigures {
   readonly toFrameMs: number;
 }
 
+/** The option changes made with the sphere at one size. */
+export interface NodeChangesAt {
+  readonly width: number;
+  readonly height: number;
+  /** per change of NODE_OPTION_CHANGES, in its order */
+  readonly figures: NodeChangeFigures[];
+}
+
 export interface NodeBackendFigures {
   readonly backend: NodeBackend;
   /** the sphere's frames with each material: their median (ms) and count */
@@ -57,8 +71,8 @@ export interface NodeBackendFigures {
    * films thicker than 0 nm (three turns its film off at 0 nm and draws its own base there)
    */
   readonly threeGridErrors: GridError[];
-  /** per change of NODE_OPTION_CHANGES, in its order */
-  readonly changes: NodeChangeFigures[];
+  /** the option changes at the frames' size, then at each of the plan's changesAlsoAt */
+  readonly changes: NodeChangesAt[];
 }
 
 export interface NodeFigures extends NodeFiguresPlan {
@@ -77,6 +91,30 @@ async function openOn(browser: Browser, baseUrl: string, backend: NodeBackend, h
   if (started) return page;
   await page.close();
   throw new Error(`WebGPURenderer found no ${backend} backend`);
+}
+
+/** Each of NODE_OPTION_CHANGES made on the page's sphere at `width` × `height`: its long tasks, from a trace of the page. */
+async function optionChanges(
+  browser: Browser,
+  page: Page,
+  width: number,
+  height: number,
+  quality: FilmQuality,
+): Promise<NodeChangeFigures[]> {
+  await browser.startTracing(page, { categories: TRACE_CATEGORIES });
+  const toFrameMs = await page.evaluate(([w, h, q]) => window.nodeBench!.optionChanges(w, h, q), [width, height, quality] as const);
+  const trace = (await browser.stopTracing()).toString();
+  if (toFrameMs.length !== NODE_OPTION_CHANGES.length)
+    throw new Error(`the page made ${toFrameMs.length} changes, not ${NODE_OPTION_CHANGES.length}`);
+  const tasks = tasksBetweenMarks(
+    trace,
+    NODE_OPTION_CHANGES.map((_, i) => changeMarks(i)),
+    LONG_TASK_MS,
+  );
+  return tasks.map((long, i) => {
+    const longest = long.reduce<TracedTask | null>((a, t) => (a && a.wallMs >= t.wallMs ? a : t), null);
+    return { longestMs: longest?.wallMs ?? 0, longestThreadMs: longest?.threadMs ?? 0, over: long.length, toFrameMs: toFrameMs[i]! };
+  });
 }
 
 /** One backend's figures, in `browser`; a material whose first frame outlasts `how.frameBudgetMs` is timed once. */
@@ -100,20 +138,9 @@ async function backendFigures(
     }
     const threes = await page.evaluate((g) => window.nodeBench!.threeGridXyz(g), grids);
     const threeGridErrors = grids.map((g, i) => filmsGridError(g, reference[i]!, threes[i]!));
-    await browser.startTracing(page, { categories: TRACE_CATEGORIES });
-    const toFrameMs = await page.evaluate(([w, h, q]) => window.nodeBench!.optionChanges(w, h, q), size);
-    const trace = (await browser.stopTracing()).toString();
-    if (toFrameMs.length !== NODE_OPTION_CHANGES.length)
-      throw new Error(`the page made ${toFrameMs.length} changes, not ${NODE_OPTION_CHANGES.length}`);
-    const tasks = tasksBetweenMarks(
-      trace,
-      NODE_OPTION_CHANGES.map((_, i) => changeMarks(i)),
-      LONG_TASK_MS,
-    );
-    const changes = tasks.map((long, i) => {
-      const longest = long.reduce<TracedTask | null>((a, t) => (a && a.wallMs >= t.wallMs ? a : t), null);
-      return { longestMs: longest?.wallMs ?? 0, longestThreadMs: longest?.threadMs ?? 0, over: long.length, toFrameMs: toFrameMs[i]! };
-    });
+    const changes: NodeChangesAt[] = [];
+    for (const [width, height] of [[how.width, how.height] as const, ...how.changesAlsoAt])
+      changes.push({ width, height, figures: await optionChanges(browser, page, width, height, how.quality) });
     return { backend, frames, gridErrors, threeGridErrors, changes };
   } finally {
     await page.close();
@@ -137,6 +164,6 @@ export async function nodeFigures(
       await own?.close();
     }
   }
-  const { width, height, frames, quality } = how;
-  return { width, height, frames, quality, backends };
+  const { width, height, frames, quality, changesAlsoAt } = how;
+  return { width, height, frames, quality, changesAlsoAt, backends };
 }

@@ -46,16 +46,20 @@ export function nodeMarkdown(n: NodeFigures): string {
     b,
     (f) => f.threeGridErrors.map(stats).join(' — '),
   );
+  const sizes = [[n.width, n.height], ...n.changesAlsoAt].map(([w, h]) => `${w}×${h}`).join(' · ');
   const changes = NODE_OPTION_CHANGES.map(([what], i) =>
     row(
       i === 0
-        ? `option changes on the \`table\` sphere, one after another, each drawn until whenSpectralReady resolves: the main thread's longest task (in brackets, the thread's own time in it: the rest it waited on the GPU process or was not scheduled) and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); change → that frame: ${what}`
+        ? `option changes on the \`table\` sphere at ${sizes} (the smaller: a frame the CPU rasteriser draws well within ${LONG_TASK_MS} ms), one after another, each drawn until whenSpectralReady resolves: the main thread's longest task (in brackets, the thread's own time in it: the rest it waited on the GPU process or was not scheduled) and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); change → that frame: ${what}`
         : `… ${what}`,
       b,
-      (f) => {
-        const c = f.changes[i]!;
-        return `${c.longestMs.toFixed(0)} ms (${c.longestThreadMs.toFixed(0)}), ${c.over} over; ${ms(c.toFrameMs)} ms`;
-      },
+      (f) =>
+        f.changes
+          .map(({ figures }) => {
+            const c = figures[i]!;
+            return `${c.longestMs.toFixed(0)} ms (${c.longestThreadMs.toFixed(0)}), ${c.over} over; ${ms(c.toFrameMs)} ms`;
+          })
+          .join(' · '),
     ),
   );
   return [
@@ -74,8 +78,13 @@ export function nodeProblems(n: NodeFigures): string[] {
   if (n.backends.map((f) => f.backend).join() !== NODE_BACKENDS.join())
     problems.push(`node figures of backends ${n.backends.map((f) => f.backend).join(', ')}, not ${NODE_BACKENDS.join(', ')}`);
   for (const f of n.backends) {
-    if (f.changes.length !== NODE_OPTION_CHANGES.length)
-      problems.push(`node figures, ${f.backend}: ${f.changes.length} option changes, not ${NODE_OPTION_CHANGES.length}`);
+    if (f.changes.length !== 1 + n.changesAlsoAt.length)
+      problems.push(`node figures, ${f.backend}: option changes at ${f.changes.length} sizes, not ${1 + n.changesAlsoAt.length}`);
+    for (const { width, height, figures } of f.changes)
+      if (figures.length !== NODE_OPTION_CHANGES.length)
+        problems.push(
+          `node figures, ${f.backend}, ${width}×${height}: ${figures.length} option changes, not ${NODE_OPTION_CHANGES.length}`,
+        );
     const grids: readonly (readonly [string, readonly GridError[]])[] = [
       ...NODE_GRID_MODES.map((m) => [m, f.gridErrors[m]] as const),
       ['three.js', f.threeGridErrors],
