@@ -128,8 +128,7 @@ async function backendFigures(
 ): Promise<NodeBackendFigures> {
   const page = await openOn(browser, baseUrl, backend, how);
   try {
-    const size = [how.width, how.height, how.quality] as const;
-    const timed = [...size, how.frames, how.frameBudgetMs] as const;
+    const timed = [how.width, how.height, how.quality, how.frames, how.frameBudgetMs] as const;
     const frames = await page.evaluate(([w, h, q, n, budget]) => window.nodeBench!.frameTimes(w, h, q, n, budget), timed);
     const gridErrors = {} as NodeBackendFigures['gridErrors'];
     for (const mode of NODE_GRID_MODES) {

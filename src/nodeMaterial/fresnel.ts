@@ -13,13 +13,11 @@ export interface InterfaceCoefficients {
   readonly tp: ComplexNode;
 }
 
-/** Both ways of the interface 1|2: the reverse's r is the forward's negated, its t the far side's 2 n cos θ over the same sums. */
-export function interfaceBothWays(
-  n1: ComplexNode,
-  cos1: ComplexNode,
-  n2: ComplexNode,
-  cos2: ComplexNode,
-): { readonly forward: InterfaceCoefficients; readonly backward: InterfaceCoefficients } {
+/**
+ * The coefficients of the interface 1 → 2, and its reverse's t on request (over the same sums, from
+ * the far side's n cos θ): a coefficient made a variable is emitted whether it is read or not.
+ */
+function forwardWay(n1: ComplexNode, cos1: ComplexNode, n2: ComplexNode, cos2: ComplexNode) {
   const same = cEqual(n1, n2);
   const n1c1 = cMul(n1, cos1);
   const n2c2 = cMul(n2, cos2);
@@ -29,15 +27,27 @@ export function interfaceBothWays(
   const pInverse = cDiv(vec2(1, 0), n2c1.add(n1c2));
   const zero = vec2(0, 0);
   const one = vec2(1, 0);
-  const rs = select(same, zero, cMul(n1c1.sub(n2c2), sInverse)).toVar();
-  const rp = select(same, zero, cMul(n2c1.sub(n1c2), pInverse)).toVar();
-  const t = (n: ComplexNode, inverse: ComplexNode) => select(same, one, cMul(n.mul(2), inverse)).toVar();
-  return {
-    forward: { rs, rp, ts: t(n1c1, sInverse), tp: t(n1c1, pInverse) },
-    backward: { rs: rs.negate(), rp: rp.negate(), ts: t(n2c2, sInverse), tp: t(n2c2, pInverse) },
+  const t = (nc: ComplexNode, inverse: ComplexNode) => select(same, one, cMul(nc.mul(2), inverse)).toVar();
+  const forward: InterfaceCoefficients = {
+    rs: select(same, zero, cMul(n1c1.sub(n2c2), sInverse)).toVar(),
+    rp: select(same, zero, cMul(n2c1.sub(n1c2), pInverse)).toVar(),
+    ts: t(n1c1, sInverse),
+    tp: t(n1c1, pInverse),
   };
+  return { forward, reverseT: () => ({ ts: t(n2c2, sInverse), tp: t(n2c2, pInverse) }) };
 }
 
-/** The coefficients of the interface 1 → 2. */
+/** Both ways of the interface 1|2: the reverse's r is the forward's negated, its t the far side's 2 n cos θ over the same sums. */
+export function interfaceBothWays(
+  n1: ComplexNode,
+  cos1: ComplexNode,
+  n2: ComplexNode,
+  cos2: ComplexNode,
+): { readonly forward: InterfaceCoefficients; readonly backward: InterfaceCoefficients } {
+  const { forward, reverseT } = forwardWay(n1, cos1, n2, cos2);
+  return { forward, backward: { rs: forward.rs.negate(), rp: forward.rp.negate(), ...reverseT() } };
+}
+
+/** The coefficients of the interface 1 → 2 (without the reverse's t, which three would emit unused). */
 export const fresnelCoefficients = (n1: ComplexNode, cos1: ComplexNode, n2: ComplexNode, cos2: ComplexNode): InterfaceCoefficients =>
-  interfaceBothWays(n1, cos1, n2, cos2).forward;
+  forwardWay(n1, cos1, n2, cos2).forward;
