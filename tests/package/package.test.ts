@@ -16,7 +16,7 @@ import { filmXyz, whiteXyz } from '../../src/physics/spectralIntegration.ts';
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
 const HERE = fileURLToPath(new URL('.', import.meta.url));
-/** Build (vite, tsc for the types), pack, install and type-check take ~17 s alone here, ~45 s beside the checks and unit tests with a core busy; allow for a slower machine. */
+/** Build (vite, tsc for the types), pack, install and type-check take ~17 s alone here, 45–58 s beside the checks and unit tests with a core busy; allow for a slower machine. */
 const PACK_TIMEOUT_MS = 240_000;
 
 const dir = mkdtempSync(join(tmpdir(), 'tfc-consumer-'));
