@@ -71,7 +71,16 @@ export const FULL_PLAN: BenchPlan = {
   changesBack: true,
   gridStride: 1,
   materials: { width: 1280, height: 720, frames: 10 },
-  node: { width: 1280, height: 720, frames: 10, quality: DEFAULT_FILM_QUALITY, changesAlsoAt: [[320, 180]] },
+  node: {
+    width: 1280,
+    height: 720,
+    frames: 10,
+    quality: DEFAULT_FILM_QUALITY,
+    changesAlsoAt: [
+      { width: 320, height: 180, gpuApart: false },
+      { width: 1280, height: 720, gpuApart: true },
+    ],
+  },
   demo: { width: 1280, height: 720, windowMs: 1000, panelTwice: true },
   defaultView: { width: 1280, height: 720, seconds: 30, settlingMs: 3000, firstFrameLoads: 5 },
   flowSpeed: { grids: [64, 128], warmUpSteps: 3, batchSteps: 4, batches: 5 },

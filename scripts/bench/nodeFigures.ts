@@ -13,6 +13,7 @@ import { webgpuLaunchOptions } from '../chromium.ts';
 import type { ParityGroup } from '../harness/parityCase.ts';
 import { loadOnBackend } from '../harness/webgpuAdapter.ts';
 import { type GridError, filmsGridError, gridError } from './errorGrids.ts';
+import { gpuApartUnavailable, withGpuApart } from './gpuApart.ts';
 import {
   NODE_BACKENDS,
   NODE_GRID_MODES,
@@ -33,11 +34,19 @@ export interface NodeFiguresPlan {
   /** the spectral materials' and the error grids' film quality */
   readonly quality: FilmQuality;
   /**
-   * Sizes the option changes are also made at, besides the frames' (width × height): a small one
-   * shows the material's own tasks where a CPU rasteriser draws the sphere's frame well within
-   * LONG_TASK_MS (a task that waits on the GPU process waits for the frame it is drawing).
+   * Where the option changes are also made, besides at the frames' size with every core shared: a
+   * small size, where a CPU rasteriser draws the sphere's frame well within LONG_TASK_MS (a task
+   * that waits on the GPU process waits for the frame it is drawing), and the GPU process held to
+   * a core of its own (gpuApart.ts), where the rasteriser's threads leave the page's core alone.
    */
-  readonly changesAlsoAt: readonly (readonly [number, number])[];
+  readonly changesAlsoAt: readonly ChangeSetting[];
+}
+
+/** How the option changes are made: the sphere's size, and whether the GPU process is held apart (gpuApart.ts). */
+export interface ChangeSetting {
+  readonly width: number;
+  readonly height: number;
+  readonly gpuApart: boolean;
 }
 
 /** One option change of NODE_OPTION_CHANGES: the main thread's long tasks (over LONG_TASK_MS) from the change to its frame drawn. */
@@ -52,10 +61,8 @@ export interface NodeChangeFigures {
   readonly toFrameMs: number;
 }
 
-/** The option changes made with the sphere at one size. */
-export interface NodeChangesAt {
-  readonly width: number;
-  readonly height: number;
+/** The option changes made in one setting. */
+export interface NodeChangesAt extends ChangeSetting {
   /** per change of NODE_OPTION_CHANGES, in its order */
   readonly figures: NodeChangeFigures[];
 }
@@ -93,16 +100,12 @@ async function openOn(browser: Browser, baseUrl: string, backend: NodeBackend, h
   throw new Error(`WebGPURenderer found no ${backend} backend`);
 }
 
-/** Each of NODE_OPTION_CHANGES made on the page's sphere at `width` × `height`: its long tasks, from a trace of the page. */
-async function optionChanges(
-  browser: Browser,
-  page: Page,
-  width: number,
-  height: number,
-  quality: FilmQuality,
-): Promise<NodeChangeFigures[]> {
+/** Each of NODE_OPTION_CHANGES made on the page's sphere in `setting`: its long tasks, from a trace of the page. */
+async function optionChanges(browser: Browser, page: Page, setting: ChangeSetting, quality: FilmQuality): Promise<NodeChangeFigures[]> {
+  const { width, height, gpuApart } = setting;
   await browser.startTracing(page, { categories: TRACE_CATEGORIES });
-  const toFrameMs = await page.evaluate(([w, h, q]) => window.nodeBench!.optionChanges(w, h, q), [width, height, quality] as const);
+  const changed = () => page.evaluate(([w, h, q]) => window.nodeBench!.optionChanges(w, h, q), [width, height, quality] as const);
+  const toFrameMs = await (gpuApart ? withGpuApart(browser, changed) : changed());
   const trace = (await browser.stopTracing()).toString();
   if (toFrameMs.length !== NODE_OPTION_CHANGES.length)
     throw new Error(`the page made ${toFrameMs.length} changes, not ${NODE_OPTION_CHANGES.length}`);
@@ -138,8 +141,8 @@ async function backendFigures(
     const threes = await page.evaluate((g) => window.nodeBench!.threeGridXyz(g), grids);
     const threeGridErrors = grids.map((g, i) => filmsGridError(g, reference[i]!, threes[i]!));
     const changes: NodeChangesAt[] = [];
-    for (const [width, height] of [[how.width, how.height] as const, ...how.changesAlsoAt])
-      changes.push({ width, height, figures: await optionChanges(browser, page, width, height, how.quality) });
+    for (const setting of [{ width: how.width, height: how.height, gpuApart: false }, ...how.changesAlsoAt])
+      changes.push({ ...setting, figures: await optionChanges(browser, page, setting, how.quality) });
     return { backend, frames, gridErrors, threeGridErrors, changes };
   } finally {
     await page.close();
@@ -154,15 +157,19 @@ export async function nodeFigures(
   grids: readonly ParityGroup[],
   reference: readonly (readonly Xyz[])[],
 ): Promise<NodeFigures> {
+  const unavailable = gpuApartUnavailable();
+  if (unavailable && how.changesAlsoAt.some((s) => s.gpuApart))
+    console.warn(`node figures: no option changes with the GPU process apart: ${unavailable}`);
+  const changesAlsoAt = how.changesAlsoAt.filter((s) => !(unavailable && s.gpuApart));
   const backends: NodeBackendFigures[] = [];
   for (const backend of NODE_BACKENDS) {
     const own = backend === 'webgpu' ? await chromium.launch(webgpuLaunchOptions()) : null;
     try {
-      backends.push(await backendFigures(own ?? browser, baseUrl, backend, how, grids, reference));
+      backends.push(await backendFigures(own ?? browser, baseUrl, backend, { ...how, changesAlsoAt }, grids, reference));
     } finally {
       await own?.close();
     }
   }
-  const { width, height, frames, quality, changesAlsoAt } = how;
+  const { width, height, frames, quality } = how;
   return { width, height, frames, quality, changesAlsoAt, backends };
 }

@@ -3,7 +3,7 @@
  * what a run's node figures lack.
  */
 import type { GridError } from './errorGrids.ts';
-import type { NodeBackendFigures, NodeFigures } from './nodeFigures.ts';
+import type { ChangeSetting, NodeBackendFigures, NodeFigures } from './nodeFigures.ts';
 import {
   NODE_BACKENDS,
   NODE_BACKEND_LABELS,
@@ -14,6 +14,9 @@ import {
 } from './nodeMaterials.ts';
 import { LONG_TASK_MS } from './panelChanges.ts';
 import { NODE_ROW } from './rows.ts';
+
+/** A setting of the option changes, as the table names it. */
+const settingLabel = (s: ChangeSetting) => `${s.width}×${s.height}${s.gpuApart ? ', GPU process apart' : ''}`;
 
 const ms = (x: number) => (x >= 100 ? x.toFixed(0) : x.toFixed(1));
 const stats = (e: GridError) => `${e.max.toFixed(3)} / ${e.p99.toFixed(3)} / ${e.mean.toFixed(3)}`;
@@ -46,11 +49,11 @@ export function nodeMarkdown(n: NodeFigures): string {
     b,
     (f) => f.threeGridErrors.map(stats).join(' — '),
   );
-  const sizes = [[n.width, n.height], ...n.changesAlsoAt].map(([w, h]) => `${w}×${h}`).join(' · ');
+  const settings = [{ width: n.width, height: n.height, gpuApart: false }, ...n.changesAlsoAt].map(settingLabel).join(' · ');
   const changes = NODE_OPTION_CHANGES.map(([what], i) =>
     row(
       i === 0
-        ? `option changes on the \`table\` sphere at ${sizes} (the smaller: a frame the CPU rasteriser draws well within ${LONG_TASK_MS} ms), one after another, each drawn until whenSpectralReady resolves: the main thread's longest task (in brackets, the thread's own time in it: the rest it waited on the GPU process or was not scheduled) and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); change → that frame: ${what}`
+        ? `option changes on the \`table\` sphere at ${settings} (a small size: a frame the CPU rasteriser draws well within ${LONG_TASK_MS} ms; GPU process apart: held to a core of its own, the page's renderer to the other, scripts/bench/gpuApart.ts), one after another, each drawn until whenSpectralReady resolves: the main thread's longest task (in brackets, the thread's own time in it: the rest it waited on the GPU process or was not scheduled) and its tasks over ${LONG_TASK_MS} ms from the change to its frame drawn with the film ready (goal: longest ≤ ${LONG_TASK_MS} ms, none over); change → that frame: ${what}`
         : `… ${what}`,
       b,
       (f) =>
@@ -79,11 +82,11 @@ export function nodeProblems(n: NodeFigures): string[] {
     problems.push(`node figures of backends ${n.backends.map((f) => f.backend).join(', ')}, not ${NODE_BACKENDS.join(', ')}`);
   for (const f of n.backends) {
     if (f.changes.length !== 1 + n.changesAlsoAt.length)
-      problems.push(`node figures, ${f.backend}: option changes at ${f.changes.length} sizes, not ${1 + n.changesAlsoAt.length}`);
-    for (const { width, height, figures } of f.changes)
-      if (figures.length !== NODE_OPTION_CHANGES.length)
+      problems.push(`node figures, ${f.backend}: option changes in ${f.changes.length} settings, not ${1 + n.changesAlsoAt.length}`);
+    for (const c of f.changes)
+      if (c.figures.length !== NODE_OPTION_CHANGES.length)
         problems.push(
-          `node figures, ${f.backend}, ${width}×${height}: ${figures.length} option changes, not ${NODE_OPTION_CHANGES.length}`,
+          `node figures, ${f.backend}, ${settingLabel(c)}: ${c.figures.length} option changes, not ${NODE_OPTION_CHANGES.length}`,
         );
     const grids: readonly (readonly [string, readonly GridError[]])[] = [
       ...NODE_GRID_MODES.map((m) => [m, f.gridErrors[m]] as const),

@@ -185,24 +185,24 @@ describe('bench results check', () => {
       frames: { floor: t(10), 'three.js': t(12), table: t(13), exact: t(40) },
       gridErrors: { table: [stats, stats], exact: [stats, stats] },
       threeGridErrors: [stats, stats],
-      changes: [{ width: 160, height: 90, figures: NODE_OPTION_CHANGES.map(() => change) }],
+      changes: [{ width: 160, height: 90, gpuApart: false, figures: NODE_OPTION_CHANGES.map(() => change) }],
     });
     const node = { ...SMOKE_PLAN.node, backends: [backend('webgl'), backend('webgpu')] };
     const ASKED = { ...NONE, node: true };
     expect(resultProblems(results(good, { node }), measures, ASKED)).toEqual(['no demo figures', 'no defaultView figures']);
     const lacking = {
       ...node,
-      changesAlsoAt: [[320, 180] as const],
+      changesAlsoAt: [{ width: 160, height: 90, gpuApart: true }],
       backends: [
-        { ...backend('webgl'), changes: [{ width: 160, height: 90, figures: [change] }] },
+        { ...backend('webgl'), changes: [...backend('webgl').changes, { width: 160, height: 90, gpuApart: true, figures: [change] }] },
         { ...backend('webgpu'), gridErrors: { table: [stats], exact: [stats, stats] } },
       ],
     };
     expect(resultProblems(results(good, { node: lacking }), measures, ASKED)).toEqual(
       expect.arrayContaining([
-        `node figures, webgl, 160×90: 1 option changes, not ${NODE_OPTION_CHANGES.length}`,
+        `node figures, webgl, 160×90, GPU process apart: 1 option changes, not ${NODE_OPTION_CHANGES.length}`,
         'node figures, webgpu, table: 1 error grids, not 2',
-        'node figures, webgpu: option changes at 1 sizes, not 2',
+        'node figures, webgpu: option changes in 1 settings, not 2',
       ]),
     );
     const oneBackend = { ...node, backends: [{ ...backend('webgl'), frames: { ...backend('webgl').frames, exact: t(NaN) } }] };
