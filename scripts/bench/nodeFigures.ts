@@ -62,6 +62,12 @@ export interface NodeChangeFigures {
   readonly toFrameMs: number;
 }
 
+/** Every setting the option changes are made in: the frames' size with the cores shared, then the plan's changesAlsoAt. */
+export const changeSettings = (how: NodeFiguresPlan): ChangeSetting[] => [
+  { width: how.width, height: how.height, gpuApart: false },
+  ...how.changesAlsoAt,
+];
+
 /** The option changes made in one setting. */
 export interface NodeChangesAt extends ChangeSetting {
   /** per change of NODE_OPTION_CHANGES, in its order */
@@ -79,7 +85,7 @@ export interface NodeBackendFigures {
    * films thicker than 0 nm (three turns its film off at 0 nm and draws its own base there)
    */
   readonly threeGridErrors: GridError[];
-  /** the option changes at the frames' size, then at each of the plan's changesAlsoAt */
+  /** the option changes in each of changeSettings, in its order */
   readonly changes: NodeChangesAt[];
 }
 
@@ -143,7 +149,7 @@ async function backendFigures(
     const threes = await page.evaluate((g) => window.nodeBench!.threeGridXyz(g), grids);
     const threeGridErrors = grids.map((g, i) => filmsGridError(g, reference[i]!, threes[i]!));
     const changes: NodeChangesAt[] = [];
-    for (const setting of [{ width: how.width, height: how.height, gpuApart: false }, ...how.changesAlsoAt])
+    for (const setting of changeSettings(how))
       changes.push({ ...setting, figures: await optionChanges(browser, page, setting, how.quality) });
     return { backend, frames, gridErrors, threeGridErrors, changes };
   } finally {

@@ -3,7 +3,7 @@
  * what a run's node figures lack.
  */
 import type { GridError } from './errorGrids.ts';
-import type { ChangeSetting, NodeBackendFigures, NodeFigures } from './nodeFigures.ts';
+import { type ChangeSetting, type NodeBackendFigures, type NodeFigures, changeSettings } from './nodeFigures.ts';
 import {
   NODE_BACKENDS,
   NODE_BACKEND_LABELS,
@@ -49,7 +49,7 @@ export function nodeMarkdown(n: NodeFigures): string {
     b,
     (f) => f.threeGridErrors.map(stats).join(' — '),
   );
-  const settings = [{ width: n.width, height: n.height, gpuApart: false }, ...n.changesAlsoAt].map(settingLabel).join(' · ');
+  const settings = changeSettings(n).map(settingLabel).join(' · ');
   const changes = NODE_OPTION_CHANGES.map(([what], i) =>
     row(
       i === 0
@@ -81,8 +81,8 @@ export function nodeProblems(n: NodeFigures): string[] {
   if (n.backends.map((f) => f.backend).join() !== NODE_BACKENDS.join())
     problems.push(`node figures of backends ${n.backends.map((f) => f.backend).join(', ')}, not ${NODE_BACKENDS.join(', ')}`);
   for (const f of n.backends) {
-    if (f.changes.length !== 1 + n.changesAlsoAt.length)
-      problems.push(`node figures, ${f.backend}: option changes in ${f.changes.length} settings, not ${1 + n.changesAlsoAt.length}`);
+    if (f.changes.length !== changeSettings(n).length)
+      problems.push(`node figures, ${f.backend}: option changes in ${f.changes.length} settings, not ${changeSettings(n).length}`);
     for (const c of f.changes)
       if (c.figures.length !== NODE_OPTION_CHANGES.length)
         problems.push(
