@@ -56,6 +56,8 @@ export interface NodeChangeFigures {
   readonly longestMs: number;
   /** the main thread's own time in that task, ms (0 for none): the rest it waited or was not scheduled (traceTasks.ts) */
   readonly longestThreadMs: number;
+  /** the longest time the main thread itself ran in any one task, ms: the page's own work, whatever it waited for */
+  readonly mostThreadMs: number;
   /** tasks over LONG_TASK_MS */
   readonly over: number;
   /** the change → its frame drawn with the film ready, ms */
@@ -124,7 +126,8 @@ async function optionChanges(browser: Browser, page: Page, setting: ChangeSettin
   return tasks.map((all, i) => {
     const longest = all.reduce<TracedTask | null>((a, t) => (a && a.wallMs >= t.wallMs ? a : t), null);
     const over = all.filter((t) => t.wallMs > LONG_TASK_MS).length;
-    return { longestMs: longest?.wallMs ?? 0, longestThreadMs: longest?.threadMs ?? 0, over, toFrameMs: toFrameMs[i]! };
+    const mostThreadMs = Math.max(0, ...all.map((t) => t.threadMs));
+    return { longestMs: longest?.wallMs ?? 0, longestThreadMs: longest?.threadMs ?? 0, mostThreadMs, over, toFrameMs: toFrameMs[i]! };
   });
 }
 
