@@ -6,40 +6,52 @@
  * work, as beside a GPU, which draws on a device of its own.
  */
 import { execFileSync } from 'node:child_process';
-import { cpus, platform } from 'node:os';
+import { readFileSync } from 'node:fs';
+import { platform } from 'node:os';
 import type { Browser } from '@playwright/test';
+
+/** The cores process `pid` (this one unless given) may run on, in order: Linux's Cpus_allowed_list ("0-3,6") read out. */
+export function allowedCores(pid: number | 'self' = 'self'): number[] {
+  const list = /^Cpus_allowed_list:\s*(\S+)$/m.exec(readFileSync(`/proc/${pid}/status`, 'utf8'))?.[1] ?? '';
+  return list.split(',').flatMap((part) => {
+    const [from, to = from] = part.split('-').map(Number);
+    return Array.from({ length: to! - from! + 1 }, (_, k) => from! + k);
+  });
+}
+
+/** A process's every thread allowed only on `cores`. */
+const allow = (pid: number, cores: readonly number[]) =>
+  execFileSync('taskset', ['-a', '-p', '-c', cores.join(','), String(pid)], { stdio: 'ignore' });
 
 /** Why the GPU process cannot be held apart here, or null where it can. */
 export function gpuApartUnavailable(): string | null {
   if (platform() !== 'linux') return `holding the GPU process apart needs Linux's taskset, not ${platform()}`;
-  if (cpus().length < 2) return `holding the GPU process apart needs 2 cores or more, not ${cpus().length}`;
+  const cores = allowedCores();
+  if (cores.length < 2) return `holding the GPU process apart needs 2 cores or more, not ${cores.length}`;
   try {
-    execFileSync('taskset', ['-V'], { stdio: 'ignore' });
+    allow(process.pid, cores);
   } catch {
-    return 'holding the GPU process apart needs taskset (util-linux), which was not found';
+    return "holding the GPU process apart needs taskset (util-linux) and leave to set a process's cores, not found here";
   }
   return null;
 }
 
-/** A process's every thread allowed only on `cores` (a taskset list such as "0-2"). */
-const allow = (pid: number, cores: string) => execFileSync('taskset', ['-a', '-p', '-c', cores, String(pid)], { stdio: 'ignore' });
-
 /**
- * Runs `measure` with process `gpu` on the last core and `others` on the rest, then gives them
- * every core again. Where gpuApartUnavailable() gives a reason, it is an error.
+ * Runs `measure` with process `gpu` on the last of this process's cores and `others` on the rest,
+ * then gives them all those cores again. Where gpuApartUnavailable() gives a reason, it is an error.
  */
 export async function holdApart<T>(gpu: number, others: readonly number[], measure: () => Promise<T>): Promise<T> {
   const unavailable = gpuApartUnavailable();
   if (unavailable) throw new Error(unavailable);
-  const last = cpus().length - 1;
+  const cores = allowedCores();
   try {
-    allow(gpu, String(last));
-    for (const pid of others) allow(pid, last === 1 ? '0' : `0-${last - 1}`);
+    allow(gpu, cores.slice(-1));
+    for (const pid of others) allow(pid, cores.slice(0, -1));
     return await measure();
   } finally {
     for (const pid of [gpu, ...others]) {
       try {
-        allow(pid, `0-${last}`);
+        allow(pid, cores);
       } catch {
         // a renderer closed meanwhile has no threads left to give cores to
       }

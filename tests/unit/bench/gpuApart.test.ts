@@ -1,22 +1,6 @@
-import { type ChildProcess, execFileSync, spawn } from 'node:child_process';
-import { cpus } from 'node:os';
+import { type ChildProcess, spawn } from 'node:child_process';
 import { afterEach, describe, expect, it } from 'vitest';
-import { gpuApartUnavailable, holdApart } from '../../../scripts/bench/gpuApart.ts';
-
-/** A list of whole numbers, `from` to `to` - 1. */
-const range = (from: number, to: number) => Array.from({ length: to - from }, (_, i) => from + i);
-
-/** The cores a process may run on, as the kernel reports them (taskset's list form, "0,2-3", read out). */
-const coresOf = (pid: number) =>
-  execFileSync('taskset', ['-c', '-p', String(pid)])
-    .toString()
-    .trim()
-    .split(': ')[1]!
-    .split(',')
-    .flatMap((part) => {
-      const [from, to = from] = part.split('-').map(Number);
-      return range(from!, to! + 1);
-    });
+import { allowedCores, gpuApartUnavailable, holdApart } from '../../../scripts/bench/gpuApart.ts';
 
 describe.skipIf(gpuApartUnavailable() !== null)('holding a process apart (Linux, 2 cores or more)', () => {
   const children: ChildProcess[] = [];
@@ -27,17 +11,19 @@ describe.skipIf(gpuApartUnavailable() !== null)('holding a process apart (Linux,
   };
   afterEach(() => children.splice(0).forEach((c) => c.kill()));
 
-  it('puts the GPU on the last core and the others on the rest while measuring, then gives both every core', async () => {
+  // The kernel's word on each child's cores (/proc/<pid>/status); a child starts with its parent's.
+  it('puts the GPU on the last core and the others on the rest while measuring, then gives both their cores back', async () => {
     const [gpu, page] = [sleeper(), sleeper()];
-    const last = cpus().length - 1;
-    const during = await holdApart(gpu, [page], () => Promise.resolve([coresOf(gpu), coresOf(page)]));
-    expect(during).toEqual([[last], range(0, last)]);
-    expect([coresOf(gpu), coresOf(page)]).toEqual([range(0, last + 1), range(0, last + 1)]);
+    const cores = allowedCores(gpu);
+    const during = await holdApart(gpu, [page], () => Promise.resolve([allowedCores(gpu), allowedCores(page)]));
+    expect(during).toEqual([cores.slice(-1), cores.slice(0, -1)]);
+    expect([allowedCores(gpu), allowedCores(page)]).toEqual([cores, cores]);
   });
 
-  it('gives every core back when the measurement fails', async () => {
+  it('gives the cores back when the measurement fails', async () => {
     const gpu = sleeper();
+    const cores = allowedCores(gpu);
     await expect(holdApart(gpu, [], () => Promise.reject(new Error('measured nothing')))).rejects.toThrow('measured nothing');
-    expect(coresOf(gpu)).toEqual(range(0, cpus().length));
+    expect(allowedCores(gpu)).toEqual(cores);
   });
 });
