@@ -121,7 +121,6 @@ async function optionChanges(browser: Browser, page: Page, setting: ChangeSettin
   const tasks = tasksBetweenMarks(
     trace,
     NODE_OPTION_CHANGES.map((_, i) => changeMarks(i)),
-    0,
   );
   return tasks.map((all, i) => {
     const longest = all.reduce<TracedTask | null>((a, t) => (a && a.wallMs >= t.wallMs ? a : t), null);

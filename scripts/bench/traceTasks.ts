@@ -30,11 +30,11 @@ interface TraceEvent {
 }
 
 /**
- * For each window [mark `from`, mark `to`] (performance.mark names), the tasks longer than `minMs`
- * of the thread that made the marks which overlap it, in their order. A mark missing from the
- * trace is an error naming it.
+ * For each window [mark `from`, mark `to`] (performance.mark names), the tasks of the thread that
+ * made the marks which overlap it, in their order. A mark missing from the trace is an error
+ * naming it.
  */
-export function tasksBetweenMarks(traceJson: string, windows: readonly (readonly [string, string])[], minMs: number): TracedTask[][] {
+export function tasksBetweenMarks(traceJson: string, windows: readonly (readonly [string, string])[]): TracedTask[][] {
   const events = (JSON.parse(traceJson) as { traceEvents: TraceEvent[] }).traceEvents;
   const marks = new Map(events.filter((e) => e.cat?.includes('blink.user_timing')).map((e) => [e.name, e]));
   const at = (name: string): TraceEvent => {
@@ -46,7 +46,7 @@ export function tasksBetweenMarks(traceJson: string, windows: readonly (readonly
     const [start, end] = [at(from), at(to)];
     return events
       .filter((e) => e.name === TASK_EVENT && e.ph === 'X' && e.pid === start.pid && e.tid === start.tid)
-      .filter((e) => e.ts < end.ts && e.ts + (e.dur ?? 0) > start.ts && (e.dur ?? 0) / 1000 > minMs)
+      .filter((e) => e.ts < end.ts && e.ts + (e.dur ?? 0) > start.ts)
       .sort((a, b) => a.ts - b.ts)
       .map((e) => ({ wallMs: (e.dur ?? 0) / 1000, threadMs: (e.tdur ?? 0) / 1000 }));
   });

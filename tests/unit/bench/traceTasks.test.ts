@@ -35,26 +35,23 @@ const trace = JSON.stringify({
 });
 
 describe('tasksBetweenMarks', () => {
-  it("keeps the marking thread's tasks over the bound that overlap each window, wall and thread time in ms", () => {
+  it("keeps the marking thread's tasks that overlap each window, wall and thread time in ms", () => {
     expect(
-      tasksBetweenMarks(
-        trace,
-        [
-          ['a', 'a drawn'],
-          ['b', 'b drawn'],
-        ],
-        50,
-      ),
+      tasksBetweenMarks(trace, [
+        ['a', 'a drawn'],
+        ['b', 'b drawn'],
+      ]),
     ).toEqual([
       [
         { wallMs: 200, threadMs: 150 },
         { wallMs: 120, threadMs: 3 },
+        { wallMs: 40, threadMs: 40 },
       ],
       [{ wallMs: 100, threadMs: 60 }],
     ]);
   });
 
   it('names a mark the trace lacks', () => {
-    expect(() => tasksBetweenMarks(trace, [['a', 'c drawn']], 50)).toThrow('the trace has no mark "c drawn"');
+    expect(() => tasksBetweenMarks(trace, [['a', 'c drawn']])).toThrow('the trace has no mark "c drawn"');
   });
 });
